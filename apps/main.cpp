@@ -1,0 +1,59 @@
+// deepguide: guidance planning and analysis for autonomous underwater vehicles.
+// Exit codes: 0 success, 1 bad input, 2 usage, 3 no safe route.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <new>
+
+#include "commands.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/core/version.hpp"
+
+namespace deepguide::app {
+
+void add_frame_options(CLI::App& cmd, FrameOptions& options) {
+  cmd.add_option("--crs", options.crs,
+                 "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the data)");
+  cmd.add_option("--src-crs", options.src_crs,
+                 "CRS of input files that carry none, e.g. a CSV in UTM (default: EPSG:4326 lon/lat)");
+}
+
+}  // namespace deepguide::app
+
+int main(int argc, char** argv) {
+  using namespace deepguide;
+  CLI::App app{"deepguide: plan and analyse how an AUV is guided around obstacles and objects"};
+  app.set_version_flag("--version", std::string("deepguide ") + kVersion);
+  app.require_subcommand(1);
+
+  CLI::App* obstacles = app.add_subcommand("obstacles", "Inspect and convert obstacle files");
+  obstacles->require_subcommand(1);
+  app::register_obstacles_info(*obstacles);
+  app::register_obstacles_convert(*obstacles);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "deepguide: error: " << e.what() << "\n";
+    return 1;
+  } catch (const NoRouteError& e) {
+    std::cerr << "deepguide: no safe route: " << e.what() << "\n";
+    return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "deepguide: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "deepguide: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

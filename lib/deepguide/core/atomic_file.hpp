@@ -1,0 +1,31 @@
+#pragma once
+// Never leave a half-written output file: writers produce a temporary file in
+// the destination's folder (same file system, so the final rename is atomic)
+// and rename it over the destination only when everything has been written.
+
+#include <filesystem>
+
+namespace deepguide {
+
+class AtomicOutput {
+ public:
+  /// Reserves a temporary path next to `destination` that keeps its extension
+  /// (GDAL drivers look at it). Throws InputError if the folder does not exist.
+  explicit AtomicOutput(std::filesystem::path destination);
+  ~AtomicOutput();  ///< removes the temporary file unless commit() succeeded
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+
+  const std::filesystem::path& temp_path() const { return temp_; }
+  const std::filesystem::path& destination() const { return destination_; }
+
+  /// Renames the temporary file onto the destination.
+  void commit();
+
+ private:
+  std::filesystem::path destination_;
+  std::filesystem::path temp_;
+  bool committed_ = false;
+};
+
+}  // namespace deepguide

@@ -1,0 +1,36 @@
+#pragma once
+// Errors that reach the user. Every one is a single line that names where the
+// problem is (file, feature or line, field) and what was expected.
+// Exit codes (DESIGN.md): 1 bad input, 2 usage, 3 no safe route.
+
+#include <stdexcept>
+#include <string>
+
+namespace deepguide {
+
+/// Bad input: a file, a feature, a field or an option value. Exit code 1.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The problem is well posed but no safe route exists. Exit code 3.
+class NoRouteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Where in an input a problem sits; formats as "FILE: feature F: field 'X'".
+struct InputLocation {
+  std::string file;
+  std::string feature;  ///< e.g. "feature 3 (id 'w1')" or "line 12"; may be empty
+  std::string field;    ///< may be empty
+
+  std::string describe() const;
+};
+
+/// Builds an InputError "LOCATION: expected EXPECTED[, got GOT]".
+InputError input_error(const InputLocation& where, const std::string& expected,
+                       const std::string& got = {});
+
+}  // namespace deepguide

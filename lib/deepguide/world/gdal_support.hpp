@@ -1,0 +1,40 @@
+#pragma once
+// Library-internal helpers around GDAL/OGR/OSR (not installed): driver
+// registration, quiet error handling that keeps GDAL's message for ours, and
+// spatial references with lon/lat axis order.
+
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <memory>
+#include <string>
+
+namespace deepguide::gdal {
+
+/// Registers all GDAL drivers once; cheap to call again.
+void ensure_registered();
+
+/// While alive, GDAL errors and warnings are not printed; last_message() keeps the latest.
+class QuietErrors {
+ public:
+  QuietErrors();
+  ~QuietErrors();
+  QuietErrors(const QuietErrors&) = delete;
+  QuietErrors& operator=(const QuietErrors&) = delete;
+  static std::string last_message();
+};
+
+/// A spatial reference from user input ("EPSG:4326", WKT, PROJ string) with
+/// traditional GIS axis order (x = lon/easting). Null when OSR does not know it.
+std::unique_ptr<OGRSpatialReference> srs_from_user_input(const std::string& text);
+/// WGS 84 geographic, lon/lat order.
+std::unique_ptr<OGRSpatialReference> wgs84();
+/// "EPSG:n" when the authority is EPSG, else the CRS's name.
+std::string srs_id(const OGRSpatialReference& srs);
+
+using TransformPtr = std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation*)>;
+/// Transformation between two references; null when PROJ cannot make one.
+TransformPtr make_transform(const OGRSpatialReference& from, const OGRSpatialReference& to);
+
+}  // namespace deepguide::gdal

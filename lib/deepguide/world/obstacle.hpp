@@ -1,0 +1,39 @@
+#pragma once
+// Obstacles in the local metric frame. The seed's Object Detection reports
+// elliptical cylinders; charts add polygonal obstacles (land, hazard areas).
+// Vertically an obstacle either stands `height_m` above the sea floor or has
+// its top at `top_depth_m` (depth, positive down); with neither it is taken to
+// fill the whole water column (the safe assumption for planning).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/geometry/polygon.hpp"
+
+namespace deepguide {
+
+struct EllipticCylinder {
+  std::string id;
+  Ellipse footprint;                  ///< local frame, metres; theta is a math angle
+  std::optional<double> height_m;     ///< above the sea floor
+  std::optional<double> top_depth_m;  ///< depth of the top, positive down
+};
+
+struct PolygonObstacle {
+  std::string id;
+  BgPolygon footprint;  ///< local frame, metres; corrected orientation
+  std::optional<double> height_m;
+  std::optional<double> top_depth_m;
+};
+
+struct ObstacleSet {
+  std::vector<EllipticCylinder> ellipses;
+  std::vector<PolygonObstacle> polygons;
+
+  std::size_t size() const { return ellipses.size() + polygons.size(); }
+  bool empty() const { return size() == 0; }
+};
+
+}  // namespace deepguide

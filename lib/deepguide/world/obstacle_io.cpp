@@ -1,0 +1,462 @@
+#include "deepguide/world/obstacle_io.hpp"
+
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <boost/geometry/algorithms/correct.hpp>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <optional>
+
+#include "deepguide/core/angles.hpp"
+#include "deepguide/core/atomic_file.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+
+namespace {
+
+// One feature as read, in lon/lat (degrees) before the local frame is known.
+struct GeoRecord {
+  InputLocation where;
+  std::string id;
+  bool is_ellipse = false;
+  Eigen::Vector2d center;  // lon, lat
+  double a = 0.0;
+  double b = 0.0;
+  double heading_deg = 0.0;
+  std::vector<std::vector<Eigen::Vector2d>> rings;  // lon, lat; first = outer
+  std::optional<double> height_m;
+  std::optional<double> top_depth_m;
+};
+
+std::string describe_feature(const OGRFeature& f, const std::string& driver, const std::string& layer,
+                             bool several_layers) {
+  std::string s;
+  if (several_layers) s = "layer '" + layer + "', ";
+  // The CSV driver numbers data rows from 1; the header is line 1.
+  if (driver == "CSV") {
+    s += "line " + std::to_string(f.GetFID() + 1);
+  } else {
+    s += "feature " + std::to_string(f.GetFID());
+  }
+  for (const char* key : {"id", "name"}) {
+    const int i = f.GetFieldIndex(key);
+    if (i >= 0 && f.IsFieldSetAndNotNull(i)) {
+      s += std::string(" (") + key + " '" + f.GetFieldAsString(i) + "')";
+      break;
+    }
+  }
+  return s;
+}
+
+// A numeric field: absent (no column, null or empty) -> nullopt; otherwise a
+// finite number or an InputError naming the field.
+std::optional<double> numeric_field(const OGRFeature& f, const char* name, InputLocation where) {
+  where.field = name;
+  const int i = f.GetFieldIndex(name);
+  if (i < 0 || !f.IsFieldSetAndNotNull(i)) return std::nullopt;
+  const OGRFieldType type = f.GetFieldDefnRef(i)->GetType();
+  double v = 0.0;
+  if (type == OFTReal || type == OFTInteger || type == OFTInteger64) {
+    v = f.GetFieldAsDouble(i);
+  } else {
+    std::string text = f.GetFieldAsString(i);
+    text.erase(0, text.find_first_not_of(" \t"));
+    text.erase(text.find_last_not_of(" \t") + 1);
+    if (text.empty()) return std::nullopt;
+    const char* first = text.data();
+    const char* last = text.data() + text.size();
+    if (*first == '+') ++first;
+    auto [ptr, ec] = std::from_chars(first, last, v);
+    if (ec != std::errc() || ptr != last) throw input_error(where, "a number", "'" + text + "'");
+  }
+  if (!std::isfinite(v)) throw input_error(where, "a finite number", std::to_string(v));
+  return v;
+}
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+void read_vertical(const OGRFeature& f, const InputLocation& where, GeoRecord& rec) {
+  rec.height_m = numeric_field(f, "height_m", where);
+  rec.top_depth_m = numeric_field(f, "top_depth_m", where);
+  if (rec.height_m && rec.top_depth_m) {
+    InputLocation w = where;
+    w.field = "height_m";
+    throw input_error(w, "either height_m or top_depth_m, not both");
+  }
+  if (rec.height_m && *rec.height_m <= 0.0) {
+    InputLocation w = where;
+    w.field = "height_m";
+    throw input_error(w, "a height above the sea floor > 0 m", fmt(*rec.height_m));
+  }
+  if (rec.top_depth_m && *rec.top_depth_m < 0.0) {
+    InputLocation w = where;
+    w.field = "top_depth_m";
+    throw input_error(w, "a depth >= 0 m (positive down)", fmt(*rec.top_depth_m));
+  }
+}
+
+// Transforms a point of the layer's CRS to lon/lat and checks it.
+Eigen::Vector2d to_geo(OGRCoordinateTransformation& ct, double x, double y, const InputLocation& where) {
+  InputLocation w = where;
+  w.field = "geometry";
+  if (!std::isfinite(x) || !std::isfinite(y)) {
+    throw input_error(w, "finite coordinates", "(" + fmt(x) + ", " + fmt(y) + ")");
+  }
+  const double x0 = x;
+  const double y0 = y;
+  if (!ct.Transform(1, &x, &y) || !std::isfinite(x) || !std::isfinite(y)) {
+    throw input_error(w, "coordinates valid in the file's CRS", "(" + fmt(x0) + ", " + fmt(y0) + ")");
+  }
+  if (std::abs(y) > 90.0 || std::abs(x) > 540.0) {
+    throw input_error(w, "a position on the Earth (lon/lat within +-180/+-90 after transformation)",
+                      "(" + fmt(x) + ", " + fmt(y) + "); a file without a CRS is read as lon/lat: "
+                      "give its CRS with --src-crs");
+  }
+  return {x, y};
+}
+
+void read_ellipse_fields(const OGRFeature& f, const InputLocation& where, GeoRecord& rec) {
+  InputLocation w = where;
+  const auto a = numeric_field(f, "semi_major_m", where);
+  w.field = "semi_major_m";
+  if (!a) throw input_error(w, "a semi-major axis in metres for a Point obstacle", "no value");
+  if (*a <= 0.0) throw input_error(w, "a semi-major axis > 0 m", fmt(*a));
+  const auto b = numeric_field(f, "semi_minor_m", where);
+  w.field = "semi_minor_m";
+  if (b && *b <= 0.0) throw input_error(w, "a semi-minor axis > 0 m", fmt(*b));
+  if (b && *b > *a) {
+    throw input_error(w, "semi_minor_m <= semi_major_m (" + fmt(*a) + " m)", fmt(*b));
+  }
+  const auto heading = numeric_field(f, "orientation_deg", where);
+  rec.is_ellipse = true;
+  rec.a = *a;
+  rec.b = b.value_or(*a);
+  rec.heading_deg = heading.value_or(0.0);
+}
+
+std::vector<Eigen::Vector2d> read_ring(const OGRLinearRing& ring, OGRCoordinateTransformation& ct,
+                                       const InputLocation& where) {
+  std::vector<Eigen::Vector2d> out;
+  out.reserve(ring.getNumPoints());
+  for (int i = 0; i < ring.getNumPoints(); ++i) out.push_back(to_geo(ct, ring.getX(i), ring.getY(i), where));
+  return out;
+}
+
+void read_polygon(const OGRPolygon& poly, OGRCoordinateTransformation& ct, const InputLocation& where,
+                  GeoRecord rec, std::vector<GeoRecord>& out) {
+  if (poly.IsEmpty() || poly.getExteriorRing() == nullptr || poly.getExteriorRing()->getNumPoints() < 4) {
+    InputLocation w = where;
+    w.field = "geometry";
+    throw input_error(w, "a polygon with at least 3 distinct vertices", "an empty or degenerate ring");
+  }
+  rec.rings.push_back(read_ring(*poly.getExteriorRing(), ct, where));
+  for (int i = 0; i < poly.getNumInteriorRings(); ++i) {
+    rec.rings.push_back(read_ring(*poly.getInteriorRing(i), ct, where));
+  }
+  out.push_back(std::move(rec));
+}
+
+struct SourceRead {
+  ObstacleSourceInfo info;
+  std::vector<GeoRecord> records;
+};
+
+SourceRead read_source(const std::string& path, const ObstacleReadOptions& options) {
+  SourceRead result;
+  result.info.path = path;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing file, found none");
+
+  gdal::QuietErrors quiet;
+  std::vector<const char*> open_options;
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".csv") {
+    open_options = {"X_POSSIBLE_NAMES=x,lon,long,longitude,easting",
+                    "Y_POSSIBLE_NAMES=y,lat,latitude,northing",
+                    "GEOM_POSSIBLE_NAMES=wkt,geometry,geom",
+                    "KEEP_GEOM_COLUMNS=NO"};
+  }
+  open_options.push_back(nullptr);
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr,
+                                            open_options.data(), nullptr));
+  if (!ds) {
+    std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected a vector file GDAL can read (GeoJSON, GeoPackage, Shapefile, "
+                            "CSV, ...)" + (why.empty() ? std::string() : ", got: " + why));
+  }
+  result.info.driver = ds->GetDriver() != nullptr ? ds->GetDriver()->GetDescription() : "";
+  // GDAL opens a file whose CRS it cannot resolve and silently falls back to
+  // WGS 84 (GeoJSON) or none; that would misplace every obstacle, so refuse.
+  if (const std::string why = gdal::QuietErrors::last_message(); !why.empty()) {
+    const bool crs = why.find("crs") != std::string::npos || why.find("PROJ") != std::string::npos ||
+                     why.find("CRS") != std::string::npos || why.find("SRS") != std::string::npos;
+    throw InputError(path + (crs ? ": field 'crs': expected a coordinate reference system GDAL knows, got: "
+                                 : ": expected a readable vector file, got: ") + why);
+  }
+
+  const auto geo = gdal::wgs84();
+  std::unique_ptr<OGRSpatialReference> assumed;
+  if (!options.source_crs.empty()) {
+    assumed = gdal::srs_from_user_input(options.source_crs);
+    if (!assumed) {
+      throw InputError("--src-crs: expected a known coordinate reference system such as EPSG:4326, got '" +
+                       options.source_crs + "'");
+    }
+  }
+  const bool several_layers = ds->GetLayerCount() > 1;
+  std::vector<std::string> crs_names;
+  for (OGRLayer* layer : ds->GetLayers()) {
+    const OGRSpatialReference* layer_srs = layer->GetSpatialRef();
+    std::unique_ptr<OGRSpatialReference> srs;
+    std::string crs_name;
+    if (layer_srs != nullptr) {
+      srs.reset(layer_srs->Clone());
+      srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+      crs_name = gdal::srs_id(*srs);
+    } else if (assumed) {
+      srs.reset(assumed->Clone());
+      crs_name = gdal::srs_id(*srs) + " (from --src-crs)";
+    } else {
+      srs = gdal::wgs84();
+      crs_name = "none in file, read as EPSG:4326";
+    }
+    if (std::find(crs_names.begin(), crs_names.end(), crs_name) == crs_names.end()) {
+      crs_names.push_back(crs_name);
+    }
+    auto ct = gdal::make_transform(*srs, *geo);
+    if (!ct) {
+      throw InputError(path + ": layer '" + layer->GetName() + "': field 'crs': expected a CRS that can be " +
+                       "transformed to WGS 84, got '" + crs_name + "'");
+    }
+    for (auto& feature : *layer) {
+      InputLocation where{path, describe_feature(*feature, result.info.driver, layer->GetName(), several_layers),
+                          ""};
+      GeoRecord rec;
+      rec.where = where;
+      for (const char* key : {"id", "name"}) {
+        const int i = feature->GetFieldIndex(key);
+        if (i >= 0 && feature->IsFieldSetAndNotNull(i)) {
+          rec.id = feature->GetFieldAsString(i);
+          break;
+        }
+      }
+      const OGRGeometry* g = feature->GetGeometryRef();
+      InputLocation gw = where;
+      gw.field = "geometry";
+      if (g == nullptr || g->IsEmpty()) {
+        throw input_error(gw, "a Point or Polygon geometry with finite coordinates", "an empty or missing geometry");
+      }
+      read_vertical(*feature, where, rec);
+      switch (wkbFlatten(g->getGeometryType())) {
+        case wkbPoint: {
+          read_ellipse_fields(*feature, where, rec);
+          const auto* p = g->toPoint();
+          rec.center = to_geo(*ct, p->getX(), p->getY(), where);
+          result.records.push_back(std::move(rec));
+          ++result.info.ellipses;
+          break;
+        }
+        case wkbPolygon:
+          read_polygon(*g->toPolygon(), *ct, where, std::move(rec), result.records);
+          ++result.info.polygons;
+          break;
+        case wkbMultiPolygon:
+          for (const OGRPolygon* part : *g->toMultiPolygon()) {
+            read_polygon(*part, *ct, where, rec, result.records);
+            ++result.info.polygons;
+          }
+          break;
+        default:
+          throw input_error(gw, "a Point or Polygon geometry", OGRGeometryTypeToName(g->getGeometryType()));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < crs_names.size(); ++i) result.info.crs += (i ? ", " : "") + crs_names[i];
+  return result;
+}
+
+Eigen::Vector2d to_local_checked(const LocalFrame& frame, const Eigen::Vector2d& lonlat,
+                                 const InputLocation& where) {
+  const Eigen::Vector2d xy = frame.from_lonlat(lonlat);
+  if (!xy.allFinite()) {
+    InputLocation w = where;
+    w.field = "geometry";
+    throw input_error(w, "a position inside the area of the local frame " + frame.id(),
+                      "lon " + fmt(lonlat.x()) + ", lat " + fmt(lonlat.y()));
+  }
+  return xy;
+}
+
+}  // namespace
+
+LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const ObstacleReadOptions& options) {
+  gdal::ensure_registered();
+  // Fail on a bad --crs before reading anything.
+  std::optional<LocalFrame> frame;
+  if (!options.local_crs.empty()) frame = LocalFrame::from_user_crs(options.local_crs, "--crs");
+
+  std::vector<SourceRead> sources;
+  double west = std::numeric_limits<double>::infinity(), east = -west, south = west, north = -west;
+  for (const std::string& path : paths) {
+    sources.push_back(read_source(path, options));
+    for (const GeoRecord& r : sources.back().records) {
+      auto grow = [&](const Eigen::Vector2d& ll) {
+        west = std::min(west, ll.x()), east = std::max(east, ll.x());
+        south = std::min(south, ll.y()), north = std::max(north, ll.y());
+      };
+      if (r.is_ellipse) grow(r.center);
+      for (const auto& ring : r.rings) std::for_each(ring.begin(), ring.end(), grow);
+    }
+  }
+  if (!frame) {
+    frame = west <= east ? LocalFrame::utm_for(0.5 * (west + east), 0.5 * (south + north))
+                         : LocalFrame::utm_for(0.0, 0.0);
+  }
+
+  LoadedObstacles out{{}, *frame, {}};
+  for (SourceRead& src : sources) {
+    for (const GeoRecord& r : src.records) {
+      if (r.is_ellipse) {
+        EllipticCylinder c;
+        c.id = r.id;
+        c.footprint.center = to_local_checked(*frame, r.center, r.where);
+        c.footprint.a = r.a;
+        c.footprint.b = r.b;
+        c.footprint.theta = frame->heading_to_local(r.heading_deg, c.footprint.center);
+        c.height_m = r.height_m;
+        c.top_depth_m = r.top_depth_m;
+        out.obstacles.ellipses.push_back(std::move(c));
+      } else {
+        PolygonObstacle p;
+        p.id = r.id;
+        p.height_m = r.height_m;
+        p.top_depth_m = r.top_depth_m;
+        for (std::size_t k = 0; k < r.rings.size(); ++k) {
+          auto& ring = k == 0 ? p.footprint.outer()
+                              : p.footprint.inners().emplace_back();
+          for (const auto& ll : r.rings[k]) ring.push_back(to_bg(to_local_checked(*frame, ll, r.where)));
+        }
+        boost::geometry::correct(p.footprint);
+        out.obstacles.polygons.push_back(std::move(p));
+      }
+    }
+    out.sources.push_back(std::move(src.info));
+  }
+  return out;
+}
+
+ObstacleFormat obstacle_format_for(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".geojson" || ext == ".json") return ObstacleFormat::geojson;
+  if (ext == ".gpkg") return ObstacleFormat::geopackage;
+  if (ext == ".csv") return ObstacleFormat::csv;
+  throw InputError(path + ": expected an output extension .geojson, .json, .gpkg or .csv, got '" + ext + "'");
+}
+
+namespace {
+
+void set_optional(OGRFeature& f, const char* name, const std::optional<double>& v) {
+  if (v) {
+    f.SetField(name, *v);
+  } else {
+    f.SetFieldNull(f.GetFieldIndex(name));
+  }
+}
+
+void fail_write(const std::string& path, const std::string& what) {
+  const std::string why = gdal::QuietErrors::last_message();
+  throw InputError(path + ": could not " + what + (why.empty() ? std::string() : ": " + why));
+}
+
+}  // namespace
+
+void write_obstacles(const std::string& path, const ObstacleSet& obstacles, const LocalFrame& frame) {
+  gdal::ensure_registered();
+  const ObstacleFormat format = obstacle_format_for(path);
+  AtomicOutput out(path);
+  gdal::QuietErrors quiet;
+  const char* driver_name = format == ObstacleFormat::geojson      ? "GeoJSON"
+                            : format == ObstacleFormat::geopackage ? "GPKG"
+                                                                   : "CSV";
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
+  if (driver == nullptr) fail_write(path, std::string("find GDAL's ") + driver_name + " driver");
+  {
+    GDALDatasetUniquePtr ds(driver->Create(out.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    if (!ds) fail_write(path, "create the file");
+    const auto geo = gdal::wgs84();
+    std::vector<const char*> layer_options;
+    if (format == ObstacleFormat::geojson) {
+      // RFC 7946 defaults to 7 decimals (~1 cm); 12 keep round trips below a micrometre.
+      layer_options = {"RFC7946=YES", "COORDINATE_PRECISION=12"};
+    } else if (format == ObstacleFormat::csv) {
+      layer_options = {"GEOMETRY=AS_WKT", "CREATE_CSVT=NO"};
+    }
+    layer_options.push_back(nullptr);
+    OGRLayer* layer = ds->CreateLayer("obstacles", geo.get(), wkbUnknown,
+                                      const_cast<char**>(layer_options.data()));
+    if (layer == nullptr) fail_write(path, "create the obstacles layer");
+    OGRFieldDefn id_field("id", OFTString);
+    layer->CreateField(&id_field);
+    for (const char* name : {"semi_major_m", "semi_minor_m", "orientation_deg", "height_m", "top_depth_m"}) {
+      OGRFieldDefn fd(name, OFTReal);
+      if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
+    }
+    const auto to_ll = [&](const Vec2& xy) {
+      const Eigen::Vector2d ll = frame.to_lonlat(xy);
+      if (!ll.allFinite()) fail_write(path, "transform a position to lon/lat");
+      return ll;
+    };
+    for (const EllipticCylinder& c : obstacles.ellipses) {
+      OGRFeature f(layer->GetLayerDefn());
+      f.SetField("id", c.id.c_str());
+      const Eigen::Vector2d ll = to_ll(c.footprint.center);
+      f.SetGeometry(std::make_unique<OGRPoint>(ll.x(), ll.y()).get());
+      f.SetField("semi_major_m", c.footprint.a);
+      f.SetField("semi_minor_m", c.footprint.b);
+      // An ellipse is symmetric: report its axis in [0, 180).
+      f.SetField("orientation_deg", std::fmod(frame.local_to_heading(c.footprint.theta, c.footprint.center), 180.0));
+      set_optional(f, "height_m", c.height_m);
+      set_optional(f, "top_depth_m", c.top_depth_m);
+      if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write obstacle '" + c.id + "'");
+    }
+    for (const PolygonObstacle& p : obstacles.polygons) {
+      OGRFeature f(layer->GetLayerDefn());
+      f.SetField("id", p.id.c_str());
+      OGRPolygon poly;
+      auto add_ring = [&](const auto& ring) {
+        OGRLinearRing r;
+        // Boost rings are clockwise; write counter-clockwise outer rings as RFC 7946 asks.
+        for (auto it = ring.rbegin(); it != ring.rend(); ++it) {
+          const Eigen::Vector2d ll = to_ll(to_eigen(*it));
+          r.addPoint(ll.x(), ll.y());
+        }
+        poly.addRing(&r);
+      };
+      add_ring(p.footprint.outer());
+      for (const auto& inner : p.footprint.inners()) add_ring(inner);
+      f.SetGeometry(&poly);
+      for (const char* name : {"semi_major_m", "semi_minor_m", "orientation_deg"}) f.SetFieldNull(f.GetFieldIndex(name));
+      set_optional(f, "height_m", p.height_m);
+      set_optional(f, "top_depth_m", p.top_depth_m);
+      if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write obstacle '" + p.id + "'");
+    }
+  }  // closes (flushes) the dataset before the rename
+  if (CPLGetLastErrorType() >= CE_Failure && !gdal::QuietErrors::last_message().empty()) {
+    fail_write(path, "finish the file");
+  }
+  out.commit();
+}
+
+}  // namespace deepguide
