@@ -1,1 +1,189 @@
+// Bad obstacle input: every case gives one InputError line naming the file,
+// the feature and the field, and what was expected.
 #include <gtest/gtest.h>
+
+#include <initializer_list>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+#include "test_support.hpp"
+
+using namespace deepguide;
+using deepguide::test::ScratchDir;
+
+namespace {
+
+std::string error_of(const std::vector<std::string>& paths, const ObstacleReadOptions& options = {}) {
+  try {
+    load_obstacles(paths, options);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_error(const std::string& msg, std::initializer_list<const char*> parts) {
+  ASSERT_FALSE(msg.empty()) << "no InputError was thrown";
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
+  for (const char* part : parts) EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
+}
+
+std::string point_feature(const std::string& props, const std::string& coords = "[10.1, 54.2]") {
+  return R"({"type":"Feature","properties":{)" + props + R"(},"geometry":{"type":"Point","coordinates":)" +
+         coords + "}}";
+}
+
+std::string collection(std::initializer_list<std::string> features) {
+  std::string s = R"({"type":"FeatureCollection","features":[)";
+  bool first = true;
+  for (const auto& f : features) {
+    s += (first ? "" : ",") + f;
+    first = false;
+  }
+  return s + "]}";
+}
+
+const std::string kGood = point_feature(R"("id":"ok","semi_major_m":5,"semi_minor_m":2)");
+
+}  // namespace
+
+TEST(ObstacleErrors, MissingFile) {
+  ScratchDir dir;
+  const std::string p = dir.file("nowhere.geojson");
+  expect_error(error_of({p}), {p.c_str(), "expected an existing file"});
+}
+
+TEST(ObstacleErrors, FormatGdalCannotOpen) {
+  ScratchDir dir;
+  const std::string p = dir.write("garbage.geojson", std::string("\x89PNG\r\n\x1a\n\x00\x01 not a vector file", 30));
+  expect_error(error_of({p}), {p.c_str(), "vector file"});
+  const std::string t = dir.write("notes.txt", "just some words\nand more\n");
+  expect_error(error_of({t}), {t.c_str(), "vector file"});
+}
+
+TEST(ObstacleErrors, TruncatedGeoJson) {
+  ScratchDir dir;
+  const std::string p = dir.write("cut.geojson", collection({kGood}).substr(0, 60));
+  expect_error(error_of({p}), {p.c_str()});
+}
+
+TEST(ObstacleErrors, FeatureWithoutSemiMajor) {
+  ScratchDir dir;
+  const std::string p =
+      dir.write("o.geojson", collection({kGood, point_feature(R"("id":"w7","semi_minor_m":2)")}));
+  expect_error(error_of({p}), {p.c_str(), "feature 1", "w7", "semi_major_m", "expected"});
+}
+
+TEST(ObstacleErrors, ZeroOrNegativeAxis) {
+  ScratchDir dir;
+  const std::string zero = dir.write("z.geojson", collection({point_feature(R"("id":"z","semi_major_m":0)")}));
+  expect_error(error_of({zero}), {zero.c_str(), "feature 0", "semi_major_m", "> 0", "got 0"});
+  const std::string neg =
+      dir.write("n.geojson", collection({kGood, point_feature(R"("id":"n","semi_major_m":4,"semi_minor_m":-1)")}));
+  expect_error(error_of({neg}), {neg.c_str(), "feature 1", "semi_minor_m", "> 0", "got -1"});
+}
+
+TEST(ObstacleErrors, SemiMinorLargerThanSemiMajor) {
+  ScratchDir dir;
+  const std::string p = dir.write("m.csv", "lon,lat,id,semi_major_m,semi_minor_m\n10,54,a,5,2\n10,54.1,b,3,4\n");
+  expect_error(error_of({p}), {p.c_str(), "line 3", "'b'", "semi_minor_m", "<= semi_major_m", "got 4"});
+}
+
+TEST(ObstacleErrors, NonNumericField) {
+  ScratchDir dir;
+  const std::string p = dir.write("s.csv", "lon,lat,semi_major_m\n10,54,five\n");
+  expect_error(error_of({p}), {p.c_str(), "line 2", "semi_major_m", "a number", "'five'"});
+  const std::string inf = dir.write("i.csv", "lon,lat,semi_major_m\n10,54,inf\n");
+  expect_error(error_of({inf}), {inf.c_str(), "semi_major_m", "finite"});
+}
+
+TEST(ObstacleErrors, NanOrInfiniteCoordinates) {
+  ScratchDir dir;
+  const std::string nan = dir.write("nan.geojson", collection({point_feature(R"("semi_major_m":5)", "[NaN, 54]")}));
+  expect_error(error_of({nan}), {nan.c_str(), "feature 0", "geometry", "finite"});
+  const std::string inf =
+      dir.write("inf.geojson", collection({kGood, point_feature(R"("semi_major_m":5)", "[Infinity, 54]")}));
+  expect_error(error_of({inf}), {inf.c_str(), "feature 1", "geometry", "finite"});
+  const std::string csv = dir.write("nan.csv", "lon,lat,semi_major_m\n10,54,3\nnan,54,3\n");
+  expect_error(error_of({csv}), {csv.c_str(), "line 3", "geometry"});
+  const std::string wkt = dir.write("w.csv", "WKT,semi_major_m\n\"POINT (inf 54)\",3\n");
+  expect_error(error_of({wkt}), {wkt.c_str(), "line 2", "geometry"});
+}
+
+TEST(ObstacleErrors, CoordinatesOffTheEarth) {
+  // A CSV in UTM metres without a CRS is read as lon/lat and must not pass.
+  ScratchDir dir;
+  const std::string p = dir.write("utm.csv", "x,y,semi_major_m\n512345,6012345,3\n");
+  expect_error(error_of({p}), {p.c_str(), "line 2", "geometry", "--src-crs"});
+  // The same file with its CRS named is fine.
+  EXPECT_EQ(error_of({p}, {"", "EPSG:32632"}), "");
+}
+
+TEST(ObstacleErrors, UnknownCrsInFile) {
+  ScratchDir dir;
+  const std::string p = dir.write(
+      "crs.geojson",
+      R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::999999"}},"features":[)" +
+          kGood + "]}");
+  expect_error(error_of({p}), {p.c_str(), "field 'crs'", "expected"});
+}
+
+TEST(ObstacleErrors, UnknownCrsOptions) {
+  const std::string sample = test::source_file("data/sample_obstacles.geojson");
+  expect_error(error_of({sample}, {"EPSG:999999", ""}), {"--crs", "EPSG:999999", "expected"});
+  expect_error(error_of({sample}, {"", "EPSG:999999"}), {"--src-crs", "EPSG:999999"});
+  expect_error(error_of({sample}, {"EPSG:4326", ""}), {"--crs", "projected"});
+}
+
+TEST(ObstacleErrors, UnsupportedGeometry) {
+  ScratchDir dir;
+  const std::string p = dir.write(
+      "l.geojson",
+      collection({R"({"type":"Feature","properties":{"id":"cable"},"geometry":{"type":"LineString","coordinates":[[10,54],[10.1,54.1]]}})"}));
+  expect_error(error_of({p}), {p.c_str(), "feature 0", "cable", "geometry", "Point or Polygon", "Line String"});
+}
+
+TEST(ObstacleErrors, BothHeightAndTopDepth) {
+  ScratchDir dir;
+  const std::string p =
+      dir.write("v.geojson", collection({point_feature(R"("semi_major_m":5,"height_m":3,"top_depth_m":20)")}));
+  expect_error(error_of({p}), {p.c_str(), "height_m", "top_depth_m"});
+  const std::string neg = dir.write("h.geojson", collection({point_feature(R"("semi_major_m":5,"height_m":-3)")}));
+  expect_error(error_of({neg}), {neg.c_str(), "height_m", "> 0"});
+}
+
+TEST(ObstacleErrors, DegeneratePolygon) {
+  ScratchDir dir;
+  const std::string p = dir.write(
+      "p.geojson",
+      collection({R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10,54],[10.1,54],[10,54]]]}})"}));
+  expect_error(error_of({p}), {p.c_str(), "feature 0", "geometry"});
+}
+
+TEST(ObstacleErrors, WriteToMissingFolderOrUnknownFormat) {
+  ScratchDir dir;
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
+  try {
+    write_obstacles(dir.file("no/such/folder/o.geojson"), {}, frame);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("folder"), std::string::npos) << e.what();
+  }
+  try {
+    write_obstacles(dir.file("o.kml"), {}, frame);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(".kml"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(ObstacleErrors, HostileLongAndOddStrings) {
+  // A huge id, quotes and control characters must not break reading or messages.
+  ScratchDir dir;
+  const std::string id(100000, 'x');
+  const std::string p = dir.write("big.geojson", collection({point_feature(R"("id":")" + id + R"(\"\u0000\n","semi_major_m":-1)")}));
+  const std::string msg = error_of({p});
+  expect_error(msg, {p.c_str(), "semi_major_m", "xxx..."});
+  EXPECT_LT(msg.size(), 400u) << "the id must be cut in the message";
+}

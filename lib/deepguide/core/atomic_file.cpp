@@ -23,14 +23,8 @@ AtomicOutput::AtomicOutput(fs::path destination) : destination_(std::move(destin
     throw InputError(destination_.string() + ": expected a file path, got a folder");
   }
   static std::atomic<unsigned> counter{0};
-  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on one long "." + ... chain.
-  std::string name(1, '.');
-  name += destination_.stem().string();
-  name += ".tmp";
-  name += std::to_string(::getpid());
-  name += '-';
-  name += std::to_string(counter++);
-  name += destination_.extension().string();
+  const std::string name = "." + destination_.stem().string() + ".tmp" + std::to_string(::getpid()) +
+                           "-" + std::to_string(counter++) + destination_.extension().string();
   temp_ = dir / name;
   fs::remove_all(temp_, ec);
 }

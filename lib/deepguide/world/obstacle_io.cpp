@@ -34,6 +34,27 @@ struct GeoRecord {
   std::optional<double> top_depth_m;
 };
 
+// A feature's id or name as it may appear in a one-line message: control
+// characters escaped, long values cut.
+std::string printable(const std::string& text) {
+  constexpr std::size_t kMax = 60;
+  std::string out;
+  for (unsigned char c : text) {
+    if (out.size() >= kMax) {
+      out += "...";
+      break;
+    }
+    if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 std::string describe_feature(const OGRFeature& f, const std::string& driver, const std::string& layer,
                              bool several_layers) {
   std::string s;
@@ -47,7 +68,7 @@ std::string describe_feature(const OGRFeature& f, const std::string& driver, con
   for (const char* key : {"id", "name"}) {
     const int i = f.GetFieldIndex(key);
     if (i >= 0 && f.IsFieldSetAndNotNull(i)) {
-      s += std::string(" (") + key + " '" + f.GetFieldAsString(i) + "')";
+      s += std::string(" (") + key + " '" + printable(f.GetFieldAsString(i)) + "')";
       break;
     }
   }
@@ -56,9 +77,16 @@ std::string describe_feature(const OGRFeature& f, const std::string& driver, con
 
 // A numeric field: absent (no column, null or empty) -> nullopt; otherwise a
 // finite number or an InputError naming the field.
+// Field index by name; Shapefiles cut names to 10 characters (semi_major_m ->
+// semi_major), so the cut name is accepted too.
+int field_index(const OGRFeature& f, const std::string& name) {
+  const int i = f.GetFieldIndex(name.c_str());
+  return i >= 0 || name.size() <= 10 ? i : f.GetFieldIndex(name.substr(0, 10).c_str());
+}
+
 std::optional<double> numeric_field(const OGRFeature& f, const char* name, InputLocation where) {
   where.field = name;
-  const int i = f.GetFieldIndex(name);
+  const int i = field_index(f, name);
   if (i < 0 || !f.IsFieldSetAndNotNull(i)) return std::nullopt;
   const OGRFieldType type = f.GetFieldDefnRef(i)->GetType();
   double v = 0.0;

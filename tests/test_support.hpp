@@ -1,0 +1,75 @@
+#pragma once
+// Small helpers shared by the test suites: scratch folders, files, running the CLI.
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <sys/wait.h>
+
+namespace deepguide::test {
+
+/// A fresh folder under the system temp dir, removed at the end of the test.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() /
+            ("deepguide-test-" + std::to_string(rd()) + "-" + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  const std::filesystem::path& path() const { return path_; }
+  /// Writes `content` to NAME in the folder and returns the full path.
+  std::string write(const std::string& name, const std::string& content) const {
+    std::ofstream(path_ / name, std::ios::binary) << content;
+    return file(name);
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// Where the project's shared real data lives; empty if absent (tests then skip).
+inline std::string shared_real_data() {
+  const auto p = std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / ".." / "shared" / "data" / "real";
+  return std::filesystem::is_directory(p) ? p.lexically_normal().string() : std::string();
+}
+
+inline std::string source_file(const std::string& rel) {
+  return (std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / rel).string();
+}
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs the deepguide binary with ARGS (a shell-quoted string) and captures its output.
+inline RunResult run_cli(const std::string& args) {
+  ScratchDir tmp;
+  const std::string out = tmp.file("stdout");
+  const std::string err = tmp.file("stderr");
+  const std::string cmd = std::string("'") + DEEPGUIDE_CLI + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+}  // namespace deepguide::test
