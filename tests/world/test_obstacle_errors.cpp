@@ -55,7 +55,8 @@ TEST(ObstacleErrors, MissingFile) {
 
 TEST(ObstacleErrors, FormatGdalCannotOpen) {
   ScratchDir dir;
-  const std::string p = dir.write("garbage.geojson", std::string("\x89PNG\r\n\x1a\n\x00\x01 not a vector file", 30));
+  static const char kPngHeader[] = "\x89PNG\r\n\x1a\n\x00\x01 not a vector file";
+  const std::string p = dir.write("garbage.geojson", std::string(kPngHeader, sizeof kPngHeader - 1));
   expect_error(error_of({p}), {p.c_str(), "vector file"});
   const std::string t = dir.write("notes.txt", "just some words\nand more\n");
   expect_error(error_of({t}), {t.c_str(), "vector file"});
