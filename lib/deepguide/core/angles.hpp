@@ -28,7 +28,9 @@ constexpr double rad_to_deg(double rad) { return rad * 180.0 / kPi; }
 inline double wrap_pi(double a) {
   double w = std::fmod(a + kPi, 2.0 * kPi);
   if (w < 0.0) w += 2.0 * kPi;
-  return w - kPi;
+  // -tiny + 2 pi can round up to 2 pi, which would give +pi.
+  const double r = w - kPi;
+  return r >= kPi ? -kPi : r;
 }
 
 /// Wraps an angle in radians to [0, 2 pi).

@@ -5,30 +5,35 @@
 namespace deepguide {
 namespace {
 
-// Root s of G(s) = (r0 z0 / (s + r0))^2 + (z1 / (s + 1))^2 - 1, with r0 = (e0/e1)^2,
-// z_i = y_i / e_i and s = t / e1^2. G is decreasing; the root is bracketed by
-// [z1 - 1, |(r0 z0, z1)| - 1] (or 0 as the upper end for points inside).
+// Root u of G(u) = (r0 z0 / (u + r0 - 1))^2 + (z1 / u)^2 - 1, with r0 = (e0/e1)^2,
+// z_i = y_i / e_i and u = t / e1^2 + 1 (Eberly's s + 1). G is decreasing on
+// u > 0; the root is bracketed by [z1, |(r0 z0, z1)|] (or 1 as the upper end
+// for points inside). We solve for u rather than s because for points inside
+// near the major axis (and near the centre) the root sits at u ~ z1 -> 0, where
+// s = u - 1 would round to -1 and x1 = y1 / u lose every digit; doubles near 0
+// keep full relative precision.
 double bisect_root(double r0, double z0, double z1, double g) {
   const double n0 = r0 * z0;
-  double s0 = z1 - 1.0;
-  double s1 = g < 0.0 ? 0.0 : std::hypot(n0, z1) - 1.0;
-  double s = 0.0;
+  const double rm1 = r0 - 1.0;
+  double u0 = z1;
+  double u1 = g < 0.0 ? 1.0 : std::hypot(n0, z1);
+  double u = u0;
   // Each step halves the bracket; 1100 steps exhaust every double in it.
   for (int i = 0; i < 1100; ++i) {
-    s = 0.5 * (s0 + s1);
-    if (s == s0 || s == s1) break;
-    const double ratio0 = n0 / (s + r0);
-    const double ratio1 = z1 / (s + 1.0);
-    const double gs = ratio0 * ratio0 + ratio1 * ratio1 - 1.0;
-    if (gs > 0.0) {
-      s0 = s;
-    } else if (gs < 0.0) {
-      s1 = s;
+    u = 0.5 * (u0 + u1);
+    if (u == u0 || u == u1) break;
+    const double ratio0 = n0 / (u + rm1);
+    const double ratio1 = z1 / u;
+    const double gu = ratio0 * ratio0 + ratio1 * ratio1 - 1.0;
+    if (gu > 0.0) {
+      u0 = u;
+    } else if (gu < 0.0) {
+      u1 = u;
     } else {
       break;
     }
   }
-  return s;
+  return u;
 }
 
 // First quadrant, e0 >= e1 > 0, y0, y1 >= 0. Returns the closest point (x0, x1).
@@ -40,8 +45,9 @@ Vec2 closest_in_first_quadrant(double e0, double e1, double y0, double y1) {
       const double g = z0 * z0 + z1 * z1 - 1.0;
       if (g == 0.0) return {y0, y1};
       const double r0 = (e0 / e1) * (e0 / e1);
-      const double s = bisect_root(r0, z0, z1, g);
-      return {r0 * y0 / (s + r0), y1 / (s + 1.0)};
+      const double u = bisect_root(r0, z0, z1, g);
+      // r0 - 1 first: u + r0 would round u away when u << 1.
+      return {r0 * y0 / (u + (r0 - 1.0)), y1 / u};
     }
     return {0.0, e1};
   }

@@ -4,7 +4,6 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <numbers>
 
 namespace deepguide {
@@ -24,24 +23,37 @@ std::optional<PointTangents> tangent_points(const Ellipse& e, const Vec2& p) {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr int kSamples = 720;
+// Coarse sampling finds both signs for all but nearly touching or very
+// elongated pairs; only those pay for the dense pass and the polish.
+constexpr int kCoarseSamples = 48;
+constexpr int kDenseSamples = 720;
+
+struct Extremes {
+  double phi_neg, g_neg, phi_pos, g_pos, step;
+};
+
+template <class G>
+Extremes sample_extremes(const G& g, int samples) {
+  Extremes x{0.0, g(0.0), 0.0, 0.0, kTwoPi / samples};
+  x.g_pos = x.g_neg;
+  for (int k = 1; k < samples; ++k) {
+    const double phi = x.step * k;
+    const double v = g(phi);
+    if (v < x.g_neg) x.g_neg = v, x.phi_neg = phi;
+    if (v > x.g_pos) x.g_pos = v, x.phi_pos = phi;
+  }
+  return x;
+}
 
 // Finds the two roots of a smooth 2-pi-periodic function known to have
 // exactly two simple roots, or returns false when it has no negative or no
 // positive value (then the roots do not exist or coincide).
-bool two_roots(const std::function<double(double)>& g, double& root_a, double& root_b) {
-  int imin = 0;
-  int imax = 0;
-  double gmin = g(0.0);
-  double gmax = gmin;
-  for (int k = 1; k < kSamples; ++k) {
-    const double v = g(kTwoPi * k / kSamples);
-    if (v < gmin) gmin = v, imin = k;
-    if (v > gmax) gmax = v, imax = k;
-  }
-  const double step = kTwoPi / kSamples;
-  double phi_neg = imin * step;
-  double phi_pos = imax * step;
+template <class G>
+bool two_roots(const G& g, double& root_a, double& root_b) {
+  Extremes x = sample_extremes(g, kCoarseSamples);
+  if (!(x.g_neg < 0.0 && x.g_pos > 0.0)) x = sample_extremes(g, kDenseSamples);
+  double phi_neg = x.phi_neg, gmin = x.g_neg, phi_pos = x.phi_pos, gmax = x.g_pos;
+  const double step = x.step;
   // A narrow sign window can fall between samples (nearly touching ellipses):
   // polish the extremum before giving up.
   if (gmin >= 0.0) {
@@ -49,7 +61,7 @@ bool two_roots(const std::function<double(double)>& g, double& root_a, double& r
     phi_neg = r.first, gmin = r.second;
   }
   if (gmax <= 0.0) {
-    auto neg = [&](double x) { return -g(x); };
+    auto neg = [&](double t) { return -g(t); };
     auto r = boost::math::tools::brent_find_minima(neg, phi_pos - step, phi_pos + step, 52);
     phi_pos = r.first, gmax = -r.second;
   }
@@ -75,13 +87,18 @@ Vec2 unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
 
 std::vector<CommonTangent> common_tangents(const Ellipse& e1, const Ellipse& e2) {
   const Vec2 dc = e1.center - e2.center;
+  // Centred support functions h_i(n) = sqrt(n^T A_i n), with the shape matrices
+  // computed once (this runs ~150 times per pair).
+  const Eigen::Matrix2d A1 = e1.shape_matrix();
+  const Eigen::Matrix2d A2 = e2.shape_matrix();
+  auto h = [](const Eigen::Matrix2d& A, const Vec2& n) { return std::sqrt(n.dot(A * n)); };
   auto g_outer = [&](double phi) {
     const Vec2 n = unit(phi);
-    return n.dot(dc) + (e1.support(n) - n.dot(e1.center)) - (e2.support(n) - n.dot(e2.center));
+    return n.dot(dc) + h(A1, n) - h(A2, n);
   };
   auto g_inner = [&](double phi) {
     const Vec2 n = unit(phi);
-    return n.dot(dc) + (e1.support(n) - n.dot(e1.center)) + (e2.support(-n) + n.dot(e2.center));
+    return n.dot(dc) + h(A1, n) + h(A2, n);
   };
   double o1 = 0, o2 = 0, i1 = 0, i2 = 0;
   if (!two_roots(g_inner, i1, i2) || !two_roots(g_outer, o1, o2)) return {};
