@@ -178,12 +178,10 @@ TEST(Angles, WrapPiBoundaries) {
   EXPECT_NEAR(wrap_pi(-100.0), -100.0 + 32.0 * pi, 1e-13);
 }
 
-// LIBRARY BUG (core/angles.hpp, wrap_pi): for the double just below -pi,
-// wrap_pi(nextafter(-pi, -inf)) returns +pi, outside the documented [-pi, pi).
-// fmod(a + pi, 2 pi) = -4.4e-16, and -4.4e-16 + 2 pi rounds to 2 pi, so the result
-// is 2 pi - pi = pi. wrap_two_pi and wrap_360 guard this rounding case
-// (`w >= 2 pi ? 0 : w`); wrap_pi does not. Expected: a value in [-pi, pi)
-// (pi - 4.4e-16 or -pi); got: +pi.
+// Regression (core/angles.hpp, wrap_pi): for the double just below -pi,
+// fmod(a + pi, 2 pi) = -4.4e-16 and -4.4e-16 + 2 pi rounds to 2 pi, so a plain
+// `w - pi` returns +pi, outside the documented [-pi, pi). The version without a
+// guard for this rounding case (as wrap_two_pi and wrap_360 have) failed here.
 TEST(Angles, WrapPiRangeJustBelowMinusPi) {
   const double pi = std::numbers::pi;
   const double a = std::nextafter(-pi, -std::numeric_limits<double>::infinity());
