@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "test_support.hpp"
 
@@ -117,3 +118,57 @@ TEST(Cli, FailedConvertLeavesNoOutputAndKeepsAnExistingOne) {
   // Only the two files we wrote are there: no temporary leftovers.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2);
 }
+
+// Every bad-input class of the foundation issue, through the binary: exit 1,
+// one line on stderr naming the file (and the feature and field where there is one).
+struct BadInput {
+  const char* name;
+  const char* file;
+  const char* content;  // nullptr: the file does not exist
+  std::vector<const char*> expected;
+  const char* options = "";
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, ExitsOneWithOneLine) {
+  const BadInput& c = GetParam();
+  ScratchDir dir;
+  const std::string path = c.content ? dir.write(c.file, c.content) : dir.file(c.file);
+  const auto r = run_cli(std::string("obstacles info ") + c.options + " '" + path + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("deepguide: error: ", 0), 0u) << r.err;
+  if (std::string(c.options).empty()) {
+    EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
+  }
+  for (const char* part : c.expected) EXPECT_NE(r.err.find(part), std::string::npos) << part << " in " << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+#define DG_POINT(props, coords) \
+  R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{)" props R"(},"geometry":{"type":"Point","coordinates":)" coords "}}]}"
+
+INSTANTIATE_TEST_SUITE_P(
+    Foundation, CliBadInput,
+    ::testing::Values(
+        BadInput{"missing_file", "absent.geojson", nullptr, {"expected an existing file"}},
+        BadInput{"not_a_vector_file", "x.geojson", "this is not json {", {"vector file"}},
+        BadInput{"no_semi_major", "a.geojson", DG_POINT(R"("id":"k","semi_minor_m":2)", "[10,54]"),
+                 {"feature 0 (id 'k')", "field 'semi_major_m'"}},
+        BadInput{"zero_axis", "z.geojson", DG_POINT(R"("semi_major_m":0)", "[10,54]"),
+                 {"feature 0", "field 'semi_major_m'", "> 0"}},
+        BadInput{"negative_axis", "n.csv", "lon,lat,semi_major_m,semi_minor_m\n10,54,5,-1\n",
+                 {"line 2", "field 'semi_minor_m'", "> 0"}},
+        BadInput{"minor_above_major", "m.csv", "lon,lat,semi_major_m,semi_minor_m\n10,54,5,6\n",
+                 {"line 2", "field 'semi_minor_m'", "<= semi_major_m"}},
+        BadInput{"nan_coordinate", "nan.geojson", DG_POINT(R"("semi_major_m":3)", "[NaN,54]"),
+                 {"feature 0", "field 'geometry'", "finite"}},
+        BadInput{"infinite_coordinate", "inf.geojson", DG_POINT(R"("semi_major_m":3)", "[10,Infinity]"),
+                 {"feature 0", "field 'geometry'", "finite"}},
+        BadInput{"unknown_crs_in_file", "crs.geojson",
+                 R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::999999"}},"features":[]})",
+                 {"field 'crs'"}},
+        BadInput{"unknown_crs_option", "ok.geojson", DG_POINT(R"("semi_major_m":3)", "[10,54]"),
+                 {"--crs", "EPSG:999999"}, "--crs EPSG:999999"}),
+    [](const auto& info) { return std::string(info.param.name); });
