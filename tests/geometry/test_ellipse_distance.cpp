@@ -1,12 +1,13 @@
 // Point-to-ellipse distance (geometry/ellipse_distance.hpp).
 //
-// The reference is computed here, without the library's distance code or the
-// Ellipse member functions: the boundary x(t) = c + R(theta) diag(a, b) (cos t, sin t)
-// is sampled at 20000 parameters, every discrete local minimum of |p - x(t)|^2
-// (the best few) is refined by golden-section search on the bracketing sample
-// interval and polished with safeguarded Newton steps on d/dt |p - x(t)|^2 = 0,
-// and the smallest refined distance wins. Inside/outside comes from the implicit
-// equation (local x / a)^2 + (local y / b)^2 < 1, also computed here.
+// The reference (reference_ellipse.hpp) is computed without the library's distance
+// code or the Ellipse member functions: the boundary
+// x(t) = c + R(theta) diag(a, b) (cos t, sin t) is sampled at 20000 parameters,
+// every discrete local minimum of |p - x(t)|^2 (the best few) is refined by
+// golden-section search on the bracketing sample interval and polished with
+// safeguarded Newton steps on d/dt |p - x(t)|^2 = 0, and the smallest refined
+// distance wins. Inside/outside comes from the implicit equation
+// (local x / a)^2 + (local y / b)^2 < 1, also from that header.
 //
 // Hand-derived cases (axis-aligned a = 5, b = 3 unless stated):
 //   centre -> closest (0, +-3), distance b = 3;  (10, 0) -> 5;  (0, 10) -> 7;
@@ -18,7 +19,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
@@ -27,10 +27,10 @@
 #include <string>
 #include <numbers>
 #include <random>
-#include <vector>
 
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
+#include "reference_ellipse.hpp"
 
 using namespace deepguide;
 
@@ -38,109 +38,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// ---- Independent reference -------------------------------------------------
-
-// The ellipse frame, from (c, a, b, theta) only.
-struct Frame {
-  Vec2 c;
-  double a, b;
-  Vec2 u;  // major axis
-  Vec2 v;  // minor axis
-  explicit Frame(const Ellipse& e)
-      : c(e.center), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
-        v(-std::sin(e.theta), std::cos(e.theta)) {}
-  Vec2 point(double t) const { return c + a * std::cos(t) * u + b * std::sin(t) * v; }
-  Vec2 d1(double t) const { return -a * std::sin(t) * u + b * std::cos(t) * v; }
-  Vec2 d2(double t) const { return -a * std::cos(t) * u - b * std::sin(t) * v; }
-  Vec2 local_to_world(double x, double y) const { return c + x * u + y * v; }
-  double implicit(const Vec2& p) const {
-    const Vec2 d = p - c;
-    const double x = d.dot(u) / a;
-    const double y = d.dot(v) / b;
-    return x * x + y * y;
-  }
-};
-
-struct RefResult {
-  double distance;
-  double t;
-};
-
-constexpr int kSamples = 20000;
-
-const std::vector<std::array<double, 2>>& cos_sin_table() {
-  static const std::vector<std::array<double, 2>> table = [] {
-    std::vector<std::array<double, 2>> tab(kSamples);
-    for (int k = 0; k < kSamples; ++k) {
-      const double t = 2.0 * kPi * k / kSamples;
-      tab[k] = {std::cos(t), std::sin(t)};
-    }
-    return tab;
-  }();
-  return table;
-}
-
-// Minimises f(t) = |p - x(t)|^2 on [lo, hi] (golden section, then Newton polish).
-double refine_min(const Frame& f, const Vec2& p, double lo, double hi) {
-  auto fx = [&](double t) { return (f.point(t) - p).squaredNorm(); };
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = hi - g * (hi - lo);
-  double x2 = lo + g * (hi - lo);
-  double f1 = fx(x1);
-  double f2 = fx(x2);
-  for (int i = 0; i < 200 && hi - lo > 1e-15 * (1.0 + std::abs(lo)); ++i) {
-    if (f1 <= f2) {
-      hi = x2, x2 = x1, f2 = f1;
-      x1 = hi - g * (hi - lo), f1 = fx(x1);
-    } else {
-      lo = x1, x1 = x2, f1 = f2;
-      x2 = lo + g * (hi - lo), f2 = fx(x2);
-    }
-  }
-  double t = f1 <= f2 ? x1 : x2;
-  double ft = std::min(f1, f2);
-  // Newton on f'(t) = 2 (x - p).x' = 0; keep a step only if it does not increase f.
-  for (int i = 0; i < 8; ++i) {
-    const Vec2 r = f.point(t) - p;
-    const double g1 = r.dot(f.d1(t));
-    const double g2 = f.d1(t).squaredNorm() + r.dot(f.d2(t));
-    if (!(g2 > 0.0)) break;
-    const double tn = t - g1 / g2;
-    if (!(std::abs(tn - t) < 1e-6)) break;
-    const double fn = fx(tn);
-    if (!(fn <= ft)) break;
-    t = tn, ft = fn;
-  }
-  return t;
-}
-
-RefResult reference_distance(const Ellipse& e, const Vec2& p) {
-  const Frame f(e);
-  const auto& cs = cos_sin_table();
-  std::vector<double> d2(kSamples);
-  for (int k = 0; k < kSamples; ++k) {
-    const Vec2 x = f.c + f.a * cs[k][0] * f.u + f.b * cs[k][1] * f.v;
-    d2[k] = (x - p).squaredNorm();
-  }
-  // Discrete local minima (cyclic), best few first.
-  std::vector<int> minima;
-  for (int k = 0; k < kSamples; ++k) {
-    const double prev = d2[(k + kSamples - 1) % kSamples];
-    const double next = d2[(k + 1) % kSamples];
-    if (d2[k] <= prev && d2[k] <= next) minima.push_back(k);
-  }
-  std::sort(minima.begin(), minima.end(), [&](int i, int j) { return d2[i] < d2[j]; });
-  if (minima.size() > 6) minima.resize(6);
-  RefResult best{std::sqrt(d2[minima.front()]), 2.0 * kPi * minima.front() / kSamples};
-  const double h = 2.0 * kPi / kSamples;
-  for (int k : minima) {
-    const double tk = 2.0 * kPi * k / kSamples;
-    const double t = refine_min(f, p, tk - h, tk + h);
-    const double d = (f.point(t) - p).norm();
-    if (d < best.distance) best = {d, t};
-  }
-  return best;
-}
+// The independent reference (Frame, dense-sampling reference_distance) is in
+// reference_ellipse.hpp.
+using test_ref::Frame;
+using test_ref::RefResult;
+using test_ref::reference_distance;
 
 // ---- Case generation -------------------------------------------------------
 //

@@ -21,6 +21,7 @@
 
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/ellipse_segment.hpp"
+#include "reference_ellipse.hpp"
 
 using namespace deepguide;
 
@@ -28,22 +29,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The ellipse frame, from (c, a, b, theta) only.
-struct Frame {
-  Vec2 c;
-  double a, b;
-  Vec2 u, v;
-  explicit Frame(const Ellipse& e)
-      : c(e.center), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
-        v(-std::sin(e.theta), std::cos(e.theta)) {}
-  double implicit(const Vec2& p) const {
-    const Vec2 d = p - c;
-    const double x = d.dot(u) / a;
-    const double y = d.dot(v) / b;
-    return x * x + y * y;
-  }
-  Vec2 from_unit(double x, double y) const { return c + a * x * u + b * y * v; }
-};
+// The ellipse frame, from (c, a, b, theta) only (reference_ellipse.hpp).
+using test_ref::Frame;
 
 Vec2 lerp(const Vec2& p0, const Vec2& p1, double t) { return p0 + t * (p1 - p0); }
 

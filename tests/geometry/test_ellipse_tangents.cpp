@@ -29,6 +29,7 @@
 
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/ellipse_tangents.hpp"
+#include "reference_ellipse.hpp"
 
 using namespace deepguide;
 
@@ -36,28 +37,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct Frame {
-  Vec2 c;
-  double a, b;
-  Vec2 u, v;
-  explicit Frame(const Ellipse& e)
-      : c(e.center), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
-        v(-std::sin(e.theta), std::cos(e.theta)) {}
-  double implicit(const Vec2& p) const {
-    const Vec2 d = p - c;
-    const double x = d.dot(u) / a;
-    const double y = d.dot(v) / b;
-    return x * x + y * y;
-  }
-  // Outward unit normal at (or near) a boundary point: the implicit gradient.
-  Vec2 normal(const Vec2& p) const {
-    const Vec2 d = p - c;
-    return (d.dot(u) / (a * a) * u + d.dot(v) / (b * b) * v).normalized();
-  }
-  Vec2 point(double t) const { return c + a * std::cos(t) * u + b * std::sin(t) * v; }
-  // max over the ellipse of n.(x - c), for a unit n.
-  double support_centered(const Vec2& n) const { return std::hypot(a * n.dot(u), b * n.dot(v)); }
-};
+// The ellipse frame, from (c, a, b, theta) only (reference_ellipse.hpp).
+using test_ref::Frame;
 
 double cross(const Vec2& p, const Vec2& q) { return p.x() * q.y() - p.y() * q.x(); }
 

@@ -1,12 +1,13 @@
 // The safety zone of an ellipse and its enclosing polygon (geometry/safety_zone.hpp).
 //
-// Independent references, all computed here from (c, a, b, theta, d):
+// Independent references, all computed in the tests (here and in reference_ellipse.hpp)
+// from (c, a, b, theta, d):
 //  * the zone boundary is the offset curve x(t) + d n(t), with x(t) = c + R diag(a, b)
 //    (cos t, sin t) and n(t) the outward unit normal (the implicit gradient
 //    R (cos t / a, sin t / b), normalised), sampled at 6000 parameters;
 //  * the distance of a point to the ellipse by dense sampling of x(t) (20000 samples)
-//    and golden-section refinement around the best discrete minima, as in
-//    test_ellipse_distance.cpp (which validates that reference);
+//    and golden-section + Newton refinement around the best discrete minima: the
+//    reference of reference_ellipse.hpp, validated by test_ellipse_distance.cpp;
 //  * the zone's support value h(n) = n.c + sqrt((a n.u)^2 + (b n.v)^2) + d.
 // The polygon (counter-clockwise per the header) must contain every offset-curve sample
 // (each edge's half-plane, 1e-9 tolerance), keep each vertex within [d, d + tol] of the
@@ -14,7 +15,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <boost/geometry/algorithms/area.hpp>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +26,7 @@
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/geometry/safety_zone.hpp"
+#include "reference_ellipse.hpp"
 
 using namespace deepguide;
 
@@ -33,77 +34,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct Frame {
-  Vec2 c;
-  double a, b;
-  Vec2 u, v;
-  explicit Frame(const Ellipse& e)
-      : c(e.center), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
-        v(-std::sin(e.theta), std::cos(e.theta)) {}
-  Vec2 point(double t) const { return c + a * std::cos(t) * u + b * std::sin(t) * v; }
-  Vec2 normal(double t) const {
-    return (std::cos(t) / a * u + std::sin(t) / b * v).normalized();
-  }
-  Vec2 offset_point(double t, double d) const { return point(t) + d * normal(t); }
-  double implicit(const Vec2& p) const {
-    const Vec2 q = p - c;
-    const double x = q.dot(u) / a;
-    const double y = q.dot(v) / b;
-    return x * x + y * y;
-  }
-  double zone_support(const Vec2& n, double d) const {
-    return n.dot(c) + std::hypot(a * n.dot(u), b * n.dot(v)) + d;
-  }
-};
-
-// Distance from p to the ellipse boundary: dense sampling + golden-section refinement.
-constexpr int kSamples = 20000;
-
-const std::vector<std::array<double, 2>>& cos_sin_table() {
-  static const std::vector<std::array<double, 2>> table = [] {
-    std::vector<std::array<double, 2>> tab(kSamples);
-    for (int k = 0; k < kSamples; ++k) {
-      tab[k] = {std::cos(2.0 * kPi * k / kSamples), std::sin(2.0 * kPi * k / kSamples)};
-    }
-    return tab;
-  }();
-  return table;
-}
-
-double reference_distance(const Frame& f, const Vec2& p) {
-  const double h = 2.0 * kPi / kSamples;
-  const auto& cs = cos_sin_table();
-  std::vector<double> d2(kSamples);
-  for (int k = 0; k < kSamples; ++k) {
-    d2[k] = (f.c + f.a * cs[k][0] * f.u + f.b * cs[k][1] * f.v - p).squaredNorm();
-  }
-  std::vector<int> minima;
-  for (int k = 0; k < kSamples; ++k) {
-    if (d2[k] <= d2[(k + kSamples - 1) % kSamples] && d2[k] <= d2[(k + 1) % kSamples]) {
-      minima.push_back(k);
-    }
-  }
-  std::sort(minima.begin(), minima.end(), [&](int i, int j) { return d2[i] < d2[j]; });
-  if (minima.size() > 6) minima.resize(6);
-  double best = std::sqrt(d2[minima.front()]);
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  for (int k : minima) {
-    double lo = (k - 1) * h;
-    double hi = (k + 1) * h;
-    auto fx = [&](double t) { return (f.point(t) - p).squaredNorm(); };
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = fx(x1), f2 = fx(x2);
-    for (int i = 0; i < 200 && hi - lo > 1e-15 * (1.0 + std::abs(lo)); ++i) {
-      if (f1 <= f2) {
-        hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = fx(x1);
-      } else {
-        lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = fx(x2);
-      }
-    }
-    best = std::min(best, std::sqrt(std::min(f1, f2)));
-  }
-  return best;
-}
+// The ellipse frame and the dense-sampling distance reference (reference_ellipse.hpp).
+using test_ref::Frame;
+using test_ref::reference_distance;
 
 double cross(const Vec2& p, const Vec2& q) { return p.x() * q.y() - p.y() * q.x(); }
 
@@ -167,7 +100,7 @@ PolygonReport check_polygon(const SafetyZone& zone, const std::vector<Vec2>& pol
   rep.min_excess = 1e300;
   for (std::size_t i = 0; i < n; ++i) {
     EXPECT_GT(f.implicit(poly[i]), 1.0) << "vertex inside the ellipse";
-    const double excess = reference_distance(f, poly[i]) - d;
+    const double excess = reference_distance(f, poly[i]).distance - d;
     rep.max_excess = std::max(rep.max_excess, excess);
     rep.min_excess = std::min(rep.min_excess, excess);
     EXPECT_LE(excess, tol + 1e-9) << "vertex " << i << " too far out";
@@ -280,7 +213,8 @@ TEST(SafetyZonePolygon, GrownEllipseIsNotEnoughButThePolygonIs) {
   const Frame g(grown);
   double min_clearance = 1e300;
   for (int k = 0; k < 2000; ++k) {
-    min_clearance = std::min(min_clearance, reference_distance(f, g.point(2.0 * kPi * k / 2000)));
+    const double dist = reference_distance(f, g.point(2.0 * kPi * k / 2000)).distance;
+    min_clearance = std::min(min_clearance, dist);
   }
   EXPECT_LT(min_clearance, d);
   EXPECT_NEAR(min_clearance, 4.352, 0.005);
