@@ -214,32 +214,37 @@ TEST(ObstacleRead, CsvWithWktColumnAndProjectedSourceCrs) {
   EXPECT_EQ(l.obstacles.polygons[0].id, "b");
 }
 
-TEST(ObstacleRead, ShapefileInAProjectedCrsWithTruncatedFieldNames) {
-  // A Shapefile in UTM 32N written with OGR. Shapefile field names are at most
-  // 10 characters, so semi_major_m arrives as semi_major; the reader accepts that.
+// Writes one Point feature at (x, y) of EPSG:32632 with the given real fields,
+// through OGR directly (not our writer), into a new file of the named driver.
+void write_utm_point(const char* driver, const std::string& path,
+                     const std::vector<std::pair<const char*, double>>& fields, double x, double y) {
   GDALAllRegister();
+  GDALDriver* drv = GetGDALDriverManager()->GetDriverByName(driver);
+  ASSERT_NE(drv, nullptr);
+  GDALDatasetUniquePtr ds(drv->Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+  ASSERT_TRUE(ds);
+  OGRSpatialReference srs;
+  srs.importFromEPSG(32632);
+  OGRLayer* layer = ds->CreateLayer("contacts", &srs, wkbPoint, nullptr);
+  for (const auto& [name, value] : fields) {
+    OGRFieldDefn fd(name, OFTReal);
+    ASSERT_EQ(layer->CreateField(&fd), OGRERR_NONE);
+  }
+  OGRFeature f(layer->GetLayerDefn());
+  for (const auto& [name, value] : fields) f.SetField(name, value);
+  OGRPoint p(x, y);
+  f.SetGeometry(&p);
+  ASSERT_EQ(layer->CreateFeature(&f), OGRERR_NONE);
+}
+
+TEST(ObstacleRead, ShapefileInAProjectedCrsWithTruncatedFieldNames) {
+  // Shapefile field names are at most 10 characters, so semi_major_m arrives
+  // as semi_major; the reader accepts that.
   ScratchDir dir;
   const std::string shp = dir.file("hazards.shp");
-  {
-    GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("ESRI Shapefile");
-    ASSERT_NE(drv, nullptr);
-    GDALDatasetUniquePtr ds(drv->Create(shp.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
-    OGRSpatialReference srs;
-    srs.importFromEPSG(32632);
-    OGRLayer* layer = ds->CreateLayer("hazards", &srs, wkbPoint, nullptr);
-    for (const char* name : {"semi_major", "semi_minor", "orientatio", "top_depth_"}) {
-      OGRFieldDefn fd(name, OFTReal);
-      ASSERT_EQ(layer->CreateField(&fd), OGRERR_NONE);
-    }
-    OGRFeature f(layer->GetLayerDefn());
-    f.SetField("semi_major", 30.0);
-    f.SetField("semi_minor", 12.0);
-    f.SetField("orientatio", 90.0);
-    f.SetField("top_depth_", 17.0);
-    OGRPoint p(512345.0, 6012345.0);
-    f.SetGeometry(&p);
-    ASSERT_EQ(layer->CreateFeature(&f), OGRERR_NONE);
-  }
+  write_utm_point("ESRI Shapefile", shp,
+                  {{"semi_major", 30.0}, {"semi_minor", 12.0}, {"orientatio", 90.0}, {"top_depth_", 17.0}},
+                  512345.0, 6012345.0);
   const LoadedObstacles l = load_obstacles({shp}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   const EllipticCylinder& c = l.obstacles.ellipses[0];
@@ -253,31 +258,16 @@ TEST(ObstacleRead, ShapefileInAProjectedCrsWithTruncatedFieldNames) {
 }
 
 TEST(ObstacleRead, GeoPackageInAProjectedCrsWithCorrectFields) {
-  GDALAllRegister();
   ScratchDir dir;
   const std::string gpkg = dir.file("store.gpkg");
-  {
-    GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GPKG");
-    GDALDatasetUniquePtr ds(drv->Create(gpkg.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
-    OGRSpatialReference srs;
-    srs.importFromEPSG(32632);
-    OGRLayer* layer = ds->CreateLayer("contacts", &srs, wkbPoint, nullptr);
-    for (const char* name : {"semi_major_m", "semi_minor_m", "orientation_deg"}) {
-      OGRFieldDefn fd(name, OFTReal);
-      layer->CreateField(&fd);
-    }
-    OGRFeature f(layer->GetLayerDefn());
-    f.SetField("semi_major_m", 30.0);
-    f.SetField("semi_minor_m", 12.0);
-    f.SetField("orientation_deg", 45.0);
-    OGRPoint p(512345.0, 6012345.0);
-    f.SetGeometry(&p);
-    ASSERT_EQ(layer->CreateFeature(&f), OGRERR_NONE);
-  }
+  write_utm_point("GPKG", gpkg, {{"semi_major_m", 30.0}, {"semi_minor_m", 12.0}, {"orientation_deg", 45.0}},
+                  512345.0, 6012345.0);
   const LoadedObstacles l = load_obstacles({gpkg}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   EXPECT_NEAR(l.obstacles.ellipses[0].footprint.center.x(), 512345.0, 1e-6);
   EXPECT_NEAR(l.obstacles.ellipses[0].footprint.center.y(), 6012345.0, 1e-6);
+  EXPECT_NEAR(l.frame.local_to_heading(l.obstacles.ellipses[0].footprint.theta,
+                                       l.obstacles.ellipses[0].footprint.center), 45.0, 1e-9);
   EXPECT_EQ(l.sources[0].crs, "EPSG:32632");
   EXPECT_EQ(l.sources[0].driver, "GPKG");
 }
