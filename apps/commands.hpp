@@ -15,5 +15,7 @@ void add_frame_options(CLI::App& cmd, FrameOptions& options);
 
 void register_obstacles_info(CLI::App& obstacles);
 void register_obstacles_convert(CLI::App& obstacles);
+void register_plan(CLI::App& app);
+void register_check_route(CLI::App& check);
 
 }  // namespace deepguide::app

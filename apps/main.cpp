@@ -30,6 +30,10 @@ int main(int argc, char** argv) {
   obstacles->require_subcommand(1);
   app::register_obstacles_info(*obstacles);
   app::register_obstacles_convert(*obstacles);
+  app::register_plan(app);
+  CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
+  check->require_subcommand(1);
+  app::register_check_route(*check);
 
   try {
     app.parse(argc, argv);

@@ -11,9 +11,9 @@
 
 #include <Eigen/Core>
 
-namespace deepguide {
+#include "deepguide/geometry/vec2.hpp"
 
-using Vec2 = Eigen::Vector2d;
+namespace deepguide {
 
 struct Ellipse {
   Vec2 center{0.0, 0.0};

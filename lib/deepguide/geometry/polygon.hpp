@@ -10,6 +10,8 @@
 #include <boost/geometry/geometries/box.hpp>
 #include <boost/geometry/strategies/strategies.hpp>
 
+#include "deepguide/geometry/vec2.hpp"
+
 namespace deepguide {
 
 using BgPoint = boost::geometry::model::d2::point_xy<double>;
@@ -17,7 +19,7 @@ using BgPolygon = boost::geometry::model::polygon<BgPoint>;
 using BgMultiPolygon = boost::geometry::model::multi_polygon<BgPolygon>;
 using BgBox = boost::geometry::model::box<BgPoint>;
 
-inline BgPoint to_bg(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
-inline Eigen::Vector2d to_eigen(const BgPoint& p) { return {p.x(), p.y()}; }
+inline BgPoint to_bg(const Vec2& p) { return {p.x(), p.y()}; }
+inline Vec2 to_eigen(const BgPoint& p) { return {p.x(), p.y()}; }
 
 }  // namespace deepguide

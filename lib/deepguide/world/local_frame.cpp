@@ -1,5 +1,6 @@
 #include "deepguide/world/local_frame.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <mutex>
 
@@ -98,6 +99,32 @@ double LocalFrame::heading_to_local(double heading_deg, const Eigen::Vector2d& x
 
 double LocalFrame::local_to_heading(double math_rad, const Eigen::Vector2d& xy) const {
   return wrap_360(rad_to_deg(true_north_angle(xy) - math_rad));
+}
+
+Eigen::Vector2d parse_position(const std::string& text, const std::string& what, const LocalFrame& frame,
+                               bool frame_coordinates) {
+  const std::string expected = frame_coordinates ? "x,y in " + frame.id() + " metres" : "lon,lat in degrees";
+  const auto comma = text.find(',');
+  double v[2] = {0.0, 0.0};
+  bool ok = comma != std::string::npos && text.find(',', comma + 1) == std::string::npos;
+  for (int i = 0; ok && i < 2; ++i) {
+    const std::string part = i == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    const char* first = part.data();
+    const char* last = part.data() + part.size();
+    while (first < last && *first == ' ') ++first;
+    if (first < last && *first == '+') ++first;
+    auto [ptr, ec] = std::from_chars(first, last, v[i]);
+    ok = ec == std::errc() && ptr == last && std::isfinite(v[i]);
+  }
+  if (!ok) throw InputError(what + ": expected " + expected + ", got '" + text + "'");
+  if (frame_coordinates) return {v[0], v[1]};
+  if (std::abs(v[1]) > 90.0 || std::abs(v[0]) > 180.0) {
+    throw InputError(what + ": expected lon,lat in degrees within +-180,+-90, got '" + text +
+                     "' (give --crs to use projected coordinates)");
+  }
+  const Eigen::Vector2d xy = frame.from_lonlat(v[0], v[1]);
+  if (!xy.allFinite()) throw InputError(what + ": expected a position inside the local frame " + frame.id());
+  return xy;
 }
 
 const std::string& LocalFrame::id() const { return impl_->id; }

@@ -51,6 +51,12 @@ class LocalFrame {
   std::shared_ptr<const Impl> impl_;
 };
 
+/// Parses a position "A,B" given on the command line as `what` (e.g. "--from"):
+/// lon,lat in degrees, or, when `frame_coordinates`, x,y in the frame's CRS.
+/// Throws InputError for anything else (not two numbers, NaN, lat beyond 90).
+Eigen::Vector2d parse_position(const std::string& text, const std::string& what, const LocalFrame& frame,
+                               bool frame_coordinates);
+
 /// EPSG code of the WGS 84 UTM zone containing the point (326zz north, 327zz south).
 int utm_epsg_for(double lon_deg, double lat_deg);
 

@@ -36,4 +36,11 @@ struct ObstacleSet {
   bool empty() const { return size() == 0; }
 };
 
+/// Removes the obstacles a vehicle at `depth_m` passes over: those whose top
+/// lies deeper than depth_m + vertical_clearance_m. Obstacles given by their
+/// height above the sea floor stay (their top depth needs a chart), as do
+/// obstacles without vertical extent. Returns how many were removed; throws
+/// InputError for a negative or non-finite depth or clearance.
+std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double vertical_clearance_m);
+
 }  // namespace deepguide

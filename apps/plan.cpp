@@ -1,0 +1,101 @@
+// deepguide plan --obstacles FILE... --from X,Y --to X,Y [...] -o ROUTE.geojson [--json]
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/planner.hpp"
+#include "deepguide/planning/route_io.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+
+namespace deepguide::app {
+namespace {
+
+struct PlanOptions {
+  std::vector<std::string> obstacles;
+  std::string from, to, output;
+  FrameOptions frame;
+  double margin = 5.0;
+  double tolerance = 0.2;
+  double depth = std::nan("");
+  double vertical_clearance = 2.0;
+  std::string graph = "visibility";
+  std::string search = "astar";
+  bool json = false;
+};
+
+}  // namespace
+
+void register_plan(CLI::App& app) {
+  auto o = std::make_shared<PlanOptions>();
+  CLI::App* cmd = app.add_subcommand("plan", "Plan a safe shortest route around the obstacles");
+  cmd->add_option("--obstacles", o->obstacles, "Obstacle files (GeoJSON, GeoPackage, Shapefile, CSV, ...)")
+      ->required()->expected(1, -1);
+  cmd->add_option("--from", o->from, "Start: lon,lat, or x,y in the --crs frame")->required();
+  cmd->add_option("--to", o->to, "Goal: lon,lat, or x,y in the --crs frame")->required();
+  cmd->add_option("-o,--output", o->output, "Route file to write (GeoJSON)");
+  add_frame_options(*cmd, o->frame);
+  cmd->add_option("--margin", o->margin, "Safety margin to every obstacle (m)")->capture_default_str();
+  cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
+      ->capture_default_str();
+  cmd->add_option("--depth", o->depth,
+                  "Operating depth (m); obstacles whose top_depth_m lies deeper than depth + "
+                  "--vertical-clearance are passed over");
+  cmd->add_option("--vertical-clearance", o->vertical_clearance, "Vertical clearance above obstacle tops (m)")
+      ->capture_default_str();
+  cmd->add_option("--graph", o->graph, "visibility (reduced) or visibility-full")->capture_default_str();
+  cmd->add_option("--search", o->search, "astar or dijkstra")->capture_default_str();
+  cmd->add_flag("--json", o->json, "Print the summary as JSON");
+  cmd->callback([o] {
+    PlannerOptions options;
+    options.margin = o->margin;
+    options.tolerance = o->tolerance;
+    options.graph = parse_graph_kind(o->graph);
+    options.search = parse_search(o->search);
+    const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
+    const PlanningProblem problem{parse_position(o->from, "--from", loaded.frame, !o->frame.crs.empty()),
+                                  parse_position(o->to, "--to", loaded.frame, !o->frame.crs.empty())};
+    ObstacleSet obstacles = loaded.obstacles;
+    std::size_t passed_over = 0;
+    if (!std::isnan(o->depth)) passed_over = remove_passable(obstacles, o->depth, o->vertical_clearance);
+    Planner planner(std::move(obstacles), options);
+    const PlanOutcome out = planner.solve(problem);
+    if (!out.result.found) throw NoRouteError(out.result.message);
+    if (!out.check.safe) {
+      throw std::runtime_error("the planned route failed the independent check: " + out.check.describe());
+    }
+    nlohmann::json summary = {
+        {"length_m", out.result.route.length()},
+        {"waypoints", out.result.route.points.size()},
+        {"min_clearance_m", out.check.min_clearance_m},
+        {"margin_m", o->margin},
+        {"graph", o->graph},
+        {"search", o->search},
+        {"graph_vertices", out.result.stats.graph_vertices},
+        {"graph_edges", out.result.stats.graph_edges},
+        {"expanded", out.result.stats.expanded},
+        {"build_ms", out.result.stats.build_ms},
+        {"query_ms", out.result.stats.query_ms},
+        {"obstacles", planner.field().size()},
+        {"passed_over", passed_over},
+        {"crs", loaded.frame.id()}};
+    if (!o->output.empty()) write_route_geojson(o->output, out.result.route, loaded.frame, summary);
+    if (o->json) {
+      std::cout << summary.dump(2) << "\n";
+      return;
+    }
+    std::printf("length           %.2f m, %zu waypoints\n", out.result.route.length(), out.result.route.points.size());
+    std::printf("min clearance    %.2f m (margin %.2f m)\n", out.check.min_clearance_m, o->margin);
+    std::printf("graph            %s, %zu vertices, %zu edges; %s expanded %zu\n", o->graph.c_str(),
+                out.result.stats.graph_vertices, out.result.stats.graph_edges, o->search.c_str(),
+                out.result.stats.expanded);
+    std::printf("time             build %.2f ms, query %.2f ms\n", out.result.stats.build_ms, out.result.stats.query_ms);
+    if (passed_over > 0) std::printf("passed over      %zu obstacle(s) deeper than the depth band\n", passed_over);
+    if (!o->output.empty()) std::printf("wrote            %s\n", o->output.c_str());
+  });
+}
+
+}  // namespace deepguide::app

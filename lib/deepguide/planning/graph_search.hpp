@@ -1,0 +1,36 @@
+#pragma once
+// The one graph search every graph planner uses: Boost.Graph's A* or
+// Dijkstra on a planning graph whose vertices have positions. Graphs are
+// bidirectional so edge costs may differ by direction (sea currents) and so
+// per-query start/goal edges can be removed cheaply again.
+
+#include <boost/graph/adjacency_list.hpp>
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "deepguide/geometry/ellipse.hpp"
+
+namespace deepguide {
+
+using PlanningGraph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS, boost::no_property,
+                          boost::property<boost::edge_weight_t, double>>;
+using GraphVertex = boost::graph_traits<PlanningGraph>::vertex_descriptor;
+
+enum class SearchAlgorithm { astar, dijkstra };
+
+struct SearchResult {
+  bool found = false;
+  std::vector<GraphVertex> path;  ///< source ... target
+  double cost = 0.0;
+  std::size_t expanded = 0;  ///< vertices examined (popped from the queue)
+};
+
+/// Cheapest path from source to target. `heuristic(v)` must be admissible and
+/// consistent for A* (it is ignored by Dijkstra). Both stop once the target is
+/// examined, so the cost is exact for both.
+SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic);
+
+}  // namespace deepguide

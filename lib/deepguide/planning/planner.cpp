@@ -1,0 +1,105 @@
+#include "deepguide/planning/planner.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/visibility_graph.hpp"
+#include "deepguide/planning/zone_polygons.hpp"
+
+namespace deepguide {
+
+GraphKind parse_graph_kind(const std::string& text) {
+  if (text == "visibility") return GraphKind::visibility;
+  if (text == "visibility-full") return GraphKind::visibility_full;
+  throw InputError("--graph: expected visibility or visibility-full, got '" + text + "'");
+}
+
+SearchAlgorithm parse_search(const std::string& text) {
+  if (text == "astar") return SearchAlgorithm::astar;
+  if (text == "dijkstra") return SearchAlgorithm::dijkstra;
+  throw InputError("--search: expected astar or dijkstra, got '" + text + "'");
+}
+
+std::string to_string(GraphKind kind) { return kind == GraphKind::visibility ? "visibility" : "visibility-full"; }
+std::string to_string(SearchAlgorithm a) { return a == SearchAlgorithm::astar ? "astar" : "dijkstra"; }
+
+struct Planner::Impl {
+  ObstacleField field;
+  BgMultiPolygon zones;
+  VisibilityGraph graph;
+};
+
+Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options) : options_(options) {
+  if (!std::isfinite(options.margin) || options.margin < 0.0) {
+    throw InputError("--margin: expected a safety margin >= 0 m, got " + std::to_string(options.margin));
+  }
+  if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
+    throw InputError("--tolerance: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
+  }
+  BgMultiPolygon zones = merged_zone_polygons(obstacles, {options.margin, options.tolerance});
+  const VisibilityVariant variant =
+      options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced;
+  VisibilityGraph graph(zones, variant);
+  impl_ = std::make_unique<Impl>(Impl{ObstacleField(std::move(obstacles), options.margin), std::move(zones),
+                                      std::move(graph)});
+}
+
+Planner::~Planner() = default;
+Planner::Planner(Planner&&) noexcept = default;
+Planner& Planner::operator=(Planner&&) noexcept = default;
+
+const ObstacleField& Planner::field() const { return impl_->field; }
+const BgMultiPolygon& Planner::zone_polygons() const { return impl_->zones; }
+std::vector<std::pair<Vec2, Vec2>> Planner::graph_edges() const { return impl_->graph.edges(); }
+
+namespace {
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+void require_free(const ObstacleField& field, const Vec2& p, const char* which) {
+  const ObstacleField::Nearest n = field.segment_clearance(p, p);
+  // A point exactly on the zone boundary is free; rounding gets a micrometre.
+  if (n.distance >= field.margin() - 1e-6) return;
+  throw NoRouteError(std::string(which) + " lies " + fmt(n.distance) + " m from obstacle '" +
+                     field.obstacle_name(n.obstacle) + "', inside its " + fmt(field.margin()) +
+                     " m safety zone");
+}
+
+}  // namespace
+
+PlanOutcome Planner::solve(const PlanningProblem& problem) {
+  if (!problem.start.allFinite() || !problem.goal.allFinite()) {
+    throw InputError("start and goal: expected finite coordinates");
+  }
+  if ((problem.start - problem.goal).norm() < 1e-9) {
+    throw InputError("start and goal: expected two different points, got the same one");
+  }
+  require_free(impl_->field, problem.start, "the start");
+  require_free(impl_->field, problem.goal, "the goal");
+
+  // A point outside the true zone can still lie in the thin band between a
+  // zone and its enclosing polygon; step to the polygon's boundary first.
+  PlanningProblem inner = problem;
+  const bool start_in_band = impl_->graph.strictly_inside(problem.start);
+  const bool goal_in_band = impl_->graph.strictly_inside(problem.goal);
+  if (start_in_band) inner.start = impl_->graph.closest_boundary_point(problem.start);
+  if (goal_in_band) inner.goal = impl_->graph.closest_boundary_point(problem.goal);
+
+  PlanOutcome out;
+  out.result = impl_->graph.solve(inner, options_.search);
+  if (out.result.found) {
+    auto& pts = out.result.route.points;
+    if (start_in_band) pts.insert(pts.begin(), problem.start);
+    if (goal_in_band) pts.push_back(problem.goal);
+  }
+  out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
+                          impl_->field);
+  return out;
+}
+
+}  // namespace deepguide

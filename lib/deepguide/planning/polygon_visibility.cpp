@@ -1,0 +1,117 @@
+#include "deepguide/planning/polygon_visibility.hpp"
+
+#include <algorithm>
+#include <boost/geometry.hpp>
+#include <cmath>
+#include <limits>
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+namespace {
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Signed distance of x from the line through a and b (positive to the left).
+double side(const Vec2& a, const Vec2& b, const Vec2& x) {
+  const Vec2 d = b - a;
+  const double len = d.norm();
+  return len > 0.0 ? cross(d, x - a) / len : (x - a).norm();
+}
+
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * d - p).norm();
+}
+
+template <class Ring, class F>
+void for_each_edge(const Ring& ring, F f) {
+  for (std::size_t i = 0; i + 1 < ring.size(); ++i) f(to_eigen(ring[i]), to_eigen(ring[i + 1]));
+}
+
+}  // namespace
+
+PolygonVisibility::PolygonVisibility(BgMultiPolygon polygons, double eps)
+    : polygons_(std::move(polygons)), eps_(eps) {
+  std::vector<EdgeItem> edges;
+  std::vector<BoxItem> boxes;
+  for (std::size_t i = 0; i < polygons_.size(); ++i) {
+    bg::correct(polygons_[i]);
+    boxes.emplace_back(bg::return_envelope<BgBox>(polygons_[i]), i);
+    auto add = [&](const Vec2& a, const Vec2& b) { edges.emplace_back(Segment(to_bg(a), to_bg(b)), i); };
+    for_each_edge(polygons_[i].outer(), add);
+    for (const auto& inner : polygons_[i].inners()) for_each_edge(inner, add);
+  }
+  edges_ = decltype(edges_)(edges);
+  boxes_ = decltype(boxes_)(boxes);
+}
+
+std::size_t PolygonVisibility::containing_polygon(const Vec2& p) const {
+  std::vector<BoxItem> hits;
+  boxes_.query(bgi::intersects(to_bg(p)), std::back_inserter(hits));
+  for (const BoxItem& h : hits) {
+    if (!bg::within(to_bg(p), polygons_[h.second])) continue;
+    // Rounding may put a boundary point just inside: count it as boundary.
+    std::vector<EdgeItem> nearest;
+    edges_.query(bgi::nearest(to_bg(p), 1), std::back_inserter(nearest));
+    if (!nearest.empty() &&
+        point_segment_distance(p, to_eigen(nearest[0].first.first), to_eigen(nearest[0].first.second)) <= eps_) {
+      return npos;
+    }
+    return h.second;
+  }
+  return npos;
+}
+
+bool PolygonVisibility::strictly_inside(const Vec2& p) const { return containing_polygon(p) != npos; }
+
+Vec2 PolygonVisibility::closest_boundary_point(const Vec2& p) const {
+  std::vector<EdgeItem> nearest;
+  edges_.query(bgi::nearest(to_bg(p), 4), std::back_inserter(nearest));
+  Vec2 best = p;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (const EdgeItem& e : nearest) {
+    const Vec2 a = to_eigen(e.first.first), b = to_eigen(e.first.second);
+    const Vec2 d = b - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    const Vec2 c = a + t * d;
+    if ((c - p).norm() < best_d) best_d = (c - p).norm(), best = c;
+  }
+  return best;
+}
+
+bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
+  const double len = (q - p).norm();
+  BgBox box(BgPoint(std::min(p.x(), q.x()) - eps_, std::min(p.y(), q.y()) - eps_),
+            BgPoint(std::max(p.x(), q.x()) + eps_, std::max(p.y(), q.y()) + eps_));
+  std::vector<EdgeItem> candidates;
+  edges_.query(bgi::intersects(box), std::back_inserter(candidates));
+  std::vector<double> breaks{0.0, 1.0};
+  for (const EdgeItem& e : candidates) {
+    const Vec2 a = to_eigen(e.first.first), b = to_eigen(e.first.second);
+    const double sa = side(p, q, a), sb = side(p, q, b);
+    const double sp = side(a, b, p), sq = side(a, b, q);
+    const bool straddle_pq = (sa > eps_ && sb < -eps_) || (sa < -eps_ && sb > eps_);
+    const bool straddle_ab = (sp > eps_ && sq < -eps_) || (sp < -eps_ && sq > eps_);
+    if (straddle_pq && straddle_ab) return false;
+    if (len == 0.0) continue;
+    for (const auto& [x, s] : {std::pair{a, sa}, std::pair{b, sb}}) {
+      if (std::abs(s) > eps_) continue;
+      const double t = (x - p).dot(q - p) / (len * len);
+      if (t * len > eps_ && (1.0 - t) * len > eps_) breaks.push_back(t);
+    }
+  }
+  std::sort(breaks.begin(), breaks.end());
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    if ((breaks[i + 1] - breaks[i]) * len <= eps_ && len > 0.0) continue;
+    const Vec2 mid = p + 0.5 * (breaks[i] + breaks[i + 1]) * (q - p);
+    if (strictly_inside(mid)) return false;
+  }
+  return true;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,101 @@
+#include "deepguide/planning/route_check.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace {
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string general(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Ids come from files; a control character must not break the one-line report.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string RouteCheck::describe() const {
+  // No verdict word: callers put their own ("UNSAFE: ...", an error message).
+  const std::string margin = "(margin " + general(margin_m) + " m)";
+  if (std::isinf(min_clearance_m)) return "no obstacles " + margin;
+  // Two decimals, more when they would print a clearance just short of the
+  // margin as the margin itself.
+  int digits = 2;
+  while (digits < 9 && min_clearance_m > 0.0 && min_clearance_m != margin_m &&
+         fixed(min_clearance_m, digits) == fixed(margin_m, digits)) {
+    ++digits;
+  }
+  std::string s = segments == 0 ? "waypoint 0 " : "segment " + std::to_string(worst_segment) + " ";
+  const std::string obstacle = "obstacle '" + printable(worst_obstacle) + "'";
+  if (min_clearance_m > 0.0) {
+    s += (segments == 0 ? "lies " : "passes ") + fixed(min_clearance_m, digits) + " m from " + obstacle;
+  } else if (min_clearance_m < 0.0) {
+    s += (segments == 0 ? "lies inside " : "enters ") + obstacle + " (" + fixed(-min_clearance_m, digits) +
+         " m deep)";
+  } else {
+    s += "touches " + obstacle;
+  }
+  return s + " at (" + fixed(worst_point.x(), 2) + ", " + fixed(worst_point.y(), 2) + ") " + margin;
+}
+
+RouteCheck check_route(const std::vector<Vec2>& polyline, const ObstacleField& field, double tolerance) {
+  if (!std::isfinite(tolerance) || tolerance < 0.0) {
+    throw std::invalid_argument("check_route: tolerance must be finite and >= 0, got " + general(tolerance));
+  }
+  if (polyline.empty()) throw input_error({"route", "", ""}, "at least one waypoint", "none");
+  for (std::size_t i = 0; i < polyline.size(); ++i) {
+    const Vec2& p = polyline[i];
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+      throw input_error({"route", "waypoint " + std::to_string(i), ""}, "finite coordinates",
+                        "(" + general(p.x()) + ", " + general(p.y()) + ")");
+    }
+  }
+
+  RouteCheck check;
+  check.margin_m = field.margin();
+  check.segments = polyline.size() - 1;
+  check.min_clearance_m = std::numeric_limits<double>::infinity();
+  check.worst_point = polyline.front();
+  const std::size_t n = std::max<std::size_t>(check.segments, 1);
+  for (std::size_t s = 0; s < n; ++s) {
+    const Vec2& a = polyline[s];
+    const Vec2& b = polyline[std::min(s + 1, polyline.size() - 1)];
+    const ObstacleField::Nearest nearest = field.segment_clearance(a, b);
+    // Strict: the first segment wins a tie, so the report names where it starts.
+    if (nearest.distance < check.min_clearance_m) {
+      check.min_clearance_m = nearest.distance;
+      check.worst_segment = s;
+      check.worst_obstacle = field.obstacle_name(nearest.obstacle);
+      check.worst_point = nearest.point_on_segment;
+    }
+  }
+  check.safe = check.min_clearance_m >= field.margin() - tolerance;
+  return check;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,42 @@
+#pragma once
+// The independent route checker: every planner's output is verified with it.
+//
+// It deliberately shares no geometry with the planners (they plan on enclosing
+// polygons and tangent graphs); it measures each leg of the route against the
+// obstacles' exact footprints through ObstacleField:
+//   min_clearance = min over segments s, obstacles i of min_{x in s} sd_i(x)
+//   safe          <=> min_clearance >= margin - tolerance
+// The tolerance only absorbs rounding of a route planned to touch a safety
+// zone; it is not a second margin.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/world/obstacle_field.hpp"
+
+namespace deepguide {
+
+struct RouteCheck {
+  bool safe = true;               ///< every segment keeps >= margin - tolerance from every obstacle
+  double min_clearance_m = 0.0;   ///< smallest segment clearance over the route (+inf if no obstacles)
+  std::size_t worst_segment = 0;  ///< index of the segment (0 = first) where it occurs
+  std::string worst_obstacle;     ///< obstacle_name of the nearest obstacle there ("" if none)
+  Vec2 worst_point{0.0, 0.0};     ///< point of that segment closest to it
+  double margin_m = 0.0;          ///< the field's safety margin, for the report
+  std::size_t segments = 0;       ///< segments checked; 0 for a single-point route
+
+  /// One line without a verdict word, e.g. "segment 3 passes 1.27 m from
+  /// obstacle 'c5' at (120.00, 45.50) (margin 5 m)", "segment 0 enters obstacle
+  /// 'c1' (2.00 m deep) at (...) (margin 5 m)", "no obstacles (margin 5 m)".
+  std::string describe() const;
+};
+
+/// Checks the polyline against the field. A single point is checked as the
+/// degenerate segment 0. Throws InputError for an empty polyline or a waypoint
+/// with NaN/inf coordinates (naming its index), std::invalid_argument for a
+/// tolerance that is not finite and >= 0.
+RouteCheck check_route(const std::vector<Vec2>& polyline, const ObstacleField& field, double tolerance = 1e-6);
+
+}  // namespace deepguide

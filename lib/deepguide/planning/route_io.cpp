@@ -1,0 +1,135 @@
+#include "deepguide/planning/route_io.hpp"
+
+#include <ogrsf_frmts.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "deepguide/core/atomic_file.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+
+namespace {
+
+void set_json_field(OGRFeature& f, const std::string& key, const nlohmann::json& v) {
+  const int i = f.GetFieldIndex(key.c_str());
+  if (i < 0) return;
+  if (v.is_number_integer()) f.SetField(i, static_cast<GIntBig>(v.get<long long>()));
+  else if (v.is_number()) f.SetField(i, v.get<double>());
+  else if (v.is_string()) f.SetField(i, v.get<std::string>().c_str());
+  else if (v.is_boolean()) f.SetField(i, v.get<bool>() ? 1 : 0);
+  else f.SetFieldNull(i);
+}
+
+OGRFieldType field_type(const nlohmann::json& v) {
+  if (v.is_number_integer() || v.is_boolean()) return OFTInteger64;
+  if (v.is_number()) return OFTReal;
+  return OFTString;
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  const std::string why = gdal::QuietErrors::last_message();
+  throw InputError(path + ": could not " + what + (why.empty() ? std::string() : ": " + why));
+}
+
+}  // namespace
+
+void write_route_geojson(const std::string& path, const Route& route, const LocalFrame& frame,
+                         const nlohmann::json& properties) {
+  gdal::ensure_registered();
+  AtomicOutput out(path);
+  gdal::QuietErrors quiet;
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GeoJSON");
+  if (driver == nullptr) fail(path, "find GDAL's GeoJSON driver");
+  {
+    GDALDatasetUniquePtr ds(driver->Create(out.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    if (!ds) fail(path, "create the file");
+    const auto geo = gdal::wgs84();
+    const char* options[] = {"RFC7946=YES", "COORDINATE_PRECISION=9", nullptr};
+    OGRLayer* layer = ds->CreateLayer("route", geo.get(), wkbUnknown, const_cast<char**>(options));
+    if (layer == nullptr) fail(path, "create the route layer");
+    // One schema for both feature kinds: `kind` tells the line from the waypoints.
+    nlohmann::json fields = {{"kind", ""}, {"index", 0}, {"cum_length_m", 0.0}};
+    for (const auto& [key, value] : properties.items()) fields[key] = value;
+    for (const auto& [key, value] : fields.items()) {
+      OGRFieldDefn fd(key.c_str(), field_type(value));
+      if (layer->CreateField(&fd) != OGRERR_NONE) fail(path, "create field " + key);
+    }
+    std::vector<Eigen::Vector2d> lonlat;
+    for (const Vec2& p : route.points) {
+      lonlat.push_back(frame.to_lonlat(p));
+      if (!lonlat.back().allFinite()) fail(path, "transform a waypoint to lon/lat");
+    }
+    {
+      OGRFeature f(layer->GetLayerDefn());
+      f.SetField("kind", "route");
+      for (const auto& [key, value] : properties.items()) set_json_field(f, key, value);
+      f.SetFieldNull(f.GetFieldIndex("index"));
+      f.SetFieldNull(f.GetFieldIndex("cum_length_m"));
+      OGRLineString line;
+      for (const auto& ll : lonlat) line.addPoint(ll.x(), ll.y());
+      f.SetGeometry(&line);
+      if (layer->CreateFeature(&f) != OGRERR_NONE) fail(path, "write the route line");
+    }
+    double cum = 0.0;
+    for (std::size_t i = 0; i < route.points.size(); ++i) {
+      if (i > 0) cum += (route.points[i] - route.points[i - 1]).norm();
+      OGRFeature f(layer->GetLayerDefn());
+      f.SetField("kind", "waypoint");
+      f.SetField("index", static_cast<GIntBig>(i));
+      f.SetField("cum_length_m", cum);
+      OGRPoint pt(lonlat[i].x(), lonlat[i].y());
+      f.SetGeometry(&pt);
+      if (layer->CreateFeature(&f) != OGRERR_NONE) fail(path, "write waypoint " + std::to_string(i));
+    }
+  }
+  out.commit();
+}
+
+Route read_route(const std::string& path, const LocalFrame& frame) {
+  gdal::ensure_registered();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": expected an existing route file, found none");
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+  if (!ds) fail(path, "open it as a vector file (GeoJSON, GPX, KML, ...)");
+  const auto geo = gdal::wgs84();
+  for (OGRLayer* layer : ds->GetLayers()) {
+    std::unique_ptr<OGRSpatialReference> srs;
+    if (layer->GetSpatialRef() != nullptr) {
+      srs.reset(layer->GetSpatialRef()->Clone());
+      srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    } else {
+      srs = gdal::wgs84();
+    }
+    auto ct = gdal::make_transform(*srs, *geo);
+    if (!ct) fail(path, "transform its CRS to WGS 84");
+    for (auto& feature : *layer) {
+      const OGRGeometry* g = feature->GetGeometryRef();
+      if (g == nullptr || wkbFlatten(g->getGeometryType()) != wkbLineString) continue;
+      const OGRLineString* line = g->toLineString();
+      Route route;
+      for (int i = 0; i < line->getNumPoints(); ++i) {
+        double x = line->getX(i), y = line->getY(i);
+        const std::string where = path + ": feature " + std::to_string(feature->GetFID()) + ": vertex " +
+                                  std::to_string(i) + ": field 'geometry'";
+        if (!std::isfinite(x) || !std::isfinite(y) || !ct->Transform(1, &x, &y)) {
+          throw InputError(where + ": expected finite coordinates");
+        }
+        const Vec2 p = frame.from_lonlat(x, y);
+        if (!p.allFinite()) throw InputError(where + ": expected a position inside the local frame " + frame.id());
+        route.points.push_back(p);
+      }
+      if (route.points.size() < 2) {
+        throw InputError(path + ": feature " + std::to_string(feature->GetFID()) +
+                         ": expected a route line with at least 2 points");
+      }
+      return route;
+    }
+  }
+  throw InputError(path + ": expected a LineString feature (the route line), found none");
+}
+
+}  // namespace deepguide

@@ -1,0 +1,179 @@
+#include "deepguide/planning/visibility_graph.hpp"
+
+#include <boost/geometry.hpp>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+
+namespace {
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant) : variant_(variant) {
+  const auto t0 = std::chrono::steady_clock::now();
+  // Work around an origin inside the area: UTM coordinates are ~1e6 m, and
+  // orientation tests lose six digits on them.
+  BgBox box;
+  bg::envelope(zones, box);
+  origin_ = zones.empty() ? Vec2::Zero() : Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()),
+                                               0.5 * (box.min_corner().y() + box.max_corner().y()));
+  BgMultiPolygon local = zones;
+  double extent = 1.0;
+  for (BgPolygon& poly : local) {
+    bg::correct(poly);
+    auto shift = [&](auto& ring) {
+      for (BgPoint& pt : ring) {
+        pt = to_bg(to_eigen(pt) - origin_);
+        extent = std::max({extent, std::abs(pt.x()), std::abs(pt.y())});
+      }
+    };
+    shift(poly.outer());
+    for (auto& inner : poly.inners()) shift(inner);
+  }
+  visibility_ = std::make_unique<PolygonVisibility>(std::move(local), 1e-9 * extent);
+
+  // Corners of every ring. Boost rings run clockwise around the polygon's
+  // interior (holes anticlockwise), so the obstacle is always on the right.
+  for (const BgPolygon& poly : visibility_->polygons()) {
+    auto add_ring = [&](const auto& ring) {
+      const std::size_t n = ring.size() - 1;  // closed ring repeats its first point
+      for (std::size_t i = 0; i < n; ++i) {
+        Corner c;
+        c.p = to_eigen(ring[i]);
+        c.prev = to_eigen(ring[(i + n - 1) % n]);
+        c.next = to_eigen(ring[(i + 1) % n]);
+        // Clockwise travel turns right (negative cross) at a convex corner.
+        c.convex = cross(c.p - c.prev, c.next - c.p) < 0.0;
+        corners_.push_back(c);
+      }
+    };
+    add_ring(poly.outer());
+    for (const auto& inner : poly.inners()) add_ring(inner);
+  }
+
+  const std::size_t n = corners_.size();
+  if (n > max_corners(variant_)) {
+    throw InputError("the safety zones have " + std::to_string(n) + " polygon corners, more than the " +
+                     (variant_ == VisibilityVariant::full ? std::string("full") : std::string("reduced")) +
+                     " visibility graph handles (" + std::to_string(max_corners(variant_)) +
+                     "); raise --tolerance, plan a smaller area, or use the reduced graph");
+  }
+  graph_ = PlanningGraph(n + 2);  // + start and goal slots
+  for (std::size_t i = 0; i < n; ++i) {
+    const Corner& a = corners_[i];
+    if (variant_ == VisibilityVariant::reduced && !a.convex) continue;
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Corner& b = corners_[j];
+      if (variant_ == VisibilityVariant::reduced &&
+          (!b.convex || !supporting_at(a, b.p) || !supporting_at(b, a.p))) {
+        continue;
+      }
+      if (!visibility_->segment_visible(a.p, b.p)) continue;
+      const double w = (b.p - a.p).norm();
+      boost::add_edge(i, j, w, graph_);
+      boost::add_edge(j, i, w, graph_);
+      ++base_edges_;
+    }
+  }
+  build_ms_ = elapsed_ms(t0);
+}
+
+std::size_t VisibilityGraph::max_corners(VisibilityVariant variant) {
+  // About 10 s of build on the 2-core reference machine (docs/PERFORMANCE.md).
+  return variant == VisibilityVariant::full ? 4000 : 40000;
+}
+
+bool VisibilityGraph::supporting_at(const Corner& c, const Vec2& other) const {
+  // Both polygon neighbours on one closed side of the line c -> other.
+  const Vec2 d = other - c.p;
+  const double len = d.norm();
+  if (len == 0.0) return false;
+  const double eps = visibility_->eps();
+  const double s1 = cross(d, c.prev - c.p) / len;
+  const double s2 = cross(d, c.next - c.p) / len;
+  return !((s1 > eps && s2 < -eps) || (s1 < -eps && s2 > eps));
+}
+
+PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Vec2 s = problem.start - origin_;
+  const Vec2 g = problem.goal - origin_;
+  const std::size_t n = corners_.size();
+  const GraphVertex sv = n, gv = n + 1;
+  auto link = [&](GraphVertex from, GraphVertex to, double w) { boost::add_edge(from, to, w, graph_); };
+
+  // Start and goal join every corner they see (full), or the corners where
+  // the line to them is supporting (reduced), and each other directly.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Corner& c = corners_[i];
+    if (variant_ == VisibilityVariant::reduced && !c.convex) continue;
+    for (const auto& [point, vertex] : {std::pair{s, sv}, std::pair{g, gv}}) {
+      if (variant_ == VisibilityVariant::reduced && !supporting_at(c, point)) continue;
+      if (!visibility_->segment_visible(point, c.p)) continue;
+      const double w = (c.p - point).norm();
+      if (vertex == sv) link(sv, i, w);
+      else link(i, gv, w);
+    }
+  }
+  if (visibility_->segment_visible(s, g)) link(sv, gv, (g - s).norm());
+
+  std::vector<Vec2> positions;
+  auto position = [&](GraphVertex v) { return v == sv ? s : v == gv ? g : corners_[v].p; };
+  const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (position(v) - g).norm(); };
+  const SearchResult found = shortest_path(graph_, sv, gv, algorithm, h);
+
+  PlanResult result;
+  result.stats.graph_vertices = n + 2;
+  result.stats.graph_edges = base_edges_ + boost::out_degree(sv, graph_) + boost::in_degree(gv, graph_);
+  result.stats.expanded = found.expanded;
+  result.stats.build_ms = build_ms_;
+  boost::clear_vertex(sv, graph_);
+  boost::clear_vertex(gv, graph_);
+  result.found = found.found;
+  if (found.found) {
+    for (GraphVertex v : found.path) result.route.points.push_back(position(v) + origin_);
+  } else {
+    result.message = "the goal cannot be reached from the start without entering a safety zone";
+  }
+  result.stats.query_ms = elapsed_ms(t0);
+  return result;
+}
+
+std::vector<Vec2> VisibilityGraph::corner_positions() const {
+  std::vector<Vec2> out;
+  for (const Corner& c : corners_) out.push_back(c.p + origin_);
+  return out;
+}
+
+std::vector<std::pair<Vec2, Vec2>> VisibilityGraph::edges() const {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  const std::size_t n = corners_.size();
+  for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
+    const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
+    if (a < b && b < n) out.emplace_back(corners_[a].p + origin_, corners_[b].p + origin_);
+  }
+  return out;
+}
+
+bool VisibilityGraph::segment_visible(const Vec2& p, const Vec2& q) const {
+  return visibility_->segment_visible(p - origin_, q - origin_);
+}
+
+bool VisibilityGraph::strictly_inside(const Vec2& p) const { return visibility_->strictly_inside(p - origin_); }
+
+Vec2 VisibilityGraph::closest_boundary_point(const Vec2& p) const {
+  return visibility_->closest_boundary_point(p - origin_) + origin_;
+}
+
+}  // namespace deepguide

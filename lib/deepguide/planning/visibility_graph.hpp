@@ -1,0 +1,69 @@
+#pragma once
+// The seed's planning graph: a visibility graph over the polygons that enclose
+// the safety zones.
+//
+// Vertices are the polygon corners; an edge joins two corners that see each
+// other. `full` keeps every visible pair (the seed's graph). `reduced` keeps
+// only edges that are supporting at both ends: the polygon neighbours of each
+// end lie on one closed side of the edge's line, so the edge could be part of
+// a taut string around the obstacles. Shortest paths bend only at convex
+// corners and leave them along such lines, so both graphs give the same
+// shortest paths, the reduced one with far fewer edges (Latombe 1991, ch. 4).
+//
+// The graph is built once per environment; solve() attaches start and goal to
+// it (two reserved vertices whose edges are removed again afterwards), so many
+// queries cost little. Not thread-safe: one query at a time per graph.
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/polygon_visibility.hpp"
+#include "deepguide/planning/route.hpp"
+
+namespace deepguide {
+
+enum class VisibilityVariant { full, reduced };
+
+class VisibilityGraph {
+ public:
+  /// `zones`: polygons enclosing the safety zones, in the local frame. Throws
+  /// InputError when they have more corners than max_corners(variant): the
+  /// build is quadratic in the corners and would not finish in useful time.
+  VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant);
+  static std::size_t max_corners(VisibilityVariant variant);
+
+  /// Shortest route from start to goal in this graph. Start and goal must not
+  /// lie strictly inside a zone polygon (the planner facade checks and explains).
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm);
+
+  VisibilityVariant variant() const { return variant_; }
+  std::size_t vertex_count() const { return corners_.size(); }
+  std::size_t edge_count() const { return base_edges_; }
+  double build_ms() const { return build_ms_; }
+  /// Corner positions and graph edges in the local frame (for drawings).
+  std::vector<Vec2> corner_positions() const;
+  std::vector<std::pair<Vec2, Vec2>> edges() const;
+  /// Exact polygon visibility in the local frame.
+  bool segment_visible(const Vec2& p, const Vec2& q) const;
+  bool strictly_inside(const Vec2& p) const;
+  Vec2 closest_boundary_point(const Vec2& p) const;
+
+ private:
+  struct Corner {
+    Vec2 p, prev, next;  // translated to origin_
+    bool convex;         // the obstacle's interior angle is below 180 degrees
+  };
+  bool supporting_at(const Corner& c, const Vec2& other) const;
+
+  VisibilityVariant variant_;
+  Vec2 origin_;
+  std::unique_ptr<PolygonVisibility> visibility_;
+  std::vector<Corner> corners_;
+  PlanningGraph graph_;
+  std::size_t base_edges_ = 0;
+  double build_ms_ = 0.0;
+};
+
+}  // namespace deepguide

@@ -1,0 +1,101 @@
+#include "deepguide/planning/zone_polygons.hpp"
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+
+#include "deepguide/geometry/safety_zone.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+BgMultiPolygon polygon_zone(const BgPolygon& footprint, const ZoneOptions& options) {
+  BgMultiPolygon out;
+  if (options.margin <= 0.0) {
+    out.push_back(footprint);
+    return out;
+  }
+  // Smallest n with d (1/cos(pi/n) - 1) <= tol.
+  const double d = options.margin;
+  const int n = std::max(8, static_cast<int>(std::ceil(std::numbers::pi / std::acos(d / (d + options.tolerance)))));
+  const double distance = d / std::cos(std::numbers::pi / n);
+  bg::strategy::buffer::distance_symmetric<double> dist(distance);
+  bg::strategy::buffer::side_straight side;
+  bg::strategy::buffer::join_round join(static_cast<std::size_t>(n));
+  bg::strategy::buffer::end_round end(static_cast<std::size_t>(n));
+  bg::strategy::buffer::point_circle circle(static_cast<std::size_t>(n));
+  bg::buffer(footprint, out, dist, side, join, end, circle);
+  return out;
+}
+
+namespace {
+
+// Union-find over zone indices, to merge only zones that overlap.
+struct Components {
+  std::vector<std::size_t> parent;
+  explicit Components(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t find(std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOptions& options) {
+  if (!(options.tolerance > 0.0)) throw std::invalid_argument("zone tolerance must be positive");
+  if (!(options.margin >= 0.0)) throw std::invalid_argument("safety margin must be >= 0");
+  std::vector<BgPolygon> zones;
+  const ZonePolygonOptions poly_options{options.tolerance, 4096};
+  for (const EllipticCylinder& c : obstacles.ellipses) {
+    zones.push_back(enclosing_bg_polygon(SafetyZone{c.footprint, options.margin}, poly_options));
+  }
+  for (const PolygonObstacle& p : obstacles.polygons) {
+    for (BgPolygon& part : polygon_zone(p.footprint, options)) zones.push_back(std::move(part));
+  }
+
+  using Item = std::pair<BgBox, std::size_t>;
+  std::vector<Item> boxes;
+  boxes.reserve(zones.size());
+  for (std::size_t i = 0; i < zones.size(); ++i) boxes.emplace_back(bg::return_envelope<BgBox>(zones[i]), i);
+  const bgi::rtree<Item, bgi::rstar<16>> tree(boxes);
+  Components comp(zones.size());
+  std::vector<Item> hits;
+  for (const Item& item : boxes) {
+    hits.clear();
+    tree.query(bgi::intersects(item.first), std::back_inserter(hits));
+    for (const Item& h : hits) {
+      if (h.second > item.second && comp.find(h.second) != comp.find(item.second) &&
+          bg::intersects(zones[item.second], zones[h.second])) {
+        comp.join(h.second, item.second);
+      }
+    }
+  }
+
+  std::vector<std::vector<std::size_t>> groups(zones.size());
+  for (std::size_t i = 0; i < zones.size(); ++i) groups[comp.find(i)].push_back(i);
+  BgMultiPolygon merged;
+  for (const auto& group : groups) {
+    if (group.empty()) continue;
+    if (group.size() == 1) {
+      merged.push_back(std::move(zones[group[0]]));
+      continue;
+    }
+    BgMultiPolygon acc;
+    acc.push_back(zones[group[0]]);
+    for (std::size_t k = 1; k < group.size(); ++k) {
+      BgMultiPolygon next;
+      bg::union_(acc, zones[group[k]], next);
+      acc = std::move(next);
+    }
+    for (BgPolygon& part : acc) merged.push_back(std::move(part));
+  }
+  return merged;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,29 @@
+#pragma once
+// Safety zones as polygons, the input of the polygon-based graphs.
+//
+// Every zone is enclosed, never approximated from inside: an ellipse's zone by
+// its support-function polygon (geometry/safety_zone.hpp); a polygon
+// obstacle's zone, polygon (+) disc(d), by Boost.Geometry's buffer with round
+// joins at the distance d / cos(pi / n): the joins' chords then stay outside
+// the disc of radius d and the straight sides d (1 / cos(pi / n) - 1) <= tol
+// farther out than needed. Overlapping zones are merged (Boost.Geometry
+// union), so no vertex of one zone hides inside another.
+
+#include "deepguide/geometry/polygon.hpp"
+#include "deepguide/world/obstacle.hpp"
+
+namespace deepguide {
+
+struct ZoneOptions {
+  double margin = 0.0;      ///< safety margin d >= 0 (m)
+  double tolerance = 0.05;  ///< largest distance of a polygon vertex outside its zone (m), > 0
+};
+
+/// The enclosing polygon of one polygon obstacle's zone (several parts if it
+/// has several after buffering; normally one).
+BgMultiPolygon polygon_zone(const BgPolygon& footprint, const ZoneOptions& options);
+
+/// Enclosing polygons of every obstacle's zone, overlapping ones merged.
+BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOptions& options);
+
+}  // namespace deepguide

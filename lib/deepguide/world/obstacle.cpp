@@ -1,0 +1,25 @@
+#include "deepguide/world/obstacle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+
+std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double vertical_clearance_m) {
+  if (!std::isfinite(depth_m) || depth_m < 0.0) {
+    throw InputError("--depth: expected an operating depth >= 0 m, got " + std::to_string(depth_m));
+  }
+  if (!std::isfinite(vertical_clearance_m) || vertical_clearance_m < 0.0) {
+    throw InputError("--vertical-clearance: expected a clearance >= 0 m, got " + std::to_string(vertical_clearance_m));
+  }
+  auto passable = [&](const auto& o) { return o.top_depth_m && *o.top_depth_m > depth_m + vertical_clearance_m; };
+  const std::size_t before = obstacles.size();
+  std::erase_if(obstacles.ellipses, passable);
+  std::erase_if(obstacles.polygons, passable);
+  return before - obstacles.size();
+}
+
+}  // namespace deepguide

@@ -1,0 +1,319 @@
+#include "deepguide/world/obstacle_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+#include <boost/geometry/algorithms/distance.hpp>
+#include <boost/geometry/algorithms/envelope.hpp>
+#include <boost/geometry/algorithms/for_each.hpp>
+#include <boost/geometry/algorithms/intersection.hpp>
+#include <boost/geometry/algorithms/intersects.hpp>
+#include <boost/geometry/algorithms/within.hpp>
+#include <boost/geometry/geometries/linestring.hpp>
+#include <boost/geometry/geometries/multi_linestring.hpp>
+#include <boost/geometry/geometries/segment.hpp>
+#include <boost/math/tools/minima.hpp>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/geometry/ellipse_distance.hpp"
+
+namespace deepguide {
+namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using BgSegment = bg::model::segment<BgPoint>;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Brent cannot locate a minimum closer than sqrt(eps) (function values are flat
+// there), so asking for more bits only costs iterations.
+constexpr int kBrentBits = std::numeric_limits<double>::digits / 2;
+// A convex function on [0, 1] converges in a few dozen steps; this only bounds
+// the cost if something pathological slips through.
+constexpr std::uintmax_t kBrentMaxIter = 200;
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// The point of [a, b] closest to q. Boost 1.74 has no closest_points, so the
+// segment's closest point to a ring edge is found from its candidates below.
+Vec2 foot_on_segment(const Vec2& a, const Vec2& b, const Vec2& q) {
+  const Vec2 d = b - a;
+  const double t = std::clamp((q - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return a + t * d;
+}
+
+// Bounding box of an ellipse from its support in +-x and +-y, grown by a few
+// ulps of the coordinates: the box must contain the ellipse for the box
+// distance to be a lower bound, and rounding could shave the last bit.
+BgBox ellipse_box(const Ellipse& e) {
+  const double c = std::cos(e.theta);
+  const double s = std::sin(e.theta);
+  const double hx = std::hypot(e.a * c, e.b * s);
+  const double hy = std::hypot(e.a * s, e.b * c);
+  const double pad =
+      16.0 * std::numeric_limits<double>::epsilon() * (e.a + std::abs(e.center.x()) + std::abs(e.center.y()));
+  return {BgPoint(e.center.x() - hx - pad, e.center.y() - hy - pad),
+          BgPoint(e.center.x() + hx + pad, e.center.y() + hy + pad)};
+}
+
+bool finite(const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+
+// Hands out obstacle indices by increasing distance of their boxes to `query`,
+// with a lower bound of the obstacle's signed distance, until visit returns false.
+//
+// Boost 1.74's incremental nearest iterator walks depth-first: with k = size()
+// it has nothing to prune with and can sweep whole subtrees far from the query
+// before it returns the next value (seconds per query at 10^5 boxes). So ask
+// for the k nearest, which prunes properly, and grow k while visit wants more.
+// Entries tied with the k-th distance may have peers outside the batch, so a
+// round only hands out entries strictly closer than that; `done` keeps a later,
+// larger batch from handing out an entry twice.
+template <class Tree, class Query, class Visit>
+void by_box_distance(const Tree& tree, const Query& query, Visit visit) {
+  using Entry = typename Tree::value_type;
+  std::vector<Entry> found;
+  std::vector<std::pair<double, std::size_t>> batch;
+  std::vector<std::size_t> done;
+  for (std::size_t k = 16;; k *= 4) {
+    const auto k_query = static_cast<unsigned>(std::min<std::size_t>(k, std::numeric_limits<unsigned>::max()));
+    found.clear();
+    tree.query(bgi::nearest(query, k_query), std::back_inserter(found));
+    const bool all = found.size() < k_query;
+    batch.clear();
+    for (const Entry& e : found) batch.emplace_back(bg::distance(query, e.first), e.second);
+    std::sort(batch.begin(), batch.end());
+    const double cutoff = all ? kInf : batch.back().first;
+    for (const auto& [box_distance, index] : batch) {
+      if (!all && box_distance >= cutoff) break;
+      if (std::find(done.begin(), done.end(), index) != done.end()) continue;
+      done.push_back(index);
+      // A box that meets the query bounds nothing: the query may be inside the obstacle.
+      const double lower_bound = box_distance > 0.0 ? box_distance : -kInf;
+      if (!visit(index, lower_bound)) return;
+    }
+    if (all) return;
+  }
+}
+
+}  // namespace
+
+double signed_distance(const BgPolygon& polygon, const Vec2& p) {
+  const BgPoint q = to_bg(p);
+  const double d = bg::distance(q, polygon);
+  if (d > 0.0 || !bg::within(q, polygon)) return d;
+  double to_rings = kInf;
+  bg::for_each_segment(polygon, [&](const auto& edge) { to_rings = std::min(to_rings, bg::distance(q, edge)); });
+  return -to_rings;
+}
+
+SegmentDistance segment_signed_distance(const Ellipse& ellipse, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const auto f = [&](double t) { return signed_distance(ellipse, a + t * d); };
+  SegmentDistance best{f(0.0), a};
+  if (d.x() == 0.0 && d.y() == 0.0) return best;
+  const auto consider = [&](double t, double value) {
+    if (value < best.distance) best = {value, a + t * d};
+  };
+  consider(1.0, f(1.0));
+  std::uintmax_t iterations = kBrentMaxIter;
+  const auto [t_min, f_min] = boost::math::tools::brent_find_minima(f, 0.0, 1.0, kBrentBits, iterations);
+  consider(t_min, f_min);
+  // Also the point nearest the centre in the unit-circle frame: it is inside
+  // whenever the segment dips into the ellipse, however shallowly, so a
+  // crossing never comes out positive.
+  const Vec2 q0 = ellipse.to_unit(a);
+  const Vec2 dq = ellipse.to_unit(b) - q0;
+  const double t_centre = std::clamp(-q0.dot(dq) / dq.squaredNorm(), 0.0, 1.0);
+  consider(t_centre, f(t_centre));
+  return best;
+}
+
+SegmentDistance segment_signed_distance(const BgPolygon& polygon, const Vec2& a, const Vec2& b) {
+  if (a == b) return {signed_distance(polygon, a), a};
+  const BgSegment seg(to_bg(a), to_bg(b));
+  if (!bg::intersects(seg, polygon)) {
+    // Disjoint: the closest pair lies on a ring edge and, for two disjoint
+    // segments, includes an endpoint of one of them.
+    double best = kInf;
+    Vec2 e0 = a;
+    Vec2 e1 = a;
+    bg::for_each_segment(polygon, [&](const auto& edge) {
+      const double dist = bg::distance(seg, edge);
+      if (dist < best) {
+        best = dist;
+        e0 = to_eigen(edge.first);
+        e1 = to_eigen(edge.second);
+      }
+    });
+    const BgSegment edge(to_bg(e0), to_bg(e1));
+    Vec2 point = a;
+    double point_distance = kInf;
+    for (const Vec2& c : {a, b, foot_on_segment(a, b, e0), foot_on_segment(a, b, e1)}) {
+      const double dist = bg::distance(to_bg(c), edge);
+      if (dist < point_distance) {
+        point_distance = dist;
+        point = c;
+      }
+    }
+    return {best, point};
+  }
+  // Meeting: minimise the signed distance over each piece of the segment inside
+  // the polygon. For a convex polygon the function is convex along the segment
+  // and Brent finds the deepest point; otherwise it finds a deep one.
+  const Vec2 d = b - a;
+  const auto f = [&](double t) { return signed_distance(polygon, a + t * d); };
+  SegmentDistance best{f(0.0), a};
+  const auto consider = [&](double t, double value) {
+    if (value < best.distance) best = {value, a + t * d};
+  };
+  consider(1.0, f(1.0));
+  const auto param = [&](const BgPoint& p) { return std::clamp((to_eigen(p) - a).dot(d) / d.squaredNorm(), 0.0, 1.0); };
+  bg::model::multi_linestring<bg::model::linestring<BgPoint>> inside;
+  bg::intersection(bg::model::linestring<BgPoint>{seg.first, seg.second}, polygon, inside);
+  for (const auto& piece : inside) {
+    if (piece.empty()) continue;
+    double t0 = param(piece.front());
+    double t1 = param(piece.back());
+    if (t0 > t1) std::swap(t0, t1);
+    if (!(t1 > t0)) continue;
+    consider(0.5 * (t0 + t1), f(0.5 * (t0 + t1)));
+    std::uintmax_t iterations = kBrentMaxIter;
+    const auto [t_min, f_min] = boost::math::tools::brent_find_minima(f, t0, t1, kBrentBits, iterations);
+    consider(t_min, f_min);
+  }
+  if (best.distance < 0.0) return best;
+  // Only touches the rings: 0 at the first contact from a.
+  double t_first = kInf;
+  Vec2 first = a;
+  bg::for_each_segment(polygon, [&](const auto& edge) {
+    std::vector<BgPoint> contacts;
+    bg::intersection(seg, BgSegment(edge.first, edge.second), contacts);
+    for (const BgPoint& c : contacts) {
+      const double t = (to_eigen(c) - a).dot(d) / d.squaredNorm();
+      if (t < t_first) {
+        t_first = t;
+        first = to_eigen(c);
+      }
+    }
+  });
+  return {0.0, first};
+}
+
+ObstacleField::ObstacleField(ObstacleSet obstacles, double margin)
+    : obstacles_(std::move(obstacles)), margin_(margin) {
+  if (!std::isfinite(margin) || margin < 0.0) {
+    throw input_error({"obstacle field", "", "margin"}, "a finite safety margin >= 0 m", fmt(margin));
+  }
+  const std::size_t n_ellipses = obstacles_.ellipses.size();
+  std::vector<Entry> entries;
+  entries.reserve(obstacles_.size());
+  for (std::size_t i = 0; i < n_ellipses; ++i) {
+    const Ellipse& e = obstacles_.ellipses[i].footprint;
+    const InputLocation where{"obstacle field", obstacle_name(i), "footprint"};
+    if (!finite(e.center) || !std::isfinite(e.theta)) {
+      throw input_error(where, "a finite centre and orientation");
+    }
+    if (!std::isfinite(e.a) || !(e.b > 0.0) || e.b > e.a) {
+      throw input_error(where, "semi-axes 0 < b <= a", "a = " + fmt(e.a) + ", b = " + fmt(e.b));
+    }
+    entries.emplace_back(ellipse_box(e), i);
+  }
+  for (std::size_t j = 0; j < obstacles_.polygons.size(); ++j) {
+    const BgPolygon& poly = obstacles_.polygons[j].footprint;
+    const InputLocation where{"obstacle field", obstacle_name(n_ellipses + j), "footprint"};
+    if (poly.outer().empty()) throw input_error(where, "a polygon with an outer ring");
+    bool all_finite = true;
+    bg::for_each_point(poly, [&](const BgPoint& p) { all_finite = all_finite && finite(to_eigen(p)); });
+    if (!all_finite) throw input_error(where, "finite coordinates");
+    entries.emplace_back(bg::return_envelope<BgBox>(poly), n_ellipses + j);
+  }
+  tree_ = Tree(entries.begin(), entries.end());  // packing (bulk) construction
+}
+
+double ObstacleField::distance_to(std::size_t obstacle, const Vec2& p) const {
+  const std::size_t n_ellipses = obstacles_.ellipses.size();
+  return obstacle < n_ellipses ? signed_distance(obstacles_.ellipses[obstacle].footprint, p)
+                               : signed_distance(obstacles_.polygons.at(obstacle - n_ellipses).footprint, p);
+}
+
+SegmentDistance ObstacleField::segment_distance_to(std::size_t obstacle, const Vec2& a, const Vec2& b) const {
+  const std::size_t n_ellipses = obstacles_.ellipses.size();
+  return obstacle < n_ellipses
+             ? segment_signed_distance(obstacles_.ellipses[obstacle].footprint, a, b)
+             : segment_signed_distance(obstacles_.polygons.at(obstacle - n_ellipses).footprint, a, b);
+}
+
+double ObstacleField::clearance(const Vec2& p) const {
+  double best = kInf;
+  by_box_distance(tree_, to_bg(p), [&](std::size_t i, double lower_bound) {
+    if (lower_bound > best) return false;
+    best = std::min(best, distance_to(i, p));
+    return true;
+  });
+  return best;
+}
+
+bool ObstacleField::is_free(const Vec2& p) const {
+  bool free = true;
+  by_box_distance(tree_, to_bg(p), [&](std::size_t i, double lower_bound) {
+    if (lower_bound >= margin_) return false;
+    free = distance_to(i, p) >= margin_;
+    return free;
+  });
+  return free;
+}
+
+ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec2& b) const {
+  Nearest best{kInf, 0, a};
+  const auto visit = [&](std::size_t i, double lower_bound) {
+    if (lower_bound > best.distance) return false;
+    const SegmentDistance d = segment_distance_to(i, a, b);
+    if (d.distance < best.distance) best = {d.distance, i, d.point_on_segment};
+    return true;
+  };
+  // A point query keeps degenerate segments away from the segment-box distance.
+  if (a == b) {
+    by_box_distance(tree_, to_bg(a), visit);
+  } else {
+    by_box_distance(tree_, BgSegment(to_bg(a), to_bg(b)), visit);
+  }
+  return best;
+}
+
+bool ObstacleField::segment_free(const Vec2& a, const Vec2& b) const {
+  bool free = true;
+  const auto visit = [&](std::size_t i, double lower_bound) {
+    if (lower_bound >= margin_) return false;
+    free = segment_distance_to(i, a, b).distance >= margin_;
+    return free;
+  };
+  if (a == b) {
+    by_box_distance(tree_, to_bg(a), visit);
+  } else {
+    by_box_distance(tree_, BgSegment(to_bg(a), to_bg(b)), visit);
+  }
+  return free;
+}
+
+std::string ObstacleField::obstacle_name(std::size_t obstacle) const {
+  const std::size_t n_ellipses = obstacles_.ellipses.size();
+  if (obstacle < n_ellipses) {
+    const std::string& id = obstacles_.ellipses[obstacle].id;
+    return id.empty() ? "ellipse #" + std::to_string(obstacle) : id;
+  }
+  const std::size_t j = obstacle - n_ellipses;
+  const std::string& id = obstacles_.polygons.at(j).id;
+  return id.empty() ? "polygon #" + std::to_string(j) : id;
+}
+
+}  // namespace deepguide

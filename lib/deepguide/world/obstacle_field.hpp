@@ -1,0 +1,113 @@
+#pragma once
+// The obstacle field: clearance queries over an obstacle set with a safety
+// margin, the planners' state-validity checker (in the sense of OMPL's
+// StateValidityChecker) and the ground truth routes are checked against.
+//
+// Math on top. For footprints F_i with signed distances sd_i (negative inside),
+//   clearance(p)           = min_i sd_i(p)
+//   segment clearance      = min_i min_{t in [0,1]} sd_i(a + t (b - a))
+//   free                   <=> clearance >= margin  (the zone boundary is free)
+// Ellipse, point: exact (project_to_ellipse). Ellipse, segment: the signed
+// distance to a convex set is convex, so t -> sd(a + t (b - a)) is convex on
+// [0, 1] and Brent's method finds its minimum; t is located to about 3e-8 and
+// where the minimum is smooth (always outside the ellipse) the distance error is
+// quadratic in that, far below a micrometre. Inside, the distance has a ridge
+// (the medial axis between the evolute cusps), so a crossing's depth is only
+// good to about 1e-8 of the segment length; its sign is always right.
+// Polygon: Boost.Geometry distances; inside, minus the distance to the rings;
+// a segment entering a polygon gets the depth Brent finds on its inside pieces.
+// Pruning: an obstacle lies inside its bounding box, so the distance to the box
+// is a lower bound of the distance to the obstacle (and a box that meets the
+// query bounds nothing: the query may be inside). The R-tree hands out boxes by
+// increasing distance; the search stops once the next box is no closer than the
+// best exact distance found.
+//
+// 2-D only: footprints, no heights or top depths. An obstacle under the
+// vehicle's depth still counts here; the vertical extent is handled by the
+// depth-aware planners later.
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <boost/geometry/index/rtree.hpp>
+
+#include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/geometry/polygon.hpp"
+#include "deepguide/world/obstacle.hpp"
+
+namespace deepguide {
+
+/// Smallest signed distance between a closed segment and one footprint, and
+/// where on the segment it is attained.
+struct SegmentDistance {
+  double distance;        ///< m; negative when the segment enters the footprint
+  Vec2 point_on_segment;  ///< a point of the segment at that distance
+};
+
+/// Signed distance from p to the polygon's area: positive outside (and in a
+/// hole), 0 on a ring, minus the distance to the nearest ring inside.
+double signed_distance(const BgPolygon& polygon, const Vec2& p);
+
+/// Minimum over the segment [a, b] of the signed distance to the ellipse
+/// (negative when the segment crosses it: the depth of its deepest point).
+SegmentDistance segment_signed_distance(const Ellipse& ellipse, const Vec2& a, const Vec2& b);
+
+/// Signed distance between the segment [a, b] and the polygon's area. Disjoint:
+/// the exact distance and the segment's closest point. Entering the interior: a
+/// negative value, minus the depth of the deepest point Brent finds on the
+/// pieces inside (the deepest point for a convex polygon, a deep one otherwise).
+/// Only touching a ring: 0 at the first contact going from a to b.
+SegmentDistance segment_signed_distance(const BgPolygon& polygon, const Vec2& a, const Vec2& b);
+
+class ObstacleField {
+ public:
+  /// Obstacle indices: ellipses first (0 .. E-1), then polygons (E .. E+P-1).
+  struct Nearest {
+    double distance;           ///< signed, m; +inf when there are no obstacles
+    std::size_t obstacle;      ///< index of the nearest obstacle (0 when there are none)
+    Vec2 point_on_segment;     ///< point of the segment closest to it
+  };
+
+  /// Builds the R-tree of obstacle bounding boxes. Throws InputError for a
+  /// margin that is not finite and >= 0, or an obstacle with non-finite
+  /// coordinates, an ellipse without 0 < b <= a, or an empty polygon.
+  ObstacleField(ObstacleSet obstacles, double margin);
+
+  double margin() const { return margin_; }
+  const ObstacleSet& obstacles() const { return obstacles_; }
+  std::size_t size() const { return obstacles_.size(); }
+
+  /// Signed distance from p to the nearest obstacle footprint (negative inside
+  /// one); +inf when there are no obstacles.
+  double clearance(const Vec2& p) const;
+  /// clearance(p) >= margin: p is outside every safety zone; the boundary counts as free.
+  bool is_free(const Vec2& p) const;
+
+  /// Smallest signed distance between the closed segment [a, b] and any
+  /// obstacle footprint, which obstacle and where. Ties go to the obstacle found
+  /// first; a degenerate segment (a == b) is the point a.
+  Nearest segment_clearance(const Vec2& a, const Vec2& b) const;
+  /// segment_clearance(a, b).distance >= margin, stopping at the first obstacle
+  /// closer than the margin and never looking at boxes farther than it.
+  bool segment_free(const Vec2& a, const Vec2& b) const;
+
+  /// Exact signed distance to one obstacle (no R-tree): for brute-force checks.
+  double distance_to(std::size_t obstacle, const Vec2& p) const;
+  SegmentDistance segment_distance_to(std::size_t obstacle, const Vec2& a, const Vec2& b) const;
+
+  /// The obstacle's id if non-empty, else "ellipse #i" / "polygon #j", with i
+  /// and j counted from 0 within their own list.
+  std::string obstacle_name(std::size_t obstacle) const;
+
+ private:
+  using Entry = std::pair<BgBox, std::size_t>;
+  using Tree = boost::geometry::index::rtree<Entry, boost::geometry::index::rstar<16>>;
+
+  ObstacleSet obstacles_;
+  double margin_;
+  Tree tree_;
+};
+
+}  // namespace deepguide

@@ -1,0 +1,93 @@
+// deepguide plan and deepguide check route, end to end.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+using deepguide::test::run_cli;
+using deepguide::test::ScratchDir;
+
+namespace {
+const std::string kSample = deepguide::test::source_file("data/sample_obstacles.geojson");
+// Start and goal on opposite sides of the sample's cluster (lon,lat).
+const std::string kFromTo = " --from 10.240,54.440 --to 10.265,54.462";
+}  // namespace
+
+TEST(CliPlan, WritesARouteThatTheCheckerAccepts) {
+  ScratchDir dir;
+  const std::string route = dir.file("route.geojson");
+  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + route + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j.at("length_m").get<double>(), 2800.0);
+  EXPECT_GE(j.at("min_clearance_m").get<double>(), 5.0 - 1e-9);
+  EXPECT_EQ(j.at("crs").get<std::string>(), "EPSG:32632");
+  // The route file is RFC 7946 GeoJSON: a line plus one point per waypoint.
+  std::ifstream in(route);
+  const auto geo = nlohmann::json::parse(in);
+  int lines = 0, points = 0;
+  for (const auto& f : geo.at("features")) {
+    const std::string type = f.at("geometry").at("type");
+    lines += type == "LineString";
+    points += type == "Point";
+  }
+  EXPECT_EQ(lines, 1);
+  EXPECT_EQ(points, j.at("waypoints").get<int>());
+  const auto ok = run_cli("check route '" + route + "' --obstacles '" + kSample + "' --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(nlohmann::json::parse(ok.out).at("safe").get<bool>());
+  EXPECT_NEAR(nlohmann::json::parse(ok.out).at("length_m").get<double>(), j.at("length_m").get<double>(), 1e-3);
+}
+
+TEST(CliPlan, ReducedAndFullGraphsAgree) {
+  const auto a = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --json");
+  const auto b = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph visibility-full --search dijkstra --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_NEAR(nlohmann::json::parse(a.out).at("length_m").get<double>(),
+              nlohmann::json::parse(b.out).at("length_m").get<double>(), 1e-6);
+}
+
+TEST(CliPlan, CheckRouteNamesTheSegmentAndObstacleOfAnUnsafeRoute) {
+  ScratchDir dir;
+  // Its second segment cuts through obstacle c5 (20 m deep, the worst contact).
+  const std::string route = dir.write("bad.geojson", R"({"type":"FeatureCollection","features":[
+    {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[10.24,54.44],[10.245,54.445],[10.26,54.455]]}}]})");
+  const auto r = run_cli("check route '" + route + "' --obstacles '" + kSample + "'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("segment 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'c5'"), std::string::npos) << r.err;
+}
+
+TEST(CliPlan, ExitCodes) {
+  ScratchDir dir;
+  // Goal inside obstacle c1's zone: no safe route, exit 3, naming c1.
+  const auto inside = run_cli("plan --obstacles '" + kSample + "' --from 10.240,54.440 --to 10.2500,54.4501");
+  EXPECT_EQ(inside.exit_code, 3) << inside.err;
+  EXPECT_NE(inside.err.find("'c1'"), std::string::npos) << inside.err;
+  // Identical start and goal, malformed and out-of-range positions: bad input.
+  EXPECT_EQ(run_cli("plan --obstacles '" + kSample + "' --from 10.24,54.44 --to 10.24,54.44").exit_code, 1);
+  EXPECT_EQ(run_cli("plan --obstacles '" + kSample + "' --from 10.24 --to 10.26,54.46").exit_code, 1);
+  EXPECT_EQ(run_cli("plan --obstacles '" + kSample + "' --from nan,54 --to 10.26,54.46").exit_code, 1);
+  EXPECT_EQ(run_cli("plan --obstacles '" + kSample + "' --from 10.24,95 --to 10.26,54.46").exit_code, 1);
+  EXPECT_EQ(run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph magic").exit_code, 1);
+  EXPECT_EQ(run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --margin -3").exit_code, 1);
+  EXPECT_EQ(run_cli("plan --from 1,2 --to 3,4").exit_code, 2);  // --obstacles missing
+  // A goal walled in by the sample's polygon: its interior is unreachable.
+  const std::string walls = dir.write("walls.geojson", R"({"type":"FeatureCollection","features":[
+    {"type":"Feature","properties":{"id":"ring"},"geometry":{"type":"Polygon","coordinates":[
+      [[10.0,54.0],[10.1,54.0],[10.1,54.1],[10.0,54.1],[10.0,54.0]],
+      [[10.02,54.02],[10.08,54.02],[10.08,54.08],[10.02,54.08],[10.02,54.02]]]}}]})");
+  const auto enclosed = run_cli("plan --obstacles '" + walls + "' --from 9.9,53.9 --to 10.05,54.05 --margin 1");
+  EXPECT_EQ(enclosed.exit_code, 3) << enclosed.err;
+}
+
+TEST(CliPlan, ProjectedCoordinatesWithCrs) {
+  // The same plan given in UTM 32N metres instead of lon/lat.
+  const auto ll = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --json");
+  ASSERT_EQ(ll.exit_code, 0) << ll.err;
+  const auto r = run_cli("plan --obstacles '" + kSample + "' --crs EPSG:32632 --from 580440.5,6033365.3 --to 582000,6035800 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(r.out).at("length_m").get<double>(), 2000.0);
+}

@@ -1,0 +1,166 @@
+// Degenerate geometry that breaks naive visibility graphs, and bad planning input.
+#include <gtest/gtest.h>
+
+#include <boost/geometry.hpp>
+#include <cmath>
+#include <random>
+
+#include "deepguide/core/angles.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/planner.hpp"
+
+using namespace deepguide;
+namespace bg = boost::geometry;
+
+namespace {
+
+PolygonObstacle polygon(std::initializer_list<Vec2> pts, std::string id = "p") {
+  PolygonObstacle p;
+  p.id = std::move(id);
+  for (const Vec2& v : pts) p.footprint.outer().push_back(to_bg(v));
+  p.footprint.outer().push_back(p.footprint.outer().front());
+  bg::correct(p.footprint);
+  return p;
+}
+
+PolygonObstacle box(double x0, double y0, double x1, double y1, std::string id = "box") {
+  return polygon({{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}}, std::move(id));
+}
+
+PlanOutcome plan(const ObstacleSet& set, double margin, Vec2 s, Vec2 g, GraphKind kind = GraphKind::visibility) {
+  Planner planner(set, {margin, 0.05, kind, SearchAlgorithm::astar});
+  return planner.solve({s, g});
+}
+
+void expect_route(const PlanOutcome& out, double length, double rel_tol = 1e-9) {
+  ASSERT_TRUE(out.result.found) << out.result.message;
+  EXPECT_TRUE(out.check.safe) << out.check.describe();
+  EXPECT_NEAR(out.result.route.length(), length, rel_tol * length);
+}
+
+}  // namespace
+
+class BothGraphs : public ::testing::TestWithParam<GraphKind> {};
+INSTANTIATE_TEST_SUITE_P(Graphs, BothGraphs, ::testing::Values(GraphKind::visibility, GraphKind::visibility_full),
+                         [](const auto& info) { return info.param == GraphKind::visibility ? "reduced" : "full"; });
+
+TEST_P(BothGraphs, RouteGrazingAPolygonVertexStaysStraight) {
+  ObstacleSet set;
+  set.polygons.push_back(box(0, 0, 10, 10));
+  // x + y = 20 touches the box only at its corner (10, 10).
+  expect_route(plan(set, 0.0, {0, 20}, {20, 0}, GetParam()), 20.0 * std::sqrt(2.0));
+}
+
+TEST_P(BothGraphs, RouteAlongAnEdgeStaysStraight) {
+  ObstacleSet set;
+  set.polygons.push_back(box(0, 0, 10, 10));
+  expect_route(plan(set, 0.0, {-5, 10}, {15, 10}, GetParam()), 20.0);
+  expect_route(plan(set, 0.0, {-5, 0}, {15, 0}, GetParam()), 20.0);
+}
+
+TEST_P(BothGraphs, CollinearVerticesOnAnEdge) {
+  ObstacleSet set;
+  set.polygons.push_back(polygon({{0, 0}, {5, 0}, {7, 0}, {10, 0}, {10, 10}, {0, 10}}));
+  expect_route(plan(set, 0.0, {-5, 0}, {15, 0}, GetParam()), 20.0);
+  // Through the middle of the box is impossible: around it, via two corners.
+  expect_route(plan(set, 0.0, {5, -5}, {5, 15}, GetParam()), 2.0 * std::hypot(5.0, 5.0) + 10.0);
+}
+
+TEST_P(BothGraphs, TouchingObstaclesLeaveNoGapBetweenThem) {
+  ObstacleSet set;
+  set.polygons.push_back(box(0, 0, 10, 10, "left"));
+  set.polygons.push_back(box(10, 0, 20, 10, "right"));
+  // The shared edge x = 10 is inside the merged obstacle: go round a short side.
+  expect_route(plan(set, 0.0, {10, -5}, {10, 15}, GetParam()), 2.0 * std::hypot(10.0, 5.0) + 10.0);
+}
+
+TEST_P(BothGraphs, ObstaclesTouchingAtACornerLetALinePassThroughIt) {
+  ObstacleSet set;
+  set.polygons.push_back(box(0, 0, 10, 10, "low"));
+  set.polygons.push_back(box(10, 10, 20, 20, "high"));
+  expect_route(plan(set, 0.0, {0, 20}, {20, 0}, GetParam()), 20.0 * std::sqrt(2.0));
+  // ... but not a line crossing both boxes' interiors.
+  const PlanOutcome blocked = plan(set, 0.0, {-1, -1}, {21, 21}, GetParam());
+  ASSERT_TRUE(blocked.result.found);
+  EXPECT_GT(blocked.result.route.length(), 22.0 * std::sqrt(2.0) + 1.0);
+  EXPECT_TRUE(blocked.check.safe) << blocked.check.describe();
+}
+
+TEST_P(BothGraphs, StartAndGoalExactlyOnAZoneBoundary) {
+  // Disc r = 10, margin 5: the zone is the disc of radius 15. From (-15, 0) on
+  // its boundary to (100, 0): arc from angle pi to the tangent point at
+  // acos(15/100), then the tangent: 15 (pi - acos(0.15)) + sqrt(100^2 - 15^2).
+  ObstacleSet set;
+  EllipticCylinder c;
+  c.id = "disc";
+  c.footprint = Ellipse{{0, 0}, 10, 10, 0};
+  set.ellipses.push_back(c);
+  const double exact = 15.0 * (kPi - std::acos(0.15)) + std::sqrt(100.0 * 100.0 - 15.0 * 15.0);
+  for (const auto& [s, g] : {std::pair{Vec2(-15, 0), Vec2(100, 0)}, std::pair{Vec2(100, 0), Vec2(-15, 0)}}) {
+    const PlanOutcome out = plan(set, 5.0, s, g, GetParam());
+    ASSERT_TRUE(out.result.found) << out.result.message;
+    EXPECT_TRUE(out.check.safe) << out.check.describe();
+    EXPECT_GE(out.result.route.length(), exact - 1e-9);
+    EXPECT_LE(out.result.route.length(), exact * 1.002);
+  }
+}
+
+TEST(PlannerInput, IdenticalStartAndGoalIsBadInput) {
+  EXPECT_THROW(plan({}, 5.0, {1, 2}, {1, 2}), InputError);
+}
+
+TEST(PlannerInput, NanOrInfiniteIsBadInput) {
+  EXPECT_THROW(plan({}, 5.0, {std::nan(""), 0}, {1, 2}), InputError);
+  EXPECT_THROW(plan({}, 5.0, {0, 0}, {1, INFINITY}), InputError);
+  EXPECT_THROW(Planner({}, {std::nan(""), 0.2, GraphKind::visibility, SearchAlgorithm::astar}), InputError);
+  EXPECT_THROW(Planner({}, {-1.0, 0.2, GraphKind::visibility, SearchAlgorithm::astar}), InputError);
+  EXPECT_THROW(Planner({}, {5.0, 0.0, GraphKind::visibility, SearchAlgorithm::astar}), InputError);
+}
+
+TEST(PlannerInput, StartInsideASafetyZoneNamesTheObstacle) {
+  ObstacleSet set;
+  EllipticCylinder c;
+  c.id = "wreck-7";
+  c.footprint = Ellipse{{0, 0}, 10, 4, 0};
+  set.ellipses.push_back(c);
+  try {
+    plan(set, 5.0, {12, 0}, {100, 0});
+    FAIL() << "no error";
+  } catch (const NoRouteError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("wreck-7"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("start"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("2.00 m"), std::string::npos) << msg;
+  }
+  EXPECT_THROW(plan(set, 5.0, {100, 0}, {0, 0}), NoRouteError);
+}
+
+TEST(PlannerInput, EnclosedGoalHasNoRoute) {
+  // Four walls around the goal, overlapping at the corners.
+  ObstacleSet set;
+  set.polygons = {box(-20, -20, 20, -15), box(-20, 15, 20, 20), box(-20, -20, -15, 20), box(15, -20, 20, 20)};
+  for (GraphKind kind : {GraphKind::visibility, GraphKind::visibility_full}) {
+    const PlanOutcome out = plan(set, 1.0, {-100, 0}, {0, 0}, kind);
+    EXPECT_FALSE(out.result.found);
+    EXPECT_FALSE(out.result.message.empty());
+  }
+}
+
+TEST(PlannerInput, HundredThousandObstaclesStopWithAClearMessage) {
+  ObstacleSet set;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> pos(0.0, 20000.0);
+  for (int i = 0; i < 100000; ++i) {
+    EllipticCylinder c;
+    c.footprint = Ellipse{{pos(rng), pos(rng)}, 3.0, 2.0, 0.0};
+    set.ellipses.push_back(c);
+  }
+  try {
+    Planner planner(set, {2.0, 0.2, GraphKind::visibility, SearchAlgorithm::astar});
+    // If it builds, it must also answer.
+    const PlanOutcome out = planner.solve({{-10, -10}, {20010, 20010}});
+    EXPECT_TRUE(!out.result.found || out.check.safe);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("corners"), std::string::npos) << e.what();
+  }
+}
