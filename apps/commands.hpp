@@ -2,7 +2,13 @@
 // Each subcommand registers itself on its parent from its own file.
 
 #include <CLI/CLI.hpp>
+#include <Eigen/Core>
 #include <string>
+
+namespace deepguide {
+class LocalFrame;
+struct Route;
+}  // namespace deepguide
 
 namespace deepguide::app {
 
@@ -17,5 +23,11 @@ void register_obstacles_info(CLI::App& obstacles);
 void register_obstacles_convert(CLI::App& obstacles);
 void register_plan(CLI::App& app);
 void register_check_route(CLI::App& check);
+void register_render_route(CLI::App& render);
+
+/// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north
+/// to true north at a local point, and the default title of a route chart.
+double true_north_deg(const LocalFrame& frame, const Eigen::Vector2d& at);
+std::string route_title(const std::string& name, const Route& route, double margin, const LocalFrame& frame);
 
 }  // namespace deepguide::app

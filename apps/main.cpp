@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
   check->require_subcommand(1);
   app::register_check_route(*check);
+  CLI::App* render = app.add_subcommand("render", "Draw charts as PNG or SVG");
+  render->require_subcommand(1);
+  app::register_render_route(*render);
 
   try {
     app.parse(argc, argv);

@@ -9,6 +9,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_io.hpp"
+#include "deepguide/render/route_scene.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
@@ -25,6 +26,8 @@ struct PlanOptions {
   std::string graph = "visibility";
   std::string search = "astar";
   bool json = false;
+  std::string render;         ///< --render: chart to draw (.png or .svg)
+  bool render_graph = false;  ///< --render-graph: draw the zone polygons and the graph too
 };
 
 }  // namespace
@@ -46,15 +49,20 @@ void register_plan(CLI::App& app) {
                   "--vertical-clearance are passed over");
   cmd->add_option("--vertical-clearance", o->vertical_clearance, "Vertical clearance above obstacle tops (m)")
       ->capture_default_str();
-  cmd->add_option("--graph", o->graph, "visibility (reduced) or visibility-full")->capture_default_str();
+  cmd->add_option("--graph", o->graph,
+                  "visibility (reduced polygon graph), visibility-full (the seed's), or tangent (exact, curved)")
+      ->capture_default_str();
   cmd->add_option("--search", o->search, "astar or dijkstra")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the summary as JSON");
+  cmd->add_option("--render", o->render, "Also draw the route chart (obstacles, zones, route) as .png or .svg");
+  cmd->add_flag("--render-graph", o->render_graph, "With --render: draw the zone polygons and the planning graph");
   cmd->callback([o] {
     PlannerOptions options;
     options.margin = o->margin;
     options.tolerance = o->tolerance;
     options.graph = parse_graph_kind(o->graph);
     options.search = parse_search(o->search);
+    if (!o->render.empty()) image_format_for(o->render);  // before the work, not after
     const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
     const PlanningProblem problem{parse_position(o->from, "--from", loaded.frame, !o->frame.crs.empty()),
                                   parse_position(o->to, "--to", loaded.frame, !o->frame.crs.empty())};
@@ -82,12 +90,38 @@ void register_plan(CLI::App& app) {
         {"obstacles", planner.field().size()},
         {"passed_over", passed_over},
         {"crs", loaded.frame.id()}};
+    if (!out.result.legs.empty()) {
+      summary["exact_length_m"] = out.result.exact_length_m;
+      std::size_t arcs = 0;
+      for (const RouteLeg& leg : out.result.legs) arcs += leg.kind == RouteLeg::Kind::arc;
+      summary["arcs"] = arcs;
+      summary["lines"] = out.result.legs.size() - arcs;
+    }
     if (!o->output.empty()) write_route_geojson(o->output, out.result.route, loaded.frame, summary);
+    if (!o->render.empty()) {
+      RouteScene scene;
+      scene.obstacles = &planner.field().obstacles();
+      scene.margin = o->margin;
+      scene.route = out.result.route.points;
+      scene.start = problem.start;
+      scene.goal = problem.goal;
+      scene.true_north_deg = true_north_deg(loaded.frame, problem.start);
+      scene.title = route_title("deepguide plan", out.result.route, o->margin, loaded.frame);
+      if (o->render_graph) {
+        scene.zone_polygons = &planner.zone_polygons();
+        scene.graph_edges = planner.graph_edges();
+      }
+      render_route(scene, o->render);
+    }
     if (o->json) {
       std::cout << summary.dump(2) << "\n";
       return;
     }
     std::printf("length           %.2f m, %zu waypoints\n", out.result.route.length(), out.result.route.points.size());
+    if (!out.result.legs.empty()) {
+      std::printf("exact length     %.3f m in %zu lines and arcs (the polyline keeps outside the arcs)\n",
+                  out.result.exact_length_m, out.result.legs.size());
+    }
     std::printf("min clearance    %.2f m (margin %.2f m)\n", out.check.min_clearance_m, o->margin);
     std::printf("graph            %s, %zu vertices, %zu edges; %s expanded %zu\n", o->graph.c_str(),
                 out.result.stats.graph_vertices, out.result.stats.graph_edges, o->search.c_str(),
@@ -95,6 +129,7 @@ void register_plan(CLI::App& app) {
     std::printf("time             build %.2f ms, query %.2f ms\n", out.result.stats.build_ms, out.result.stats.query_ms);
     if (passed_over > 0) std::printf("passed over      %zu obstacle(s) deeper than the depth band\n", passed_over);
     if (!o->output.empty()) std::printf("wrote            %s\n", o->output.c_str());
+    if (!o->render.empty()) std::printf("rendered         %s\n", o->render.c_str());
   });
 }
 

@@ -88,7 +88,7 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
   std::uniform_real_distribution<double> pos(-180.0, 180.0), ang(-kPi, kPi), u01(0.0, 1.0);
   std::uniform_int_distribution<int> count(1, 6);
   int disjoint_cases = 0, merged_cases = 0, no_route = 0;
-  double worst_excess = 0.0;
+  double worst_excess = 0.0, worst_exact_gap = 0.0;
   for (int scenario = 0; scenario < 1000; ++scenario) {
     ObstacleSet set;
     const int n = count(rng);
@@ -123,6 +123,13 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
     dijkstra_options.search = SearchAlgorithm::dijkstra;
     const double ld = Planner(set, dijkstra_options).solve({start, goal}).result.route.length();
     ASSERT_NEAR(lr, ld, 1e-9 * ld) << "scenario " << scenario;
+    PlannerOptions tangent_options = base;
+    tangent_options.graph = GraphKind::tangent;
+    const PlanOutcome t = Planner(set, tangent_options).solve({start, goal});
+    ASSERT_TRUE(t.result.found) << "scenario " << scenario;
+    ASSERT_TRUE(t.check.safe) << "scenario " << scenario << ": " << t.check.describe();
+    // Enclosing polygons only lengthen routes: the exact route is never longer.
+    ASSERT_LE(t.result.exact_length_m, lr * (1 + 1e-12)) << "scenario " << scenario;
 
     if (bg::num_geometries(reduced.zone_polygons()) != set.size()) {
       ++merged_cases;
@@ -136,12 +143,17 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
     const PlanResult lb = lower.solve({start, goal}, SearchAlgorithm::astar);
     ASSERT_TRUE(lb.found);
     const double excess = lr / lb.route.length() - 1.0;
+    const double exact_gap = t.result.exact_length_m / lb.route.length() - 1.0;
+    worst_exact_gap = std::max(worst_exact_gap, exact_gap);
+    EXPECT_GE(exact_gap, -1e-12) << "scenario " << scenario;
+    EXPECT_LE(exact_gap, 1e-4) << "scenario " << scenario;
     worst_excess = std::max(worst_excess, excess);
     EXPECT_GE(excess, -1e-12) << "scenario " << scenario;
     EXPECT_LE(excess, 1e-3) << "scenario " << scenario;
   }
-  std::printf("[ planner ] %d disjoint, %d with merged zones, %d without route; worst excess over the lower bound %.3g %%\n",
-              disjoint_cases, merged_cases, no_route, 100.0 * worst_excess);
+  std::printf("[ planner ] %d disjoint, %d with merged zones, %d without route; worst excess over the lower bound: "
+              "polygon graphs %.3g %%, tangent graph %.3g %%\n",
+              disjoint_cases, merged_cases, no_route, 100.0 * worst_excess, 100.0 * worst_exact_gap);
   EXPECT_GT(disjoint_cases, 300);
   EXPECT_GT(merged_cases, 50);
 }

@@ -1,9 +1,11 @@
 #include "deepguide/planning/planner.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 
@@ -12,7 +14,8 @@ namespace deepguide {
 GraphKind parse_graph_kind(const std::string& text) {
   if (text == "visibility") return GraphKind::visibility;
   if (text == "visibility-full") return GraphKind::visibility_full;
-  throw InputError("--graph: expected visibility or visibility-full, got '" + text + "'");
+  if (text == "tangent") return GraphKind::tangent;
+  throw InputError("--graph: expected visibility, visibility-full or tangent, got '" + text + "'");
 }
 
 SearchAlgorithm parse_search(const std::string& text) {
@@ -21,13 +24,26 @@ SearchAlgorithm parse_search(const std::string& text) {
   throw InputError("--search: expected astar or dijkstra, got '" + text + "'");
 }
 
-std::string to_string(GraphKind kind) { return kind == GraphKind::visibility ? "visibility" : "visibility-full"; }
+std::string to_string(GraphKind kind) {
+  switch (kind) {
+    case GraphKind::visibility: return "visibility";
+    case GraphKind::visibility_full: return "visibility-full";
+    case GraphKind::tangent: return "tangent";
+  }
+  return "?";
+}
 std::string to_string(SearchAlgorithm a) { return a == SearchAlgorithm::astar ? "astar" : "dijkstra"; }
+
+namespace {
+// See PlannerOptions::margin: zero-width gaps between touching obstacles are closed.
+constexpr double kMinGraphMargin = 1e-6;
+}  // namespace
 
 struct Planner::Impl {
   ObstacleField field;
-  BgMultiPolygon zones;
-  VisibilityGraph graph;
+  BgMultiPolygon zones;                      // visibility graphs only
+  std::unique_ptr<VisibilityGraph> visibility;
+  std::unique_ptr<TangentGraph> tangent;
 };
 
 Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options) : options_(options) {
@@ -37,12 +53,16 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options) : options
   if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
     throw InputError("--tolerance: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
   }
-  BgMultiPolygon zones = merged_zone_polygons(obstacles, {options.margin, options.tolerance});
-  const VisibilityVariant variant =
-      options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced;
-  VisibilityGraph graph(zones, variant);
-  impl_ = std::make_unique<Impl>(Impl{ObstacleField(std::move(obstacles), options.margin), std::move(zones),
-                                      std::move(graph)});
+  impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr});
+  const double graph_margin = std::max(options.margin, kMinGraphMargin);
+  if (options.graph == GraphKind::tangent) {
+    impl_->tangent = std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance);
+  } else {
+    impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
+    impl_->visibility = std::make_unique<VisibilityGraph>(
+        impl_->zones,
+        options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced);
+  }
 }
 
 Planner::~Planner() = default;
@@ -51,7 +71,9 @@ Planner& Planner::operator=(Planner&&) noexcept = default;
 
 const ObstacleField& Planner::field() const { return impl_->field; }
 const BgMultiPolygon& Planner::zone_polygons() const { return impl_->zones; }
-std::vector<std::pair<Vec2, Vec2>> Planner::graph_edges() const { return impl_->graph.edges(); }
+std::vector<std::pair<Vec2, Vec2>> Planner::graph_edges() const {
+  return impl_->tangent ? impl_->tangent->tangent_segments() : impl_->visibility->edges();
+}
 
 namespace {
 
@@ -82,20 +104,24 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   require_free(impl_->field, problem.start, "the start");
   require_free(impl_->field, problem.goal, "the goal");
 
-  // A point outside the true zone can still lie in the thin band between a
-  // zone and its enclosing polygon; step to the polygon's boundary first.
-  PlanningProblem inner = problem;
-  const bool start_in_band = impl_->graph.strictly_inside(problem.start);
-  const bool goal_in_band = impl_->graph.strictly_inside(problem.goal);
-  if (start_in_band) inner.start = impl_->graph.closest_boundary_point(problem.start);
-  if (goal_in_band) inner.goal = impl_->graph.closest_boundary_point(problem.goal);
-
   PlanOutcome out;
-  out.result = impl_->graph.solve(inner, options_.search);
-  if (out.result.found) {
-    auto& pts = out.result.route.points;
-    if (start_in_band) pts.insert(pts.begin(), problem.start);
-    if (goal_in_band) pts.push_back(problem.goal);
+  if (impl_->tangent) {
+    out.result = impl_->tangent->solve(problem, options_.search);
+  } else {
+    // A point outside the true zone can still lie in the thin band between a
+    // zone and its enclosing polygon; step to the polygon's boundary first.
+    VisibilityGraph& graph = *impl_->visibility;
+    PlanningProblem inner = problem;
+    const bool start_in_band = graph.strictly_inside(problem.start);
+    const bool goal_in_band = graph.strictly_inside(problem.goal);
+    if (start_in_band) inner.start = graph.closest_boundary_point(problem.start);
+    if (goal_in_band) inner.goal = graph.closest_boundary_point(problem.goal);
+    out.result = graph.solve(inner, options_.search);
+    if (out.result.found) {
+      auto& pts = out.result.route.points;
+      if (start_in_band) pts.insert(pts.begin(), problem.start);
+      if (goal_in_band) pts.push_back(problem.goal);
+    }
   }
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
                           impl_->field);

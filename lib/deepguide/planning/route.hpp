@@ -14,6 +14,19 @@ struct Route {
   double length() const;
 };
 
+/// A leg of a route made of the seed's basic manoeuvres: a straight line, or
+/// an arc along a safety zone's boundary (a circle of radius `radius_m` for
+/// discs and polygon corners; an offset-ellipse arc otherwise).
+struct RouteLeg {
+  enum class Kind { line, arc };
+  Kind kind = Kind::line;
+  Vec2 from, to;
+  double length_m = 0.0;
+  int turn = 0;             ///< arcs: +1 anticlockwise (turning left), -1 clockwise
+  double radius_m = 0.0;    ///< arcs: largest radius of curvature along the arc
+  std::string obstacle;     ///< arcs: the obstacle whose zone the arc follows
+};
+
 /// What a planner measured while solving; every planner fills what applies.
 struct PlanStats {
   std::size_t graph_vertices = 0;
@@ -32,7 +45,9 @@ struct PlanningProblem {
 /// The common result of every planner's solve(problem).
 struct PlanResult {
   bool found = false;
-  Route route;
+  Route route;               ///< a polyline; curved legs are approximated from outside
+  std::vector<RouteLeg> legs;  ///< exact lines and arcs, where the planner knows them
+  double exact_length_m = 0.0; ///< length of the legs (0 when legs is empty)
   PlanStats stats;
   std::string message;  ///< why no route was found, one line
 };

@@ -209,10 +209,13 @@ SegmentDistance segment_signed_distance(const BgPolygon& polygon, const Vec2& a,
   return {0.0, first};
 }
 
-ObstacleField::ObstacleField(ObstacleSet obstacles, double margin)
-    : obstacles_(std::move(obstacles)), margin_(margin) {
+ObstacleField::ObstacleField(ObstacleSet obstacles, double margin, double slack)
+    : obstacles_(std::move(obstacles)), margin_(margin), threshold_(margin - slack) {
   if (!std::isfinite(margin) || margin < 0.0) {
     throw input_error({"obstacle field", "", "margin"}, "a finite safety margin >= 0 m", fmt(margin));
+  }
+  if (!std::isfinite(slack) || slack < 0.0) {
+    throw input_error({"obstacle field", "", "slack"}, "a finite slack >= 0 m", fmt(slack));
   }
   const std::size_t n_ellipses = obstacles_.ellipses.size();
   std::vector<Entry> entries;
@@ -266,8 +269,8 @@ double ObstacleField::clearance(const Vec2& p) const {
 bool ObstacleField::is_free(const Vec2& p) const {
   bool free = true;
   by_box_distance(tree_, to_bg(p), [&](std::size_t i, double lower_bound) {
-    if (lower_bound >= margin_) return false;
-    free = distance_to(i, p) >= margin_;
+    if (lower_bound >= threshold_) return false;
+    free = distance_to(i, p) >= threshold_;
     return free;
   });
   return free;
@@ -293,8 +296,8 @@ ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec
 bool ObstacleField::segment_free(const Vec2& a, const Vec2& b) const {
   bool free = true;
   const auto visit = [&](std::size_t i, double lower_bound) {
-    if (lower_bound >= margin_) return false;
-    free = segment_distance_to(i, a, b).distance >= margin_;
+    if (lower_bound >= threshold_) return false;
+    free = segment_distance_to(i, a, b).distance >= threshold_;
     return free;
   };
   if (a == b) {

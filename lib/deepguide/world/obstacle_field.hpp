@@ -73,7 +73,10 @@ class ObstacleField {
   /// Builds the R-tree of obstacle bounding boxes. Throws InputError for a
   /// margin that is not finite and >= 0, or an obstacle with non-finite
   /// coordinates, an ellipse without 0 < b <= a, or an empty polygon.
-  ObstacleField(ObstacleSet obstacles, double margin);
+  /// `slack` (>= 0) lets is_free / segment_free accept clearance down to
+  /// margin - slack: planners whose segments touch the zones exactly (the
+  /// tangent graph) pass a few nanometres so rounding does not reject them.
+  ObstacleField(ObstacleSet obstacles, double margin, double slack = 0.0);
 
   double margin() const { return margin_; }
   const ObstacleSet& obstacles() const { return obstacles_; }
@@ -107,6 +110,7 @@ class ObstacleField {
 
   ObstacleSet obstacles_;
   double margin_;
+  double threshold_;  // margin - slack
   Tree tree_;
 };
 

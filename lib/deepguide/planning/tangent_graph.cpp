@@ -1,0 +1,400 @@
+#include "deepguide/planning/tangent_graph.hpp"
+
+#include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <boost/math/tools/minima.hpp>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <unordered_map>
+
+#include "deepguide/core/angles.hpp"
+#include "deepguide/geometry/periodic_roots.hpp"
+#include "deepguide/planning/zone_pieces.hpp"
+#include "deepguide/world/obstacle_field.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr std::size_t kNoPiece = static_cast<std::size_t>(-1);
+// Tangent segments touch zones exactly; the field judging them allows this
+// much (m) so rounding does not reject them. The route checker allows 1e-6.
+constexpr double kTouchEps = 1e-7;
+
+Vec2 unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+struct Node {
+  std::size_t piece;  // kNoPiece for start and goal
+  double phi;         // outward normal angle on the piece, in [0, 2 pi)
+  Vec2 p;
+};
+
+struct Segment {
+  Node a, b;
+};
+
+ObstacleSet shifted(ObstacleSet set, const Vec2& origin) {
+  for (auto& c : set.ellipses) c.footprint.center -= origin;
+  for (auto& poly : set.polygons) {
+    auto shift = [&](auto& ring) {
+      for (auto& pt : ring) pt = to_bg(to_eigen(pt) - origin);
+    };
+    shift(poly.footprint.outer());
+    for (auto& inner : poly.footprint.inners()) shift(inner);
+  }
+  return set;
+}
+
+Vec2 centre_of(const ObstacleSet& set) {
+  BgBox box;
+  bool any = false;
+  auto grow = [&](const Vec2& p) {
+    if (!any) {
+      box = BgBox(to_bg(p), to_bg(p));
+      any = true;
+    } else {
+      bg::expand(box, to_bg(p));
+    }
+  };
+  for (const auto& c : set.ellipses) grow(c.footprint.center);
+  for (const auto& poly : set.polygons) {
+    for (const auto& pt : poly.footprint.outer()) grow(to_eigen(pt));
+  }
+  if (!any) return Vec2::Zero();
+  return 0.5 * (to_eigen(box.min_corner()) + to_eigen(box.max_corner()));
+}
+
+// Bounding box of a piece (support function along the axes).
+BgBox piece_box(const ZonePiece& z) {
+  return BgBox(BgPoint(-z.support(-Vec2::UnitX()), -z.support(-Vec2::UnitY())),
+               BgPoint(z.support(Vec2::UnitX()), z.support(Vec2::UnitY())));
+}
+
+}  // namespace
+
+struct TangentGraph::Impl {
+  Vec2 origin;
+  double margin;
+  double tolerance;
+  std::vector<ZonePiece> pieces;
+  std::vector<std::string> piece_names;
+  std::vector<bool> needs_arc_check;  // another zone reaches into the piece's box
+  std::unique_ptr<ObstacleField> field;  // shifted frame, accepts margin - kTouchEps
+  std::vector<Segment> tangents;      // collision-free common tangents
+  double build_ms = 0.0;
+
+  bool segment_free(const Vec2& a, const Vec2& b) const { return field->segment_free(a, b); }
+  bool point_free(const Vec2& p) const { return field->is_free(p); }
+  bool arc_free(const ZonePiece& z, double phi0, double phi1) const;
+  void add_point_tangents(const Vec2& p, std::vector<Segment>& out) const;
+  std::vector<Vec2> arc_polyline(const ZonePiece& z, double phi0, double phi1, int turn) const;
+};
+
+TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance)
+    : impl_(std::make_unique<Impl>()) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Impl& m = *impl_;
+  m.origin = centre_of(obstacles);
+  m.margin = margin;
+  m.tolerance = tolerance;
+  const ObstacleSet local = shifted(obstacles, m.origin);
+  m.pieces = zone_pieces(local, m.margin);
+  m.field = std::make_unique<ObstacleField>(local, m.margin, kTouchEps);
+  for (const ZonePiece& z : m.pieces) m.piece_names.push_back(m.field->obstacle_name(z.obstacle));
+
+  // Pieces whose box meets another obstacle's piece need their arcs checked.
+  using Item = std::pair<BgBox, std::size_t>;
+  std::vector<Item> boxes;
+  for (std::size_t i = 0; i < m.pieces.size(); ++i) boxes.emplace_back(piece_box(m.pieces[i]), i);
+  const bgi::rtree<Item, bgi::rstar<16>> tree(boxes);
+  m.needs_arc_check.assign(m.pieces.size(), false);
+  for (const Item& it : boxes) {
+    std::vector<Item> hits;
+    tree.query(bgi::intersects(it.first), std::back_inserter(hits));
+    for (const Item& h : hits) {
+      if (h.second != it.second) m.needs_arc_check[it.second] = true;
+    }
+  }
+
+  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+    for (std::size_t j = i + 1; j < m.pieces.size(); ++j) {
+      const ZonePiece& zi = m.pieces[i];
+      const ZonePiece& zj = m.pieces[j];
+      auto g_outer = [&](double phi) {
+        const Vec2 u = unit(phi);
+        return zi.support(u) - zj.support(u);
+      };
+      auto g_inner = [&](double phi) {
+        const Vec2 u = unit(phi);
+        return zi.support(u) + zj.support(-u);
+      };
+      double r[2];
+      auto add = [&](double phi_i, double phi_j) {
+        phi_i = wrap_two_pi(phi_i);
+        phi_j = wrap_two_pi(phi_j);
+        const Node a{i, phi_i, zi.point_at_normal(phi_i)};
+        const Node b{j, phi_j, zj.point_at_normal(phi_j)};
+        if ((a.p - b.p).norm() > 0.0 && m.segment_free(a.p, b.p)) m.tangents.push_back({a, b});
+      };
+      if (periodic_two_roots(g_outer, r[0], r[1])) {
+        for (double phi : r) add(phi, phi);
+      }
+      if (periodic_two_roots(g_inner, r[0], r[1])) {
+        for (double phi : r) add(phi, phi + std::numbers::pi);
+      }
+    }
+  }
+  m.build_ms = elapsed_ms(t0);
+}
+
+TangentGraph::~TangentGraph() = default;
+TangentGraph::TangentGraph(TangentGraph&&) noexcept = default;
+TangentGraph& TangentGraph::operator=(TangentGraph&&) noexcept = default;
+
+std::size_t TangentGraph::piece_count() const { return impl_->pieces.size(); }
+std::size_t TangentGraph::tangent_count() const { return impl_->tangents.size(); }
+double TangentGraph::build_ms() const { return impl_->build_ms; }
+
+std::vector<std::pair<Vec2, Vec2>> TangentGraph::tangent_segments() const {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  for (const Segment& s : impl_->tangents) out.emplace_back(s.a.p + impl_->origin, s.b.p + impl_->origin);
+  return out;
+}
+
+bool TangentGraph::Impl::arc_free(const ZonePiece& z, double phi0, double phi1) const {
+  // Sample the arc at most `step` apart along the boundary; an arc that
+  // enters another zone does so over a stretch, which the samples find
+  // unless the overlap is thinner than the step (then the route checker,
+  // which every route passes, has the last word).
+  const double step = std::max(0.5 * tolerance, 1e-3);
+  const double radius = std::max(z.max_curvature_radius(), 1e-9);
+  const int n = std::min(200000, static_cast<int>(std::ceil((phi1 - phi0) * radius / step)) + 1);
+  for (int k = 1; k < n; ++k) {
+    if (!point_free(z.point_at_normal(phi0 + (phi1 - phi0) * k / n))) return false;
+  }
+  // Capsules: the flat sides crossed are segments of their own.
+  for (double f : z.flat_normals()) {
+    for (double g = f + kTwoPi * std::ceil((phi0 - f) / kTwoPi); g < phi1; g += kTwoPi) {
+      if (g > phi0 && !segment_free(z.a + z.margin * unit(g), z.b + z.margin * unit(g))) return false;
+    }
+  }
+  return true;
+}
+
+void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>& out) const {
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const ZonePiece& z = pieces[i];
+    auto f = [&](double phi) {
+      const Vec2 u = unit(phi);
+      return u.dot(p) - z.support(u);
+    };
+    double r[2];
+    if (periodic_two_roots(f, r[0], r[1])) {
+      for (double phi : r) {
+        const Node t{i, wrap_two_pi(phi), z.point_at_normal(wrap_two_pi(phi))};
+        if (segment_free(p, t.p)) out.push_back({Node{kNoPiece, 0.0, p}, t});
+      }
+      continue;
+    }
+    // No tangent: p is inside the piece, or on its boundary. On the boundary,
+    // p itself joins the piece's arcs at its normal angle.
+    auto neg = [&](double phi) { return -f(phi); };
+    const Vec2 d = p - z.inner_point();
+    const double guess = std::atan2(d.y(), d.x());
+    auto best = boost::math::tools::brent_find_minima(neg, guess - std::numbers::pi, guess + std::numbers::pi, 52);
+    if (std::abs(best.second) <= kTouchEps) {
+      const double phi = wrap_two_pi(best.first);
+      out.push_back({Node{kNoPiece, 0.0, p}, Node{i, phi, p}});
+    }
+  }
+}
+
+std::vector<Vec2> TangentGraph::Impl::arc_polyline(const ZonePiece& z, double phi0, double phi1, int turn) const {
+  // The arc's tangent lines at normals spaced so each corner where two meet
+  // lies within `tolerance` of the arc, plus every flat side crossed. Between
+  // tangent points T_k, T_k+1 the polyline runs T_k -> corner -> T_k+1, which
+  // stays outside this zone; where a corner would poke into a neighbouring
+  // zone the interval is split further (the arc itself is clear of it).
+  const double lo = std::min(phi0, phi1), hi = std::max(phi0, phi1);
+  const double rho = std::max(z.max_curvature_radius(), 1e-12);
+  const double delta = 2.0 * std::acos(1.0 / (1.0 + tolerance / rho));
+  std::vector<double> normals;
+  const int n = std::max(1, static_cast<int>(std::ceil((hi - lo) / delta)));
+  for (int k = 0; k <= n; ++k) normals.push_back(lo + (hi - lo) * k / n);
+  for (double f : z.flat_normals()) {
+    for (double g = f + kTwoPi * std::ceil((lo - f) / kTwoPi); g < hi; g += kTwoPi) {
+      if (g > lo) normals.push_back(g);
+    }
+  }
+  std::sort(normals.begin(), normals.end());
+  normals.erase(std::unique(normals.begin(), normals.end()), normals.end());
+  if (turn < 0) std::reverse(normals.begin(), normals.end());
+
+  std::vector<Vec2> out;
+  auto corner = [&](double a, double b, Vec2& v) {
+    const Vec2 u1 = unit(a), u2 = unit(b);
+    const double h1 = z.support(u1), h2 = z.support(u2);
+    const double det = u1.x() * u2.y() - u1.y() * u2.x();
+    if (std::abs(det) < 1e-15) return false;
+    v = Vec2((h1 * u2.y() - h2 * u1.y()) / det, (u1.x() * h2 - u2.x() * h1) / det);
+    return true;
+  };
+  std::function<void(double, double, int)> emit = [&](double a, double b, int depth) {
+    const Vec2 ta = z.point_at_normal(wrap_two_pi(a)), tb = z.point_at_normal(wrap_two_pi(b));
+    Vec2 v;
+    if (!corner(a, b, v)) return;
+    if (depth < 40 && (!segment_free(ta, v) || !segment_free(v, tb))) {
+      const double mid = 0.5 * (a + b);
+      emit(a, mid, depth + 1);
+      out.push_back(z.point_at_normal(wrap_two_pi(mid)));
+      emit(mid, b, depth + 1);
+      return;
+    }
+    out.push_back(v);
+  };
+  for (std::size_t k = 0; k + 1 < normals.size(); ++k) {
+    if (k > 0) out.push_back(z.point_at_normal(wrap_two_pi(normals[k])));
+    emit(normals[k], normals[k + 1], 0);
+  }
+  return out;
+}
+
+PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Impl& m = *impl_;
+  const Vec2 s = problem.start - m.origin;
+  const Vec2 g = problem.goal - m.origin;
+
+  std::vector<Segment> segments = m.tangents;
+  std::vector<Segment> from_start, to_goal;
+  m.add_point_tangents(s, from_start);
+  m.add_point_tangents(g, to_goal);
+
+  // Vertices: start (0), goal (1), then every tangent end, grouped per piece.
+  std::vector<Node> nodes{{kNoPiece, 0.0, s}, {kNoPiece, 0.0, g}};
+  struct Edge {
+    std::size_t u, v;
+    double w;
+    bool arc;
+    int turn;
+  };
+  std::vector<Edge> edges;
+  std::vector<std::vector<std::size_t>> on_piece(m.pieces.size());
+  auto add_node = [&](const Node& n) {
+    nodes.push_back(n);
+    on_piece[n.piece].push_back(nodes.size() - 1);
+    return nodes.size() - 1;
+  };
+  for (const Segment& seg : segments) {
+    const std::size_t a = add_node(seg.a), b = add_node(seg.b);
+    edges.push_back({a, b, (seg.a.p - seg.b.p).norm(), false, 0});
+  }
+  for (const Segment& seg : from_start) {
+    const std::size_t b = add_node(seg.b);
+    edges.push_back({0, b, (seg.b.p - s).norm(), false, 0});
+  }
+  for (const Segment& seg : to_goal) {
+    const std::size_t b = add_node(seg.b);
+    edges.push_back({b, 1, (seg.b.p - g).norm(), false, 0});
+  }
+  if (m.segment_free(s, g)) edges.push_back({0, 1, (g - s).norm(), false, 0});
+
+  // Arcs between consecutive tangent points of each piece.
+  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+    auto& ids = on_piece[i];
+    if (ids.size() < 2) continue;
+    std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return nodes[x].phi < nodes[y].phi; });
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const std::size_t a = ids[k], b = ids[(k + 1) % ids.size()];
+      const double phi0 = nodes[a].phi;
+      const double phi1 = k + 1 < ids.size() ? nodes[b].phi : nodes[b].phi + kTwoPi;
+      if (ids.size() == 2 && k == 1 && phi1 - phi0 < 1e-15) continue;
+      if (m.needs_arc_check[i] && !m.arc_free(m.pieces[i], phi0, phi1)) continue;
+      const double w = m.pieces[i].arc_length(phi0, phi1);
+      edges.push_back({a, b, w, true, +1});
+    }
+  }
+
+  PlanningGraph graph(nodes.size());
+  std::unordered_map<std::uint64_t, std::size_t> edge_of;  // (u, v) -> index in edges, for arcs
+  auto key = [](std::size_t u, std::size_t v) { return (static_cast<std::uint64_t>(u) << 32) | v; };
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const Edge& e = edges[k];
+    boost::add_edge(e.u, e.v, e.w, graph);
+    boost::add_edge(e.v, e.u, e.w, graph);
+    if (e.arc) {
+      // Keep the cheaper arc when two connect the same points (both ways round).
+      for (const auto& kk : {key(e.u, e.v), key(e.v, e.u)}) {
+        auto it = edge_of.find(kk);
+        if (it == edge_of.end() || edges[it->second].w > e.w) edge_of[kk] = k;
+      }
+    }
+  }
+  const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (nodes[v].p - g).norm(); };
+  const SearchResult found = shortest_path(graph, 0, 1, algorithm, h);
+
+  PlanResult result;
+  result.stats.graph_vertices = nodes.size();
+  result.stats.graph_edges = edges.size();
+  result.stats.expanded = found.expanded;
+  result.stats.build_ms = m.build_ms;
+  result.found = found.found;
+  if (!found.found) {
+    result.message = "the goal cannot be reached from the start without entering a safety zone";
+    result.stats.query_ms = elapsed_ms(t0);
+    return result;
+  }
+  std::vector<Vec2>& pts = result.route.points;
+  pts.push_back(s + m.origin);
+  for (std::size_t k = 0; k + 1 < found.path.size(); ++k) {
+    const std::size_t u = found.path[k], v = found.path[k + 1];
+    const Node& a = nodes[u];
+    const Node& b = nodes[v];
+    RouteLeg leg;
+    leg.from = a.p + m.origin;
+    leg.to = b.p + m.origin;
+    // Two tangent points of one piece are joined only by arcs; edge_of holds
+    // the cheaper one, which is the one the search used.
+    const auto it = edge_of.find(key(u, v));
+    const bool arc = a.piece != kNoPiece && a.piece == b.piece && it != edge_of.end();
+    if (arc) {
+      const Edge& e = edges[it->second];
+      const ZonePiece& z = m.pieces[a.piece];
+      leg.kind = RouteLeg::Kind::arc;
+      leg.length_m = e.w;
+      leg.turn = e.u == u ? +1 : -1;  // stored anticlockwise from e.u to e.v
+      leg.radius_m = z.max_curvature_radius();
+      leg.obstacle = m.piece_names[a.piece];
+      const double phi_from = a.phi;
+      double phi_to = b.phi;
+      if (leg.turn > 0) {
+        while (phi_to < phi_from) phi_to += kTwoPi;
+      } else {
+        while (phi_to > phi_from) phi_to -= kTwoPi;
+      }
+      for (const Vec2& q : m.arc_polyline(z, phi_from, phi_to, leg.turn)) pts.push_back(q + m.origin);
+    } else {
+      leg.length_m = (b.p - a.p).norm();
+    }
+    result.exact_length_m += leg.length_m;
+    result.legs.push_back(leg);
+    pts.push_back(b.p + m.origin);
+  }
+  // Drop repeated points (zero-length legs at touching pieces).
+  pts.erase(std::unique(pts.begin(), pts.end(), [](const Vec2& x, const Vec2& y) { return (x - y).norm() < 1e-12; }),
+            pts.end());
+  result.stats.query_ms = elapsed_ms(t0);
+  return result;
+}
+
+}  // namespace deepguide

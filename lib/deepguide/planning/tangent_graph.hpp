@@ -1,0 +1,48 @@
+#pragma once
+// The exact tangent graph over the safety zones' curved boundaries (beyond
+// the seed): its shortest paths are the true shortest paths around the zones,
+// with no polygon approximation.
+//
+// A shortest path among convex obstacles is made of segments tangent to the
+// obstacles at both ends (or at the start/goal) and arcs along obstacle
+// boundaries between tangent points (Liu & Arimoto 1992). Vertices are the
+// tangent points of the collision-free common tangents between zone pieces
+// (see zone_pieces.hpp) and of the tangents from start and goal; edges are
+// those tangents plus the boundary arcs between consecutive tangent points of
+// a piece that stay outside every other zone. Tangent normals solve
+// h_i(u) = h_j(u) (outer) and h_i(u) + h_j(-u) = 0 (inner) for support
+// functions h; segments are checked with the exact obstacle field.
+//
+// Routes come out as exact legs (lines and arcs) and as a polyline that
+// replaces each arc by tangent lines (so it stays outside the zone, by at
+// most `tolerance`). Not thread-safe: one query at a time.
+
+#include <memory>
+
+#include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/route.hpp"
+#include "deepguide/world/obstacle.hpp"
+
+namespace deepguide {
+
+class TangentGraph {
+ public:
+  TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance);
+  ~TangentGraph();
+  TangentGraph(TangentGraph&&) noexcept;
+  TangentGraph& operator=(TangentGraph&&) noexcept;
+
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm);
+
+  std::size_t piece_count() const;
+  std::size_t tangent_count() const;  ///< collision-free common tangents found at build
+  double build_ms() const;
+  /// Tangent segments of the environment in the local frame (for drawings).
+  std::vector<std::pair<Vec2, Vec2>> tangent_segments() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace deepguide

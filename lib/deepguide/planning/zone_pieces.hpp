@@ -1,0 +1,45 @@
+#pragma once
+// Convex pieces of the safety zones, for the exact tangent graph.
+//
+// An elliptical obstacle's zone is one convex piece, ellipse (+) disc(d). A
+// polygon obstacle's zone is covered by one capsule per edge, segment (+)
+// disc(d) (a plain segment when d = 0): their union is the zone less interior
+// no route from outside can reach, and every piece is convex, so tangents and
+// boundary arcs follow from support functions:
+//   ellipse: h(u) = u.c + sqrt(u^T A u) + d     capsule: h(u) = max(u.a, u.b) + d
+// The boundary is parametrised by the angle phi of its outward normal
+// u = (cos phi, sin phi); arc lengths run anticlockwise in phi.
+
+#include <cstddef>
+#include <vector>
+
+#include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/world/obstacle.hpp"
+
+namespace deepguide {
+
+struct ZonePiece {
+  enum class Kind { ellipse, capsule };
+  Kind kind = Kind::ellipse;
+  Ellipse ellipse;     ///< kind == ellipse
+  Vec2 a, b;           ///< kind == capsule: the edge (a == b: a disc)
+  double margin = 0;   ///< d
+  std::size_t obstacle = 0;  ///< obstacle index: ellipses first, then polygons (ObstacleField numbering)
+
+  double support(const Vec2& u) const;
+  /// Boundary point with outward normal angle phi (on a capsule's flat side, an end of the side).
+  Vec2 point_at_normal(double phi) const;
+  /// Length of the boundary from normal angle phi0 anticlockwise to phi1 (phi1 >= phi0, any number of turns).
+  double arc_length(double phi0, double phi1) const;
+  /// Normal angles in [0, 2 pi) where the boundary has a straight side (capsules: two; ellipses: none).
+  std::vector<double> flat_normals() const;
+  /// Largest radius of curvature of the boundary (m).
+  double max_curvature_radius() const;
+  /// A point inside the piece.
+  Vec2 inner_point() const;
+};
+
+/// The pieces of every obstacle's zone for margin d.
+std::vector<ZonePiece> zone_pieces(const ObstacleSet& obstacles, double margin);
+
+}  // namespace deepguide

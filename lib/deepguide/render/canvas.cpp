@@ -1,0 +1,299 @@
+#include "deepguide/render/canvas.hpp"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+
+#include "deepguide/core/atomic_file.hpp"
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+
+ImageFormat image_format_for(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".png") return ImageFormat::png;
+  if (ext == ".svg") return ImageFormat::svg;
+  throw InputError(path + ": expected an image file name ending in .png or .svg, got " +
+                   (ext.empty() ? std::string("no extension") : "'" + ext + "'"));
+}
+
+// ---------------------------------------------------------------- WorldBox
+
+void WorldBox::extend(const Vec2& p) {
+  if (empty()) {
+    min = max = p;
+    return;
+  }
+  min = min.cwiseMin(p);
+  max = max.cwiseMax(p);
+}
+
+void WorldBox::extend(const WorldBox& other) {
+  if (other.empty()) return;
+  extend(other.min);
+  extend(other.max);
+}
+
+WorldBox WorldBox::padded(double d) const {
+  if (empty()) return *this;
+  WorldBox out = *this;
+  out.min -= Vec2(d, d);
+  out.max += Vec2(d, d);
+  return out;
+}
+
+// ---------------------------------------------------------------- ViewTransform
+
+ViewTransform::ViewTransform(const WorldBox& world, const PixelRect& frame) {
+  if (world.empty()) throw InputError("view: expected a non-empty world box to draw");
+  const double w = world.width();
+  const double h = world.height();
+  if (!(w > 0.0 || h > 0.0) || !std::isfinite(w) || !std::isfinite(h)) {
+    throw InputError("view: expected a world box with a finite, non-zero extent");
+  }
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double sx = w > 0.0 ? frame.width / w : kInf;
+  const double sy = h > 0.0 ? frame.height / h : kInf;
+  scale_ = std::min(sx, sy);
+  world_center_ = world.center();
+  pixel_center_ = Vec2(frame.x + 0.5 * frame.width, frame.y + 0.5 * frame.height);
+}
+
+Vec2 ViewTransform::to_pixel(const Vec2& world) const {
+  const Vec2 d = world - world_center_;
+  return {pixel_center_.x() + scale_ * d.x(), pixel_center_.y() - scale_ * d.y()};
+}
+
+Vec2 ViewTransform::to_world(const Vec2& pixel) const {
+  const Vec2 d = pixel - pixel_center_;
+  return {world_center_.x() + d.x() / scale_, world_center_.y() - d.y() / scale_};
+}
+
+Rgba rgb_hex(unsigned hex, double alpha) {
+  return {((hex >> 16) & 0xff) / 255.0, ((hex >> 8) & 0xff) / 255.0, (hex & 0xff) / 255.0, alpha};
+}
+
+// ---------------------------------------------------------------- Canvas
+
+struct Canvas::Impl {
+  // Declared first so it is destroyed last: the surface (and its open file)
+  // goes before the temporary file is removed.
+  AtomicOutput output;
+  ImageFormat format;
+  int width;
+  int height;
+  cairo_surface_t* surface = nullptr;
+  cairo_t* cr = nullptr;
+
+  Impl(const std::string& path, ImageFormat f, int w, int h)
+      : output(path), format(f), width(w), height(h) {}
+  ~Impl() { release(); }
+
+  void release() {
+    if (cr != nullptr) cairo_destroy(cr);
+    if (surface != nullptr) cairo_surface_destroy(surface);
+    cr = nullptr;
+    surface = nullptr;
+  }
+
+  [[noreturn]] void fail(cairo_status_t status) const {
+    throw InputError(output.destination().string() + ": could not write the image (cairo: " +
+                     cairo_status_to_string(status) + ")");
+  }
+
+  // Fills and text are always antialiased; apply() may turn it off for a stroke.
+  void set_color(const Rgba& c) {
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_GOOD);
+  }
+
+  void apply(const Stroke& s) {
+    set_color(s.color);
+    cairo_set_line_width(cr, s.width);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_line_cap(cr, s.dash.empty() ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+    cairo_set_dash(cr, s.dash.empty() ? nullptr : s.dash.data(), static_cast<int>(s.dash.size()), 0.0);
+    cairo_set_antialias(cr, s.antialias ? CAIRO_ANTIALIAS_GOOD : CAIRO_ANTIALIAS_NONE);
+  }
+
+  void path(const std::vector<Vec2>& points, bool closed) {
+    if (points.empty()) return;
+    cairo_move_to(cr, points[0].x(), points[0].y());
+    for (std::size_t i = 1; i < points.size(); ++i) cairo_line_to(cr, points[i].x(), points[i].y());
+    if (closed) cairo_close_path(cr);
+  }
+
+  void font(double size, bool bold) {
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+  }
+};
+
+Canvas::Canvas(const std::string& path, int width_px, int height_px) {
+  const ImageFormat format = image_format_for(path);
+  // Cairo's image surfaces stop at 32767 pixels a side.
+  if (width_px < 1 || height_px < 1 || width_px > 32767 || height_px > 32767) {
+    throw InputError(path + ": expected an image size of 1 to 32767 pixels a side, got " +
+                     std::to_string(width_px) + " x " + std::to_string(height_px));
+  }
+  impl_ = std::make_unique<Impl>(path, format, width_px, height_px);
+  const std::string temp = impl_->output.temp_path().string();
+  impl_->surface = format == ImageFormat::png
+                       ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, width_px, height_px)
+                       : cairo_svg_surface_create(temp.c_str(), width_px, height_px);
+  if (const cairo_status_t s = cairo_surface_status(impl_->surface); s != CAIRO_STATUS_SUCCESS) impl_->fail(s);
+  impl_->cr = cairo_create(impl_->surface);
+  if (const cairo_status_t s = cairo_status(impl_->cr); s != CAIRO_STATUS_SUCCESS) impl_->fail(s);
+  cairo_set_antialias(impl_->cr, CAIRO_ANTIALIAS_GOOD);
+  // An RGB24 surface starts black; every image starts white.
+  fill_rect({0.0, 0.0, static_cast<double>(width_px), static_cast<double>(height_px)}, {1.0, 1.0, 1.0, 1.0});
+}
+
+Canvas::~Canvas() = default;
+
+int Canvas::width() const { return impl_->width; }
+int Canvas::height() const { return impl_->height; }
+ImageFormat Canvas::format() const { return impl_->format; }
+
+void Canvas::fill_rect(const PixelRect& r, const Rgba& color) {
+  impl_->set_color(color);
+  cairo_rectangle(impl_->cr, r.x, r.y, r.width, r.height);
+  cairo_fill(impl_->cr);
+}
+
+void Canvas::stroke_rect(const PixelRect& r, const Stroke& stroke) {
+  impl_->apply(stroke);
+  cairo_rectangle(impl_->cr, r.x, r.y, r.width, r.height);
+  cairo_stroke(impl_->cr);
+}
+
+void Canvas::clip(const PixelRect& r) {
+  cairo_save(impl_->cr);
+  cairo_rectangle(impl_->cr, r.x, r.y, r.width, r.height);
+  cairo_clip(impl_->cr);
+}
+
+void Canvas::unclip() { cairo_restore(impl_->cr); }
+
+void Canvas::fill_rings(const std::vector<std::vector<Vec2>>& rings, const Rgba& color) {
+  for (const auto& ring : rings) impl_->path(ring, true);
+  impl_->set_color(color);
+  cairo_set_fill_rule(impl_->cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_fill(impl_->cr);
+  cairo_set_fill_rule(impl_->cr, CAIRO_FILL_RULE_WINDING);
+}
+
+void Canvas::stroke_polyline(const std::vector<Vec2>& points, const Stroke& stroke, bool closed) {
+  if (points.size() < 2) return;
+  impl_->path(points, closed);
+  impl_->apply(stroke);
+  cairo_stroke(impl_->cr);
+}
+
+void Canvas::stroke_segments(const std::vector<std::pair<Vec2, Vec2>>& segments, const Stroke& stroke) {
+  if (segments.empty()) return;
+  for (const auto& [a, b] : segments) {
+    cairo_move_to(impl_->cr, a.x(), a.y());
+    cairo_line_to(impl_->cr, b.x(), b.y());
+  }
+  impl_->apply(stroke);
+  cairo_stroke(impl_->cr);
+}
+
+void Canvas::shape(const std::vector<Vec2>& points, const std::optional<Rgba>& fill,
+                   const std::optional<Stroke>& outline) {
+  if (points.size() < 3) return;
+  impl_->path(points, true);
+  if (fill) {
+    impl_->set_color(*fill);
+    cairo_fill_preserve(impl_->cr);
+  }
+  if (outline) {
+    impl_->apply(*outline);
+    cairo_stroke_preserve(impl_->cr);
+  }
+  cairo_new_path(impl_->cr);
+}
+
+void Canvas::circle(const Vec2& c, double radius, const std::optional<Rgba>& fill,
+                    const std::optional<Stroke>& outline) {
+  cairo_new_sub_path(impl_->cr);
+  cairo_arc(impl_->cr, c.x(), c.y(), radius, 0.0, 2.0 * std::numbers::pi);
+  if (fill) {
+    impl_->set_color(*fill);
+    cairo_fill_preserve(impl_->cr);
+  }
+  if (outline) {
+    impl_->apply(*outline);
+    cairo_stroke_preserve(impl_->cr);
+  }
+  cairo_new_path(impl_->cr);
+}
+
+void Canvas::text(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color,
+                  TextAlign align, bool bold) {
+  if (text.empty()) return;
+  impl_->font(size_px, bold);
+  cairo_text_extents_t ext;
+  cairo_text_extents(impl_->cr, text.c_str(), &ext);
+  double x = anchor.x();
+  if (align == TextAlign::center) x -= 0.5 * ext.x_advance;
+  if (align == TextAlign::right) x -= ext.x_advance;
+  impl_->set_color(color);
+  cairo_move_to(impl_->cr, x, anchor.y());
+  cairo_show_text(impl_->cr, text.c_str());
+  cairo_new_path(impl_->cr);
+}
+
+void Canvas::text_with_halo(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color,
+                            const Rgba& halo_color, double halo_px, TextAlign align) {
+  if (text.empty()) return;
+  impl_->font(size_px, false);
+  cairo_text_extents_t ext;
+  cairo_text_extents(impl_->cr, text.c_str(), &ext);
+  double x = anchor.x();
+  if (align == TextAlign::center) x -= 0.5 * ext.x_advance;
+  if (align == TextAlign::right) x -= ext.x_advance;
+  cairo_move_to(impl_->cr, x, anchor.y());
+  cairo_text_path(impl_->cr, text.c_str());
+  impl_->apply(Stroke{halo_color, 2.0 * halo_px, {}});
+  cairo_stroke_preserve(impl_->cr);
+  impl_->set_color(color);
+  cairo_fill(impl_->cr);
+}
+
+double Canvas::text_width(const std::string& text, double size_px, bool bold) {
+  impl_->font(size_px, bold);
+  cairo_text_extents_t ext;
+  cairo_text_extents(impl_->cr, text.c_str(), &ext);
+  return ext.x_advance;
+}
+
+void Canvas::finish() {
+  Impl& im = *impl_;
+  if (const cairo_status_t s = cairo_status(im.cr); s != CAIRO_STATUS_SUCCESS) im.fail(s);
+  cairo_destroy(im.cr);
+  im.cr = nullptr;
+  if (im.format == ImageFormat::png) {
+    cairo_surface_flush(im.surface);
+    const std::string temp = im.output.temp_path().string();
+    if (const cairo_status_t s = cairo_surface_write_to_png(im.surface, temp.c_str()); s != CAIRO_STATUS_SUCCESS) {
+      im.fail(s);
+    }
+  } else {
+    cairo_surface_finish(im.surface);  // writes the rest of the SVG and closes the file
+  }
+  if (const cairo_status_t s = cairo_surface_status(im.surface); s != CAIRO_STATUS_SUCCESS) im.fail(s);
+  im.release();
+  im.output.commit();
+}
+
+}  // namespace deepguide

@@ -1,0 +1,78 @@
+#pragma once
+// The route chart, after the seed paper's Fig. 6: obstacle footprints, their
+// safety zones, optionally the planning graph, and the route from start to
+// goal; with a title, a scale bar, a north arrow and a legend.
+//
+// Layout (pixels, everything scales with width_px / 1200):
+//   title band | map (north up, equal scale, the content padded) | footer
+//   with the scale bar, the legend and the north arrow.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "deepguide/geometry/polygon.hpp"
+#include "deepguide/render/canvas.hpp"
+#include "deepguide/world/obstacle.hpp"
+
+namespace deepguide {
+
+/// Colours of the route chart (tests read them back from the pixels).
+struct RouteStyle {
+  Rgba background = rgb_hex(0xffffff);     ///< title band and footer
+  Rgba sea = rgb_hex(0xeef4f9);            ///< map area
+  Rgba frame = rgb_hex(0x8a96a3);          ///< map border
+  Rgba obstacle = rgb_hex(0x3c3f44);       ///< footprint fill
+  Rgba safety_zone = rgb_hex(0xd9480f);    ///< exact zone outline (dashed)
+  Rgba zone_polygon = rgb_hex(0x7b5ea7);   ///< the planner's enclosing polygons
+  Rgba graph_edge = rgb_hex(0xb4c2d0);     ///< planning graph
+  Rgba route = rgb_hex(0x1864d6);          ///< route line and waypoint outlines
+  Rgba start = rgb_hex(0x2f9e44);
+  Rgba goal = rgb_hex(0xc92a2a);
+  Rgba text = rgb_hex(0x212529);
+};
+
+struct RouteScene {
+  const ObstacleSet* obstacles = nullptr;  ///< optional; local frame (m)
+  double margin = 0.0;                     ///< safety margin (m); zones drawn when > 0
+  const BgMultiPolygon* zone_polygons = nullptr;          ///< optional: the planner's zone polygons
+  std::vector<std::pair<Vec2, Vec2>> graph_edges;         ///< optional: the planning graph
+  std::vector<Vec2> route;                                ///< waypoints, start to goal
+  std::optional<Vec2> start;
+  std::optional<Vec2> goal;
+  std::string title;
+  /// Optional: clockwise angle (deg) from grid north (the map's up) to true
+  /// north, i.e. minus the meridian convergence; noted under the north arrow.
+  std::optional<double> true_north_deg;
+  bool label_obstacles = true;  ///< write each obstacle's id beside it
+  RouteStyle style;
+};
+
+/// Where everything goes in an image of width_px.
+struct RouteLayout {
+  int width = 0;
+  int height = 0;
+  double unit = 1.0;   ///< pixels per design unit (width / 1200): line widths, fonts
+  PixelRect map;       ///< the map area
+  PixelRect footer;    ///< scale bar, legend, north arrow
+  WorldBox extent;     ///< the world box shown (content, padded)
+  ViewTransform view;  ///< world -> pixels
+};
+
+/// The smallest and largest image widths render_route accepts.
+inline constexpr int kMinImageWidth = 300;
+inline constexpr int kMaxImageWidth = 8000;
+
+/// The layout for the scene. Throws InputError when there is nothing to draw,
+/// a coordinate is not finite or width_px lies outside [kMinImageWidth, kMaxImageWidth].
+RouteLayout route_layout(const RouteScene& scene, int width_px = 1200);
+
+/// The largest round length (1, 2 or 5 x 10^k m) not above max_length_m (> 0).
+double nice_scale_length(double max_length_m);
+
+/// Draws the scene to `path` (.png or .svg). Atomic: a failure leaves no file.
+/// Throws InputError naming the path on bad input or when writing fails.
+void render_route(const RouteScene& scene, const std::string& path, int width_px = 1200);
+
+}  // namespace deepguide
