@@ -84,8 +84,26 @@ Vec2 PolygonVisibility::closest_boundary_point(const Vec2& p) const {
   return best;
 }
 
+bool PolygonVisibility::properly_crosses(const Vec2& p, const Vec2& q) const {
+  if (p == q) return false;
+  const Segment seg(to_bg(p), to_bg(q));
+  for (auto it = edges_.qbegin(bgi::intersects(seg)); it != edges_.qend(); ++it) {
+    const Vec2 a = to_eigen(it->first.first), b = to_eigen(it->first.second);
+    const double sa = side(p, q, a), sb = side(p, q, b);
+    const double sp = side(a, b, p), sq = side(a, b, q);
+    if (((sa > eps_ && sb < -eps_) || (sa < -eps_ && sb > eps_)) &&
+        ((sp > eps_ && sq < -eps_) || (sp < -eps_ && sq > eps_))) {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
   const double len = (q - p).norm();
+  // Most segments between far corners are blocked: a proper crossing found
+  // lazily settles them before the careful test below.
+  if (properly_crosses(p, q)) return false;
   BgBox box(BgPoint(std::min(p.x(), q.x()) - eps_, std::min(p.y(), q.y()) - eps_),
             BgPoint(std::max(p.x(), q.x()) + eps_, std::max(p.y(), q.y()) + eps_));
   std::vector<EdgeItem> candidates;

@@ -26,6 +26,9 @@ class PolygonVisibility {
   PolygonVisibility(BgMultiPolygon polygons, double eps);
 
   bool segment_visible(const Vec2& p, const Vec2& q) const;
+  /// True if the segment properly crosses some polygon edge (enters an
+  /// interior for sure); the cheap first half of segment_visible.
+  bool properly_crosses(const Vec2& p, const Vec2& q) const;
   /// Strictly inside some polygon (farther than eps from its boundary).
   bool strictly_inside(const Vec2& p) const;
   /// Index of the polygon strictly containing p, or npos.

@@ -11,7 +11,9 @@
 #include <unordered_map>
 
 #include "deepguide/core/angles.hpp"
+#include "deepguide/core/error.hpp"
 #include "deepguide/geometry/periodic_roots.hpp"
+#include "deepguide/planning/polygon_visibility.hpp"
 #include "deepguide/planning/zone_pieces.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
@@ -26,6 +28,8 @@ constexpr std::size_t kNoPiece = static_cast<std::size_t>(-1);
 // Tangent segments touch zones exactly; the field judging them allows this
 // much (m) so rounding does not reject them. The route checker allows 1e-6.
 constexpr double kTouchEps = 1e-7;
+// About 10 s of build on the reference machine (docs/PERFORMANCE.md).
+constexpr std::size_t kMaxPieces = 3000;
 
 Vec2 unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
 
@@ -93,7 +97,34 @@ struct TangentGraph::Impl {
   std::vector<Segment> tangents;      // collision-free common tangents
   double build_ms = 0.0;
 
-  bool segment_free(const Vec2& a, const Vec2& b) const { return field->segment_free(a, b); }
+  // The environment's graph, built once: vertex 0 and 1 are reserved for
+  // start and goal, then one vertex per tangent point. Arcs are stored
+  // anticlockwise (from u to v) and looked up by their ends.
+  struct Arc {
+    std::size_t u, v;
+    double w;
+  };
+  std::vector<Node> nodes;
+  std::vector<std::vector<std::size_t>> on_piece;  // vertex ids per piece, by phi
+  PlanningGraph base;
+  std::vector<Arc> arcs;
+  std::unordered_map<std::uint64_t, std::size_t> arc_of;  // (u, v) and (v, u) -> cheapest arc
+  std::size_t base_edges = 0;
+
+  static std::uint64_t key(std::size_t u, std::size_t v) { return (static_cast<std::uint64_t>(u) << 32) | v; }
+  // Adds the arcs between cyclically consecutive vertices of `ids` (sorted by
+  // phi) for which `want(a, b)` holds.
+  template <class Want>
+  void add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all, Want want,
+                PlanningGraph& graph, std::vector<Arc>& out, std::unordered_map<std::uint64_t, std::size_t>& index) const;
+
+  // Polygons inside the zones (obstacle polygons, 32-gons on the ellipse
+  // zones' boundaries): a segment crossing one is blocked for certain, found
+  // far faster than the exact test, which then only judges the rest.
+  std::unique_ptr<PolygonVisibility> inner;
+  bool segment_free(const Vec2& a, const Vec2& b) const {
+    return !inner->properly_crosses(a, b) && field->segment_free(a, b);
+  }
   bool point_free(const Vec2& p) const { return field->is_free(p); }
   bool arc_free(const ZonePiece& z, double phi0, double phi1) const;
   void add_point_tangents(const Vec2& p, std::vector<Segment>& out) const;
@@ -109,7 +140,24 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   m.tolerance = tolerance;
   const ObstacleSet local = shifted(obstacles, m.origin);
   m.pieces = zone_pieces(local, m.margin);
+  // The build pairs every two pieces: quadratic, so refuse what cannot finish.
+  if (m.pieces.size() > kMaxPieces) {
+    throw InputError("the tangent graph would pair " + std::to_string(m.pieces.size()) +
+                     " zone pieces (obstacles plus polygon edges), more than it handles (" +
+                     std::to_string(kMaxPieces) + "); use --graph visibility or plan a smaller area");
+  }
   m.field = std::make_unique<ObstacleField>(local, m.margin, kTouchEps);
+  BgMultiPolygon inner;
+  for (const EllipticCylinder& c : local.ellipses) {
+    BgPolygon ring;
+    for (int k = 32; k >= 0; --k) {  // clockwise, closed
+      const double t = kTwoPi * k / 32;
+      ring.outer().push_back(to_bg(c.footprint.point_at(t) + margin * c.footprint.normal_at(t)));
+    }
+    inner.push_back(ring);
+  }
+  for (const PolygonObstacle& poly : local.polygons) inner.push_back(poly.footprint);
+  m.inner = std::make_unique<PolygonVisibility>(std::move(inner), 1e-9);
   for (const ZonePiece& z : m.pieces) m.piece_names.push_back(m.field->obstacle_name(z.obstacle));
 
   // Pieces whose box meets another obstacle's piece need their arcs checked.
@@ -154,7 +202,54 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
       }
     }
   }
+  m.nodes = {Node{kNoPiece, 0.0, Vec2::Zero()}, Node{kNoPiece, 0.0, Vec2::Zero()}};
+  m.on_piece.assign(m.pieces.size(), {});
+  std::vector<std::pair<std::size_t, std::size_t>> segment_ends;
+  for (const Segment& seg : m.tangents) {
+    std::size_t ends[2];
+    int k = 0;
+    for (const Node& n : {seg.a, seg.b}) {
+      m.nodes.push_back(n);
+      m.on_piece[n.piece].push_back(m.nodes.size() - 1);
+      ends[k++] = m.nodes.size() - 1;
+    }
+    segment_ends.emplace_back(ends[0], ends[1]);
+  }
+  m.base = PlanningGraph(m.nodes.size());
+  for (const auto& [a, b] : segment_ends) {
+    const double w = (m.nodes[a].p - m.nodes[b].p).norm();
+    boost::add_edge(a, b, w, m.base);
+    boost::add_edge(b, a, w, m.base);
+  }
+  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+    auto& ids = m.on_piece[i];
+    std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return m.nodes[x].phi < m.nodes[y].phi; });
+    m.add_arcs(i, ids, m.nodes, [](std::size_t, std::size_t) { return true; }, m.base, m.arcs, m.arc_of);
+  }
+  m.base_edges = m.tangents.size() + m.arcs.size();
   m.build_ms = elapsed_ms(t0);
+}
+
+template <class Want>
+void TangentGraph::Impl::add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all,
+                                  Want want, PlanningGraph& graph, std::vector<Arc>& out,
+                                  std::unordered_map<std::uint64_t, std::size_t>& index) const {
+  if (ids.size() < 2) return;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const std::size_t a = ids[k], b = ids[(k + 1) % ids.size()];
+    if (!want(a, b)) continue;
+    const double phi0 = all[a].phi;
+    const double phi1 = k + 1 < ids.size() ? all[b].phi : all[b].phi + kTwoPi;
+    if (needs_arc_check[piece] && !arc_free(pieces[piece], phi0, phi1)) continue;
+    const double w = pieces[piece].arc_length(phi0, phi1);
+    boost::add_edge(a, b, w, graph);
+    boost::add_edge(b, a, w, graph);
+    out.push_back({a, b, w});
+    for (const auto& kk : {key(a, b), key(b, a)}) {
+      auto it = index.find(kk);
+      if (it == index.end() || out[it->second].w > w) index[kk] = out.size() - 1;
+    }
+  }
 }
 
 TangentGraph::~TangentGraph() = default;
@@ -275,77 +370,47 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
   const Vec2 s = problem.start - m.origin;
   const Vec2 g = problem.goal - m.origin;
 
-  std::vector<Segment> segments = m.tangents;
-  std::vector<Segment> from_start, to_goal;
-  m.add_point_tangents(s, from_start);
-  m.add_point_tangents(g, to_goal);
-
-  // Vertices: start (0), goal (1), then every tangent end, grouped per piece.
-  std::vector<Node> nodes{{kNoPiece, 0.0, s}, {kNoPiece, 0.0, g}};
-  struct Edge {
-    std::size_t u, v;
-    double w;
-    bool arc;
-    int turn;
-  };
-  std::vector<Edge> edges;
-  std::vector<std::vector<std::size_t>> on_piece(m.pieces.size());
-  auto add_node = [&](const Node& n) {
-    nodes.push_back(n);
-    on_piece[n.piece].push_back(nodes.size() - 1);
-    return nodes.size() - 1;
-  };
-  for (const Segment& seg : segments) {
-    const std::size_t a = add_node(seg.a), b = add_node(seg.b);
-    edges.push_back({a, b, (seg.a.p - seg.b.p).norm(), false, 0});
+  // The prebuilt graph plus this query's start, goal and their tangent points.
+  PlanningGraph graph = m.base;
+  std::vector<Node> nodes = m.nodes;
+  nodes[0].p = s;
+  nodes[1].p = g;
+  std::vector<std::vector<std::size_t>> added(m.pieces.size());
+  for (std::size_t end = 0; end < 2; ++end) {
+    std::vector<Segment> tangents;
+    m.add_point_tangents(end == 0 ? s : g, tangents);
+    for (const Segment& seg : tangents) {
+      nodes.push_back(seg.b);
+      const std::size_t v = boost::add_vertex(graph);
+      added[seg.b.piece].push_back(v);
+      const double w = (seg.b.p - seg.a.p).norm();
+      boost::add_edge(end, v, w, graph);
+      boost::add_edge(v, end, w, graph);
+    }
   }
-  for (const Segment& seg : from_start) {
-    const std::size_t b = add_node(seg.b);
-    edges.push_back({0, b, (seg.b.p - s).norm(), false, 0});
+  if (m.segment_free(s, g)) {
+    boost::add_edge(0, 1, (g - s).norm(), graph);
+    boost::add_edge(1, 0, (g - s).norm(), graph);
   }
-  for (const Segment& seg : to_goal) {
-    const std::size_t b = add_node(seg.b);
-    edges.push_back({b, 1, (seg.b.p - g).norm(), false, 0});
-  }
-  if (m.segment_free(s, g)) edges.push_back({0, 1, (g - s).norm(), false, 0});
-
-  // Arcs between consecutive tangent points of each piece.
+  // New tangent points split the pieces' arcs: join them to their neighbours.
+  std::vector<Impl::Arc> arcs;
+  std::unordered_map<std::uint64_t, std::size_t> arc_of;
+  const std::size_t first_new = m.nodes.size();
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
-    auto& ids = on_piece[i];
-    if (ids.size() < 2) continue;
+    if (added[i].empty()) continue;
+    std::vector<std::size_t> ids = m.on_piece[i];
+    ids.insert(ids.end(), added[i].begin(), added[i].end());
     std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return nodes[x].phi < nodes[y].phi; });
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      const std::size_t a = ids[k], b = ids[(k + 1) % ids.size()];
-      const double phi0 = nodes[a].phi;
-      const double phi1 = k + 1 < ids.size() ? nodes[b].phi : nodes[b].phi + kTwoPi;
-      if (ids.size() == 2 && k == 1 && phi1 - phi0 < 1e-15) continue;
-      if (m.needs_arc_check[i] && !m.arc_free(m.pieces[i], phi0, phi1)) continue;
-      const double w = m.pieces[i].arc_length(phi0, phi1);
-      edges.push_back({a, b, w, true, +1});
-    }
+    m.add_arcs(i, ids, nodes, [&](std::size_t a, std::size_t b) { return a >= first_new || b >= first_new; }, graph,
+               arcs, arc_of);
   }
 
-  PlanningGraph graph(nodes.size());
-  std::unordered_map<std::uint64_t, std::size_t> edge_of;  // (u, v) -> index in edges, for arcs
-  auto key = [](std::size_t u, std::size_t v) { return (static_cast<std::uint64_t>(u) << 32) | v; };
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    const Edge& e = edges[k];
-    boost::add_edge(e.u, e.v, e.w, graph);
-    boost::add_edge(e.v, e.u, e.w, graph);
-    if (e.arc) {
-      // Keep the cheaper arc when two connect the same points (both ways round).
-      for (const auto& kk : {key(e.u, e.v), key(e.v, e.u)}) {
-        auto it = edge_of.find(kk);
-        if (it == edge_of.end() || edges[it->second].w > e.w) edge_of[kk] = k;
-      }
-    }
-  }
   const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (nodes[v].p - g).norm(); };
   const SearchResult found = shortest_path(graph, 0, 1, algorithm, h);
 
   PlanResult result;
-  result.stats.graph_vertices = nodes.size();
-  result.stats.graph_edges = edges.size();
+  result.stats.graph_vertices = boost::num_vertices(graph);
+  result.stats.graph_edges = boost::num_edges(graph) / 2;
   result.stats.expanded = found.expanded;
   result.stats.build_ms = m.build_ms;
   result.found = found.found;
@@ -363,16 +428,20 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
     RouteLeg leg;
     leg.from = a.p + m.origin;
     leg.to = b.p + m.origin;
-    // Two tangent points of one piece are joined only by arcs; edge_of holds
-    // the cheaper one, which is the one the search used.
-    const auto it = edge_of.find(key(u, v));
-    const bool arc = a.piece != kNoPiece && a.piece == b.piece && it != edge_of.end();
-    if (arc) {
-      const Edge& e = edges[it->second];
+    // Two tangent points of one piece are joined only by arcs; the index
+    // holds the cheaper one, which is the one the search used.
+    const Impl::Arc* arc = nullptr;
+    if (a.piece != kNoPiece && a.piece == b.piece) {
+      if (auto it = arc_of.find(Impl::key(u, v)); it != arc_of.end()) arc = &arcs[it->second];
+      if (auto it = m.arc_of.find(Impl::key(u, v)); it != m.arc_of.end() && (!arc || m.arcs[it->second].w < arc->w)) {
+        arc = &m.arcs[it->second];
+      }
+    }
+    if (arc != nullptr) {
       const ZonePiece& z = m.pieces[a.piece];
       leg.kind = RouteLeg::Kind::arc;
-      leg.length_m = e.w;
-      leg.turn = e.u == u ? +1 : -1;  // stored anticlockwise from e.u to e.v
+      leg.length_m = arc->w;
+      leg.turn = arc->u == u ? +1 : -1;  // arcs run anticlockwise from u to v
       leg.radius_m = z.max_curvature_radius();
       leg.obstacle = m.piece_names[a.piece];
       const double phi_from = a.phi;

@@ -95,14 +95,17 @@ std::size_t VisibilityGraph::max_corners(VisibilityVariant variant) {
 }
 
 bool VisibilityGraph::supporting_at(const Corner& c, const Vec2& other) const {
-  // Both polygon neighbours on one closed side of the line c -> other.
+  // Both polygon neighbours on one closed side of the line c -> other, up to
+  // eps in distance: s_i / |d| compared with eps, squared to spare the root
+  // (this runs for every pair of corners).
   const Vec2 d = other - c.p;
-  const double len = d.norm();
-  if (len == 0.0) return false;
-  const double eps = visibility_->eps();
-  const double s1 = cross(d, c.prev - c.p) / len;
-  const double s2 = cross(d, c.next - c.p) / len;
-  return !((s1 > eps && s2 < -eps) || (s1 < -eps && s2 > eps));
+  const double len2 = d.squaredNorm();
+  if (len2 == 0.0) return false;
+  const double s1 = cross(d, c.prev - c.p);
+  const double s2 = cross(d, c.next - c.p);
+  if ((s1 > 0.0) == (s2 > 0.0) || s1 == 0.0 || s2 == 0.0) return true;
+  const double eps2 = visibility_->eps() * visibility_->eps() * len2;
+  return !(s1 * s1 > eps2 && s2 * s2 > eps2);
 }
 
 PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm) {
