@@ -28,6 +28,7 @@ struct PlanOptions {
   bool json = false;
   std::string render;         ///< --render: chart to draw (.png or .svg)
   bool render_graph = false;  ///< --render-graph: draw the zone polygons and the graph too
+  bool escape = false;
 };
 
 }  // namespace
@@ -54,6 +55,7 @@ void register_plan(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--search", o->search, "astar or dijkstra")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the summary as JSON");
+  cmd->add_flag("--escape", o->escape, "A start inside a safety zone first leaves it the shortest way");
   cmd->add_option("--render", o->render, "Also draw the route chart (obstacles, zones, route) as .png or .svg");
   cmd->add_flag("--render-graph", o->render_graph, "With --render: draw the zone polygons and the planning graph");
   cmd->callback([o] {
@@ -65,7 +67,7 @@ void register_plan(CLI::App& app) {
     if (!o->render.empty()) image_format_for(o->render);  // before the work, not after
     const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
     const PlanningProblem problem{parse_position(o->from, "--from", loaded.frame, !o->frame.crs.empty()),
-                                  parse_position(o->to, "--to", loaded.frame, !o->frame.crs.empty())};
+                                  parse_position(o->to, "--to", loaded.frame, !o->frame.crs.empty()), o->escape};
     ObstacleSet obstacles = loaded.obstacles;
     std::size_t passed_over = 0;
     if (!std::isnan(o->depth)) passed_over = remove_passable(obstacles, o->depth, o->vertical_clearance);
@@ -90,6 +92,7 @@ void register_plan(CLI::App& app) {
         {"obstacles", planner.field().size()},
         {"passed_over", passed_over},
         {"crs", loaded.frame.id()}};
+    if (!out.escaped_from.empty()) summary["escaped_from"] = out.escaped_from;
     if (!out.result.legs.empty()) {
       summary["exact_length_m"] = out.result.exact_length_m;
       std::size_t arcs = 0;

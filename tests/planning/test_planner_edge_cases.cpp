@@ -177,3 +177,46 @@ TEST(PlannerInput, HundredThousandObstaclesStopWithAClearMessage) {
     }
   }
 }
+
+TEST(PlannerInput, EscapeLeavesTheZoneTheShortestWay) {
+  // Disc r = 10 at the origin, margin 5; start at (12, 0) is 2 m from it.
+  // The way out is along +x to (15 + 1e-6, 0), then on to the goal.
+  ObstacleSet set;
+  EllipticCylinder c;
+  c.id = "buoy";
+  c.footprint = Ellipse{{0, 0}, 10, 10, 0};
+  set.ellipses.push_back(c);
+  for (GraphKind kind : {GraphKind::visibility, GraphKind::tangent}) {
+    Planner planner(set, {5.0, 0.05, kind, SearchAlgorithm::astar});
+    const PlanOutcome out = planner.solve({{12, 0}, {100, 0}, true});
+    ASSERT_TRUE(out.result.found);
+    EXPECT_EQ(out.escaped_from, "buoy");
+    ASSERT_GE(out.result.route.points.size(), 2u);
+    EXPECT_EQ(out.result.route.points[0], Vec2(12, 0));
+    EXPECT_NEAR(out.result.route.points[1].x(), 15.0, 1e-5);
+    EXPECT_NEAR(out.result.route.points[1].y(), 0.0, 1e-9);
+    EXPECT_TRUE(out.check.safe) << out.check.describe();
+    EXPECT_NEAR(out.result.route.length(), 88.0, 1e-5);
+    // From inside the footprint itself, out through the nearest boundary point.
+    const PlanOutcome deep = planner.solve({{0, 3}, {0, 100}, true});
+    ASSERT_TRUE(deep.result.found);
+    EXPECT_NEAR(deep.result.route.points[1].y(), 15.0, 1e-5);
+  }
+}
+
+TEST(PlannerInput, EscapeIntoAnotherZoneIsRefused) {
+  ObstacleSet set;
+  EllipticCylinder a, b;
+  a.id = "a";
+  a.footprint = Ellipse{{0, 0}, 10, 10, 0};
+  b.id = "b";
+  b.footprint = Ellipse{{24, 0}, 8, 8, 0};  // its zone starts at x = 11
+  set.ellipses = {a, b};
+  Planner planner(set, {5.0, 0.05, GraphKind::visibility, SearchAlgorithm::astar});
+  try {
+    planner.solve({{11, 0}, {0, 100}, true});
+    FAIL() << "no error";
+  } catch (const NoRouteError& e) {
+    EXPECT_NE(std::string(e.what()).find("'b'"), std::string::npos) << e.what();
+  }
+}

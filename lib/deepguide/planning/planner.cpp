@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
@@ -92,6 +94,48 @@ void require_free(const ObstacleField& field, const Vec2& p, const char* which) 
                      " m safety zone");
 }
 
+// Closest point of an obstacle's footprint boundary to p.
+Vec2 closest_boundary_point(const ObstacleSet& set, std::size_t obstacle, const Vec2& p) {
+  if (obstacle < set.ellipses.size()) return project_to_ellipse(set.ellipses[obstacle].footprint, p).point;
+  const BgPolygon& poly = set.polygons.at(obstacle - set.ellipses.size()).footprint;
+  Vec2 best = p;
+  double best_d = std::numeric_limits<double>::infinity();
+  auto ring = [&](const auto& r) {
+    for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+      const Vec2 a = to_eigen(r[i]), d = to_eigen(r[i + 1]) - a;
+      const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      const Vec2 q = a + t * d;
+      if ((q - p).norm() < best_d) best_d = (q - p).norm(), best = q;
+    }
+  };
+  ring(poly.outer());
+  for (const auto& inner : poly.inners()) ring(inner);
+  return best;
+}
+
+// The shortest way out of the zone that holds p: along the line from the
+// nearest footprint point through p (away from the interior), to a point a
+// micrometre beyond the margin.
+Vec2 escape_point(const ObstacleField& field, const Vec2& p, std::string& obstacle_name) {
+  const ObstacleField::Nearest n = field.segment_clearance(p, p);
+  obstacle_name = field.obstacle_name(n.obstacle);
+  const Vec2 q = closest_boundary_point(field.obstacles(), n.obstacle, p);
+  Vec2 out = p - q;
+  if (out.norm() == 0.0) {
+    throw NoRouteError("the start lies on the boundary of obstacle '" + obstacle_name +
+                       "' where no way out can be told; move it off the boundary");
+  }
+  out.normalize();
+  if (n.distance < 0.0) out = -out;  // inside the footprint: leave through q
+  const Vec2 e = q + (field.margin() + 1e-6) * out;
+  if (!field.is_free(e)) {
+    const ObstacleField::Nearest other = field.segment_clearance(e, e);
+    throw NoRouteError("the shortest way out of obstacle '" + obstacle_name + "''s safety zone ends in obstacle '" +
+                       field.obstacle_name(other.obstacle) + "''s zone");
+  }
+  return e;
+}
+
 }  // namespace
 
 PlanOutcome Planner::solve(const PlanningProblem& problem) {
@@ -100,6 +144,16 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   }
   if ((problem.start - problem.goal).norm() < 1e-9) {
     throw InputError("start and goal: expected two different points, got the same one");
+  }
+  std::string escaped_from;
+  PlanningProblem inner = problem;
+  if (problem.escape && !impl_->field.is_free(problem.start)) {
+    inner.start = escape_point(impl_->field, problem.start, escaped_from);
+    inner.escape = false;
+    PlanOutcome out = solve(inner);
+    if (out.result.found) out.result.route.points.insert(out.result.route.points.begin(), problem.start);
+    out.escaped_from = escaped_from;
+    return out;
   }
   require_free(impl_->field, problem.start, "the start");
   require_free(impl_->field, problem.goal, "the goal");
@@ -111,12 +165,12 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     // A point outside the true zone can still lie in the thin band between a
     // zone and its enclosing polygon; step to the polygon's boundary first.
     VisibilityGraph& graph = *impl_->visibility;
-    PlanningProblem inner = problem;
+    PlanningProblem banded = problem;
     const bool start_in_band = graph.strictly_inside(problem.start);
     const bool goal_in_band = graph.strictly_inside(problem.goal);
-    if (start_in_band) inner.start = graph.closest_boundary_point(problem.start);
-    if (goal_in_band) inner.goal = graph.closest_boundary_point(problem.goal);
-    out.result = graph.solve(inner, options_.search);
+    if (start_in_band) banded.start = graph.closest_boundary_point(problem.start);
+    if (goal_in_band) banded.goal = graph.closest_boundary_point(problem.goal);
+    out.result = graph.solve(banded, options_.search);
     if (out.result.found) {
       auto& pts = out.result.route.points;
       if (start_in_band) pts.insert(pts.begin(), problem.start);

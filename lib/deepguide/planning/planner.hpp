@@ -39,7 +39,8 @@ std::string to_string(SearchAlgorithm algorithm);
 /// What a query's route looks like against the exact obstacles.
 struct PlanOutcome {
   PlanResult result;
-  RouteCheck check;  ///< the independent checker's verdict on result.route
+  RouteCheck check;  ///< the independent checker's verdict on result.route (after the escape leg)
+  std::string escaped_from;  ///< obstacle whose zone the start left first (PlanningProblem::escape)
 };
 
 class Planner {
@@ -51,7 +52,8 @@ class Planner {
 
   /// Plans from start to goal. Throws InputError for non-finite or identical
   /// points and NoRouteError (naming the obstacle) when start or goal lies in
-  /// a safety zone. A search that finds nothing returns found == false.
+  /// a safety zone (the start only without `escape`, or when the way out
+  /// ends in another zone). A search that finds nothing returns found == false.
   PlanOutcome solve(const PlanningProblem& problem);
 
   const ObstacleField& field() const;

@@ -40,6 +40,9 @@ struct PlanStats {
 struct PlanningProblem {
   Vec2 start;
   Vec2 goal;
+  /// A start inside a safety zone first leaves it the shortest way (straight
+  /// out along the normal of the nearest obstacle) instead of being refused.
+  bool escape = false;
 };
 
 /// The common result of every planner's solve(problem).
