@@ -40,6 +40,21 @@ TEST(CliPlan, WritesARouteThatTheCheckerAccepts) {
   EXPECT_NEAR(nlohmann::json::parse(ok.out).at("length_m").get<double>(), j.at("length_m").get<double>(), 1e-3);
 }
 
+TEST(CliPlan, RoutesThatTouchZonesSurviveTheFileRoundTrip) {
+  // These points make every graph hug the zones of c1 and c2 at exactly 5 m;
+  // written as lon/lat and read back, the route must still pass the checker.
+  ScratchDir dir;
+  for (const char* graph : {"visibility", "visibility-full", "tangent"}) {
+    const std::string route = dir.file(std::string(graph) + ".geojson");
+    const auto r = run_cli("plan --obstacles '" + kSample + "' --from 10.2405,54.4470 --to 10.2640,54.4560 --graph " +
+                           graph + " -o '" + route + "' --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_LT(nlohmann::json::parse(r.out).at("min_clearance_m").get<double>(), 5.25) << graph;
+    const auto ok = run_cli("check route '" + route + "' --obstacles '" + kSample + "'");
+    EXPECT_EQ(ok.exit_code, 0) << graph << ": " << ok.err;
+  }
+}
+
 TEST(CliPlan, ReducedAndFullGraphsAgree) {
   const auto a = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --json");
   const auto b = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph visibility-full --search dijkstra --json");

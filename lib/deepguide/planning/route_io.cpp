@@ -47,7 +47,9 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
     GDALDatasetUniquePtr ds(driver->Create(out.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) fail(path, "create the file");
     const auto geo = gdal::wgs84();
-    const char* options[] = {"RFC7946=YES", "COORDINATE_PRECISION=9", nullptr};
+    // 12 decimals (~0.1 um): routes touch the zones exactly, and a route read
+    // back must still pass the checker's 1 um tolerance.
+    const char* options[] = {"RFC7946=YES", "COORDINATE_PRECISION=12", nullptr};
     OGRLayer* layer = ds->CreateLayer("route", geo.get(), wkbUnknown, const_cast<char**>(options));
     if (layer == nullptr) fail(path, "create the route layer");
     // One schema for both feature kinds: `kind` tells the line from the waypoints.
