@@ -20,7 +20,7 @@ struct PlanOptions {
   std::string from, to, output;
   FrameOptions frame;
   double margin = 5.0;
-  double tolerance = 0.2;
+  double tolerance = PlannerOptions{}.tolerance;
   double depth = std::nan("");
   double vertical_clearance = 2.0;
   std::string graph = "visibility";

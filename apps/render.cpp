@@ -42,7 +42,7 @@ struct RenderRouteOptions {
   std::string route, output, title;
   FrameOptions frame;
   double margin = 5.0;
-  double tolerance = 0.2;
+  double tolerance = PlannerOptions{}.tolerance;
   std::string graph = "none";
   int width = 1200;
 };

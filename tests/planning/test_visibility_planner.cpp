@@ -102,7 +102,7 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
     }
     const double margin = 10.0 * u01(rng);
     const Vec2 start(-250.0, pos(rng)), goal(250.0, pos(rng));
-    const PlannerOptions base{margin, 0.2, GraphKind::visibility, SearchAlgorithm::astar};
+    const PlannerOptions base{margin, 0.5, GraphKind::visibility, SearchAlgorithm::astar};
     Planner reduced(set, base);
     const PlanOutcome r = reduced.solve({start, goal});
     PlannerOptions full_options = base;

@@ -101,22 +101,20 @@ bool PolygonVisibility::properly_crosses(const Vec2& p, const Vec2& q) const {
 
 bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
   const double len = (q - p).norm();
-  // Most segments between far corners are blocked: a proper crossing found
-  // lazily settles them before the careful test below.
-  if (properly_crosses(p, q)) return false;
-  BgBox box(BgPoint(std::min(p.x(), q.x()) - eps_, std::min(p.y(), q.y()) - eps_),
-            BgPoint(std::max(p.x(), q.x()) + eps_, std::max(p.y(), q.y()) + eps_));
-  std::vector<EdgeItem> candidates;
-  edges_.query(bgi::intersects(box), std::back_inserter(candidates));
+  if (len == 0.0) return !strictly_inside(p);
+  // Only edges whose boxes the segment meets can cross it or put a corner on
+  // it (a corner within eps but off to the side is not on it; one clipped by
+  // the segment lies in its edges' boxes). Iterated lazily: most segments
+  // between far corners are blocked, and the first proper crossing ends it.
   std::vector<double> breaks{0.0, 1.0};
-  for (const EdgeItem& e : candidates) {
-    const Vec2 a = to_eigen(e.first.first), b = to_eigen(e.first.second);
+  const Segment seg(to_bg(p), to_bg(q));
+  for (auto it = edges_.qbegin(bgi::intersects(seg)); it != edges_.qend(); ++it) {
+    const Vec2 a = to_eigen(it->first.first), b = to_eigen(it->first.second);
     const double sa = side(p, q, a), sb = side(p, q, b);
     const double sp = side(a, b, p), sq = side(a, b, q);
     const bool straddle_pq = (sa > eps_ && sb < -eps_) || (sa < -eps_ && sb > eps_);
     const bool straddle_ab = (sp > eps_ && sq < -eps_) || (sp < -eps_ && sq > eps_);
     if (straddle_pq && straddle_ab) return false;
-    if (len == 0.0) continue;
     for (const auto& [x, s] : {std::pair{a, sa}, std::pair{b, sb}}) {
       if (std::abs(s) > eps_) continue;
       const double t = (x - p).dot(q - p) / (len * len);
@@ -125,7 +123,7 @@ bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
   }
   std::sort(breaks.begin(), breaks.end());
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
-    if ((breaks[i + 1] - breaks[i]) * len <= eps_ && len > 0.0) continue;
+    if ((breaks[i + 1] - breaks[i]) * len <= eps_) continue;
     const Vec2 mid = p + 0.5 * (breaks[i] + breaks[i + 1]) * (q - p);
     if (strictly_inside(mid)) return false;
   }
