@@ -8,7 +8,7 @@
 //
 // Scenarios (fixed seeds): N ellipses with centres uniform in a square of side
 // 150 m * sqrt(N) (one obstacle per 150 m x 150 m), semi-major axis 5..40 m,
-// b/a 0.2..1, uniform orientation; margin 5 m, polygon tolerance 0.2 m. Start
+// b/a 0.2..1, uniform orientation; margin 5 m, the default polygon tolerance. Start
 // on the west edge, goal on the east edge (middle 60 %), both outside every
 // safety zone and the straight line between them blocked (checked with
 // ObstacleField). Obstacles may overlap, as real clusters do.
@@ -57,7 +57,7 @@ bool ompl_peer_solve(const ObstacleField& field, const Vec2& lo, const Vec2& hi,
 namespace {
 
 constexpr double kMargin = 5.0;
-constexpr double kTolerance = 0.2;
+const double kTolerance = deepguide::PlannerOptions{}.tolerance;  // the planner's default
 constexpr double kCoarseTolerance = 1.0;  // second full/reduced comparison where the full graph refuses 0.2 m
 constexpr double kCaseTimeoutS = 60.0;  // hard limit per build + query (child killed)
 constexpr double kSlowS = 20.0;         // slower than this: one scenario only, and no larger N
