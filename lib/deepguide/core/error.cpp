@@ -1,5 +1,7 @@
 #include "deepguide/core/error.hpp"
 
+#include <cstdio>
+
 namespace deepguide {
 
 std::string InputLocation::describe() const {
@@ -7,6 +9,24 @@ std::string InputLocation::describe() const {
   if (!feature.empty()) s += ": " + feature;
   if (!field.empty()) s += ": field '" + field + "'";
   return s;
+}
+
+std::string printable(const std::string& text, std::size_t max_chars) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (out.size() >= max_chars) {
+      out += "...";
+      break;
+    }
+    if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
 }
 
 InputError input_error(const InputLocation& where, const std::string& expected,

@@ -29,6 +29,10 @@ struct InputLocation {
   std::string describe() const;
 };
 
+/// Text from a file (an id, a name) made safe for a one-line message:
+/// control characters escaped as \xNN, cut after `max_chars` with "...".
+std::string printable(const std::string& text, std::size_t max_chars = 60);
+
 /// Builds an InputError "LOCATION: expected EXPECTED[, got GOT]".
 InputError input_error(const InputLocation& where, const std::string& expected,
                        const std::string& got = {});

@@ -11,23 +11,12 @@ namespace {
 struct TargetReached {};
 
 // Counts examined vertices and stops the search at the target (Boost's
-// documented way to end a search early is to throw from a visitor).
-class StopAtTarget : public boost::default_astar_visitor {
+// documented way to end a search early is to throw from a visitor). One
+// template for both searches' visitor bases.
+template <class Base>
+class StopAtTarget : public Base {
  public:
   StopAtTarget(GraphVertex target, std::size_t& expanded) : target_(target), expanded_(&expanded) {}
-  void examine_vertex(GraphVertex v, const PlanningGraph&) const {
-    ++*expanded_;
-    if (v == target_) throw TargetReached{};
-  }
-
- private:
-  GraphVertex target_;
-  std::size_t* expanded_;
-};
-
-class DijkstraStop : public boost::default_dijkstra_visitor {
- public:
-  DijkstraStop(GraphVertex target, std::size_t& expanded) : target_(target), expanded_(&expanded) {}
   void examine_vertex(GraphVertex v, const PlanningGraph&) const {
     ++*expanded_;
     if (v == target_) throw TargetReached{};
@@ -60,12 +49,12 @@ SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, Graph
                           boost::predecessor_map(pred.data())
                               .distance_map(dist.data())
                               .rank_map(rank.data())
-                              .visitor(StopAtTarget(target, result.expanded)));
+                              .visitor(StopAtTarget<boost::default_astar_visitor>(target, result.expanded)));
     } else {
       boost::dijkstra_shortest_paths(graph, source,
                                      boost::predecessor_map(pred.data())
                                          .distance_map(dist.data())
-                                         .visitor(DijkstraStop(target, result.expanded)));
+                                         .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, result.expanded)));
     }
   } catch (const TargetReached&) {
   }

@@ -22,21 +22,6 @@ std::string general(double v) {
   return buf;
 }
 
-// Ids come from files; a control character must not break the one-line report.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (unsigned char c : text) {
-    if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string RouteCheck::describe() const {

@@ -34,27 +34,6 @@ struct GeoRecord {
   std::optional<double> top_depth_m;
 };
 
-// A feature's id or name as it may appear in a one-line message: control
-// characters escaped, long values cut.
-std::string printable(const std::string& text) {
-  constexpr std::size_t kMax = 60;
-  std::string out;
-  for (unsigned char c : text) {
-    if (out.size() >= kMax) {
-      out += "...";
-      break;
-    }
-    if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
-
 std::string describe_feature(const OGRFeature& f, const std::string& driver, const std::string& layer,
                              bool several_layers) {
   std::string s;
