@@ -1,0 +1,243 @@
+#include "deepguide/world/s57_chart.hpp"
+
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <boost/geometry/algorithms/correct.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Opens `path` with the S57 driver only, the update handling set per dataset
+// (open option UPDATES), never through a process-wide config option. The
+// caller keeps a QuietErrors alive while it reads, and calls check_read().
+GDALDatasetUniquePtr open_cell(const std::string& path, bool apply_updates) {
+  gdal::ensure_registered();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing S-57 cell (*.000), found none");
+  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": expected an S-57 cell file (*.000), got a folder");
+  const char* drivers[] = {"S57", nullptr};
+  const char* open_options[] = {apply_updates ? "UPDATES=APPLY" : "UPDATES=IGNORE", nullptr};
+  GDALDatasetUniquePtr ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, open_options, nullptr));
+  if (!ds) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected an S-57 ENC cell GDAL's S57 driver can read" +
+                     (why.empty() ? std::string(", got a file it does not recognise") : ", got: " + why));
+  }
+  return ds;
+}
+
+// GDAL reports some damage only while features are read.
+void check_read(const std::string& path) {
+  if (const std::string why = gdal::QuietErrors::last_message(); !why.empty()) {
+    throw InputError(path + ": expected a complete S-57 cell, got: " + why);
+  }
+}
+
+void grow(LonLatExtent& e, const OGREnvelope& env) {
+  auto lo = [](double a, double b) { return std::isnan(a) ? b : std::min(a, b); };
+  auto hi = [](double a, double b) { return std::isnan(a) ? b : std::max(a, b); };
+  e.west = lo(e.west, env.MinX);
+  e.east = hi(e.east, env.MaxX);
+  e.south = lo(e.south, env.MinY);
+  e.north = hi(e.north, env.MaxY);
+}
+
+std::optional<double> real_field(const OGRFeature& f, const char* name) {
+  const int i = f.GetFieldIndex(name);
+  if (i < 0 || !f.IsFieldSetAndNotNull(i)) return std::nullopt;
+  const double v = f.GetFieldAsDouble(i);
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+std::string string_field(const OGRFeature& f, const char* name) {
+  const int i = f.GetFieldIndex(name);
+  return i >= 0 && f.IsFieldSetAndNotNull(i) ? f.GetFieldAsString(i) : std::string();
+}
+
+void min_max(double& lo, double& hi, double v) {
+  lo = std::isnan(lo) ? v : std::min(lo, v);
+  hi = std::isnan(hi) ? v : std::max(hi, v);
+}
+
+}  // namespace
+
+S57Summary summarize_s57(const std::string& path, bool apply_updates) {
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_cell(path, apply_updates);
+  S57Summary s;
+  bool has_coverage = false;
+  LonLatExtent all;
+  for (OGRLayer* layer : ds->GetLayers()) {
+    const std::string name = layer->GetName();
+    std::size_t count = 0;
+    for (auto& f : *layer) {
+      ++count;
+      const OGRGeometry* g = f->GetGeometryRef();
+      OGREnvelope env;
+      if (g != nullptr && !g->IsEmpty()) {
+        g->getEnvelope(&env);
+        grow(all, env);
+      }
+      if (name == "DSID") {
+        s.edition = string_field(*f, "DSID_EDTN");
+        s.update_number = std::atoi(string_field(*f, "DSID_UPDN").c_str());
+        s.issue_date = string_field(*f, "DSID_ISDT");
+      } else if (name == "M_COVR" && g != nullptr && !g->IsEmpty()) {
+        grow(s.extent, env);
+        has_coverage = true;
+      } else if (name == "DEPARE") {
+        if (const auto d1 = real_field(*f, "DRVAL1")) min_max(s.depare_min_m, s.depare_max_m, *d1);
+        if (const auto d2 = real_field(*f, "DRVAL2")) min_max(s.depare_min_m, s.depare_max_m, *d2);
+      } else if (name == "SOUNDG" && g != nullptr) {
+        // Without SPLIT_MULTIPOINT a SOUNDG feature is a 3-D multipoint whose
+        // z is the sounding's depth (m, positive down).
+        auto add = [&](const OGRPoint& p) {
+          ++s.soundings;
+          min_max(s.sounding_min_m, s.sounding_max_m, p.getZ());
+        };
+        if (wkbFlatten(g->getGeometryType()) == wkbMultiPoint) {
+          for (const OGRPoint* p : *g->toMultiPoint()) add(*p);
+        } else if (wkbFlatten(g->getGeometryType()) == wkbPoint) {
+          add(*g->toPoint());
+        }
+      }
+    }
+    s.layer_counts[name] = count;
+  }
+  check_read(path);
+  if (!has_coverage) s.extent = all;
+  if (std::isnan(s.extent.west)) throw InputError(path + ": expected an S-57 cell with features, got none");
+  return s;
+}
+
+LocalFrame s57_local_frame(const S57Summary& summary, const S57Options& options) {
+  if (!options.local_crs.empty()) return LocalFrame::from_user_crs(options.local_crs, "--crs");
+  const LonLatExtent& e = summary.extent;
+  return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
+}
+
+S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S57Options& options) {
+  if (!std::isfinite(options.point_hazard_radius_m) || options.point_hazard_radius_m <= 0.0) {
+    throw InputError("point hazard radius: expected a radius > 0 m, got " + fmt(options.point_hazard_radius_m));
+  }
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_cell(path, options.apply_updates);
+  S57Hazards out;
+
+  for (const char* cls : {"OBSTRN", "WRECKS", "UWTROC", "LNDARE"}) {
+    std::size_t& read = out.features_read[cls];
+    OGRLayer* layer = ds->GetLayerByName(cls);
+    if (layer == nullptr) continue;  // the cell has no object of this class
+    const bool land = std::string(cls) == "LNDARE";
+    for (auto& f : *layer) {
+      ++read;
+      const int rcid_index = f->GetFieldIndex("RCID");
+      const long long rcid = rcid_index >= 0 && f->IsFieldSetAndNotNull(rcid_index)
+                                 ? f->GetFieldAsInteger64(rcid_index)
+                                 : static_cast<long long>(f->GetFID());
+      const std::string id = std::string(cls) + "/" + std::to_string(rcid);
+      const InputLocation where{path, "layer '" + std::string(cls) + "', feature RCID " + std::to_string(rcid),
+                                "geometry"};
+      std::optional<double> top;
+      if (!land) {
+        if (const auto valsou = real_field(*f, "VALSOU")) top = std::max(*valsou, 0.0);  // < 0: dries
+      }
+      auto local = [&](double lon, double lat) {
+        const Vec2 xy = std::isfinite(lon) && std::isfinite(lat) && std::abs(lon) <= 180.0 && std::abs(lat) <= 90.0
+                            ? frame.from_lonlat(lon, lat)
+                            : Vec2(NAN, NAN);
+        if (!xy.allFinite()) {
+          throw input_error(where, "a position inside the area of the local frame " + frame.id(),
+                            "lon " + fmt(lon) + ", lat " + fmt(lat));
+        }
+        return xy;
+      };
+      auto add_circle = [&](const OGRPoint& p, const std::string& pid) {
+        EllipticCylinder c;
+        c.id = pid;
+        c.footprint.center = local(p.getX(), p.getY());
+        c.footprint.a = c.footprint.b = options.point_hazard_radius_m;
+        c.footprint.theta = 0.0;
+        c.top_depth_m = top;
+        out.obstacles.ellipses.push_back(std::move(c));
+      };
+      auto add_polygon = [&](const OGRPolygon& poly, const std::string& pid) {
+        const OGRLinearRing* outer = poly.getExteriorRing();
+        if (poly.IsEmpty() || outer == nullptr || outer->getNumPoints() < 4) {
+          ++out.skipped_empty;
+          return;
+        }
+        PolygonObstacle p;
+        p.id = pid;
+        p.top_depth_m = top;
+        auto copy = [&](const OGRLinearRing& ring, auto& dst) {
+          for (int i = 0; i < ring.getNumPoints(); ++i) dst.push_back(to_bg(local(ring.getX(i), ring.getY(i))));
+        };
+        copy(*outer, p.footprint.outer());
+        for (int k = 0; k < poly.getNumInteriorRings(); ++k) {
+          copy(*poly.getInteriorRing(k), p.footprint.inners().emplace_back());
+        }
+        boost::geometry::correct(p.footprint);
+        out.obstacles.polygons.push_back(std::move(p));
+      };
+      auto part_id = [&](int k) { return k == 0 ? id : id + "#" + std::to_string(k + 1); };
+
+      const OGRGeometry* g = f->GetGeometryRef();
+      if (g == nullptr || g->IsEmpty()) {
+        ++out.skipped_empty;
+        continue;
+      }
+      switch (wkbFlatten(g->getGeometryType())) {
+        case wkbPoint:
+          add_circle(*g->toPoint(), id);
+          break;
+        case wkbMultiPoint: {
+          int k = 0;
+          for (const OGRPoint* p : *g->toMultiPoint()) add_circle(*p, part_id(k++));
+          break;
+        }
+        case wkbPolygon:
+          add_polygon(*g->toPolygon(), id);
+          break;
+        case wkbMultiPolygon: {
+          int k = 0;
+          for (const OGRPolygon* p : *g->toMultiPolygon()) add_polygon(*p, part_id(k++));
+          break;
+        }
+        case wkbLineString:
+        case wkbMultiLineString:
+          ++out.skipped_lines;
+          break;
+        default:
+          throw input_error(where, "a Point, Polygon or line geometry",
+                            OGRGeometryTypeToName(g->getGeometryType()));
+      }
+    }
+  }
+  check_read(path);
+  if (!std::isnan(options.operating_depth_m)) {
+    out.removed_by_depth =
+        remove_passable(out.obstacles, options.operating_depth_m, options.vertical_clearance_m);
+  }
+  return out;
+}
+
+}  // namespace deepguide
