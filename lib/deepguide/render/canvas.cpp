@@ -123,6 +123,19 @@ struct Canvas::Impl {
     cairo_set_antialias(cr, s.antialias ? CAIRO_ANTIALIAS_GOOD : CAIRO_ANTIALIAS_NONE);
   }
 
+  // Fills and/or outlines the current path, then clears it.
+  void fill_and_outline(const std::optional<Rgba>& fill, const std::optional<Stroke>& outline) {
+    if (fill) {
+      set_color(*fill);
+      cairo_fill_preserve(cr);
+    }
+    if (outline) {
+      apply(*outline);
+      cairo_stroke_preserve(cr);
+    }
+    cairo_new_path(cr);
+  }
+
   void path(const std::vector<Vec2>& points, bool closed) {
     if (points.empty()) return;
     cairo_move_to(cr, points[0].x(), points[0].y());
@@ -212,30 +225,14 @@ void Canvas::shape(const std::vector<Vec2>& points, const std::optional<Rgba>& f
                    const std::optional<Stroke>& outline) {
   if (points.size() < 3) return;
   impl_->path(points, true);
-  if (fill) {
-    impl_->set_color(*fill);
-    cairo_fill_preserve(impl_->cr);
-  }
-  if (outline) {
-    impl_->apply(*outline);
-    cairo_stroke_preserve(impl_->cr);
-  }
-  cairo_new_path(impl_->cr);
+  impl_->fill_and_outline(fill, outline);
 }
 
 void Canvas::circle(const Vec2& c, double radius, const std::optional<Rgba>& fill,
                     const std::optional<Stroke>& outline) {
   cairo_new_sub_path(impl_->cr);
   cairo_arc(impl_->cr, c.x(), c.y(), radius, 0.0, 2.0 * std::numbers::pi);
-  if (fill) {
-    impl_->set_color(*fill);
-    cairo_fill_preserve(impl_->cr);
-  }
-  if (outline) {
-    impl_->apply(*outline);
-    cairo_stroke_preserve(impl_->cr);
-  }
-  cairo_new_path(impl_->cr);
+  impl_->fill_and_outline(fill, outline);
 }
 
 void Canvas::text(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color,
