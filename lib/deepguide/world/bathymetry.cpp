@@ -1,0 +1,240 @@
+#include "deepguide/world/bathymetry.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <tuple>
+#include <vector>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string item(GDALMajorObject& o, const std::string& key) {
+  const char* v = o.GetMetadataItem(key.c_str());
+  return v != nullptr ? std::string(v) : std::string();
+}
+
+GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOptions& options) {
+  gdal::ensure_registered();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing bathymetry raster, found none");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": expected a bathymetry raster file, got a folder");
+  std::vector<const char*> oo;
+  for (const auto& o : options.open_options) oo.push_back(o.c_str());
+  oo.push_back(nullptr);
+  GDALDatasetUniquePtr ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, oo.data(), nullptr));
+  if (!ds || ds->GetRasterCount() == 0) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected a raster GDAL can open" +
+                     (why.empty() ? std::string(", got a file no raster driver recognises") : ", got: " + printable(why, 160)));
+  }
+  return ds;
+}
+
+// The vertical sense the file states, with the reason; elevation by default.
+std::pair<VerticalSense, std::string> detect_sense(GDALDataset& ds, GDALRasterBand& band) {
+  const std::string var = item(band, "NETCDF_VARNAME");
+  std::string positive = lower(item(band, "positive"));
+  if (positive.empty() && !var.empty()) positive = lower(item(ds, var + "#positive"));
+  if (positive == "down") return {VerticalSense::depth, "attribute positive=down"};
+  if (positive == "up") return {VerticalSense::elevation, "attribute positive=up"};
+
+  const std::string driver = ds.GetDriver() != nullptr ? ds.GetDriver()->GetDescription() : "";
+  if (driver == "BAG") return {VerticalSense::elevation, "BAG specification: elevation, positive up"};
+
+  const std::pair<const char*, std::string> names[] = {{"description", band.GetDescription()},
+                                                       {"standard_name", item(band, "standard_name")},
+                                                       {"long_name", item(band, "long_name")},
+                                                       {"variable name", var}};
+  for (const auto& [what, text] : names) {
+    const std::string t = lower(text);
+    if (t.empty()) continue;
+    if (t.find("depth") != std::string::npos)
+      return {VerticalSense::depth, std::string("band ") + what + " '" + printable(text) + "' says depth"};
+    for (const char* w : {"elevation", "height", "topograph", "altitude"})
+      if (t.find(w) != std::string::npos)
+        return {VerticalSense::elevation, std::string("band ") + what + " '" + printable(text) + "' says elevation"};
+    if (t == "z") return {VerticalSense::elevation, std::string("band ") + what + " 'z' (GMT grid: elevation, positive up)"};
+  }
+  return {VerticalSense::elevation,
+          "the file does not say; assumed elevation, positive up (GDAL/GMT/NOAA convention)"};
+}
+
+// CF lon/lat axes (NetCDF x/y with units degrees_east/degrees_north) without a CRS.
+bool has_cf_lonlat_axes(GDALDataset& ds) {
+  bool east = false, north = false;
+  if (char** md = ds.GetMetadata()) {
+    for (char** p = md; *p != nullptr; ++p) {
+      const std::string kv = lower(*p);
+      if (kv.find("#units=degrees_east") != std::string::npos) east = true;
+      if (kv.find("#units=degrees_north") != std::string::npos) north = true;
+    }
+  }
+  return east && north;
+}
+
+bool same_as_nodata(double v, double nodata, GDALDataType type) {
+  if (v == nodata) return true;
+  // A Float32 band stores its NoData value rounded to float (e.g. 0.1).
+  return type == GDT_Float32 && static_cast<float>(v) == static_cast<float>(nodata);
+}
+
+}  // namespace
+
+const char* to_string(VerticalSense sense) {
+  switch (sense) {
+    case VerticalSense::elevation: return "elevation";
+    case VerticalSense::depth: return "depth";
+    case VerticalSense::automatic: return "automatic";
+  }
+  return "?";
+}
+
+BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptions& options) {
+  gdal::QuietErrors quiet;  // GDAL's warnings (e.g. BAG cornerPoints) are not printed
+  GDALDatasetUniquePtr ds = open_raster(path, options);
+  BathymetryInfo info;
+  info.path = path;
+  info.driver = ds->GetDriver() != nullptr ? ds->GetDriver()->GetDescription() : "";
+  info.width = ds->GetRasterXSize();
+  info.height = ds->GetRasterYSize();
+  if (options.band < 1 || options.band > ds->GetRasterCount()) {
+    throw InputError(path + ": expected band " + std::to_string(options.band) + ", got a raster with " +
+                     std::to_string(ds->GetRasterCount()) + " band(s)");
+  }
+  GDALRasterBand& band = *ds->GetRasterBand(options.band);
+  {
+    // A damaged file (e.g. a GeoTIFF cut short) may open but fail on its
+    // first and last cells, or report errors (not warnings) while opening:
+    // say so before a missing CRS or the like would mislead.
+    double probe = 0;
+    if (band.RasterIO(GF_Read, 0, 0, 1, 1, &probe, 1, 1, GDT_Float64, 0, 0, nullptr) != CE_None ||
+        band.RasterIO(GF_Read, info.width - 1, info.height - 1, 1, 1, &probe, 1, 1, GDT_Float64, 0, 0, nullptr) !=
+            CE_None ||
+        !gdal::QuietErrors::last_message().empty()) {
+      const std::string why = gdal::QuietErrors::last_message();
+      throw InputError(path + ": expected a raster GDAL can read, got a damaged one" +
+                       (why.empty() ? std::string() : ": " + printable(why, 160)));
+    }
+  }
+
+  // CRS: the file's, CF lon/lat axes, or the assumed one.
+  std::unique_ptr<OGRSpatialReference> srs;
+  if (const OGRSpatialReference* file_srs = ds->GetSpatialRef(); file_srs != nullptr && !file_srs->IsEmpty()) {
+    srs.reset(file_srs->Clone());
+    srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    info.crs_source = "file";
+  } else if (has_cf_lonlat_axes(*ds)) {
+    srs = gdal::wgs84();
+    info.crs_source = "CF lon/lat axes (degrees_east/degrees_north)";
+  } else if (!options.assumed_crs.empty()) {
+    srs = gdal::srs_from_user_input(options.assumed_crs);
+    if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
+    info.crs_source = "assumed (option)";
+  } else {
+    throw InputError(path + ": expected a raster with a CRS, got none; pass the CRS it uses (e.g. EPSG:4326)");
+  }
+  info.crs = gdal::srs_id(*srs);
+  {
+    char* wkt = nullptr;
+    if (srs->exportToWkt(&wkt) == OGRERR_NONE && wkt != nullptr) info.crs_wkt = wkt;
+    CPLFree(wkt);
+  }
+
+  double gt[6];
+  if (ds->GetGeoTransform(gt) != CE_None) {
+    throw InputError(path + ": expected a georeferenced raster (a geotransform), got none");
+  }
+  if (gt[2] != 0.0 || gt[4] != 0.0) {
+    throw InputError(path + ": expected a north-up raster, got a rotated geotransform");
+  }
+  info.pixel_x = gt[1];
+  info.pixel_y = gt[5];
+  {
+    const double x0 = gt[0], x1 = gt[0] + gt[1] * info.width;
+    const double y0 = gt[3], y1 = gt[3] + gt[5] * info.height;
+    auto geo = gdal::wgs84();
+    auto ct = gdal::make_transform(*srs, *geo);
+    double w, s, e, n;
+    if (!ct || !ct->TransformBounds(std::min(x0, x1), std::min(y0, y1), std::max(x0, x1), std::max(y0, y1), &w, &s,
+                                    &e, &n, 21)) {
+      throw InputError(path + ": expected a raster extent that converts to lon/lat from " + info.crs + ", got " +
+                       "one PROJ cannot transform");
+    }
+    info.extent = {w, e, s, n};
+  }
+
+  int has_nodata = 0;
+  const double nodata = band.GetNoDataValue(&has_nodata);
+  info.has_nodata = has_nodata != 0;
+  if (info.has_nodata) info.nodata = nodata;
+  const GDALDataType type = band.GetRasterDataType();
+
+  if (options.sense == VerticalSense::automatic) {
+    std::tie(info.sense_used, info.sense_reason) = detect_sense(*ds, band);
+  } else {
+    info.sense_used = options.sense;
+    info.sense_reason = "given as an option";
+  }
+  const double to_depth = info.sense_used == VerticalSense::elevation ? -1.0 : 1.0;
+
+  // The band is never read whole: windows of whole natural blocks, at most
+  // max_window_cells cells each (at least one block), so any raster that GDAL
+  // can read by blocks fits in memory.
+  int bx = 0, by = 0;
+  band.GetBlockSize(&bx, &by);
+  bx = std::clamp(bx, 1, info.width);
+  by = std::clamp(by, 1, info.height);
+  const std::size_t block_cells = static_cast<std::size_t>(bx) * static_cast<std::size_t>(by);
+  std::size_t blocks_per_window = std::max<std::size_t>(1, options.max_window_cells / block_cells);
+  // Grow the window along x first (whole rows of blocks), then along y.
+  const std::size_t blocks_x = (static_cast<std::size_t>(info.width) + bx - 1) / bx;
+  const std::size_t kx = std::min(blocks_per_window, blocks_x);
+  const std::size_t ky = std::max<std::size_t>(1, blocks_per_window / kx);
+  const int win_w = static_cast<int>(std::min<std::size_t>(kx * bx, info.width));
+  const int win_h = static_cast<int>(std::min<std::size_t>(ky * by, info.height));
+
+  std::vector<double> buf(static_cast<std::size_t>(win_w) * static_cast<std::size_t>(win_h));
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int y = 0; y < info.height; y += win_h) {
+    const int h = std::min(win_h, info.height - y);
+    for (int x = 0; x < info.width; x += win_w) {
+      const int w = std::min(win_w, info.width - x);
+      if (band.RasterIO(GF_Read, x, y, w, h, buf.data(), w, h, GDT_Float64, 0, 0, nullptr) != CE_None) {
+        const std::string why = gdal::QuietErrors::last_message();
+        throw InputError(path + ": expected readable cells in the window at column " + std::to_string(x) +
+                         ", row " + std::to_string(y) + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+      }
+      ++info.windows_read;
+      const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double v = buf[i];
+        if (std::isnan(v) || (info.has_nodata && same_as_nodata(v, nodata, type))) continue;
+        ++info.valid_cells;
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    }
+  }
+  const double cells = static_cast<double>(info.width) * static_cast<double>(info.height);
+  info.valid_fraction = cells > 0 ? static_cast<double>(info.valid_cells) / cells : 0.0;
+  if (info.valid_cells > 0) {
+    info.min_depth_m = std::min(lo * to_depth, hi * to_depth);
+    info.max_depth_m = std::max(lo * to_depth, hi * to_depth);
+  }
+  return info;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,318 @@
+// Bathymetry rasters: the real BAG, NetCDF/GMT and ESRI ASCII grids checked
+// against the facts stated in ../shared/data/real/SOURCES.md (sections 2 and
+// 3), the window-by-window scan against a whole-raster read of a synthetic
+// GeoTIFF, the sign convention, and bad input (one-line errors).
+
+#include <gtest/gtest.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <vector>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/bathymetry.hpp"
+#include "test_support.hpp"
+
+namespace deepguide {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string real_file(const std::string& rel) {
+  const std::string dir = test::shared_real_data();
+  if (dir.empty()) return {};
+  const fs::path p = fs::path(dir) / rel;
+  return fs::is_regular_file(p) ? p.string() : std::string();
+}
+
+#define REAL_FILE_OR_SKIP(var, rel)                                                              \
+  const std::string var = real_file(rel);                                                        \
+  if (var.empty()) GTEST_SKIP() << "../shared/data/real/" << (rel) << " is absent: skipping the " \
+                                   "test on real data"
+
+// Expects `fn` to throw an InputError whose message is one line and contains `needle`.
+template <class Fn>
+void expect_one_line_error(Fn fn, const std::string& needle) {
+  try {
+    fn();
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_NE(msg.find(needle), std::string::npos) << msg;
+  }
+}
+
+BathymetryOptions assumed(const std::string& crs) {
+  BathymetryOptions o;
+  o.assumed_crs = crs;
+  return o;
+}
+
+// ---------------------------------------------------------------- BAG
+
+TEST(BathymetryReal, JD211BagMatchesSources) {
+  REAL_FILE_OR_SKIP(path, "bag-ons/JD211_public_Release_1-4_UTM.bag");
+  const BathymetryInfo b = inspect_bathymetry(path);
+  EXPECT_EQ(b.driver, "BAG");
+  EXPECT_EQ(b.width, 1707);
+  EXPECT_EQ(b.height, 1478);
+  EXPECT_DOUBLE_EQ(b.pixel_x, 2.0);
+  EXPECT_DOUBLE_EQ(b.pixel_y, -2.0);
+  EXPECT_EQ(b.crs_source, "file");
+  OGRSpatialReference srs;
+  ASSERT_EQ(srs.importFromWkt(b.crs_wkt.c_str()), OGRERR_NONE);
+  int north = 0;
+  EXPECT_EQ(srs.GetUTMZone(&north), 2);
+  EXPECT_TRUE(north);
+  // Bering Strait, about 65.3 N 168.4 W.
+  EXPECT_NEAR(0.5 * (b.extent.west + b.extent.east), -168.4, 0.05);
+  EXPECT_NEAR(0.5 * (b.extent.south + b.extent.north), 65.3, 0.05);
+  EXPECT_EQ(b.sense_used, VerticalSense::elevation);
+  EXPECT_NE(b.sense_reason.find("BAG"), std::string::npos) << b.sense_reason;
+  EXPECT_TRUE(b.has_nodata);
+  EXPECT_DOUBLE_EQ(b.nodata, 1e6);
+  // Elevation -52.957 .. -50.987 m -> depth 50.987 .. 52.957 m (float32 cells).
+  EXPECT_NEAR(b.min_depth_m, 50.987, 5e-4);
+  EXPECT_NEAR(b.max_depth_m, 52.957, 5e-4);
+  EXPECT_NEAR(b.valid_fraction, 0.4587, 5e-4);
+  EXPECT_GT(b.windows_read, 0u);
+}
+
+TEST(BathymetryReal, NominalOnlyBagHasNoCrs) {
+  REAL_FILE_OR_SKIP(path, "bag-ons/nominal_only.bag");
+  expect_one_line_error([&] { inspect_bathymetry(path); }, "pass the CRS");
+  // Its coordinates are synthetic; any projected CRS makes it readable.
+  const BathymetryInfo b = inspect_bathymetry(path, assumed("EPSG:32631"));
+  EXPECT_EQ(b.width, 10);
+  EXPECT_EQ(b.height, 10);
+  EXPECT_EQ(b.crs_source, "assumed (option)");
+  // Elevation 10 .. 19.9 (positive: not real depth) -> depth -19.9 .. -10.
+  EXPECT_NEAR(b.min_depth_m, -19.9, 1e-5);
+  EXPECT_NEAR(b.max_depth_m, -10.0, 1e-5);
+  EXPECT_DOUBLE_EQ(b.valid_fraction, 1.0);
+}
+
+TEST(BathymetryReal, VariableResolutionBag) {
+  REAL_FILE_OR_SKIP(path, "bag-ons/test_vr.bag");
+  // GDAL opens it as is: the low-resolution grid of 6x4 supergrids.
+  const BathymetryInfo low = inspect_bathymetry(path);
+  EXPECT_EQ(low.width, 6);
+  EXPECT_EQ(low.height, 4);
+  EXPECT_EQ(low.sense_used, VerticalSense::elevation);  // BAG, despite its "MLLW depth" vertical CRS
+  BathymetryOptions o;
+  o.open_options = {"MODE=RESAMPLED_GRID"};
+  const BathymetryInfo grid = inspect_bathymetry(path, o);
+  EXPECT_EQ(grid.width, 36);
+  EXPECT_EQ(grid.height, 24);
+  // NAD83 / UTM zone 10N.
+  OGRSpatialReference srs;
+  ASSERT_EQ(srs.importFromWkt(grid.crs_wkt.c_str()), OGRERR_NONE);
+  int north = 0;
+  EXPECT_EQ(srs.GetUTMZone(&north), 10);
+}
+
+// ---------------------------------------------------------------- NetCDF/GMT
+
+TEST(BathymetryReal, TutBathyBermudaAllSea) {
+  REAL_FILE_OR_SKIP(path, "bathy-gmt-cache/tut_bathy.nc");
+  const BathymetryInfo b = inspect_bathymetry(path);
+  EXPECT_EQ(b.driver, "netCDF");
+  EXPECT_EQ(b.width, 73);
+  EXPECT_EQ(b.height, 61);
+  EXPECT_NE(b.crs_source.find("CF"), std::string::npos) << b.crs_source;  // x/y in degrees_east/north
+  EXPECT_EQ(b.crs, "EPSG:4326");
+  EXPECT_NEAR(b.pixel_x, 5.0 / 60.0, 1e-9);
+  EXPECT_NEAR(b.extent.west, -66.04, 0.005);
+  EXPECT_NEAR(b.extent.east, -59.96, 0.005);
+  EXPECT_NEAR(b.extent.south, 29.96, 0.005);
+  EXPECT_NEAR(b.extent.north, 35.04, 0.005);
+  EXPECT_TRUE(b.has_nodata);
+  EXPECT_DOUBLE_EQ(b.nodata, -32768);
+  EXPECT_EQ(b.sense_used, VerticalSense::elevation);  // long_name Topography
+  EXPECT_DOUBLE_EQ(b.min_depth_m, 89);
+  EXPECT_DOUBLE_EQ(b.max_depth_m, 5475);
+  EXPECT_GT(b.min_depth_m, 0) << "no land cell";
+}
+
+TEST(BathymetryReal, Bathy1mAzoresHasLand) {
+  REAL_FILE_OR_SKIP(path, "bathy-gmt-cache/bathy_1m.nc");
+  // Its axes are plain x/y without units: no CRS in the file.
+  expect_one_line_error([&] { inspect_bathymetry(path); }, "pass the CRS");
+  const BathymetryInfo b = inspect_bathymetry(path, assumed("EPSG:4326"));
+  EXPECT_EQ(b.width, 601);
+  EXPECT_EQ(b.height, 451);
+  EXPECT_NEAR(b.extent.west, -33.01, 0.005);
+  EXPECT_NEAR(b.extent.east, -22.99, 0.005);
+  EXPECT_NEAR(b.extent.south, 35.49, 0.005);
+  EXPECT_NEAR(b.extent.north, 43.01, 0.005);
+  EXPECT_EQ(b.sense_used, VerticalSense::elevation);  // GMT's z
+  // Elevation -5158.4 .. +1116.7 m -> depth -1116.7 .. 5158.4 m: land present.
+  EXPECT_NEAR(b.min_depth_m, -1116.7, 0.05);
+  EXPECT_NEAR(b.max_depth_m, 5158.4, 0.05);
+  EXPECT_LT(b.min_depth_m, 0) << "islands";
+}
+
+// ---------------------------------------------------------------- ESRI ASCII
+
+TEST(BathymetryReal, SmallCrmNeedsTheCrs) {
+  REAL_FILE_OR_SKIP(path, "bathy-usml-crm/small_crm.asc");
+  expect_one_line_error([&] { inspect_bathymetry(path); }, path);
+  const BathymetryInfo b = inspect_bathymetry(path, assumed("EPSG:4326"));
+  EXPECT_EQ(b.driver, "AAIGrid");
+  EXPECT_EQ(b.width, 241);
+  EXPECT_EQ(b.height, 241);
+  EXPECT_NEAR(b.pixel_x, 0.000833, 1e-6);
+  EXPECT_NEAR(b.extent.west, -79.9004, 1e-4);
+  EXPECT_NEAR(b.extent.east, -79.6996, 1e-4);
+  EXPECT_NEAR(b.extent.south, 29.3996, 1e-4);
+  EXPECT_NEAR(b.extent.north, 29.6004, 1e-4);
+  EXPECT_TRUE(b.has_nodata);
+  EXPECT_NEAR(b.nodata, 0.1, 1e-7);  // GDAL keeps it at float32 precision
+  EXPECT_NE(b.sense_reason.find("assumed elevation"), std::string::npos) << b.sense_reason;
+  EXPECT_NEAR(b.min_depth_m, 622, 1e-3);
+  EXPECT_NEAR(b.max_depth_m, 771, 1e-3);
+  // The user may say the file holds depths: then the signs flip.
+  BathymetryOptions as_depth = assumed("EPSG:4326");
+  as_depth.sense = VerticalSense::depth;
+  const BathymetryInfo d = inspect_bathymetry(path, as_depth);
+  EXPECT_NEAR(d.min_depth_m, -771, 1e-3);
+  EXPECT_NEAR(d.max_depth_m, -622, 1e-3);
+  EXPECT_EQ(d.sense_reason, "given as an option");
+}
+
+// ---------------------------------------------------------------- synthetic
+
+constexpr double kNoData = -9999.0;
+
+// A W x H Float32 GeoTIFF tiled in 16x16 blocks: cell (x, y) = -(10 + x + 0.5 y),
+// every 7th cell NoData, one NaN; CRS EPSG:32632 unless `crs` is empty.
+std::vector<float> write_geotiff(const std::string& path, int w, int h, const std::string& crs = "EPSG:32632",
+                                 const char* description = nullptr) {
+  GDALAllRegister();
+  GDALDriver* drv = GetGDALDriverManager()->GetDriverByName("GTiff");
+  const char* co[] = {"TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16", nullptr};
+  GDALDatasetUniquePtr ds(drv->Create(path.c_str(), w, h, 1, GDT_Float32, const_cast<char**>(co)));
+  EXPECT_TRUE(ds);
+  double gt[6] = {500000, 10, 0, 6000000, 0, -10};
+  ds->SetGeoTransform(gt);
+  if (!crs.empty()) {
+    OGRSpatialReference srs;
+    srs.SetFromUserInput(crs.c_str());
+    ds->SetSpatialRef(&srs);
+  }
+  std::vector<float> v(static_cast<std::size_t>(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      v[i] = (i % 7 == 3) ? static_cast<float>(kNoData) : static_cast<float>(-(10 + x + 0.5 * y));
+    }
+  v[5] = std::numeric_limits<float>::quiet_NaN();
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  band->SetNoDataValue(kNoData);
+  if (description != nullptr) band->SetDescription(description);
+  EXPECT_EQ(band->RasterIO(GF_Write, 0, 0, w, h, v.data(), w, h, GDT_Float32, 0, 0, nullptr), CE_None);
+  return v;
+}
+
+TEST(BathymetrySynthetic, WindowedScanEqualsWholeRead) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("grid.tif");
+  const int w = 100, h = 70;
+  write_geotiff(path, w, h);
+
+  // Independent whole-raster read through GDAL.
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(ds);
+  std::vector<double> all(static_cast<std::size_t>(w) * h);
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, w, h, all.data(), w, h, GDT_Float64, 0, 0, nullptr), CE_None);
+  ds.reset();
+  double lo = 1e300, hi = -1e300;
+  std::size_t valid = 0;
+  for (double v : all) {
+    if (std::isnan(v) || v == kNoData) continue;
+    ++valid;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+
+  for (std::size_t cells : {std::size_t{1}, std::size_t{256}, std::size_t{700}, std::size_t{1} << 22}) {
+    BathymetryOptions o;
+    o.max_window_cells = cells;
+    const BathymetryInfo b = inspect_bathymetry(path, o);
+    SCOPED_TRACE(cells);
+    EXPECT_EQ(b.valid_cells, valid);
+    EXPECT_DOUBLE_EQ(b.valid_fraction, static_cast<double>(valid) / (w * h));
+    EXPECT_DOUBLE_EQ(b.min_depth_m, -hi);
+    EXPECT_DOUBLE_EQ(b.max_depth_m, -lo);
+    EXPECT_EQ(b.crs, "EPSG:32632");
+    if (cells <= 256) {
+      EXPECT_EQ(b.windows_read, 7u * 5u);  // one 16x16 block per window
+    }
+    if (cells == std::size_t{1} << 22) {
+      EXPECT_EQ(b.windows_read, 1u);
+    }
+  }
+}
+
+TEST(BathymetrySynthetic, DepthDescriptionSetsTheSense) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("depth.tif");
+  write_geotiff(path, 20, 20, "EPSG:32632", "Depth below sea level");
+  const BathymetryInfo b = inspect_bathymetry(path);
+  EXPECT_EQ(b.sense_used, VerticalSense::depth);
+  EXPECT_NE(b.sense_reason.find("depth"), std::string::npos) << b.sense_reason;
+  EXPECT_LT(b.max_depth_m, 0);  // the cells are negative and taken as depths
+}
+
+// ---------------------------------------------------------------- bad input
+
+TEST(BathymetryErrors, MissingFile) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("nothing.tif");
+  expect_one_line_error([&] { inspect_bathymetry(path); }, path);
+}
+
+TEST(BathymetryErrors, CorruptGeoTiff) {
+  test::ScratchDir dir;
+  const std::string good = dir.file("good.tif");
+  write_geotiff(good, 64, 64);
+  std::ifstream in(good, std::ios::binary);
+  std::string head(200, '\0');
+  in.read(head.data(), 200);
+  std::string garbage(300, '\0');
+  for (std::size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<char>((i * 37 + 11) & 0xff);
+  const std::string bad = dir.write("corrupt.tif", head + garbage);
+  expect_one_line_error([&] { inspect_bathymetry(bad); }, bad + ": expected a raster GDAL can");
+}
+
+TEST(BathymetryErrors, NotARaster) {
+  test::ScratchDir dir;
+  const std::string bad = dir.write("notes.tif", "this is not a raster\n");
+  expect_one_line_error([&] { inspect_bathymetry(bad); }, "expected a raster GDAL can open");
+}
+
+TEST(BathymetryErrors, RasterWithoutCrs) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("nocrs.tif");
+  write_geotiff(path, 20, 20, "");
+  expect_one_line_error([&] { inspect_bathymetry(path); }, path + ": expected a raster with a CRS");
+  expect_one_line_error([&] { inspect_bathymetry(path, assumed("EPSG:nope")); }, "assumed CRS");
+  EXPECT_EQ(inspect_bathymetry(path, assumed("EPSG:32632")).crs, "EPSG:32632");
+}
+
+TEST(BathymetryErrors, MissingBand) {
+  test::ScratchDir dir;
+  const std::string path = dir.file("one.tif");
+  write_geotiff(path, 20, 20);
+  BathymetryOptions o;
+  o.band = 2;
+  expect_one_line_error([&] { inspect_bathymetry(path, o); }, "expected band 2");
+}
+
+}  // namespace
+}  // namespace deepguide
