@@ -44,6 +44,20 @@ inline std::string shared_real_data() {
   return std::filesystem::is_directory(p) ? p.lexically_normal().string() : std::string();
 }
 
+/// Path of a real file under ../shared/data/real, or empty when the folder or the file is absent.
+inline std::string real_file(const std::string& rel) {
+  const std::string dir = shared_real_data();
+  if (dir.empty()) return {};
+  const auto p = std::filesystem::path(dir) / rel;
+  return std::filesystem::is_regular_file(p) ? p.string() : std::string();
+}
+
+/// Declares `var` as the real file `rel`, or skips the test with a message when it is absent.
+#define DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)                                                    \
+  const std::string var = ::deepguide::test::real_file(rel);                                    \
+  if (var.empty()) GTEST_SKIP() << "../shared/data/real/" << (rel) << " is absent: skipping the " \
+                                   "test on real data"
+
 inline std::string source_file(const std::string& rel) {
   return (std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / rel).string();
 }

@@ -22,17 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string real_file(const std::string& rel) {
-  const std::string dir = test::shared_real_data();
-  if (dir.empty()) return {};
-  const fs::path p = fs::path(dir) / rel;
-  return fs::is_regular_file(p) ? p.string() : std::string();
-}
-
-#define REAL_FILE_OR_SKIP(var, rel)                                                              \
-  const std::string var = real_file(rel);                                                        \
-  if (var.empty()) GTEST_SKIP() << "../shared/data/real/" << (rel) << " is absent: skipping the " \
-                                   "test on real data"
+using test::real_file;
+#define REAL_FILE_OR_SKIP(var, rel) DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)
 
 // Expects `fn` to throw an InputError whose message is one line and contains `needle`.
 template <class Fn>

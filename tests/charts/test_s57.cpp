@@ -24,18 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Path of a real file, or empty (the test then skips) when the shared folder or the file is absent.
-std::string real_file(const std::string& rel) {
-  const std::string dir = test::shared_real_data();
-  if (dir.empty()) return {};
-  const fs::path p = fs::path(dir) / rel;
-  return fs::is_regular_file(p) ? p.string() : std::string();
-}
-
-#define REAL_FILE_OR_SKIP(var, rel)                                                              \
-  const std::string var = real_file(rel);                                                        \
-  if (var.empty()) GTEST_SKIP() << "../shared/data/real/" << (rel) << " is absent: skipping the " \
-                                   "test on real data"
+using test::real_file;
+#define REAL_FILE_OR_SKIP(var, rel) DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)
 
 const char* const kKeyWest = "noaa-enc-US5FL4DQ/US5FL4DQ.000";
 const char* const kChesapeake = "noaa-enc-US4MD81M/US4MD81M.000";
