@@ -39,6 +39,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_check.hpp"
+#include "deepguide/planning/single_query.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
 using namespace deepguide;
@@ -180,6 +181,10 @@ struct CaseResult {  // plain data: crosses the pipe from the child
   double vertices = 0, edges = 0;
   bool found = false, safe = false;
   double route_m = 0, exact_m = 0, min_clearance_m = 0;
+  // plan_single_query on the same scenario (graph over the obstacles within the ellipse bound)
+  bool single_ok = false, single_found = false, single_safe = false;
+  double single_ms = 0, single_cpu_ms = 0, single_route_m = 0, single_exact_m = 0;
+  double single_rounds = 0, single_used = 0, single_vertices = 0;
   char message[256] = {};
 };
 
@@ -215,6 +220,24 @@ CaseResult measure(const Scenario& sc, GraphKind kind, double tolerance) {
   } catch (const std::exception& e) {
     r.status = Status::failed;
     set_message(r, e.what());
+  }
+  try {
+    const double c0 = cpu_ms();
+    const auto t0 = Clock::now();
+    const SingleQueryPlan one = plan_single_query(sc.obstacles, PlanningProblem{sc.start, sc.goal},
+                                                  PlannerOptions{kMargin, tolerance, kind, SearchAlgorithm::astar});
+    r.single_ms = ms_since(t0);
+    r.single_cpu_ms = cpu_ms() - c0;
+    r.single_ok = true;
+    r.single_found = one.outcome.result.found;
+    r.single_safe = one.outcome.check.safe;
+    r.single_route_m = r.single_found ? one.outcome.result.route.length() : 0.0;
+    r.single_exact_m = one.outcome.result.exact_length_m;
+    r.single_rounds = one.rounds;
+    r.single_used = static_cast<double>(one.obstacles_used);
+    r.single_vertices = static_cast<double>(one.outcome.result.stats.graph_vertices);
+  } catch (const std::exception& e) {
+    if (r.status == Status::ok) set_message(r, std::string("single query: ") + e.what());
   }
   return r;
 }
@@ -454,6 +477,44 @@ int main(int argc, char** argv) {
                   ms(median(total)).c_str(), ms(max_of(total)).c_str(), ms(median(cpu)).c_str(), median(verts),
                   median(edges), found, ok.size(), safe, found,
                   fmt("%.5f", median(ratio)).c_str());
+    }
+  }
+
+  std::printf("\n## One query: plan_single_query (what `deepguide plan` runs)\n\n");
+  std::printf("The graph is built only over the obstacles whose zone meets the ellipse |x-s| + |x-g| <= U, U "
+              "growing from 1.05 x the straight line until the route fits (src: lib/deepguide/planning/"
+              "single_query.hpp). `time` = the whole call (rounds of build + query + the final check against all "
+              "obstacles). `route / planner` = its route length over the Planner's route on all obstacles (1 = the "
+              "same optimum).\n\n");
+  std::printf("| N | graph | n | time median ms | time max ms | CPU median ms | rounds median (max) | obstacles "
+              "used median | vertices median | found | safe | route / planner (max deviation) |\n");
+  std::printf("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int n : opt.sizes) {
+    for (GraphKind kind : kinds) {
+      std::vector<double> t, c, rounds, used, verts, dev;
+      int found = 0, safe = 0, count = 0;
+      for (const CaseResult& r : res[n][kind]) {
+        if (!r.single_ok) continue;
+        ++count;
+        t.push_back(r.single_ms);
+        c.push_back(r.single_cpu_ms);
+        rounds.push_back(r.single_rounds);
+        used.push_back(r.single_used);
+        verts.push_back(r.single_vertices);
+        found += r.single_found;
+        safe += r.single_found && r.single_safe;
+        if (r.status == Status::ok && r.found && r.single_found) dev.push_back(r.single_route_m / r.route_m - 1.0);
+      }
+      if (count == 0) {
+        std::printf("| %d | %s | 0 | | | | | | | | | |\n", n, kind_name(kind));
+        continue;
+      }
+      double worst = 0.0;
+      for (double d : dev) worst = std::max(worst, std::abs(d));
+      std::printf("| %d | %s | %d | %s | %s | %s | %.0f (%.0f) | %.0f | %.0f | %d/%d | %d/%d | %s |\n", n,
+                  kind_name(kind), count, ms(median(t)).c_str(), ms(max_of(t)).c_str(), ms(median(c)).c_str(),
+                  median(rounds), max_of(rounds), median(used), median(verts), found, count, safe, found,
+                  dev.empty() ? "–" : fmt("%.1e", worst).c_str());
     }
   }
 

@@ -371,6 +371,55 @@ TEST(ObstacleField, SegmentEllipseMatchesReference) {
   RecordProperty("worst_abs_error", std::to_string(worst));
 }
 
+// ---- The quick verdicts of segment_free / is_free near the zone boundary ------------
+// segment_free decides most ellipses without the exact distance (the ellipse
+// grown by k = 1 + margin / b holds the zone; the ellipse (a + margin,
+// b + margin) lies inside it). Near the zone's boundary, between those two,
+// the answer must still be the exact one.
+
+TEST(ObstacleField, SegmentFreeMatchesReferenceAroundTheZone) {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int free_cases = 0, blocked_cases = 0;
+  for (int iter = 0; iter < 1500; ++iter) {
+    const double a = 1.0 + 49.0 * unit(rng);
+    const double b = a * (0.05 + 0.95 * unit(rng));
+    const double margin = 0.5 + 20.0 * unit(rng);
+    const Ellipse e{Vec2(-500.0 + 1000.0 * unit(rng), -500.0 + 1000.0 * unit(rng)), a, b,
+                    kPi * (2.0 * unit(rng) - 1.0)};
+    const test_ref::Frame f(e);
+    const ObstacleField field(one_ellipse(e), margin);
+    // A point near the zone's boundary (inside or outside by up to 1 m, or by
+    // a micrometre), a segment through it in a random direction.
+    const double s = 2.0 * kPi * unit(rng);
+    const double off = (iter % 3 == 0 ? 1e-6 : 1.0) * (2.0 * unit(rng) - 1.0);
+    const Vec2 q = f.offset_point(s, margin + off);
+    const double phi = 2.0 * kPi * unit(rng);
+    const Vec2 dir(std::cos(phi), std::sin(phi));
+    const bool point = iter % 5 == 0;  // some points
+    const Vec2 p0 = point ? q : Vec2(q - 60.0 * unit(rng) * dir);
+    const Vec2 p1 = point ? q : Vec2(q + 60.0 * unit(rng) * dir);
+    // The reference measures to the boundary; the segments stay outside the
+    // ellipse itself (checked), so that is their distance to the footprint.
+    bool enters = false;
+    for (int k = 0; k <= 2000 && !enters; ++k) enters = f.implicit(p0 + (k / 2000.0) * (p1 - p0)) < 1.0;
+    if (enters) continue;
+    const double ref = reference_segment_distance(e, p0, p1);
+    if (std::abs(ref - margin) < 1e-7) continue;  // within the references' doubt
+    const bool expect_free = ref > margin;
+    (expect_free ? free_cases : blocked_cases) += 1;
+    EXPECT_EQ(field.segment_free(p0, p1), expect_free)
+        << "iter " << iter << ": a " << a << " b " << b << " margin " << margin << " ref " << ref;
+    if (p0 == p1) {
+      EXPECT_EQ(field.is_free(p0), expect_free) << "iter " << iter;
+    }
+    // Skipping the only obstacle makes everything free.
+    EXPECT_TRUE(field.segment_free(p0, p1, 0));
+  }
+  EXPECT_GE(free_cases, 150);  // 208 and 600-odd with this seed
+  EXPECT_GE(blocked_cases, 300);
+}
+
 // ---- Pruning -------------------------------------------------------------------------
 
 namespace {

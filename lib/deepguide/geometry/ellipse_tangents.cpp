@@ -42,7 +42,10 @@ std::vector<CommonTangent> common_tangents(const Ellipse& e1, const Ellipse& e2)
     return n.dot(dc) + h(A1, n) + h(A2, n);
   };
   double o1 = 0, o2 = 0, i1 = 0, i2 = 0;
-  if (!periodic_two_roots(g_inner, i1, i2) || !periodic_two_roots(g_outer, o1, o2)) return {};
+  // Both functions are positive along dc and, for separated ellipses,
+  // negative against it: the hint that spares the sampling.
+  const double along = std::atan2(dc.y(), dc.x());
+  if (!periodic_two_roots(g_inner, i1, i2, along) || !periodic_two_roots(g_outer, o1, o2, along)) return {};
   std::vector<CommonTangent> out;
   for (double phi : {o1, o2}) {
     const Vec2 n = unit(phi);

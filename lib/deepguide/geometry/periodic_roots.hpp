@@ -41,11 +41,16 @@ Extremes sample_extremes(const G& g, int samples) {
 
 /// Finds the two roots (root_a, root_b in radians, not wrapped) of g, or
 /// returns false when g has no negative or no positive value (then the roots
-/// do not exist or coincide).
+/// do not exist or coincide). `hint`: an angle where g is likely of one sign
+/// and of the other half a turn away (e.g. the direction between the two
+/// sets' centres); when it is, the sampling is skipped.
 template <class G>
-bool periodic_two_roots(const G& g, double& root_a, double& root_b) {
+bool periodic_two_roots(const G& g, double& root_a, double& root_b, double hint = 0.0) {
   using namespace periodic_detail;
-  Extremes x = sample_extremes(g, kCoarseSamples);
+  const double g0 = g(hint), g1 = g(hint + std::numbers::pi);
+  Extremes x{hint, g0, hint + std::numbers::pi, g1, std::numbers::pi};
+  if (g0 > g1) x = Extremes{hint + std::numbers::pi, g1, hint, g0, std::numbers::pi};
+  if (!(x.g_neg < 0.0 && x.g_pos > 0.0)) x = sample_extremes(g, kCoarseSamples);
   if (!(x.g_neg < 0.0 && x.g_pos > 0.0)) x = sample_extremes(g, kDenseSamples);
   double phi_neg = x.phi_neg, gmin = x.g_neg, phi_pos = x.phi_pos, gmax = x.g_pos;
   const double step = x.step;

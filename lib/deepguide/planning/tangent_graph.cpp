@@ -118,17 +118,25 @@ struct TangentGraph::Impl {
   void add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all, Want want,
                 PlanningGraph& graph, std::vector<Arc>& out, std::unordered_map<std::uint64_t, std::size_t>& index) const;
 
-  // Polygons inside the zones (obstacle polygons, 32-gons on the ellipse
-  // zones' boundaries): a segment crossing one is blocked for certain, found
-  // far faster than the exact test, which then only judges the rest.
+  // The obstacle polygons: a segment crossing one is blocked for certain,
+  // found far faster than the exact polygon test, which then only judges the
+  // rest. (Ellipses have their own quick verdicts in ObstacleField.)
   std::unique_ptr<PolygonVisibility> inner;
-  bool segment_free(const Vec2& a, const Vec2& b) const {
-    return !inner->properly_crosses(a, b) && field->segment_free(a, b);
+  // A convex zone (an ellipse's) does not meet a line tangent to it beyond
+  // the touch, nor a point on its boundary: the tests skip the ellipse a
+  // segment or point was built on (`skip_*` are piece indices or kNoPiece).
+  std::size_t own_ellipse(std::size_t piece) const {
+    return piece != kNoPiece && pieces[piece].kind == ZonePiece::Kind::ellipse ? pieces[piece].obstacle
+                                                                              : ObstacleField::kNone;
   }
-  bool point_free(const Vec2& p) const { return field->is_free(p); }
-  bool arc_free(const ZonePiece& z, double phi0, double phi1) const;
+  bool segment_free(const Vec2& a, const Vec2& b, std::size_t piece_a = kNoPiece,
+                    std::size_t piece_b = kNoPiece) const {
+    return !inner->properly_crosses(a, b) && field->segment_free(a, b, own_ellipse(piece_a), own_ellipse(piece_b));
+  }
+  bool point_free(const Vec2& p, std::size_t piece) const { return field->is_free(p, own_ellipse(piece)); }
+  bool arc_free(std::size_t piece, double phi0, double phi1) const;
   void add_point_tangents(const Vec2& p, std::vector<Segment>& out) const;
-  std::vector<Vec2> arc_polyline(const ZonePiece& z, double phi0, double phi1, int turn) const;
+  std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
 };
 
 TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance)
@@ -148,14 +156,6 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   }
   m.field = std::make_unique<ObstacleField>(local, m.margin, kTouchEps);
   BgMultiPolygon inner;
-  for (const EllipticCylinder& c : local.ellipses) {
-    BgPolygon ring;
-    for (int k = 32; k >= 0; --k) {  // clockwise, closed
-      const double t = kTwoPi * k / 32;
-      ring.outer().push_back(to_bg(c.footprint.point_at(t) + margin * c.footprint.normal_at(t)));
-    }
-    inner.push_back(ring);
-  }
   for (const PolygonObstacle& poly : local.polygons) inner.push_back(poly.footprint);
   m.inner = std::make_unique<PolygonVisibility>(std::move(inner), 1e-9);
   for (const ZonePiece& z : m.pieces) m.piece_names.push_back(m.field->obstacle_name(z.obstacle));
@@ -187,17 +187,21 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
         return zi.support(u) + zj.support(-u);
       };
       double r[2];
+      // Both functions are positive along inner_i - inner_j and, for
+      // separated pieces, negative against it (periodic_two_roots' hint).
+      const Vec2 dc = zi.inner_point() - zj.inner_point();
+      const double along = std::atan2(dc.y(), dc.x());
       auto add = [&](double phi_i, double phi_j) {
         phi_i = wrap_two_pi(phi_i);
         phi_j = wrap_two_pi(phi_j);
         const Node a{i, phi_i, zi.point_at_normal(phi_i)};
         const Node b{j, phi_j, zj.point_at_normal(phi_j)};
-        if ((a.p - b.p).norm() > 0.0 && m.segment_free(a.p, b.p)) m.tangents.push_back({a, b});
+        if ((a.p - b.p).norm() > 0.0 && m.segment_free(a.p, b.p, i, j)) m.tangents.push_back({a, b});
       };
-      if (periodic_two_roots(g_outer, r[0], r[1])) {
+      if (periodic_two_roots(g_outer, r[0], r[1], along)) {
         for (double phi : r) add(phi, phi);
       }
-      if (periodic_two_roots(g_inner, r[0], r[1])) {
+      if (periodic_two_roots(g_inner, r[0], r[1], along)) {
         for (double phi : r) add(phi, phi + std::numbers::pi);
       }
     }
@@ -240,7 +244,7 @@ void TangentGraph::Impl::add_arcs(std::size_t piece, const std::vector<std::size
     if (!want(a, b)) continue;
     const double phi0 = all[a].phi;
     const double phi1 = k + 1 < ids.size() ? all[b].phi : all[b].phi + kTwoPi;
-    if (needs_arc_check[piece] && !arc_free(pieces[piece], phi0, phi1)) continue;
+    if (needs_arc_check[piece] && !arc_free(piece, phi0, phi1)) continue;
     const double w = pieces[piece].arc_length(phi0, phi1);
     boost::add_edge(a, b, w, graph);
     boost::add_edge(b, a, w, graph);
@@ -266,7 +270,8 @@ std::vector<std::pair<Vec2, Vec2>> TangentGraph::tangent_segments() const {
   return out;
 }
 
-bool TangentGraph::Impl::arc_free(const ZonePiece& z, double phi0, double phi1) const {
+bool TangentGraph::Impl::arc_free(std::size_t piece, double phi0, double phi1) const {
+  const ZonePiece& z = pieces[piece];
   // Sample the arc at most `step` apart along the boundary; an arc that
   // enters another zone does so over a stretch, which the samples find
   // unless the overlap is thinner than the step (then the route checker,
@@ -275,7 +280,7 @@ bool TangentGraph::Impl::arc_free(const ZonePiece& z, double phi0, double phi1) 
   const double radius = std::max(z.max_curvature_radius(), 1e-9);
   const int n = std::min(200000, static_cast<int>(std::ceil((phi1 - phi0) * radius / step)) + 1);
   for (int k = 1; k < n; ++k) {
-    if (!point_free(z.point_at_normal(phi0 + (phi1 - phi0) * k / n))) return false;
+    if (!point_free(z.point_at_normal(phi0 + (phi1 - phi0) * k / n), piece)) return false;
   }
   // Capsules: the flat sides crossed are segments of their own.
   for (double f : z.flat_normals()) {
@@ -294,10 +299,11 @@ void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>&
       return u.dot(p) - z.support(u);
     };
     double r[2];
-    if (periodic_two_roots(f, r[0], r[1])) {
+    const Vec2 out_dir = p - z.inner_point();  // f > 0 this way when p lies outside
+    if (periodic_two_roots(f, r[0], r[1], std::atan2(out_dir.y(), out_dir.x()))) {
       for (double phi : r) {
         const Node t{i, wrap_two_pi(phi), z.point_at_normal(wrap_two_pi(phi))};
-        if (segment_free(p, t.p)) out.push_back({Node{kNoPiece, 0.0, p}, t});
+        if (segment_free(p, t.p, kNoPiece, i)) out.push_back({Node{kNoPiece, 0.0, p}, t});
       }
       continue;
     }
@@ -314,7 +320,8 @@ void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>&
   }
 }
 
-std::vector<Vec2> TangentGraph::Impl::arc_polyline(const ZonePiece& z, double phi0, double phi1, int turn) const {
+std::vector<Vec2> TangentGraph::Impl::arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const {
+  const ZonePiece& z = pieces[piece];
   // The arc's tangent lines at normals spaced so each corner where two meet
   // lies within `tolerance` of the arc, plus every flat side crossed. Between
   // tangent points T_k, T_k+1 the polyline runs T_k -> corner -> T_k+1, which
@@ -348,7 +355,7 @@ std::vector<Vec2> TangentGraph::Impl::arc_polyline(const ZonePiece& z, double ph
     const Vec2 ta = z.point_at_normal(wrap_two_pi(a)), tb = z.point_at_normal(wrap_two_pi(b));
     Vec2 v;
     if (!corner(a, b, v)) return;
-    if (depth < 40 && (!segment_free(ta, v) || !segment_free(v, tb))) {
+    if (depth < 40 && (!segment_free(ta, v, piece) || !segment_free(v, tb, piece))) {
       const double mid = 0.5 * (a + b);
       emit(a, mid, depth + 1);
       out.push_back(z.point_at_normal(wrap_two_pi(mid)));
@@ -451,7 +458,7 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
       } else {
         while (phi_to > phi_from) phi_to -= kTwoPi;
       }
-      for (const Vec2& q : m.arc_polyline(z, phi_from, phi_to, leg.turn)) pts.push_back(q + m.origin);
+      for (const Vec2& q : m.arc_polyline(a.piece, phi_from, phi_to, leg.turn)) pts.push_back(q + m.origin);
     } else {
       leg.length_m = (b.p - a.p).norm();
     }

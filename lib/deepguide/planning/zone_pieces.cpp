@@ -21,14 +21,26 @@ double param_of_normal(const Ellipse& e, double phi_l) {
 
 }  // namespace
 
+// The ellipse's support function and point as in Ellipse::support and
+// support_point, with the cached axis instead of two sincos per call.
 double ZonePiece::support(const Vec2& u) const {
-  if (kind == Kind::ellipse) return ellipse.support(u) + margin;
+  if (kind == Kind::ellipse) {
+    const double ul = u.dot(axis), vl = axis.x() * u.y() - axis.y() * u.x();
+    return u.dot(ellipse.center) + std::sqrt(ellipse.a * ellipse.a * ul * ul + ellipse.b * ellipse.b * vl * vl) +
+           margin;
+  }
   return std::max(u.dot(a), u.dot(b)) + margin;
 }
 
 Vec2 ZonePiece::point_at_normal(double phi) const {
   const Vec2 u = unit(phi);
-  if (kind == Kind::ellipse) return ellipse.support_point(u) + margin * u;
+  if (kind == Kind::ellipse) {
+    const double ul = u.dot(axis), vl = axis.x() * u.y() - axis.y() * u.x();
+    const double aa = ellipse.a * ellipse.a, bb = ellipse.b * ellipse.b;
+    const double h = std::sqrt(aa * ul * ul + bb * vl * vl);
+    const Vec2 minor(-axis.y(), axis.x());
+    return ellipse.center + (aa * ul / h) * axis + (bb * vl / h) * minor + margin * u;
+  }
   return (u.dot(b) > u.dot(a) ? b : a) + margin * u;
 }
 
@@ -92,6 +104,7 @@ std::vector<ZonePiece> zone_pieces(const ObstacleSet& obstacles, double margin) 
     ZonePiece p;
     p.kind = ZonePiece::Kind::ellipse;
     p.ellipse = c.footprint;
+    p.axis = c.footprint.major_dir();
     p.margin = margin;
     p.obstacle = index++;
     out.push_back(p);

@@ -105,6 +105,38 @@ void by_box_distance(const Tree& tree, const Query& query, Visit visit) {
   }
 }
 
+// Quick verdicts for an ellipse footprint before the exact distance (which
+// costs a Brent search). In the ellipse's frame, with k = 1 + t / b:
+//  - every point closer than t to the ellipse lies strictly inside the
+//    ellipse (k a, k b): write it y + t w with |y|_E <= 1 and |w| < 1, then
+//    |y + t w|_E <= 1 + t |w| / b < k  (|.|_E the unit-circle-frame norm);
+//  - every point of the ellipse (a + t, b + t) lies within t of the ellipse:
+//    its boundary point at parameter s is (a cos s, b sin s) + t (cos s, sin s),
+//    and the distance to a convex set is convex, so the inside is no farther.
+// Both are widened by a relative 1e-9 towards "unknown", so rounding never
+// turns an uncertain case into a verdict; the exact distance decides those.
+enum class Verdict { clear, blocked, unknown };
+
+// Smallest value over the segment p0 + s (p1 - p0), s in [0, 1], of
+// (x / A)^2 + (y / B)^2 (coordinates in the ellipse's frame).
+double min_implicit(const Vec2& p0, const Vec2& p1, double A, double B) {
+  const Vec2 q0(p0.x() / A, p0.y() / B);
+  const Vec2 d(p1.x() / A - q0.x(), p1.y() / B - q0.y());
+  const double dd = d.squaredNorm();
+  const double s = dd > 0.0 ? std::clamp(-q0.dot(d) / dd, 0.0, 1.0) : 0.0;
+  return (q0 + s * d).squaredNorm();
+}
+
+Verdict quick_verdict(const Ellipse& e, double t, const Vec2& a, const Vec2& b) {
+  if (!(t > 0.0)) return Verdict::unknown;
+  const Vec2 p0 = e.to_local(a), p1 = e.to_local(b);
+  const double k = (1.0 + t / e.b) * (1.0 + 1e-9);
+  if (min_implicit(p0, p1, k * e.a, k * e.b) >= 1.0) return Verdict::clear;
+  const double shrink = 1.0 - 1e-9;
+  if (min_implicit(p0, p1, (e.a + t) * shrink, (e.b + t) * shrink) < 1.0) return Verdict::blocked;
+  return Verdict::unknown;
+}
+
 }  // namespace
 
 double signed_distance(const BgPolygon& polygon, const Vec2& p) {
@@ -266,15 +298,7 @@ double ObstacleField::clearance(const Vec2& p) const {
   return best;
 }
 
-bool ObstacleField::is_free(const Vec2& p) const {
-  bool free = true;
-  by_box_distance(tree_, to_bg(p), [&](std::size_t i, double lower_bound) {
-    if (lower_bound >= threshold_) return false;
-    free = distance_to(i, p) >= threshold_;
-    return free;
-  });
-  return free;
-}
+bool ObstacleField::is_free(const Vec2& p, std::size_t skip) const { return segment_free(p, p, skip); }
 
 ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec2& b) const {
   Nearest best{kInf, 0, a};
@@ -293,19 +317,31 @@ ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec
   return best;
 }
 
-bool ObstacleField::segment_free(const Vec2& a, const Vec2& b) const {
-  bool free = true;
-  const auto visit = [&](std::size_t i, double lower_bound) {
-    if (lower_bound >= threshold_) return false;
-    free = segment_distance_to(i, a, b).distance >= threshold_;
-    return free;
-  };
-  if (a == b) {
-    by_box_distance(tree_, to_bg(a), visit);
-  } else {
-    by_box_distance(tree_, BgSegment(to_bg(a), to_bg(b)), visit);
+bool ObstacleField::segment_free(const Vec2& a, const Vec2& b, std::size_t skip_a, std::size_t skip_b) const {
+  // A yes/no question needs no nearest-first order: every obstacle closer
+  // than the threshold has its box within the threshold of the segment, so
+  // the boxes meeting the segment's box grown by it are all candidates, and
+  // the first blocking one ends the search.
+  const double grow = std::max(threshold_, 0.0);
+  const BgBox query(BgPoint(std::min(a.x(), b.x()) - grow, std::min(a.y(), b.y()) - grow),
+                    BgPoint(std::max(a.x(), b.x()) + grow, std::max(a.y(), b.y()) + grow));
+  const std::size_t n_ellipses = obstacles_.ellipses.size();
+  for (auto it = tree_.qbegin(bgi::intersects(query)); it != tree_.qend(); ++it) {
+    const std::size_t i = it->second;
+    if (i == skip_a || i == skip_b) continue;
+    if (i < n_ellipses) {
+      const Verdict v = quick_verdict(obstacles_.ellipses[i].footprint, threshold_, a, b);
+      if (v == Verdict::clear) continue;
+      if (v == Verdict::blocked) return false;
+    } else {
+      const double box_distance = a == b ? bg::distance(to_bg(a), it->first)
+                                         : bg::distance(BgSegment(to_bg(a), to_bg(b)), it->first);
+      if (box_distance > 0.0 && box_distance >= threshold_) continue;  // a meeting box bounds nothing
+    }
+    const double exact = a == b ? distance_to(i, a) : segment_distance_to(i, a, b).distance;
+    if (exact < threshold_) return false;
   }
-  return free;
+  return true;
 }
 
 std::string ObstacleField::obstacle_name(std::size_t obstacle) const {

@@ -85,8 +85,12 @@ class ObstacleField {
   /// Signed distance from p to the nearest obstacle footprint (negative inside
   /// one); +inf when there are no obstacles.
   double clearance(const Vec2& p) const;
+  /// No obstacle: the default of the `skip` arguments below.
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
   /// clearance(p) >= margin: p is outside every safety zone; the boundary counts as free.
-  bool is_free(const Vec2& p) const;
+  /// Obstacle `skip` is not looked at (a point known to lie on its zone's boundary).
+  bool is_free(const Vec2& p, std::size_t skip = kNone) const;
 
   /// Smallest signed distance between the closed segment [a, b] and any
   /// obstacle footprint, which obstacle and where. Ties go to the obstacle found
@@ -94,7 +98,10 @@ class ObstacleField {
   Nearest segment_clearance(const Vec2& a, const Vec2& b) const;
   /// segment_clearance(a, b).distance >= margin, stopping at the first obstacle
   /// closer than the margin and never looking at boxes farther than it.
-  bool segment_free(const Vec2& a, const Vec2& b) const;
+  /// Obstacles skip_a and skip_b are not looked at: a planner passes the
+  /// convex zones a tangent segment touches by construction, whose exact
+  /// distance would only confirm the touch (and cost most of the test).
+  bool segment_free(const Vec2& a, const Vec2& b, std::size_t skip_a = kNone, std::size_t skip_b = kNone) const;
 
   /// Exact signed distance to one obstacle (no R-tree): for brute-force checks.
   double distance_to(std::size_t obstacle, const Vec2& p) const;
