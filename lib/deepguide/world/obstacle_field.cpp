@@ -21,6 +21,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
+#include "deepguide/geometry/ellipse_segment.hpp"
 
 namespace deepguide {
 namespace {
@@ -151,8 +152,32 @@ double signed_distance(const BgPolygon& polygon, const Vec2& p) {
 SegmentDistance segment_signed_distance(const Ellipse& ellipse, const Vec2& a, const Vec2& b) {
   const Vec2 d = b - a;
   const auto f = [&](double t) { return signed_distance(ellipse, a + t * d); };
+  if (d.x() == 0.0 && d.y() == 0.0) return {f(0.0), a};
+  // A segment that stays outside: in closed form. With n the line's unit
+  // normal pointing away from the centre, the line keeps
+  //   gap = n.(a - c) - sqrt(n^T A n)
+  // from the ellipse, attained at its support point in direction -n... seen
+  // from the line, i.e. the boundary point with outward normal n. The distance
+  // along the line is convex, smallest at that point's foot t*, so on [0, 1]
+  // it is smallest at clamp(t*, 0, 1): the gap itself, or an end point's distance.
+  const double len2 = d.squaredNorm();
+  Vec2 n = Vec2(-d.y(), d.x()) / std::sqrt(len2);
+  double side = n.dot(a - ellipse.center);
+  if (side < 0.0) n = -n, side = -side;
+  const double gap = side - (ellipse.support(n) - n.dot(ellipse.center));
+  if (gap > 0.0) {
+    const double t_foot = (ellipse.support_point(n) - a).dot(d) / len2;
+    if (t_foot >= 0.0 && t_foot <= 1.0) return {gap, a + t_foot * d};
+    return t_foot < 0.0 ? SegmentDistance{f(0.0), a} : SegmentDistance{f(1.0), b};
+  }
+  // The line meets the ellipse; a segment that does not (strictly) is
+  // closest at an end, the one nearer the chord.
+  if (!segment_intersects(ellipse, a, b)) {
+    const double fa = f(0.0), fb = f(1.0);
+    return fa <= fb ? SegmentDistance{fa, a} : SegmentDistance{fb, b};
+  }
+  // Crossing: the depth, by Brent (the convex distance has a ridge inside).
   SegmentDistance best{f(0.0), a};
-  if (d.x() == 0.0 && d.y() == 0.0) return best;
   const auto consider = [&](double t, double value) {
     if (value < best.distance) best = {value, a + t * d};
   };
