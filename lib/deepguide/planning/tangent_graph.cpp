@@ -28,6 +28,8 @@ constexpr std::size_t kNoPiece = static_cast<std::size_t>(-1);
 // Tangent segments touch zones exactly; the field judging them allows this
 // much (m) so rounding does not reject them. The route checker allows 1e-6.
 constexpr double kTouchEps = 1e-7;
+// The first query bound: a little more than the straight line (see solve()).
+constexpr double kFirstBoundStretch = 1.05;
 // About 10 s of build on the reference machine (docs/PERFORMANCE.md).
 constexpr std::size_t kMaxPieces = 3000;
 
@@ -104,7 +106,8 @@ struct TangentGraph::Impl {
     std::size_t u, v;
     double w;
   };
-  std::vector<Node> nodes;
+  std::vector<Node> nodes;  // the environment's, then a query's own while it runs
+  std::size_t env_nodes = 0;
   std::vector<std::vector<std::size_t>> on_piece;  // vertex ids per piece, by phi
   PlanningGraph base;
   std::vector<Arc> arcs;
@@ -135,7 +138,10 @@ struct TangentGraph::Impl {
   }
   bool point_free(const Vec2& p, std::size_t piece) const { return field->is_free(p, own_ellipse(piece)); }
   bool arc_free(std::size_t piece, double phi0, double phi1) const;
-  void add_point_tangents(const Vec2& p, std::vector<Segment>& out) const;
+  // Tangents from p to the pieces whose lower bound of |x - s| + |x - g| is
+  // within `bound` (all pieces for an infinite bound).
+  void add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low,
+                          double bound) const;
   std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
 };
 
@@ -219,7 +225,11 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
     }
     segment_ends.emplace_back(ends[0], ends[1]);
   }
-  m.base = PlanningGraph(m.nodes.size());
+  // Spare vertices for the queries' tangent points (at most two per piece
+  // from each of start and goal): a query adds edges, never vertices, so the
+  // graph is searched in place instead of copied.
+  m.env_nodes = m.nodes.size();
+  m.base = PlanningGraph(m.env_nodes + 4 * m.pieces.size());
   for (const auto& [a, b] : segment_ends) {
     const double w = (m.nodes[a].p - m.nodes[b].p).norm();
     boost::add_edge(a, b, w, m.base);
@@ -291,8 +301,10 @@ bool TangentGraph::Impl::arc_free(std::size_t piece, double phi0, double phi1) c
   return true;
 }
 
-void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>& out) const {
+void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low,
+                                            double bound) const {
   for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (low[i] > bound) continue;
     const ZonePiece& z = pieces[i];
     auto f = [&](double phi) {
       const Vec2 u = unit(phi);
@@ -376,47 +388,84 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
   Impl& m = *impl_;
   const Vec2 s = problem.start - m.origin;
   const Vec2 g = problem.goal - m.origin;
-
-  // The prebuilt graph plus this query's start, goal and their tangent points.
-  PlanningGraph graph = m.base;
-  std::vector<Node> nodes = m.nodes;
+  PlanningGraph& graph = m.base;
+  std::vector<Node>& nodes = m.nodes;
   nodes[0].p = s;
   nodes[1].p = g;
-  std::vector<std::vector<std::size_t>> added(m.pieces.size());
-  for (std::size_t end = 0; end < 2; ++end) {
-    std::vector<Segment> tangents;
-    m.add_point_tangents(end == 0 ? s : g, tangents);
-    for (const Segment& seg : tangents) {
-      nodes.push_back(seg.b);
-      const std::size_t v = boost::add_vertex(graph);
-      added[seg.b.piece].push_back(v);
-      const double w = (seg.b.p - seg.a.p).norm();
-      boost::add_edge(end, v, w, graph);
-      boost::add_edge(v, end, w, graph);
-    }
+
+  // The query's edges and vertices go into the environment's graph and come
+  // out again when it ends, however it ends.
+  std::vector<std::size_t> used;  // spare vertices taken
+  auto clean = [&] {
+    boost::clear_vertex(0, graph);
+    boost::clear_vertex(1, graph);
+    for (std::size_t v : used) boost::clear_vertex(v, graph);
+    used.clear();
+    nodes.resize(m.env_nodes);
+  };
+  struct Cleanup {
+    std::function<void()> f;
+    ~Cleanup() { f(); }
+  } cleanup{clean};
+
+  // Start and goal get tangents only to the pieces that can meet the ellipse
+  // |x - s| + |x - g| <= bound (a piece lies in the disc of radius `radius`
+  // around its inner point); as in VisibilityGraph::solve, a cost within the
+  // bound is final, else the bound grows to the cost or doubles.
+  std::vector<double> low(m.pieces.size());
+  double farthest = (g - s).norm();
+  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+    const ZonePiece& z = m.pieces[i];
+    const Vec2 c = z.inner_point();
+    const double radius = z.kind == ZonePiece::Kind::ellipse ? z.ellipse.a + z.margin : 0.5 * (z.b - z.a).norm() + z.margin;
+    low[i] = (c - s).norm() + (c - g).norm() - 2.0 * radius;
+    farthest = std::max(farthest, low[i] + 4.0 * radius);
   }
-  if (m.segment_free(s, g)) {
-    boost::add_edge(0, 1, (g - s).norm(), graph);
-    boost::add_edge(1, 0, (g - s).norm(), graph);
-  }
-  // New tangent points split the pieces' arcs: join them to their neighbours.
+  const bool direct = m.segment_free(s, g);
+  double bound = kFirstBoundStretch * (g - s).norm();
   std::vector<Impl::Arc> arcs;
   std::unordered_map<std::uint64_t, std::size_t> arc_of;
-  const std::size_t first_new = m.nodes.size();
-  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
-    if (added[i].empty()) continue;
-    std::vector<std::size_t> ids = m.on_piece[i];
-    ids.insert(ids.end(), added[i].begin(), added[i].end());
-    std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return nodes[x].phi < nodes[y].phi; });
-    m.add_arcs(i, ids, nodes, [&](std::size_t a, std::size_t b) { return a >= first_new || b >= first_new; }, graph,
-               arcs, arc_of);
+  SearchResult found;
+  for (;;) {
+    clean();
+    arcs.clear();
+    arc_of.clear();
+    std::vector<std::vector<std::size_t>> added(m.pieces.size());
+    for (std::size_t end = 0; end < 2; ++end) {
+      std::vector<Segment> tangents;
+      m.add_point_tangents(end == 0 ? s : g, tangents, low, bound);
+      for (const Segment& seg : tangents) {
+        const std::size_t v = nodes.size();
+        if (v >= boost::num_vertices(graph)) throw std::logic_error("tangent graph: spare vertices exhausted");
+        nodes.push_back(seg.b);
+        used.push_back(v);
+        added[seg.b.piece].push_back(v);
+        const double w = (seg.b.p - seg.a.p).norm();
+        boost::add_edge(end, v, w, graph);
+        boost::add_edge(v, end, w, graph);
+      }
+    }
+    if (direct) {
+      boost::add_edge(0, 1, (g - s).norm(), graph);
+      boost::add_edge(1, 0, (g - s).norm(), graph);
+    }
+    // New tangent points split the pieces' arcs: join them to their neighbours.
+    for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+      if (added[i].empty()) continue;
+      std::vector<std::size_t> ids = m.on_piece[i];
+      ids.insert(ids.end(), added[i].begin(), added[i].end());
+      std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return nodes[x].phi < nodes[y].phi; });
+      m.add_arcs(i, ids, nodes, [&](std::size_t a, std::size_t b) { return a >= m.env_nodes || b >= m.env_nodes; },
+                 graph, arcs, arc_of);
+    }
+    const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (nodes[v].p - g).norm(); };
+    found = shortest_path(graph, 0, 1, algorithm, h);
+    if (bound >= farthest || (found.found && found.cost <= bound)) break;
+    bound = found.found ? std::max(found.cost, bound) : std::min(2.0 * bound, farthest);
   }
 
-  const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (nodes[v].p - g).norm(); };
-  const SearchResult found = shortest_path(graph, 0, 1, algorithm, h);
-
   PlanResult result;
-  result.stats.graph_vertices = boost::num_vertices(graph);
+  result.stats.graph_vertices = nodes.size();  // the spare vertices the query did not take do not count
   result.stats.graph_edges = boost::num_edges(graph) / 2;
   result.stats.expanded = found.expanded;
   result.stats.build_ms = m.build_ms;

@@ -14,6 +14,9 @@ namespace {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// The first query bound: a little more than the straight line (see solve()).
+constexpr double kFirstBoundStretch = 1.05;
+
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
@@ -115,30 +118,52 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   const std::size_t n = corners_.size();
   const GraphVertex sv = n, gv = n + 1;
   auto link = [&](GraphVertex from, GraphVertex to, double w) { boost::add_edge(from, to, w, graph_); };
-
-  // Start and goal join every corner they see (full), or the corners where
-  // the line to them is supporting (reduced), and each other directly.
-  for (std::size_t i = 0; i < n; ++i) {
-    const Corner& c = corners_[i];
-    if (variant_ == VisibilityVariant::reduced && !c.convex) continue;
-    for (const auto& [point, vertex] : {std::pair{s, sv}, std::pair{g, gv}}) {
-      if (variant_ == VisibilityVariant::reduced && !supporting_at(c, point)) continue;
-      if (!visibility_->segment_visible(point, c.p)) continue;
-      const double w = (c.p - point).norm();
-      if (vertex == sv) link(sv, i, w);
-      else link(i, gv, w);
-    }
-  }
-  if (visibility_->segment_visible(s, g)) link(sv, gv, (g - s).norm());
-
-  std::vector<Vec2> positions;
   auto position = [&](GraphVertex v) { return v == sv ? s : v == gv ? g : corners_[v].p; };
   const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (position(v) - g).norm(); };
-  const SearchResult found = shortest_path(graph_, sv, gv, algorithm, h);
+
+  // Start and goal join only the corners within the ellipse
+  // |x - s| + |x - g| <= bound: a path of cost L passes only corners with
+  // |c - s| + |c - g| <= L, so once the search returns a cost within the
+  // bound, no corner left out could have shortened it (the rest of the graph
+  // is complete). Otherwise the bound grows to the cost found (then one more
+  // round is final) or, with no path, doubles until it holds every corner.
+  std::vector<double> reach(n);
+  double farthest = (g - s).norm();
+  for (std::size_t i = 0; i < n; ++i) {
+    reach[i] = (corners_[i].p - s).norm() + (corners_[i].p - g).norm();
+    farthest = std::max(farthest, reach[i]);
+  }
+  const bool direct = visibility_->segment_visible(s, g);
+  double bound = kFirstBoundStretch * (g - s).norm();
+  SearchResult found;
+  std::size_t attached = 0;
+  for (int round = 0;; ++round) {
+    boost::clear_vertex(sv, graph_);
+    boost::clear_vertex(gv, graph_);
+    // Start and goal join every corner they see (full), or the corners where
+    // the line to them is supporting (reduced), and each other directly.
+    for (std::size_t i = 0; i < n; ++i) {
+      const Corner& c = corners_[i];
+      if (reach[i] > bound) continue;
+      if (variant_ == VisibilityVariant::reduced && !c.convex) continue;
+      for (const auto& [point, vertex] : {std::pair{s, sv}, std::pair{g, gv}}) {
+        if (variant_ == VisibilityVariant::reduced && !supporting_at(c, point)) continue;
+        if (!visibility_->segment_visible(point, c.p)) continue;
+        const double w = (c.p - point).norm();
+        if (vertex == sv) link(sv, i, w);
+        else link(i, gv, w);
+      }
+    }
+    if (direct) link(sv, gv, (g - s).norm());
+    attached = boost::out_degree(sv, graph_) + boost::in_degree(gv, graph_);
+    found = shortest_path(graph_, sv, gv, algorithm, h);
+    if (bound >= farthest || (found.found && found.cost <= bound)) break;
+    bound = found.found ? std::max(found.cost, bound) : std::min(2.0 * bound, farthest);
+  }
 
   PlanResult result;
   result.stats.graph_vertices = n + 2;
-  result.stats.graph_edges = base_edges_ + boost::out_degree(sv, graph_) + boost::in_degree(gv, graph_);
+  result.stats.graph_edges = base_edges_ + attached;
   result.stats.expanded = found.expanded;
   result.stats.build_ms = build_ms_;
   boost::clear_vertex(sv, graph_);
