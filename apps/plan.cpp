@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
+#include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_scene.hpp"
 #include "deepguide/world/obstacle_io.hpp"
@@ -71,8 +72,9 @@ void register_plan(CLI::App& app) {
     ObstacleSet obstacles = loaded.obstacles;
     std::size_t passed_over = 0;
     if (!std::isnan(o->depth)) passed_over = remove_passable(obstacles, o->depth, o->vertical_clearance);
-    Planner planner(std::move(obstacles), options);
-    const PlanOutcome out = planner.solve(problem);
+    // One query: the graph only over the obstacles that can matter (single_query.hpp).
+    const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);
+    const PlanOutcome& out = plan.outcome;
     if (!out.result.found) throw NoRouteError(out.result.message);
     if (!out.check.safe) {
       throw std::runtime_error("the planned route failed the independent check: " + out.check.describe());
@@ -87,9 +89,11 @@ void register_plan(CLI::App& app) {
         {"graph_vertices", out.result.stats.graph_vertices},
         {"graph_edges", out.result.stats.graph_edges},
         {"expanded", out.result.stats.expanded},
-        {"build_ms", out.result.stats.build_ms},
-        {"query_ms", out.result.stats.query_ms},
-        {"obstacles", planner.field().size()},
+        {"build_ms", plan.build_ms},
+        {"query_ms", plan.query_ms},
+        {"obstacles", plan.obstacles_total},
+        {"obstacles_in_graph", plan.obstacles_used},
+        {"rounds", plan.rounds},
         {"passed_over", passed_over},
         {"crs", loaded.frame.id()}};
     if (!out.escaped_from.empty()) summary["escaped_from"] = out.escaped_from;
@@ -103,7 +107,7 @@ void register_plan(CLI::App& app) {
     if (!o->output.empty()) write_route_geojson(o->output, out.result.route, loaded.frame, summary);
     if (!o->render.empty()) {
       RouteScene scene;
-      scene.obstacles = &planner.field().obstacles();
+      scene.obstacles = &obstacles;
       scene.margin = o->margin;
       scene.route = out.result.route.points;
       scene.start = problem.start;
@@ -111,8 +115,8 @@ void register_plan(CLI::App& app) {
       scene.true_north_deg = true_north_deg(loaded.frame, problem.start);
       scene.title = route_title("deepguide plan", out.result.route, o->margin, loaded.frame);
       if (o->render_graph) {
-        scene.zone_polygons = &planner.zone_polygons();
-        scene.graph_edges = planner.graph_edges();
+        scene.zone_polygons = &plan.planner->zone_polygons();
+        scene.graph_edges = plan.planner->graph_edges();
       }
       render_route(scene, o->render);
     }
@@ -126,10 +130,11 @@ void register_plan(CLI::App& app) {
                   out.result.exact_length_m, out.result.legs.size());
     }
     std::printf("min clearance    %.2f m (margin %.2f m)\n", out.check.min_clearance_m, o->margin);
-    std::printf("graph            %s, %zu vertices, %zu edges; %s expanded %zu\n", o->graph.c_str(),
-                out.result.stats.graph_vertices, out.result.stats.graph_edges, o->search.c_str(),
-                out.result.stats.expanded);
-    std::printf("time             build %.2f ms, query %.2f ms\n", out.result.stats.build_ms, out.result.stats.query_ms);
+    std::printf("graph            %s over %zu of %zu obstacles, %zu vertices, %zu edges; %s expanded %zu\n",
+                o->graph.c_str(), plan.obstacles_used, plan.obstacles_total, out.result.stats.graph_vertices,
+                out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);
+    std::printf("time             build %.2f ms, query %.2f ms (%d round%s)\n", plan.build_ms, plan.query_ms, plan.rounds,
+                plan.rounds == 1 ? "" : "s");
     if (passed_over > 0) std::printf("passed over      %zu obstacle(s) deeper than the depth band\n", passed_over);
     if (!o->output.empty()) std::printf("wrote            %s\n", o->output.c_str());
     if (!o->render.empty()) std::printf("rendered         %s\n", o->render.c_str());

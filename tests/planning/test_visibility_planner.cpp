@@ -9,6 +9,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
+#include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 
@@ -130,6 +131,17 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
     ASSERT_TRUE(t.check.safe) << "scenario " << scenario << ": " << t.check.describe();
     // Enclosing polygons only lengthen routes: the exact route is never longer.
     ASSERT_LE(t.result.exact_length_m, lr * (1 + 1e-12)) << "scenario " << scenario;
+    // One query over only the obstacles within the ellipse bound: the same optimum.
+    // (The tangent graph's exact length; its polyline depends on which
+    // tangent points split the arcs, which differs with the obstacles taken.)
+    for (const auto& [options, length] : {std::pair{base, lr}, std::pair{tangent_options, t.result.exact_length_m}}) {
+      const SingleQueryPlan one = plan_single_query(set, {start, goal}, options);
+      ASSERT_TRUE(one.outcome.result.found) << "scenario " << scenario;
+      ASSERT_TRUE(one.outcome.check.safe) << "scenario " << scenario << ": " << one.outcome.check.describe();
+      const double got = options.graph == GraphKind::tangent ? one.outcome.result.exact_length_m
+                                                             : one.outcome.result.route.length();
+      ASSERT_NEAR(got, length, 1e-9 * length) << "scenario " << scenario << " " << to_string(options.graph);
+    }
 
     if (bg::num_geometries(reduced.zone_polygons()) != set.size()) {
       ++merged_cases;

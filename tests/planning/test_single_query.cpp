@@ -1,0 +1,109 @@
+// plan_single_query: the graph over only the obstacles within the ellipse
+// bound gives the same route as the planner over all of them, in as many
+// rounds as the detour needs.
+#include <gtest/gtest.h>
+
+#include <boost/geometry.hpp>
+#include <string>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/single_query.hpp"
+
+using namespace deepguide;
+
+namespace {
+
+PolygonObstacle box(double x0, double y0, double x1, double y1, std::string id) {
+  PolygonObstacle p;
+  p.id = std::move(id);
+  p.footprint.outer() = {to_bg({x0, y0}), to_bg({x0, y1}), to_bg({x1, y1}), to_bg({x1, y0}), to_bg({x0, y0})};
+  boost::geometry::correct(p.footprint);
+  return p;
+}
+
+EllipticCylinder disc(double x, double y, double r, std::string id) {
+  EllipticCylinder c;
+  c.id = std::move(id);
+  c.footprint = Ellipse{{x, y}, r, r, 0.0};
+  return c;
+}
+
+}  // namespace
+
+class SingleQuery : public ::testing::TestWithParam<GraphKind> {};
+INSTANTIATE_TEST_SUITE_P(AllGraphs, SingleQuery,
+                         ::testing::Values(GraphKind::visibility, GraphKind::visibility_full, GraphKind::tangent),
+                         [](const auto& info) { return info.param == GraphKind::visibility_full ? std::string("full")
+                                                                                               : to_string(info.param); });
+
+TEST_P(SingleQuery, LongDetourTakesSeveralRoundsAndMatchesThePlanner) {
+  // A wall 1000 m long across the straight line from (0, 0) to (400, 0),
+  // capped in the north by a disc (so the way round is the south end, with no
+  // tie), a disc beside the southern detour that only a grown bound takes in,
+  // and discs far away that no bound reaches.
+  ObstacleSet set;
+  set.polygons.push_back(box(195, -500, 205, 500, "wall"));
+  set.ellipses.push_back(disc(200, 505, 10, "north-cap"));
+  set.ellipses.push_back(disc(300, -530, 10, "south-side"));
+  set.ellipses.push_back(disc(5000, 5000, 10, "far-away"));
+  set.ellipses.push_back(disc(-3000, 0, 10, "behind"));
+  const PlannerOptions options{5.0, 0.5, GetParam(), SearchAlgorithm::astar};
+  const PlanningProblem problem{{0, 0}, {400, 0}};
+  const SingleQueryPlan one = plan_single_query(set, problem, options);
+  ASSERT_TRUE(one.outcome.result.found);
+  EXPECT_TRUE(one.outcome.check.safe) << one.outcome.check.describe();
+  EXPECT_GE(one.rounds, 2);  // the straight line's 1.05 bound cannot hold a 1000 m detour
+  EXPECT_EQ(one.obstacles_total, 5u);
+  EXPECT_EQ(one.obstacles_used, 3u);  // never the far ones
+  EXPECT_GE(one.bound_m, one.outcome.result.route.length());
+  Planner all(set, options);
+  const PlanOutcome ref = all.solve(problem);
+  ASSERT_TRUE(ref.result.found);
+  // The tangent graph's exact length (its polyline depends on which tangent
+  // points split the arcs, and the full graph has more of them).
+  const bool exact = GetParam() == GraphKind::tangent;
+  const double got = exact ? one.outcome.result.exact_length_m : one.outcome.result.route.length();
+  const double want = exact ? ref.result.exact_length_m : ref.result.route.length();
+  EXPECT_NEAR(got, want, 1e-9 * want);
+  // Around the south end of the wall: (0, 0) -> corner zone near (200, -505) -> (400, 0).
+  EXPECT_GT(one.outcome.result.route.length(), 2.0 * std::hypot(195.0, 505.0));
+  for (const Vec2& p : one.outcome.result.route.points) EXPECT_LT(p.y(), 1.0);
+}
+
+TEST_P(SingleQuery, NoRouteAmongFewerObstaclesMeansNoRoute) {
+  ObstacleSet set;
+  set.polygons = {box(-20, -20, 20, -15, "s"), box(-20, 15, 20, 20, "n"), box(-20, -20, -15, 20, "w"),
+                  box(15, -20, 20, 20, "e")};
+  set.ellipses.push_back(disc(9000, 9000, 5, "far"));
+  const SingleQueryPlan one = plan_single_query(set, {{-100, 0}, {0, 0}}, {1.0, 0.5, GetParam(), SearchAlgorithm::astar});
+  EXPECT_FALSE(one.outcome.result.found);
+  EXPECT_FALSE(one.outcome.result.message.empty());
+}
+
+TEST_P(SingleQuery, StartInAZoneIsReportedOrEscaped) {
+  ObstacleSet set;
+  set.ellipses.push_back(disc(0, 0, 10, "buoy"));
+  set.ellipses.push_back(disc(100, 0, 10, "mid"));
+  const PlannerOptions options{5.0, 0.5, GetParam(), SearchAlgorithm::astar};
+  try {
+    (void)plan_single_query(set, {{12, 0}, {300, 0}}, options);
+    ADD_FAILURE() << "a start 2 m from the buoy must be refused";
+  } catch (const NoRouteError& e) {
+    EXPECT_NE(std::string(e.what()).find("buoy"), std::string::npos) << e.what();
+  }
+  const SingleQueryPlan one = plan_single_query(set, {{12, 0}, {300, 0}, true}, options);
+  ASSERT_TRUE(one.outcome.result.found);
+  EXPECT_EQ(one.outcome.escaped_from, "buoy");
+  EXPECT_TRUE(one.outcome.check.safe || one.outcome.check.worst_segment == 0) << one.outcome.check.describe();
+}
+
+TEST(SingleQueryInput, BadPointsAndOptionsAreBadInput) {
+  ObstacleSet set;
+  set.ellipses.push_back(disc(0, 0, 10, "buoy"));
+  const PlannerOptions ok{5.0, 0.5, GraphKind::visibility, SearchAlgorithm::astar};
+  EXPECT_THROW(plan_single_query(set, {{std::nan(""), 0}, {100, 0}}, ok), InputError);
+  EXPECT_THROW(plan_single_query(set, {{-100, 0}, {-100, 0}}, ok), InputError);
+  PlannerOptions bad = ok;
+  bad.margin = -1;
+  EXPECT_THROW(plan_single_query(set, {{-100, 0}, {100, 0}}, bad), InputError);
+}
