@@ -119,6 +119,7 @@ class ObstacleField {
   double margin_;
   double threshold_;  // margin - slack
   Tree tree_;
+  std::vector<Vec2> axes_;  // major-axis directions of the ellipses, cached
 };
 
 }  // namespace deepguide
