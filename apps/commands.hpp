@@ -21,9 +21,14 @@ void add_frame_options(CLI::App& cmd, FrameOptions& options);
 
 void register_obstacles_info(CLI::App& obstacles);
 void register_obstacles_convert(CLI::App& obstacles);
+void register_obstacles_import(CLI::App& obstacles);
 void register_plan(CLI::App& app);
 void register_check_route(CLI::App& check);
 void register_render_route(CLI::App& render);
+void register_chart_synth(CLI::App& chart);
+void register_chart_info(CLI::App& chart);
+void register_render_chart(CLI::App& render);
+void register_chart_nogo(CLI::App& chart);
 
 /// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north
 /// to true north at a local point, and the default title of a route chart.

@@ -30,6 +30,12 @@ int main(int argc, char** argv) {
   obstacles->require_subcommand(1);
   app::register_obstacles_info(*obstacles);
   app::register_obstacles_convert(*obstacles);
+  app::register_obstacles_import(*obstacles);
+  CLI::App* chart = app.add_subcommand("chart", "Sea charts: bathymetry, S-57 cells, no-go areas, the sample chart");
+  chart->require_subcommand(1);
+  app::register_chart_synth(*chart);
+  app::register_chart_info(*chart);
+  app::register_chart_nogo(*chart);
   app::register_plan(app);
   CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
   check->require_subcommand(1);
@@ -37,6 +43,7 @@ int main(int argc, char** argv) {
   CLI::App* render = app.add_subcommand("render", "Draw charts as PNG or SVG");
   render->require_subcommand(1);
   app::register_render_route(*render);
+  app::register_render_chart(*render);
 
   try {
     app.parse(argc, argv);

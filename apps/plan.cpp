@@ -11,6 +11,7 @@
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_scene.hpp"
+#include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
@@ -18,6 +19,7 @@ namespace {
 
 struct PlanOptions {
   std::vector<std::string> obstacles;
+  std::vector<std::string> charts;
   std::string from, to, output;
   FrameOptions frame;
   double margin = 5.0;
@@ -38,7 +40,10 @@ void register_plan(CLI::App& app) {
   auto o = std::make_shared<PlanOptions>();
   CLI::App* cmd = app.add_subcommand("plan", "Plan a safe shortest route around the obstacles");
   cmd->add_option("--obstacles", o->obstacles, "Obstacle files (GeoJSON, GeoPackage, Shapefile, CSV, ...)")
-      ->required()->expected(1, -1);
+      ->expected(1, -1);
+  cmd->add_option("--chart", o->charts,
+                  "Charts: bathymetry rasters (no-go at --depth), S-57 cells, hazard files (GeoPackage, ...)")
+      ->expected(1, -1);
   cmd->add_option("--from", o->from, "Start: lon,lat, or x,y in the --crs frame")->required();
   cmd->add_option("--to", o->to, "Goal: lon,lat, or x,y in the --crs frame")->required();
   cmd->add_option("-o,--output", o->output, "Route file to write (GeoJSON)");
@@ -66,12 +71,37 @@ void register_plan(CLI::App& app) {
     options.graph = parse_graph_kind(o->graph);
     options.search = parse_search(o->search);
     if (!o->render.empty()) image_format_for(o->render);  // before the work, not after
-    const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
-    const PlanningProblem problem{parse_position(o->from, "--from", loaded.frame, !o->frame.crs.empty()),
-                                  parse_position(o->to, "--to", loaded.frame, !o->frame.crs.empty()), o->escape};
-    ObstacleSet obstacles = loaded.obstacles;
+    if (o->obstacles.empty() && o->charts.empty()) {
+      throw CLI::ValidationError("plan", "give --obstacles FILE... or --chart FILE... (or both)");
+    }
+    // The local frame: --crs, else the UTM zone of the obstacles, else of the start.
+    LocalFrame frame = o->frame.crs.empty() ? LocalFrame::utm_for(0.0, 0.0) : LocalFrame::from_user_crs(o->frame.crs);
+    ObstacleSet obstacles;
+    if (!o->obstacles.empty()) {
+      LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
+      frame = loaded.frame;
+      obstacles = std::move(loaded.obstacles);
+    } else if (o->frame.crs.empty()) {
+      const Eigen::Vector2d from = frame.to_lonlat(parse_position(o->from, "--from", frame, false));
+      frame = LocalFrame::utm_for(from.x(), from.y());
+    }
+    const PlanningProblem problem{parse_position(o->from, "--from", frame, !o->frame.crs.empty()),
+                                  parse_position(o->to, "--to", frame, !o->frame.crs.empty()), o->escape};
     std::size_t passed_over = 0;
     if (!std::isnan(o->depth)) passed_over = remove_passable(obstacles, o->depth, o->vertical_clearance);
+    ChartObstacles charted;
+    if (!o->charts.empty()) {
+      ChartObstacleOptions chart_options;
+      chart_options.depth_m = o->depth;
+      chart_options.clearance_m = o->vertical_clearance;
+      chart_options.source_crs = o->frame.src_crs;
+      charted = chart_obstacles(o->charts, frame, chart_options);
+      for (const ChartFileObstacles& f : charted.files) passed_over += f.passed_over;
+      obstacles.ellipses.insert(obstacles.ellipses.end(), charted.obstacles.ellipses.begin(),
+                                charted.obstacles.ellipses.end());
+      obstacles.polygons.insert(obstacles.polygons.end(), charted.obstacles.polygons.begin(),
+                                charted.obstacles.polygons.end());
+    }
     // One query: the graph only over the obstacles that can matter (single_query.hpp).
     const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);
     const PlanOutcome& out = plan.outcome;
@@ -95,7 +125,7 @@ void register_plan(CLI::App& app) {
         {"obstacles_in_graph", plan.obstacles_used},
         {"rounds", plan.rounds},
         {"passed_over", passed_over},
-        {"crs", loaded.frame.id()}};
+        {"crs", frame.id()}};
     if (!out.escaped_from.empty()) summary["escaped_from"] = out.escaped_from;
     if (!out.result.legs.empty()) {
       summary["exact_length_m"] = out.result.exact_length_m;
@@ -104,7 +134,7 @@ void register_plan(CLI::App& app) {
       summary["arcs"] = arcs;
       summary["lines"] = out.result.legs.size() - arcs;
     }
-    if (!o->output.empty()) write_route_geojson(o->output, out.result.route, loaded.frame, summary);
+    if (!o->output.empty()) write_route_geojson(o->output, out.result.route, frame, summary);
     if (!o->render.empty()) {
       RouteScene scene;
       scene.obstacles = &obstacles;
@@ -112,8 +142,8 @@ void register_plan(CLI::App& app) {
       scene.route = out.result.route.points;
       scene.start = problem.start;
       scene.goal = problem.goal;
-      scene.true_north_deg = true_north_deg(loaded.frame, problem.start);
-      scene.title = route_title("deepguide plan", out.result.route, o->margin, loaded.frame);
+      scene.true_north_deg = true_north_deg(frame, problem.start);
+      scene.title = route_title("deepguide plan", out.result.route, o->margin, frame);
       if (o->render_graph) {
         scene.zone_polygons = &plan.planner->zone_polygons();
         scene.graph_edges = plan.planner->graph_edges();

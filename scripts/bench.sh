@@ -5,7 +5,8 @@
 #   bench_planning prints markdown tables (build/bench/bench_planning --help; also
 #   BENCH_PLANNING_ARGS="--quick"). Its OMPL peer needs Debian's libompl-dev, which
 #   only this script installs, and only when it can (root or sudo); without it the
-#   peer is left out and the run says so.
+#   peer is left out and the run says so. bench_no_go takes no flags here
+#   (build/bench/bench_no_go --help).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 
@@ -31,6 +32,7 @@ for b in "$DEEPGUIDE_ROOT"/build/bench/bench_*; do
   [ -x "$b" ] || continue
   case "$(basename "$b")" in
     bench_planning) "$b" "${planning_args[@]}" ;;
+    bench_no_go) "$b" ;;  # writes a 20000 x 20000 GeoTIFF in the temp folder (~1 GiB), then deletes it
     *) "$b" --benchmark_min_time=0.2 "$@" ;;
   esac
 done

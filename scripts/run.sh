@@ -1,11 +1,22 @@
 #!/usr/bin/env bash
-# Sets up, builds (Release) and runs deepguide's main job on the bundled sample:
-# a route through the sample obstacles, checked, written and drawn to out/.
+# Sets up, builds (Release) and runs deepguide's main job on the bundled sample
+# chart (charts/, made by `deepguide chart synth`): its summary, and a route
+# out of the harbour through the dredged channel at 10 m operating depth; then
+# a route through the sample obstacles, checked. Results go to out/.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 deepguide_setup "$DEEPGUIDE_ROOT/build"
 cd "$DEEPGUIDE_ROOT"
 mkdir -p out
+CHART="charts/sample_chart.tif charts/sample_chart_hazards.gpkg"
+# shellcheck disable=SC2086  # two file names
+./build/apps/deepguide chart info $CHART --depth 10
+echo
+# shellcheck disable=SC2086
+./build/apps/deepguide plan --chart $CHART --depth 10 \
+  --from 10.2446,54.4413 --to 10.2626,54.4606 \
+  -o out/chart_route.geojson --render out/chart_route.png
+echo
 ./build/apps/deepguide obstacles info data/sample_obstacles.geojson
 echo
 ./build/apps/deepguide plan --obstacles data/sample_obstacles.geojson \

@@ -1,6 +1,8 @@
 // deepguide plan and deepguide check route, end to end.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "test_support.hpp"
@@ -105,4 +107,56 @@ TEST(CliPlan, ProjectedCoordinatesWithCrs) {
   const auto r = run_cli("plan --obstacles '" + kSample + "' --crs EPSG:32632 --from 580440.5,6033365.3 --to 582000,6035800 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_GT(nlohmann::json::parse(r.out).at("length_m").get<double>(), 2000.0);
+}
+
+// ---- Charts as input -------------------------------------------------------------------
+
+namespace {
+const std::string kChart = deepguide::test::source_file("charts/sample_chart.tif");
+const std::string kHazards = deepguide::test::source_file("charts/sample_chart_hazards.gpkg");
+// From the harbour basin to open water in the north-east of the sample chart.
+const std::string kHarbourToSea = " --from 10.2446,54.4413 --to 10.2626,54.4606";
+}  // namespace
+
+TEST(CliPlan, ChartRouteLeavesTheHarbourThroughTheChannelClearOfTheNoGoArea) {
+  ScratchDir dir;
+  const std::string route = dir.file("route.geojson");
+  const auto r = run_cli("plan --chart '" + kChart + "' '" + kHazards + "' --depth 10" + kHarbourToSea + " -o '" +
+                         route + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // The basin's mouth and the channel force a dog-leg: longer than the
+  // straight line (about 2.4 km) but not by much.
+  const double straight = 2430.0;
+  EXPECT_GT(j.at("length_m").get<double>(), straight);
+  EXPECT_LT(j.at("length_m").get<double>(), 1.05 * straight);
+  EXPECT_GE(j.at("min_clearance_m").get<double>(), 5.0 - 1e-9);
+  EXPECT_EQ(j.at("crs").get<std::string>(), "EPSG:32632");  // the start's UTM zone
+  EXPECT_EQ(j.at("passed_over").get<int>(), 3);  // hazards deeper than 10 + 2 m
+  // Independently: the no-go polygons written by `chart nogo`, checked by `check route`.
+  const std::string nogo = dir.file("nogo.gpkg");
+  const auto n = run_cli("chart nogo '" + kChart + "' --depth 10 -o '" + nogo + "'");
+  ASSERT_EQ(n.exit_code, 0) << n.err;
+  const auto ok = run_cli("check route '" + route + "' --obstacles '" + nogo + "' --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(nlohmann::json::parse(ok.out).at("safe").get<bool>());
+  // At 4 m the shoal bank (6-8 m) is open water: a straighter, shorter route.
+  const auto shallow = run_cli("plan --chart '" + kChart + "' --depth 4" + kHarbourToSea + " --json");
+  ASSERT_EQ(shallow.exit_code, 0) << shallow.err;
+  EXPECT_LE(nlohmann::json::parse(shallow.out).at("length_m").get<double>(), j.at("length_m").get<double>());
+}
+
+TEST(CliPlan, ChartInputErrors) {
+  // A raster without an operating depth cannot be judged: exit 1, naming the file and --depth.
+  const auto r = run_cli("plan --chart '" + kChart + "'" + kHarbourToSea);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("sample_chart.tif"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--depth"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  // Neither obstacles nor charts: usage error.
+  EXPECT_EQ(run_cli("plan" + kHarbourToSea).exit_code, 2);
+  // A chart that is not there.
+  const auto missing = run_cli("plan --chart /nonexistent/chart.tif --depth 10" + kHarbourToSea);
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("/nonexistent/chart.tif"), std::string::npos) << missing.err;
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <numbers>
@@ -233,6 +234,39 @@ void Canvas::circle(const Vec2& c, double radius, const std::optional<Rgba>& fil
   cairo_new_sub_path(impl_->cr);
   cairo_arc(impl_->cr, c.x(), c.y(), radius, 0.0, 2.0 * std::numbers::pi);
   impl_->fill_and_outline(fill, outline);
+}
+
+void Canvas::image(const PixelRect& rect, int width, int height, const std::vector<std::uint32_t>& argb) {
+  if (width < 1 || height < 1 || argb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw InputError("image: expected " + std::to_string(width) + " x " + std::to_string(height) + " pixels, got " +
+                     std::to_string(argb.size()));
+  }
+  cairo_surface_t* src = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
+  if (const cairo_status_t s = cairo_surface_status(src); s != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(src);
+    impl_->fail(s);
+  }
+  cairo_surface_flush(src);
+  unsigned char* data = cairo_image_surface_get_data(src);
+  const int stride = cairo_image_surface_get_stride(src);
+  for (int y = 0; y < height; ++y) {
+    std::memcpy(data + static_cast<std::ptrdiff_t>(y) * stride, argb.data() + static_cast<std::size_t>(y) * width,
+                static_cast<std::size_t>(width) * 4);
+  }
+  cairo_surface_mark_dirty(src);
+  cairo_t* cr = impl_->cr;
+  cairo_save(cr);
+  cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
+  cairo_clip(cr);
+  cairo_translate(cr, rect.x, rect.y);
+  cairo_scale(cr, rect.width / width, rect.height / height);
+  cairo_set_source_surface(cr, src, 0.0, 0.0);
+  // Cells are data: no smoothing between them, and no bleeding at the edges.
+  cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
+  cairo_pattern_set_extend(cairo_get_source(cr), CAIRO_EXTEND_PAD);
+  cairo_paint(cr);
+  cairo_restore(cr);
+  cairo_surface_destroy(src);
 }
 
 void Canvas::text(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color,

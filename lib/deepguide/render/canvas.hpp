@@ -12,6 +12,7 @@
 // Cairo stays inside the .cpp: this header is installed and consumers of the
 // library need no Cairo headers.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -124,6 +125,10 @@ class Canvas {
              const std::optional<Stroke>& outline);
   void circle(const Vec2& center, double radius, const std::optional<Rgba>& fill,
               const std::optional<Stroke>& outline);
+
+  /// Paints an image of width x height pixels (0xAARRGGBB, premultiplied
+  /// alpha, row by row from the top) stretched over `rect`; pixels stay sharp.
+  void image(const PixelRect& rect, int width, int height, const std::vector<std::uint32_t>& argb);
 
   /// Text at `anchor` (the baseline's left end, centre or right end); sans-serif.
   void text(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color,

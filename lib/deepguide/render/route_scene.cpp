@@ -26,16 +26,6 @@ void require_finite(const Vec2& p, const char* what) {
   if (!finite(p)) throw InputError(std::string("route chart: expected finite coordinates for the ") + what);
 }
 
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-std::string format_length(double metres) {
-  return metres >= 1000.0 ? format_number(metres / 1000.0) + " km" : format_number(metres) + " m";
-}
-
 /// Bounding box of an ellipse grown by d on every side (the zone's box).
 WorldBox ellipse_box(const Ellipse& e, double d) {
   const double c = std::cos(e.theta);
@@ -253,26 +243,11 @@ struct Painter {
     canvas.text({kSide * u, 35.0 * u}, text, size, style.text, TextAlign::left, true);
   }
 
+  FurnitureColors furniture() const { return {style.text, style.background, style.frame}; }
+
   void scale_bar() {
-    const double scale = layout.view.scale();
-    const double length_m = nice_scale_length(kScaleBarMax * u / scale);
-    const double length_px = length_m * scale;
-    const double x0 = kSide * u;
-    const double y = layout.footer.y + 44.0 * u;
-    const double h = 7.0 * u;
-    constexpr int kParts = 4;
-    for (int i = 0; i < kParts; ++i) {
-      const PixelRect part{x0 + length_px * i / kParts, y, length_px / kParts, h};
-      canvas.fill_rect(part, i % 2 == 0 ? style.text : style.background);
-    }
-    canvas.stroke_rect({x0, y, length_px, h}, Stroke{style.text, 1.0 * u, {}});
-    const double size = 13.0 * u;
-    canvas.text({x0, y - 6.0 * u}, "0", size, style.text, TextAlign::center);
-    canvas.text({x0 + length_px / 2.0, y - 6.0 * u}, format_length(length_m / 2.0), size, style.text,
-                TextAlign::center);
-    canvas.text({x0 + length_px, y - 6.0 * u}, format_length(length_m), size, style.text, TextAlign::center);
-    canvas.text({x0, y + h + 18.0 * u}, "scale  1 px = " + format_number(std::round(1000.0 / scale) / 1000.0) + " m",
-                11.5 * u, style.frame, TextAlign::left);
+    draw_scale_bar(canvas, layout.view.scale(), kSide * u, layout.footer.y + 44.0 * u, kScaleBarMax * u, u,
+                   furniture());
   }
 
   enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal };
@@ -349,15 +324,6 @@ struct Painter {
   /// GRID north. True north differs from it by the meridian convergence (about
   /// a degree in most of a UTM zone), noted below the arrow when known.
   void north_arrow() {
-    const double cx = layout.width - kSide * u - 42.0 * u;
-    const double top = layout.footer.y + 24.0 * u;
-    const double bottom = top + 40.0 * u;
-    const double half = 9.0 * u;
-    const Vec2 tip(cx, top);
-    const Vec2 base(cx, bottom - 10.0 * u);
-    canvas.shape({tip, {cx - half, bottom}, base}, style.background, Stroke{style.text, 1.2 * u, {}});
-    canvas.shape({tip, base, {cx + half, bottom}}, style.text, Stroke{style.text, 1.2 * u, {}});
-    canvas.text({cx, top - 5.0 * u}, "N", 15.0 * u, style.text, TextAlign::center, true);
     std::string note = "grid north";
     if (scene.true_north_deg) {
       char buf[64];
@@ -365,23 +331,12 @@ struct Painter {
       std::snprintf(buf, sizeof buf, "true N %.1f\u00b0 %s", std::abs(t), t < 0.0 ? "W" : "E");
       note = std::string("grid N; ") + buf;
     }
-    canvas.text({layout.width - kSide * u, bottom + 18.0 * u}, note, 11.5 * u, style.frame, TextAlign::right);
+    draw_north_arrow(canvas, layout.width - kSide * u - 42.0 * u, layout.footer.y + 24.0 * u, u, 0.0, note,
+                     layout.width - kSide * u, furniture());
   }
 };
 
 }  // namespace
-
-double nice_scale_length(double max_length_m) {
-  if (!(max_length_m > 0.0) || !std::isfinite(max_length_m)) {
-    throw InputError("scale bar: expected a positive finite length, got " + format_number(max_length_m));
-  }
-  const double decade = std::pow(10.0, std::floor(std::log10(max_length_m)));
-  // The relative tolerance keeps 100 from becoming 50 through log10 rounding.
-  for (const double f : {5.0, 2.0, 1.0}) {
-    if (f * decade <= max_length_m * (1.0 + 1e-12)) return f * decade;
-  }
-  return decade / 2.0;  // unreachable: max_length_m >= decade (up to rounding)
-}
 
 RouteLayout route_layout(const RouteScene& scene, int width_px) {
   if (width_px < kMinImageWidth || width_px > kMaxImageWidth) {

@@ -14,6 +14,7 @@
 
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/render/canvas.hpp"
+#include "deepguide/render/map_furniture.hpp"  // nice_scale_length
 #include "deepguide/world/obstacle.hpp"
 
 namespace deepguide {
@@ -67,9 +68,6 @@ inline constexpr int kMaxImageWidth = 8000;
 /// The layout for the scene. Throws InputError when there is nothing to draw,
 /// a coordinate is not finite or width_px lies outside [kMinImageWidth, kMaxImageWidth].
 RouteLayout route_layout(const RouteScene& scene, int width_px = 1200);
-
-/// The largest round length (1, 2 or 5 x 10^k m) not above max_length_m (> 0).
-double nice_scale_length(double max_length_m);
 
 /// Draws the scene to `path` (.png or .svg). Atomic: a failure leaves no file.
 /// Throws InputError naming the path on bad input or when writing fails.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -102,10 +103,17 @@ const char* to_string(VerticalSense sense) {
   return "?";
 }
 
-BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptions& options) {
-  gdal::QuietErrors quiet;  // GDAL's warnings (e.g. BAG cornerPoints) are not printed
-  GDALDatasetUniquePtr ds = open_raster(path, options);
-  BathymetryInfo info;
+namespace detail {
+
+bool OpenedBathymetry::is_nodata(double value) const {
+  return std::isnan(value) || (info.has_nodata && same_as_nodata(value, info.nodata, type));
+}
+
+OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOptions& options) {
+  OpenedBathymetry r;
+  r.dataset = open_raster(path, options);
+  GDALDataset* ds = r.dataset.get();
+  BathymetryInfo& info = r.info;
   info.path = path;
   info.driver = ds->GetDriver() != nullptr ? ds->GetDriver()->GetDescription() : "";
   info.width = ds->GetRasterXSize();
@@ -114,7 +122,8 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
     throw InputError(path + ": expected band " + std::to_string(options.band) + ", got a raster with " +
                      std::to_string(ds->GetRasterCount()) + " band(s)");
   }
-  GDALRasterBand& band = *ds->GetRasterBand(options.band);
+  r.band = ds->GetRasterBand(options.band);
+  GDALRasterBand& band = *r.band;
   {
     // A damaged file (e.g. a GeoTIFF cut short) may open but fail on its
     // first and last cells, or report errors (not warnings) while opening:
@@ -131,7 +140,7 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
   }
 
   // CRS: the file's, CF lon/lat axes, or the assumed one.
-  std::unique_ptr<OGRSpatialReference> srs;
+  std::unique_ptr<OGRSpatialReference>& srs = r.srs;
   if (const OGRSpatialReference* file_srs = ds->GetSpatialRef(); file_srs != nullptr && !file_srs->IsEmpty()) {
     srs.reset(file_srs->Clone());
     srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
@@ -153,7 +162,7 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
     CPLFree(wkt);
   }
 
-  double gt[6];
+  double* gt = r.geotransform;
   if (ds->GetGeoTransform(gt) != CE_None) {
     throw InputError(path + ": expected a georeferenced raster (a geotransform), got none");
   }
@@ -180,7 +189,7 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
   const double nodata = band.GetNoDataValue(&has_nodata);
   info.has_nodata = has_nodata != 0;
   if (info.has_nodata) info.nodata = nodata;
-  const GDALDataType type = band.GetRasterDataType();
+  r.type = band.GetRasterDataType();
 
   if (options.sense == VerticalSense::automatic) {
     std::tie(info.sense_used, info.sense_reason) = detect_sense(*ds, band);
@@ -188,23 +197,39 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
     info.sense_used = options.sense;
     info.sense_reason = "given as an option";
   }
-  const double to_depth = info.sense_used == VerticalSense::elevation ? -1.0 : 1.0;
+  r.to_depth = info.sense_used == VerticalSense::elevation ? -1.0 : 1.0;
+  return r;
+}
 
-  // The band is never read whole: windows of whole natural blocks, at most
-  // max_window_cells cells each (at least one block), so any raster that GDAL
-  // can read by blocks fits in memory.
+// The band is never read whole: windows of whole natural blocks, at most
+// max_cells cells each (at least one block), so any raster that GDAL can read
+// by blocks fits in memory.
+WindowSize scan_window(GDALRasterBand& band, int raster_width, int raster_height, std::size_t max_cells,
+                       bool whole_rows) {
   int bx = 0, by = 0;
   band.GetBlockSize(&bx, &by);
-  bx = std::clamp(bx, 1, info.width);
-  by = std::clamp(by, 1, info.height);
+  bx = std::clamp(bx, 1, raster_width);
+  by = std::clamp(by, 1, raster_height);
   const std::size_t block_cells = static_cast<std::size_t>(bx) * static_cast<std::size_t>(by);
-  std::size_t blocks_per_window = std::max<std::size_t>(1, options.max_window_cells / block_cells);
+  std::size_t blocks_per_window = std::max<std::size_t>(1, max_cells / block_cells);
   // Grow the window along x first (whole rows of blocks), then along y.
-  const std::size_t blocks_x = (static_cast<std::size_t>(info.width) + bx - 1) / bx;
+  const std::size_t blocks_x = (static_cast<std::size_t>(raster_width) + bx - 1) / bx;
+  if (whole_rows) blocks_per_window = std::max(blocks_per_window, blocks_x);
   const std::size_t kx = std::min(blocks_per_window, blocks_x);
   const std::size_t ky = std::max<std::size_t>(1, blocks_per_window / kx);
-  const int win_w = static_cast<int>(std::min<std::size_t>(kx * bx, info.width));
-  const int win_h = static_cast<int>(std::min<std::size_t>(ky * by, info.height));
+  return {static_cast<int>(std::min<std::size_t>(kx * bx, raster_width)),
+          static_cast<int>(std::min<std::size_t>(ky * by, raster_height))};
+}
+
+}  // namespace detail
+
+BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptions& options) {
+  gdal::QuietErrors quiet;  // GDAL's warnings (e.g. BAG cornerPoints) are not printed
+  detail::OpenedBathymetry opened = detail::open_bathymetry(path, options);
+  BathymetryInfo info = opened.info;
+  GDALRasterBand& band = *opened.band;
+  const double to_depth = opened.to_depth;
+  const auto [win_w, win_h] = detail::scan_window(band, info.width, info.height, options.max_window_cells);
 
   std::vector<double> buf(static_cast<std::size_t>(win_w) * static_cast<std::size_t>(win_h));
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -221,7 +246,7 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
       const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
       for (std::size_t i = 0; i < n; ++i) {
         const double v = buf[i];
-        if (std::isnan(v) || (info.has_nodata && same_as_nodata(v, nodata, type))) continue;
+        if (opened.is_nodata(v)) continue;
         ++info.valid_cells;
         lo = std::min(lo, v);
         hi = std::max(hi, v);

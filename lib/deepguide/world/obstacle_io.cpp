@@ -23,6 +23,8 @@ namespace {
 // One feature as read, in lon/lat (degrees) before the local frame is known.
 struct GeoRecord {
   InputLocation where;
+  std::int64_t fid = 0;
+  std::vector<std::optional<std::string>> extra;
   std::string id;
   bool is_ellipse = false;
   Eigen::Vector2d center;  // lon, lat
@@ -173,6 +175,46 @@ void read_polygon(const OGRPolygon& poly, OGRCoordinateTransformation& ct, const
   out.push_back(std::move(rec));
 }
 
+// A field as text for ObstacleOrigin::extra; dates and times as ISO 8601
+// (GDAL's own text form is "YYYY/MM/DD HH:MM:SS+TZ").
+std::optional<std::string> text_field(const OGRFeature& f, const std::string& name) {
+  const int i = field_index(f, name);
+  if (i < 0 || !f.IsFieldSetAndNotNull(i)) return std::nullopt;
+  const OGRFieldType type = f.GetFieldDefnRef(i)->GetType();
+  std::string text;
+  if (type == OFTDateTime || type == OFTDate) {
+    int y = 0, mo = 0, d = 0, h = 0, mi = 0, tz = 0;
+    float sec = 0.0F;
+    f.GetFieldAsDateTime(i, &y, &mo, &d, &h, &mi, &sec, &tz);
+    char buf[64];
+    if (type == OFTDate) {
+      std::snprintf(buf, sizeof buf, "%04d-%02d-%02d", y, mo, d);
+    } else {
+      const int ms = static_cast<int>(std::lround(sec * 1000.0F));
+      if (ms % 1000 == 0) {
+        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d", y, mo, d, h, mi, ms / 1000);
+      } else {
+        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d.%03d", y, mo, d, h, mi, ms / 1000, ms % 1000);
+      }
+    }
+    text = buf;
+    // GDAL's TZFlag: 0 unknown, 1 local time, 100 UTC, 100 +- 4n = offset of n quarter hours.
+    if (type == OFTDateTime && tz == 100) {
+      text += "Z";
+    } else if (type == OFTDateTime && tz > 1) {
+      const int quarters = std::abs(tz - 100);
+      std::snprintf(buf, sizeof buf, "%c%02d:%02d", tz > 100 ? '+' : '-', quarters / 4, quarters % 4 * 15);
+      text += buf;
+    }
+  } else {
+    text = f.GetFieldAsString(i);
+    text.erase(0, text.find_first_not_of(" \t"));
+    text.erase(text.find_last_not_of(" \t") + 1);
+  }
+  if (text.empty()) return std::nullopt;
+  return text;
+}
+
 struct SourceRead {
   ObstacleSourceInfo info;
   std::vector<GeoRecord> records;
@@ -222,8 +264,11 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
     }
   }
   const bool several_layers = ds->GetLayerCount() > 1;
+  bool any_spatial = false;
+  for (OGRLayer* layer : ds->GetLayers()) any_spatial = any_spatial || layer->GetGeomType() != wkbNone;
   std::vector<std::string> crs_names;
   for (OGRLayer* layer : ds->GetLayers()) {
+    if (any_spatial && layer->GetGeomType() == wkbNone) continue;
     const OGRSpatialReference* layer_srs = layer->GetSpatialRef();
     std::unique_ptr<OGRSpatialReference> srs;
     std::string crs_name;
@@ -251,6 +296,8 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
                           ""};
       GeoRecord rec;
       rec.where = where;
+      rec.fid = feature->GetFID();
+      for (const std::string& name : options.extra_fields) rec.extra.push_back(text_field(*feature, name));
       for (const char* key : {"id", "name"}) {
         const int i = feature->GetFieldIndex(key);
         if (i >= 0 && feature->IsFieldSetAndNotNull(i)) {
@@ -334,6 +381,8 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
   LoadedObstacles out{{}, *frame, {}};
   for (SourceRead& src : sources) {
     for (const GeoRecord& r : src.records) {
+      ObstacleOrigin origin{out.sources.size(), r.fid, r.where, r.center, r.heading_deg, r.extra};
+      (r.is_ellipse ? out.ellipse_origins : out.polygon_origins).push_back(std::move(origin));
       if (r.is_ellipse) {
         EllipticCylinder c;
         c.id = r.id;

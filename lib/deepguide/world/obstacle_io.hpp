@@ -9,10 +9,18 @@
 // Decisions (docs/FORMATS.md): `semi_minor_m` defaults to `semi_major_m` (a
 // circle) and `orientation_deg` to 0; a source without a CRS is read as
 // lon/lat WGS 84 unless ReadOptions::source_crs says otherwise.
+// Callers that need more of a feature than the obstacle model (the obstacle
+// store: contact time, mission) name extra fields and get them back as text in
+// LoadedObstacles::*_origins, with date/time fields as ISO 8601. In a source
+// that also has layers with geometry, layers without any (a GeoPackage's
+// attribute tables) are skipped; a lone geometry-less layer stays an error.
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "deepguide/core/error.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
@@ -23,6 +31,8 @@ struct ObstacleReadOptions {
   std::string local_crs;
   /// CRS for sources that carry none (CSV, bare GeoJSON). Empty = EPSG:4326.
   std::string source_crs;
+  /// Extra fields to return per feature as text (ObstacleOrigin::extra), e.g. "time".
+  std::vector<std::string> extra_fields = {};
 };
 
 struct ObstacleSourceInfo {
@@ -33,10 +43,23 @@ struct ObstacleSourceInfo {
   std::size_t polygons = 0;
 };
 
+/// Where one obstacle came from, and what else its feature carried.
+struct ObstacleOrigin {
+  std::size_t source = 0;  ///< index into LoadedObstacles::sources
+  std::int64_t fid = 0;    ///< OGR feature id in its layer
+  InputLocation where;     ///< file and feature (field empty), for messages
+  Eigen::Vector2d lonlat{0.0, 0.0};  ///< Points: the centre as read, lon/lat, before the local frame
+  double heading_deg = 0.0;          ///< Points: orientation_deg as read (0 when absent)
+  /// One per ObstacleReadOptions::extra_fields; nullopt when absent, null or empty.
+  std::vector<std::optional<std::string>> extra = {};
+};
+
 struct LoadedObstacles {
   ObstacleSet obstacles;
   LocalFrame frame;
   std::vector<ObstacleSourceInfo> sources;
+  std::vector<ObstacleOrigin> ellipse_origins = {};  ///< parallel to obstacles.ellipses
+  std::vector<ObstacleOrigin> polygon_origins = {};  ///< parallel to obstacles.polygons
 };
 
 /// Reads every feature of every layer of each path into one set in one local

@@ -1,0 +1,52 @@
+// deepguide render chart FILE... [--depth M] [--clearance M] [--obstacles FILE...] -o OUT.png|svg [--width PX]
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "commands.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/render/chart_scene.hpp"
+#include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
+
+namespace deepguide::app {
+namespace {
+
+struct RenderChartOptions {
+  ChartRenderOptions chart;
+  std::string output;
+  double depth = 0.0;
+};
+
+}  // namespace
+
+void register_render_chart(CLI::App& render) {
+  auto o = std::make_shared<RenderChartOptions>();
+  CLI::App* cmd = render.add_subcommand(
+      "chart", "Draw a sea chart: depth shading, land, hazards, no-go area at a depth, scale bar, north arrow");
+  cmd->add_option("FILE", o->chart.charts, "Charts: bathymetry rasters, S-57 cells (.000), hazard files")->required();
+  cmd->add_option("-o,--output", o->output, "Image to write: .png or .svg")->required();
+  CLI::Option* depth = cmd->add_option("--depth", o->depth, "Operating depth (m, positive down): draw the no-go area");
+  cmd->add_option("--clearance", o->chart.clearance_m, "Vertical clearance above the sea floor and hazards (m)")
+      ->capture_default_str();
+  cmd->add_option("--obstacles", o->chart.obstacles, "Further obstacle files to draw (GeoJSON, GeoPackage, ...)")
+      ->expected(1, -1);
+  cmd->add_option("--crs", o->chart.local_crs, "Local frame, a projected CRS (default: UTM zone of the first chart)");
+  cmd->add_option("--width", o->chart.width_px, "Image width in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(kMinImageWidth, kMaxImageWidth));
+  cmd->add_option("--title", o->chart.title, "Title line (default: the files, the CRS and the depth)");
+  cmd->callback([o, depth] {
+    if (depth->count() > 0) {
+      if (!std::isfinite(o->depth)) throw InputError("--depth: expected an operating depth >= 0 m, got a non-number");
+      o->chart.depth_m = o->depth;
+    }
+    const ChartLayout layout = render_chart(o->chart, o->output);
+    std::printf("wrote            %s (%d x %d px, %s", o->output.c_str(), layout.width, layout.height,
+                layout.frame_id.c_str());
+    if (std::isfinite(o->chart.depth_m)) std::printf(", %zu no-go polygon(s)", layout.no_go_polygons);
+    std::printf(", %zu hazard(s))\n", layout.hazards);
+  });
+}
+
+}  // namespace deepguide::app

@@ -1,0 +1,498 @@
+#include "deepguide/render/chart_scene.hpp"
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <set>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/render/map_furniture.hpp"
+#include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
+#include "deepguide/world/bathymetry.hpp"
+#include "deepguide/world/bathymetry_raster.hpp"
+#include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/no_go.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/s57_chart.hpp"
+
+namespace deepguide {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Design units (at 1200 px wide), as in the route chart.
+constexpr double kSide = 24.0;
+constexpr double kTitleBand = 52.0;
+constexpr double kFooter = 110.0;
+constexpr double kScaleBarMax = 250.0;
+constexpr double kLegendX = 330.0;
+constexpr int kTargetBands = 7;
+
+std::uint32_t pack(const Rgba& c) {
+  auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+  return 0xff000000u | byte(c.r) << 16 | byte(c.g) << 8 | byte(c.b);
+}
+
+// Round band step (1, 2, 2.5 or 5 x 10^k) giving about kTargetBands bands over [lo, hi].
+std::vector<double> band_edges(double lo, double hi) {
+  if (!(hi > lo)) hi = lo + 1.0;
+  const double raw = (hi - lo) / kTargetBands;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10.0 * decade;
+  for (const double f : {1.0, 2.0, 2.5, 5.0}) {
+    if (f * decade >= raw * (1.0 - 1e-12)) {
+      step = f * decade;
+      break;
+    }
+  }
+  const double first = std::floor(lo / step) * step;
+  std::vector<double> edges{first};
+  while (edges.back() < hi - 1e-9) edges.push_back(edges.back() + step);
+  if (edges.size() < 2) edges.push_back(first + step);
+  return edges;
+}
+
+struct RasterSource {
+  std::string path;
+  BathymetryInfo info;
+};
+
+// Box in the local frame around a raster: its outline sampled along the edges.
+WorldBox raster_box(const RasterSource& r, const LocalFrame& frame) {
+  WorldBox box;
+  const LonLatExtent& e = r.info.extent;
+  OGRSpatialReference src;
+  src.importFromWkt(r.info.crs_wkt.c_str());
+  src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  OGRSpatialReference local;
+  local.importFromWkt(frame.wkt().c_str());
+  local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  if (src.IsSame(&local)) {
+    gdal::QuietErrors quiet;
+    detail::OpenedBathymetry o = detail::open_bathymetry(r.path, {});
+    const double* gt = o.geotransform;
+    box.extend(Vec2(gt[0], gt[3]));
+    box.extend(Vec2(gt[0] + gt[1] * r.info.width, gt[3] + gt[5] * r.info.height));
+    return box;
+  }
+  constexpr int kSteps = 20;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double f = static_cast<double>(i) / kSteps;
+    for (const Eigen::Vector2d& ll : {Eigen::Vector2d(e.west + f * (e.east - e.west), e.south),
+                                      Eigen::Vector2d(e.west + f * (e.east - e.west), e.north),
+                                      Eigen::Vector2d(e.west, e.south + f * (e.north - e.south)),
+                                      Eigen::Vector2d(e.east, e.south + f * (e.north - e.south))}) {
+      const Vec2 p = frame.from_lonlat(ll);
+      if (p.allFinite()) box.extend(p);
+    }
+  }
+  return box;
+}
+
+struct Shading {
+  std::vector<double> edges;
+  std::vector<std::uint32_t> colors;
+  std::uint32_t land = 0, nodata = 0;
+
+  std::uint32_t color(double depth) const {
+    if (depth <= 0.0 || colors.empty()) return land;
+    const auto it = std::upper_bound(edges.begin(), edges.end(), depth);
+    const std::size_t band = it == edges.begin() ? 0 : static_cast<std::size_t>(it - edges.begin()) - 1;
+    return colors[std::min(band, colors.size() - 1)];
+  }
+};
+
+// Paints one raster into the map image (width x height pixels over `map`):
+// one decimated read of the window the map shows, then nearest cells.
+void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>& land, int width, int height, const PixelRect& map,
+                  const ViewTransform& view, const LocalFrame& frame, const std::string& path, const Shading& shading) {
+  gdal::QuietErrors quiet;
+  detail::OpenedBathymetry r = detail::open_bathymetry(path, {});
+  const double* gt = r.geotransform;
+  const int rw = r.info.width, rh = r.info.height;
+  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  std::vector<double> xs(n), ys(n);
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      const Vec2 w = view.to_world({map.x + (i + 0.5) * map.width / width, map.y + (j + 0.5) * map.height / height});
+      xs[static_cast<std::size_t>(j) * width + i] = w.x();
+      ys[static_cast<std::size_t>(j) * width + i] = w.y();
+    }
+  }
+  OGRSpatialReference local;
+  local.importFromWkt(frame.wkt().c_str());
+  local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  if (!local.IsSame(r.srs.get())) {
+    const gdal::TransformPtr ct = gdal::make_transform(local, *r.srs);
+    if (!ct) throw InputError(path + ": expected a CRS PROJ can transform to " + frame.id() + ", got " + r.info.crs);
+    std::vector<int> ok(n, 0);
+    ct->Transform(static_cast<int>(n), xs.data(), ys.data(), nullptr, ok.data());
+    for (std::size_t k = 0; k < n; ++k) {
+      if (ok[k] == 0) xs[k] = ys[k] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  // Raster columns and rows (continuous) of every map pixel, and the window they span.
+  double c0 = INFINITY, c1 = -INFINITY, r0 = INFINITY, r1 = -INFINITY;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double col = (xs[k] - gt[0]) / gt[1];
+    const double row = (ys[k] - gt[3]) / gt[5];
+    xs[k] = col;
+    ys[k] = row;
+    if (!(col >= 0.0 && col < rw && row >= 0.0 && row < rh)) continue;
+    c0 = std::min(c0, col), c1 = std::max(c1, col), r0 = std::min(r0, row), r1 = std::max(r1, row);
+  }
+  if (!(c1 >= c0)) return;  // the raster lies outside the map
+  const int x0 = static_cast<int>(c0), x1 = std::min(rw, static_cast<int>(c1) + 1);
+  const int y0 = static_cast<int>(r0), y1 = std::min(rh, static_cast<int>(r1) + 1);
+  const int win_w = x1 - x0, win_h = y1 - y0;
+  // Half again the map's pixels: enough that no map pixel misses a cell it would show.
+  const int bw = std::min(win_w, width + width / 2 + 1);
+  const int bh = std::min(win_h, height + height / 2 + 1);
+  std::vector<float> buf(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh));
+  GDALRasterIOExtraArg extra;
+  INIT_RASTERIO_EXTRA_ARG(extra);
+  extra.eResampleAlg = GRIORA_NearestNeighbour;
+  if (r.band->RasterIO(GF_Read, x0, y0, win_w, win_h, buf.data(), bw, bh, GDT_Float32, 0, 0, &extra) != CE_None) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected readable cells" + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const double col = xs[k], row = ys[k];
+    if (!(col >= x0 && col < x1 && row >= y0 && row < y1)) continue;
+    const int bx = std::min(bw - 1, static_cast<int>((col - x0) * bw / win_w));
+    const int by = std::min(bh - 1, static_cast<int>((row - y0) * bh / win_h));
+    const double v = buf[static_cast<std::size_t>(by) * bw + bx];
+    const double depth = v * r.to_depth;
+    image[k] = r.is_nodata(v) ? shading.nodata : shading.color(depth);
+    land[k] = r.is_nodata(v) || depth <= 0.0 ? image[k] : 0u;
+  }
+}
+
+struct Scene {
+  explicit Scene(const ChartRenderOptions& o) : options(o) {}
+  const ChartRenderOptions& options;
+  const ChartStyle& style = options.style;
+  std::vector<RasterSource> rasters;
+  std::vector<std::string> hazard_files;
+  std::vector<std::string> s57_files;
+  ObstacleSet hazards;
+  ObstacleSet obstacles;
+  std::set<std::string> blocking;  // ids of hazards and obstacles the vehicle cannot pass over
+  std::vector<PolygonObstacle> no_go;
+  bool has_depth = false;
+};
+
+struct Painter {
+  Canvas& canvas;
+  const Scene& scene;
+  const ChartLayout& layout;
+  const LocalFrame& frame;
+  const ChartStyle& style = scene.style;
+  double u = layout.unit;
+
+  Vec2 px(const Vec2& w) const { return layout.view.to_pixel(w); }
+
+  std::vector<std::vector<Vec2>> polygon_px(const BgPolygon& p) const {
+    std::vector<std::vector<Vec2>> rings;
+    auto ring = [&](const auto& r) {
+      std::vector<Vec2> out;
+      for (const BgPoint& q : r) out.push_back(px(to_eigen(q)));
+      rings.push_back(std::move(out));
+    };
+    ring(p.outer());
+    for (const auto& inner : p.inners()) ring(inner);
+    return rings;
+  }
+
+  std::vector<Vec2> ellipse_px(const Ellipse& e) const {
+    const double perimeter_px = 2.0 * kPi * e.a * layout.view.scale();
+    const int n = std::clamp(static_cast<int>(std::ceil(perimeter_px / 3.0)), 36, 2048);
+    std::vector<Vec2> out;
+    for (int i = 0; i < n; ++i) out.push_back(px(e.point_at(2.0 * kPi * i / n)));
+    return out;
+  }
+
+  Stroke danger_line(const std::string& id) const {
+    const bool blocks = !scene.has_depth || scene.blocking.count(id) > 0;
+    return {blocks && scene.has_depth ? style.no_go : blocks ? style.text : style.passable, 1.3 * u, {2.0 * u, 2.5 * u}};
+  }
+
+  // The water image, and land and no-data cells alone (transparent elsewhere)
+  // to paint again over the no-go fill: land needs no red to say it is no-go.
+  int image_w() const { return std::max(1, static_cast<int>(std::lround(layout.map.width))); }
+  int image_h() const { return std::max(1, static_cast<int>(std::lround(layout.map.height))); }
+
+  void map(const Shading& sh) {
+    canvas.fill_rect(layout.map, style.sea);
+    canvas.clip(layout.map);
+    const int w = image_w(), h = image_h();
+    std::vector<std::uint32_t> water, land;
+    if (!scene.rasters.empty()) {
+      water.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), pack(style.sea));
+      land.assign(water.size(), 0u);
+      for (const RasterSource& r : scene.rasters) {
+        shade_raster(water, land, w, h, layout.map, layout.view, frame, r.path, sh);
+      }
+      canvas.image(layout.map, w, h, water);
+    }
+    for (const PolygonObstacle& p : scene.no_go) {
+      canvas.fill_rings(polygon_px(p.footprint), {style.no_go.r, style.no_go.g, style.no_go.b, 0.28});
+    }
+    if (!land.empty()) canvas.image(layout.map, w, h, land);
+    for (const PolygonObstacle& p : scene.no_go) {
+      for (const auto& ring : polygon_px(p.footprint)) {
+        canvas.stroke_polyline(ring, Stroke{style.no_go, 1.2 * u, {}}, true);
+      }
+    }
+    auto draw = [&](const ObstacleSet& set, const Rgba& fill) {
+      for (const PolygonObstacle& p : set.polygons) {
+        const auto rings = polygon_px(p.footprint);
+        canvas.fill_rings(rings, {fill.r, fill.g, fill.b, 0.15});
+        for (const auto& ring : rings) canvas.stroke_polyline(ring, danger_line(p.id), true);
+      }
+      for (const EllipticCylinder& c : set.ellipses) {
+        const Vec2 centre = px(c.footprint.center);
+        // Small hazards would vanish: a danger circle a few pixels out marks them.
+        const double r = std::max(c.footprint.a * layout.view.scale() + 4.0 * u, 7.0 * u);
+        canvas.circle(centre, r, Rgba{1.0, 1.0, 1.0, 0.25}, danger_line(c.id));
+        canvas.fill_rings({ellipse_px(c.footprint)}, fill);
+        canvas.circle(centre, 1.6 * u, fill, std::nullopt);
+      }
+    };
+    draw(scene.hazards, style.hazard);
+    draw(scene.obstacles, style.obstacle);
+    labels(scene.hazards, style.hazard);
+    labels(scene.obstacles, style.obstacle);
+    canvas.unclip();
+    canvas.stroke_rect(layout.map, Stroke{style.frame, 1.0 * u, {}});
+  }
+
+  void labels(const ObstacleSet& set, const Rgba& color) {
+    const Rgba halo{1.0, 1.0, 1.0, 0.85};
+    for (const EllipticCylinder& c : set.ellipses) {
+      const double r = std::max(c.footprint.a * layout.view.scale() + 4.0 * u, 7.0 * u);
+      canvas.text_with_halo(px(c.footprint.center) + Vec2(r + 3.0 * u, 4.0 * u), c.id, 11.5 * u, color, halo, 2.5 * u);
+    }
+    for (const PolygonObstacle& p : set.polygons) {
+      WorldBox box;
+      for (const BgPoint& q : p.footprint.outer()) box.extend(to_eigen(q));
+      canvas.text_with_halo(px(box.center()) + Vec2(0.0, 4.0 * u), p.id, 11.5 * u, color, halo, 2.5 * u,
+                            TextAlign::center);
+    }
+  }
+
+  void title(const std::string& text) {
+    const double room = layout.width - 2.0 * kSide * u;
+    double size = 22.0 * u;
+    const double w = canvas.text_width(text, size, true);
+    if (w > room) size *= room / w;
+    canvas.text({kSide * u, 35.0 * u}, text, size, style.text, TextAlign::left, true);
+  }
+
+  FurnitureColors furniture() const { return {style.text, style.background, style.frame}; }
+
+  void legend(const Shading& sh) {
+    double x = kLegendX * u;
+    const double size = 13.0 * u;
+    if (!sh.edges.empty()) {
+      const double y = layout.footer.y + 22.0 * u;
+      canvas.text({x, y + 12.0 * u}, "depth m", size, style.text);
+      x += canvas.text_width("depth m", size) + 10.0 * u;
+      const double bw = std::min(38.0 * u, 300.0 * u / static_cast<double>(sh.colors.size()));
+      for (std::size_t i = 0; i < layout.band_colors.size(); ++i) {
+        canvas.fill_rect({x + bw * i, y, bw, 16.0 * u}, layout.band_colors[i]);
+      }
+      canvas.stroke_rect({x, y, bw * layout.band_colors.size(), 16.0 * u}, Stroke{style.frame, 1.0 * u, {}});
+      for (std::size_t i = 0; i < sh.edges.size(); ++i) {
+        canvas.text({x + bw * i, y + 30.0 * u}, format_number(sh.edges[i]), 11.5 * u, style.text, TextAlign::center);
+      }
+    }
+    struct Entry {
+      Rgba fill;
+      std::optional<Stroke> outline;
+      std::string label;
+    };
+    std::vector<Entry> entries;
+    if (!scene.rasters.empty()) {
+      entries.push_back({style.land, Stroke{style.frame, 1.0 * u, {}}, "land"});
+      entries.push_back({style.nodata, Stroke{style.frame, 1.0 * u, {}}, "no data"});
+    }
+    if (scene.has_depth && !scene.rasters.empty()) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "no-go at %g m (+%g m)", options_depth(), scene.options.clearance_m);
+      entries.push_back({{style.no_go.r, style.no_go.g, style.no_go.b, 0.30}, Stroke{style.no_go, 1.2 * u, {}}, buf});
+    }
+    if (!scene.hazards.empty()) entries.push_back({style.hazard, std::nullopt, "hazard"});
+    if (!scene.obstacles.empty()) entries.push_back({style.obstacle, std::nullopt, "obstacle"});
+    double ex = kLegendX * u;
+    const double ey = layout.footer.y + 74.0 * u;
+    for (const Entry& e : entries) {
+      canvas.shape({{ex, ey}, {ex + 22.0 * u, ey}, {ex + 22.0 * u, ey + 14.0 * u}, {ex, ey + 14.0 * u}}, e.fill,
+                   e.outline);
+      canvas.text({ex + 28.0 * u, ey + 12.0 * u}, e.label, size, style.text);
+      ex += 28.0 * u + canvas.text_width(e.label, size) + 18.0 * u;
+    }
+  }
+
+  double options_depth() const { return scene.options.depth_m; }
+
+  void north_arrow() {
+    const double t = layout.true_north_deg;
+    char buf[80];
+    std::snprintf(buf, sizeof buf, "true north (%.1f\u00b0 %s of grid)", std::abs(t), t < 0.0 ? "W" : "E");
+    draw_north_arrow(canvas, layout.width - kSide * u - 60.0 * u, layout.footer.y + 24.0 * u, u, t, buf,
+                     layout.width - kSide * u, furniture());
+  }
+};
+
+std::string default_title(const ChartRenderOptions& o, const std::string& frame_id) {
+  std::string names;
+  for (const std::string& f : o.charts) names += (names.empty() ? "" : ", ") + std::filesystem::path(f).filename().string();
+  std::string t = names + "  (" + frame_id + ")";
+  if (!std::isnan(o.depth_m)) t += ", no-go at " + format_number(o.depth_m) + " m";
+  return t;
+}
+
+}  // namespace
+
+Rgba depth_band_color(const ChartStyle& style, std::size_t i, std::size_t n) {
+  const double f = n > 1 ? static_cast<double>(i) / static_cast<double>(n - 1) : 0.0;
+  // Slightly faster darkening at first: the shallow bands, where it matters, stay apart.
+  const double g = std::pow(f, 0.85);
+  return {style.shallow.r + g * (style.deep.r - style.shallow.r), style.shallow.g + g * (style.deep.g - style.shallow.g),
+          style.shallow.b + g * (style.deep.b - style.shallow.b), 1.0};
+}
+
+ChartLayout render_chart(const ChartRenderOptions& options, const std::string& path) {
+  image_format_for(path);  // the cheapest mistake first
+  if (options.width_px < kMinImageWidth || options.width_px > kMaxImageWidth) {
+    throw InputError("--width: expected " + std::to_string(kMinImageWidth) + " to " + std::to_string(kMaxImageWidth) +
+                     " pixels, got " + std::to_string(options.width_px));
+  }
+  if (!std::isnan(options.depth_m) && (!std::isfinite(options.depth_m) || options.depth_m < 0.0)) {
+    throw InputError("--depth: expected an operating depth >= 0 m, got " + format_number(options.depth_m));
+  }
+  if (!std::isfinite(options.clearance_m) || options.clearance_m < 0.0) {
+    throw InputError("--clearance: expected a vertical clearance >= 0 m, got " + format_number(options.clearance_m));
+  }
+  if (options.charts.empty()) throw InputError("render chart: expected at least one chart file");
+
+  Scene scene(options);
+  scene.has_depth = !std::isnan(options.depth_m);
+  for (const std::string& f : options.charts) {
+    switch (chart_kind(f)) {
+      case ChartKind::raster: scene.rasters.push_back({f, inspect_bathymetry(f)}); break;
+      case ChartKind::s57: scene.s57_files.push_back(f); break;
+      case ChartKind::vector: scene.hazard_files.push_back(f); break;
+    }
+  }
+
+  // One local frame for everything: the user's, else the first chart's UTM zone.
+  auto frame = [&]() -> LocalFrame {
+    if (!options.local_crs.empty()) return LocalFrame::from_user_crs(options.local_crs);
+    const std::string& first = options.charts.front();
+    for (const RasterSource& r : scene.rasters) {
+      if (r.path == first) {
+        return LocalFrame::utm_for(0.5 * (r.info.extent.west + r.info.extent.east),
+                                   0.5 * (r.info.extent.south + r.info.extent.north));
+      }
+    }
+    if (!scene.s57_files.empty() && scene.s57_files.front() == first) return s57_local_frame(summarize_s57(first));
+    return load_obstacles({first}).frame;
+  }();
+  const ObstacleReadOptions read{frame.wkt(), ""};
+  if (!scene.hazard_files.empty()) scene.hazards = load_obstacles(scene.hazard_files, read).obstacles;
+  for (const std::string& f : scene.s57_files) {
+    S57Hazards h = s57_hazards(f, frame);
+    for (auto& c : h.obstacles.ellipses) scene.hazards.ellipses.push_back(std::move(c));
+    for (auto& p : h.obstacles.polygons) scene.hazards.polygons.push_back(std::move(p));
+  }
+  if (!options.obstacles.empty()) scene.obstacles = load_obstacles(options.obstacles, read).obstacles;
+  if (scene.has_depth) {
+    for (const ObstacleSet* set : {&scene.hazards, &scene.obstacles}) {
+      ObstacleSet left = *set;
+      remove_passable(left, options.depth_m, options.clearance_m);
+      for (const auto& c : left.ellipses) scene.blocking.insert(c.id);
+      for (const auto& p : left.polygons) scene.blocking.insert(p.id);
+    }
+    NoGoOptions n;
+    n.operating_depth_m = options.depth_m;
+    n.vertical_clearance_m = options.clearance_m;
+    for (const RasterSource& r : scene.rasters) {
+      NoGoArea a = compute_no_go(r.path, frame, n);
+      for (auto& p : a.polygons) scene.no_go.push_back(std::move(p));
+    }
+  }
+
+  // What the map shows: the rasters, the hazards and the obstacles.
+  WorldBox content;
+  for (const RasterSource& r : scene.rasters) content.extend(raster_box(r, frame));
+  for (const ObstacleSet* set : {&scene.hazards, &scene.obstacles}) {
+    for (const auto& c : set->ellipses) {
+      content.extend(c.footprint.center - Vec2(c.footprint.a, c.footprint.a));
+      content.extend(c.footprint.center + Vec2(c.footprint.a, c.footprint.a));
+    }
+    for (const auto& p : set->polygons) {
+      for (const BgPoint& q : p.footprint.outer()) content.extend(to_eigen(q));
+    }
+  }
+  if (content.empty() || !(content.width() > 0.0 || content.height() > 0.0)) {
+    throw InputError(options.charts.front() + ": expected something to draw, got an empty chart");
+  }
+
+  ChartLayout l;
+  l.frame_id = frame.id();
+  l.extent = scene.rasters.empty() ? content.padded(0.05 * std::max(content.width(), content.height())) : content;
+  l.width = options.width_px;
+  l.unit = options.width_px / 1200.0;
+  const double u = l.unit;
+  l.map = {kSide * u, kTitleBand * u, options.width_px - 2.0 * kSide * u, 0.0};
+  const double aspect = std::clamp(l.extent.height() / std::max(l.extent.width(), 1e-9), 0.45, 1.5);
+  l.map.height = std::round(l.map.width * aspect);
+  l.footer = {0.0, l.map.y + l.map.height, static_cast<double>(options.width_px), kFooter * u};
+  l.height = static_cast<int>(std::ceil(l.footer.y + l.footer.height));
+  l.view = ViewTransform(l.extent, l.map);
+  l.true_north_deg = 90.0 - frame.true_north_angle(l.extent.center()) * 180.0 / kPi;
+  l.no_go_polygons = scene.no_go.size();
+  l.hazards = scene.hazards.size();
+
+  Shading sh;
+  sh.land = pack(options.style.land);
+  sh.nodata = pack(options.style.nodata);
+  if (!scene.rasters.empty()) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const RasterSource& r : scene.rasters) {
+      if (std::isnan(r.info.min_depth_m)) continue;
+      lo = std::min(lo, std::max(0.0, r.info.min_depth_m));
+      hi = std::max(hi, r.info.max_depth_m);
+    }
+    if (hi > 0.0) {
+      sh.edges = band_edges(lo, hi);
+      for (std::size_t i = 0; i + 1 < sh.edges.size(); ++i) {
+        l.band_colors.push_back(depth_band_color(options.style, i, sh.edges.size() - 1));
+        sh.colors.push_back(pack(l.band_colors.back()));
+      }
+      l.band_edges = sh.edges;
+    }
+  }
+
+  Canvas canvas(path, l.width, l.height);
+  canvas.fill_rect({0.0, 0.0, static_cast<double>(l.width), static_cast<double>(l.height)}, options.style.background);
+  Painter painter{canvas, scene, l, frame, options.style, l.unit};
+  painter.map(sh);
+  painter.title(options.title.empty() ? default_title(options, l.frame_id) : options.title);
+  draw_scale_bar(canvas, l.view.scale(), kSide * u, l.footer.y + 44.0 * u, kScaleBarMax * u, u, painter.furniture());
+  painter.legend(sh);
+  painter.north_arrow();
+  canvas.finish();
+  return l;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,294 @@
+#include "deepguide/vehicle/vehicle_params.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace {
+
+// One numeric key of the file. Values are checked in SI against (lo, hi];
+// messages quote the value in the file's unit.
+enum class Unit { si, deg, kn };
+
+// File unit <-> SI, written as the defaults are (deg_to_rad(25.0), 4.0 * knot)
+// so that a file repeating a default gives the default to the last bit.
+double to_si(Unit u, double v) {
+  return u == Unit::deg ? deg_to_rad(v) : u == Unit::kn ? v * kMetresPerSecondPerKnot : v;
+}
+double from_si(Unit u, double v) {
+  return u == Unit::deg ? rad_to_deg(v) : u == Unit::kn ? v / kMetresPerSecondPerKnot : v;
+}
+
+struct Field {
+  const char* key;   // in the file, with its unit
+  Unit scale;        // the file's unit
+  double& (*ref)(VehicleParams&);
+  double lo;         // exclusive
+  double hi;         // inclusive
+  const char* what;  // "a speed", ...
+};
+
+constexpr Unit kSI = Unit::si, kDeg = Unit::deg, kKn = Unit::kn;
+
+// Section "" = top level, "autopilot" = the nested mapping. Two keys may fill
+// one field (knots or m/s); giving both is an error.
+const Field kFields[] = {
+    {"length_m", kSI, [](VehicleParams& p) -> double& { return p.length_m; }, 0.0, 1000.0, "a length in metres"},
+    {"mass_kg", kSI, [](VehicleParams& p) -> double& { return p.mass_kg; }, 0.0, 1e7, "a mass in kg"},
+    {"cruise_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.cruise_speed_mps; }, 0.0, 20.0,
+     "a speed in m/s"},
+    {"cruise_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.cruise_speed_mps; }, 0.0, 20.0,
+     "a speed in knots"},
+    {"max_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0,
+     "a speed in m/s"},
+    {"max_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0,
+     "a speed in knots"},
+    {"speed_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.speed_time_constant_s; }, 0.0,
+     3600.0, "a time constant in seconds"},
+    {"nomoto_gain_per_s", kSI, [](VehicleParams& p) -> double& { return p.nomoto_gain_per_s; }, 0.0, 10.0,
+     "a Nomoto gain K in 1/s"},
+    {"nomoto_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.nomoto_time_constant_s; }, 0.0,
+     3600.0, "a time constant in seconds"},
+    {"max_rudder_deg", kDeg, [](VehicleParams& p) -> double& { return p.max_rudder; }, 0.0, deg_to_rad(90.0),
+     "a rudder angle in degrees"},
+    {"max_rudder_rate_deg_s", kDeg, [](VehicleParams& p) -> double& { return p.max_rudder_rate; }, 0.0,
+     deg_to_rad(1000.0), "a rudder rate in deg/s"},
+    {"rudder_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.rudder_time_constant_s; }, 0.0,
+     60.0, "a time constant in seconds"},
+    {"max_turn_rate_deg_s", kDeg, [](VehicleParams& p) -> double& { return p.max_turn_rate; }, 0.0, deg_to_rad(180.0),
+     "a turning rate in deg/s"},
+    {"max_vertical_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.max_vertical_speed_mps; }, 0.0,
+     20.0, "a vertical speed in m/s"},
+    {"depth_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.depth_time_constant_s; }, 0.0,
+     3600.0, "a time constant in seconds"},
+    {"max_depth_m", kSI, [](VehicleParams& p) -> double& { return p.max_depth_m; }, 0.0, 11000.0,
+     "a depth in metres"},
+    {"step_s", kSI, [](VehicleParams& p) -> double& { return p.step_s; }, 0.0, 1.0, "a time step in seconds"},
+};
+const Field kAutopilotFields[] = {
+    {"natural_frequency_rad_s", kSI,
+     [](VehicleParams& p) -> double& { return p.autopilot.natural_frequency_rad_s; }, 0.0, 10.0,
+     "a natural frequency in rad/s"},
+    {"damping_ratio", kSI, [](VehicleParams& p) -> double& { return p.autopilot.damping_ratio; }, 0.0, 10.0,
+     "a damping ratio"},
+    {"reference_natural_frequency_rad_s", kSI,
+     [](VehicleParams& p) -> double& { return p.autopilot.reference_natural_frequency_rad_s; }, 0.0, 10.0,
+     "a natural frequency in rad/s"},
+    {"max_reference_turn_rate_deg_s", kDeg,
+     [](VehicleParams& p) -> double& { return p.autopilot.max_reference_turn_rate; }, 0.0, deg_to_rad(180.0),
+     "a turning rate in deg/s"},
+};
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+std::string range_text(const Field& f) {
+  return f.what + std::string(" > 0 and <= ") + number(from_si(f.scale, f.hi));
+}
+
+// Where a key sits: "line N" from the file, or empty for a default value.
+using KeyLines = std::map<std::string, std::string>;
+
+std::string line_of(const YAML::Mark& mark) {
+  return mark.line >= 0 ? "line " + std::to_string(mark.line + 1) : std::string();
+}
+
+// Checks every field against its range and the pairs against each other. `key_of`
+// gives the key the user wrote for a field (so the message quotes it).
+void check(VehicleParams p, const std::string& source, const KeyLines& lines,
+           const std::function<const Field*(const char*)>& key_of) {
+  auto where = [&](const std::string& key) {
+    const auto it = lines.find(key);
+    return InputLocation{source, it == lines.end() ? std::string() : it->second, key};
+  };
+  auto check_fields = [&](const auto& fields, const std::string& prefix) {
+    for (const Field& f : fields) {
+      const Field* used = key_of(f.key);
+      if (used != &f) continue;  // another key fills this field (or this is the alternative)
+      const double v = f.ref(p);
+      if (!std::isfinite(v) || v <= f.lo || v > f.hi) {
+        throw input_error(where(prefix + f.key), range_text(f), number(from_si(f.scale, v)));
+      }
+    }
+  };
+  check_fields(kFields, "");
+  check_fields(kAutopilotFields, "autopilot.");
+
+  const Field* cruise = key_of("cruise_speed_mps");
+  const Field* max = key_of("max_speed_mps");
+  if (p.cruise_speed_mps > p.max_speed_mps) {
+    throw input_error(where(cruise->key), std::string("cruise speed <= ") + max->key + " (" +
+                                              number(from_si(max->scale, p.max_speed_mps)) + ")",
+                      number(from_si(cruise->scale, p.cruise_speed_mps)));
+  }
+  // RK4 on a first-order lag is accurate to about (h/T)^4 / 120; half the smallest
+  // time constant keeps that under 1e-3 and far inside the stability bound 2.78 T.
+  const double smallest = std::min({p.nomoto_time_constant_s, p.rudder_time_constant_s, p.speed_time_constant_s,
+                                    p.depth_time_constant_s});
+  if (p.step_s > 0.5 * smallest) {
+    throw input_error(where("step_s"), "a step <= half the smallest time constant (" + number(0.5 * smallest) + " s)",
+                      number(p.step_s));
+  }
+  const double capability = std::min(p.max_turn_rate, p.nomoto_gain_per_s * p.max_rudder);
+  if (p.autopilot.max_reference_turn_rate > capability) {
+    throw input_error(where("autopilot.max_reference_turn_rate_deg_s"),
+                      "a reference turning rate <= what the vehicle can turn, min(max_turn_rate_deg_s, K x "
+                      "max_rudder_deg) = " + number(rad_to_deg(capability)) + " deg/s",
+                      number(rad_to_deg(p.autopilot.max_reference_turn_rate)));
+  }
+}
+
+const Field* field_named(const char* key) {
+  for (const Field& f : kFields)
+    if (std::string(f.key) == key) return &f;
+  for (const Field& f : kAutopilotFields)
+    if (std::string(f.key) == key) return &f;
+  return nullptr;
+}
+
+std::string known_keys(const Field* begin, const Field* end, const char* extra) {
+  std::string s;
+  for (const Field* f = begin; f != end; ++f) s += (s.empty() ? "" : ", ") + std::string(f->key);
+  if (extra) s += std::string(", ") + extra;
+  return s;
+}
+
+double read_number(const YAML::Node& value, const std::string& source, const std::string& key, const Field& f) {
+  const InputLocation at{source, line_of(value.Mark()), key};
+  if (!value.IsScalar()) throw input_error(at, f.what + std::string(" (a number)"), "a list or mapping");
+  double v = 0.0;
+  try {
+    v = value.as<double>();
+  } catch (const YAML::Exception&) {
+    throw input_error(at, f.what + std::string(" (a number)"), "'" + printable(value.Scalar()) + "'");
+  }
+  if (!std::isfinite(v)) throw input_error(at, f.what + std::string(" (a finite number)"), printable(value.Scalar()));
+  return v;
+}
+
+// Reads the numeric keys of one mapping; records the key each field came from.
+void read_section(const YAML::Node& map, const Field* begin, const Field* end, const char* extra,
+                  const std::string& prefix, const std::string& source, VehicleParams& p, KeyLines& lines,
+                  std::map<double*, const Field*>& filled_by, const std::function<bool(const std::string&,
+                                                                                       const YAML::Node&)>& other) {
+  for (const auto& kv : map) {
+    const YAML::Node& k = kv.first;
+    const std::string key = k.IsScalar() ? k.Scalar() : std::string("?");
+    const std::string full = prefix + key;
+    const std::string line = line_of(k.Mark());
+    if (lines.count(full)) {
+      throw input_error({source, line, printable(full)}, "each key once", "a duplicate (first at " + lines[full] + ")");
+    }
+    lines[full] = line;
+    if (other(key, kv.second)) continue;
+    const Field* f = std::find_if(begin, end, [&](const Field& x) { return key == x.key; });
+    if (f == end) {
+      throw input_error({source, line, printable(full)}, "one of the known keys (" + known_keys(begin, end, extra) + ")",
+                        "an unknown key");
+    }
+    double& slot = f->ref(p);
+    if (filled_by.count(&slot)) {
+      throw input_error({source, line, printable(full)}, "one unit only, not both",
+                        std::string("also ") + prefix + filled_by[&slot]->key);
+    }
+    filled_by[&slot] = f;
+    slot = to_si(f->scale, read_number(kv.second, source, full, *f));
+  }
+}
+
+}  // namespace
+
+void validate(const VehicleParams& params, const std::string& source) {
+  check(params, source, {}, [](const char* key) { return field_named(key); });
+}
+
+VehicleParams parse_vehicle_yaml(const std::string& text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw input_error({source, line_of(e.mark), ""}, "a YAML vehicle file", printable(e.msg, 100));
+  }
+  if (!root.IsMap()) {
+    throw input_error({source, line_of(root.Mark()), ""}, "a YAML mapping of vehicle keys (see data/vehicles/deepc.yaml)",
+                      root.IsNull() ? "an empty document" : "a scalar or list");
+  }
+
+  VehicleParams p;
+  KeyLines lines;
+  std::map<double*, const Field*> filled_by;
+  auto nested = [&](const std::string& key, const YAML::Node& value) {
+    const InputLocation at{source, line_of(value.Mark()), key};
+    if (key == "name") {
+      if (!value.IsScalar() || value.Scalar().empty()) throw input_error(at, "a vehicle name (text)");
+      p.name = value.Scalar();
+      return true;
+    }
+    if (key == "autopilot") {
+      if (!value.IsMap()) throw input_error(at, "a mapping of autopilot keys");
+      read_section(value, std::begin(kAutopilotFields), std::end(kAutopilotFields), nullptr, "autopilot.", source, p,
+                   lines, filled_by, [](const std::string&, const YAML::Node&) { return false; });
+      return true;
+    }
+    return false;
+  };
+  read_section(root, std::begin(kFields), std::end(kFields), "name, autopilot", "", source, p, lines, filled_by, nested);
+
+  // Messages name the key as written (knots or m/s) and its line.
+  check(p, source, lines, [&](const char* key) -> const Field* {
+    const Field* canonical = field_named(key);
+    const auto it = filled_by.find(&canonical->ref(p));
+    return it == filled_by.end() ? canonical : it->second;
+  });
+  return p;
+}
+
+VehicleParams read_vehicle_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing vehicle file");
+  // A vehicle file is a page of text; refuse anything that cannot be one.
+  constexpr std::uintmax_t kMaxBytes = 1 << 20;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxBytes) throw input_error({path, "", ""}, "a vehicle file under 1 MiB", std::to_string(size) + " bytes");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw input_error({path, "", ""}, "a readable vehicle file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_vehicle_yaml(text.str(), path);
+}
+
+std::string vehicle_yaml(const VehicleParams& params) {
+  YAML::Emitter out;
+  VehicleParams p = params;
+  out << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name;
+  // Shortest text that reads back to the same double (5.8, not 5.7999999999999998).
+  auto emit = [&](const Field& f) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, from_si(f.scale, f.ref(p))).ptr;
+    out << YAML::Key << f.key << YAML::Value << std::string(buf, end);
+  };
+  for (const Field& f : kFields) {
+    if (std::string(f.key).ends_with("_kn")) continue;  // speeds go out in m/s
+    emit(f);
+  }
+  out << YAML::Key << "autopilot" << YAML::Value << YAML::BeginMap;
+  for (const Field& f : kAutopilotFields) emit(f);
+  out << YAML::EndMap << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace deepguide

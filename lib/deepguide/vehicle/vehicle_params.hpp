@@ -1,0 +1,84 @@
+#pragma once
+// Vehicle parameters for the offline simulation, and the YAML vehicle file.
+//
+// Defaults describe a DeepC-like vehicle. Where each number comes from:
+//   seed  = the seed paper, Table 1 (5.8 m, 2.4 t, 4000 m, cruise 4 kn, max 6 kn)
+//   notes = shared/notes/algorithms.md §7 (itself an engineering estimate: no
+//           Nomoto K, T have been published for DeepC or a vehicle of its size)
+//   est.  = an engineering estimate made here, stated as such in docs/SIMULATION.md
+// Every number is a parameter so that a calibrated vehicle (turning-circle test
+// gives K, the 63 % rise time of r after a rudder step gives T) replaces it.
+//
+// Inside: SI units and radians. In the file: the unit is in the key, angles in
+// degrees, speeds in knots (`_kn`) or m/s (`_mps`), whichever the author likes.
+// Rudder and turning-rate limits are magnitudes, so the sign convention of the
+// rudder (vehicle_model.hpp) does not enter the file.
+//
+// The file is a YAML mapping of known keys only; an unknown key, a wrong type, a
+// non-finite or out-of-range value, or an inconsistent pair (cruise above max
+// speed) is an InputError naming the file, the line and the key. Keys left out
+// keep their defaults, so `{}` is the DeepC-like vehicle.
+
+#include <string>
+
+#include "deepguide/core/angles.hpp"
+
+namespace deepguide {
+
+inline constexpr double kMetresPerSecondPerKnot = 1852.0 / 3600.0;
+
+/// The course autopilot's tuning (autopilot.hpp): PID by pole placement on the
+/// Nomoto model and a second-order reference model with a turning-rate limit.
+struct AutopilotTuning {
+  double natural_frequency_rad_s = 0.3;  ///< closed-loop omega_n (notes §7.2 example)
+  double damping_ratio = 1.0;            ///< closed-loop zeta (notes §7.2: critically damped)
+  double reference_natural_frequency_rad_s = 0.2;  ///< est.: slower than the loop, so it can follow
+  /// Reference turning-rate limit: 0.8 K delta_max keeps the rudder out of
+  /// saturation (notes §7.1); 5 deg/s = 0.8 x 6.25 deg/s with the defaults.
+  double max_reference_turn_rate = deg_to_rad(5.0);
+
+  bool operator==(const AutopilotTuning&) const = default;
+};
+
+struct VehicleParams {
+  std::string name = "DeepC-like";
+  double length_m = 5.8;   ///< seed; informational
+  double mass_kg = 2400.0;  ///< seed; informational (the Nomoto model hides it in K, T)
+  double cruise_speed_mps = 4.0 * kMetresPerSecondPerKnot;  ///< seed: 4 kn
+  double max_speed_mps = 6.0 * kMetresPerSecondPerKnot;     ///< seed: 6 kn
+  double speed_time_constant_s = 20.0;  ///< T_u, notes §7.1
+
+  double nomoto_gain_per_s = 0.25;       ///< K (r per rad of rudder), notes §7.1
+  double nomoto_time_constant_s = 4.0;   ///< T, notes §7.1
+  double max_rudder = deg_to_rad(25.0);  ///< delta_max, notes §7.1
+  double max_rudder_rate = deg_to_rad(10.0);  ///< notes §7.1
+  double rudder_time_constant_s = 0.5;   ///< T_delta of the rudder servo, notes §7.1
+  /// Hard turning-rate limit. est.: 6 deg/s, just under K delta_max = 6.25 deg/s,
+  /// so a hard-over turn at cruise has the radius u / r_max = 19.6 m (3.4 L).
+  double max_turn_rate = deg_to_rad(6.0);
+
+  double max_vertical_speed_mps = 0.5;  ///< est.: about U sin(15 deg) at cruise (notes §7.3: 20-30 deg pitch)
+  double depth_time_constant_s = 10.0;  ///< est.: first-order depth response outside the rate limit
+  double max_depth_m = 4000.0;          ///< seed: depth of diving
+
+  double step_s = 0.1;  ///< fixed integration step; notes §7.5: T is seconds, 0.1 s is ample
+
+  AutopilotTuning autopilot;
+
+  bool operator==(const VehicleParams&) const = default;
+};
+
+/// Checks ranges and consistency; throws InputError naming `source` and the key.
+void validate(const VehicleParams& params, const std::string& source = "vehicle");
+
+/// Parses a vehicle YAML document; `source` names it in errors (the file path).
+VehicleParams parse_vehicle_yaml(const std::string& text, const std::string& source);
+
+/// Reads a vehicle file; throws InputError for a missing or unreadable file.
+VehicleParams read_vehicle_file(const std::string& path);
+
+/// The parameters as a vehicle YAML document (speeds in m/s, angles in degrees,
+/// shortest round-trip digits), which parse_vehicle_yaml reads back.
+std::string vehicle_yaml(const VehicleParams& params);
+
+}  // namespace deepguide

@@ -1,0 +1,297 @@
+#include "deepguide/world/chart_info.hpp"
+
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <boost/geometry/algorithms/area.hpp>
+#include <boost/geometry/algorithms/union.hpp>
+#include <cmath>
+#include <filesystem>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/geometry/safety_zone.hpp"
+#include "deepguide/world/bathymetry.hpp"
+#include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/no_go.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/obstacle_summary.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+namespace bg = boost::geometry;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void check_options(const ChartInfoOptions& o) {
+  if (!std::isnan(o.depth_m) && (!std::isfinite(o.depth_m) || o.depth_m < 0.0)) {
+    throw InputError("--depth: expected an operating depth >= 0 m, got " + std::to_string(o.depth_m));
+  }
+  if (!std::isfinite(o.clearance_m) || o.clearance_m < 0.0) {
+    throw InputError("--clearance: expected a vertical clearance >= 0 m, got " + std::to_string(o.clearance_m));
+  }
+}
+
+LocalFrame frame_for(const LonLatExtent& e, const ChartInfoOptions& o) {
+  if (!o.local_crs.empty()) return LocalFrame::from_user_crs(o.local_crs);
+  return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
+}
+
+// Size (east x north, m) in the local frame of a lon/lat box: the box of its corners.
+void local_size(ChartInfo& info, const LocalFrame& frame) {
+  const LonLatExtent& e = info.extent;
+  if (std::isnan(e.west)) return;
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const double lon : {e.west, e.east}) {
+    for (const double lat : {e.south, e.north}) {
+      const Eigen::Vector2d p = frame.from_lonlat(lon, lat);
+      x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+    }
+  }
+  info.width_m = x1 - x0;
+  info.height_m = y1 - y0;
+}
+
+// Area of the union of the footprints (m2); ellipses as polygons within 0.1 m outside.
+double union_area(const ObstacleSet& set) {
+  std::vector<BgPolygon> parts;
+  for (const EllipticCylinder& c : set.ellipses) parts.push_back(enclosing_bg_polygon({c.footprint, 0.0}, {0.1}));
+  for (const PolygonObstacle& p : set.polygons) parts.push_back(p.footprint);
+  BgMultiPolygon acc;
+  for (const BgPolygon& p : parts) {
+    BgMultiPolygon next;
+    bg::union_(acc, p, next);
+    acc = std::move(next);
+  }
+  return bg::area(acc);
+}
+
+void raster_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
+  const BathymetryInfo b = inspect_bathymetry(info.path);
+  info.crs = b.crs;
+  info.extent = b.extent;
+  info.min_depth_m = b.min_depth_m;
+  info.max_depth_m = b.max_depth_m;
+  info.raster_width = b.width;
+  info.raster_height = b.height;
+  info.cell_x_m = b.pixel_x;
+  info.cell_y_m = b.pixel_y;
+  info.valid_fraction = b.valid_fraction;
+  info.has_nodata = b.has_nodata;
+  info.nodata = b.nodata;
+  info.vertical_sense = std::string(to_string(b.sense_used)) + " (" + b.sense_reason + ")";
+  for (int i = 1; i <= ds.GetRasterCount(); ++i) {
+    GDALRasterBand* band = ds.GetRasterBand(i);
+    const std::string desc = band->GetDescription();
+    info.layers.push_back({"band " + std::to_string(i), static_cast<std::size_t>(b.width) * b.height,
+                           (desc.empty() ? std::string() : printable(desc) + ", ") +
+                               GDALGetDataTypeName(band->GetRasterDataType())});
+  }
+  const LocalFrame frame = frame_for(info.extent, o);
+  info.local_crs = frame.id();
+  OGRSpatialReference srs;
+  if (srs.importFromWkt(b.crs_wkt.c_str()) == OGRERR_NONE && srs.IsProjected() && info.local_crs == b.crs) {
+    // The raster's own frame: its exact size, not the box around its lon/lat box.
+    info.width_m = std::abs(b.pixel_x) * b.width * srs.GetLinearUnits();
+    info.height_m = std::abs(b.pixel_y) * b.height * srs.GetLinearUnits();
+  } else {
+    local_size(info, frame);
+  }
+  if (!std::isnan(o.depth_m)) {
+    NoGoOptions n;
+    n.operating_depth_m = o.depth_m;
+    n.vertical_clearance_m = o.clearance_m;
+    const NoGoArea area = compute_no_go(info.path, frame, n);
+    NoGoSummary s;
+    s.depth_m = o.depth_m;
+    s.clearance_m = o.clearance_m;
+    s.area_m2 = area.area_m2;
+    s.polygons = area.polygons.size();
+    s.no_go_cells = area.no_go_cells;
+    s.total_cells = area.total_cells;
+    info.no_go = s;
+  }
+}
+
+void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
+  const S57Summary sum = summarize_s57(info.path);
+  info.crs = "EPSG:4326";  // S-57 positions are WGS 84 lon/lat by the standard
+  info.extent = sum.extent;
+  for (const auto& [name, n] : sum.layer_counts) info.layers.push_back({name, n, ""});
+  auto lo = [](double a, double b) { return std::isnan(a) ? b : std::isnan(b) ? a : std::min(a, b); };
+  auto hi = [](double a, double b) { return std::isnan(a) ? b : std::isnan(b) ? a : std::max(a, b); };
+  info.min_depth_m = lo(sum.depare_min_m, sum.sounding_min_m);
+  info.max_depth_m = hi(sum.depare_max_m, sum.sounding_max_m);
+  S57Options so;
+  so.local_crs = o.local_crs;
+  const LocalFrame frame = s57_local_frame(sum, so);
+  info.local_crs = frame.id();
+  local_size(info, frame);
+  const S57Hazards all = s57_hazards(info.path, frame, so);
+  for (const auto& [cls, n] : all.features_read) {
+    if (cls == "LNDARE") {
+      info.land_features += n;
+    } else {
+      info.hazards += n;
+    }
+  }
+  if (!std::isnan(o.depth_m)) {
+    so.operating_depth_m = o.depth_m;
+    so.vertical_clearance_m = o.clearance_m;
+    const S57Hazards left = s57_hazards(info.path, frame, so);
+    NoGoSummary s;
+    s.depth_m = o.depth_m;
+    s.clearance_m = o.clearance_m;
+    s.area_m2 = union_area(left.obstacles);
+    s.polygons = left.obstacles.size();
+    s.hazards_passable = left.removed_by_depth;
+    info.no_go = s;
+  }
+}
+
+void vector_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
+  for (OGRLayer* layer : ds.GetLayers()) {
+    info.layers.push_back({layer->GetName(), static_cast<std::size_t>(std::max<GIntBig>(0, layer->GetFeatureCount())),
+                           OGRGeometryTypeToName(layer->GetGeomType())});
+  }
+  LoadedObstacles loaded = load_obstacles({info.path}, {o.local_crs, ""});
+  const ObstacleSummary sum = summarize(loaded);
+  info.crs = loaded.sources.empty() ? std::string() : loaded.sources.front().crs;
+  info.local_crs = loaded.frame.id();
+  if (sum.has_extent) {
+    info.extent = {sum.west, sum.east, sum.south, sum.north};
+    info.width_m = sum.max_x - sum.min_x;
+    info.height_m = sum.max_y - sum.min_y;
+  }
+  info.hazards = loaded.obstacles.size();
+  auto top = [&](const std::optional<double>& t) {
+    if (!t) return;
+    info.min_depth_m = std::isnan(info.min_depth_m) ? *t : std::min(info.min_depth_m, *t);
+    info.max_depth_m = std::isnan(info.max_depth_m) ? *t : std::max(info.max_depth_m, *t);
+  };
+  for (const auto& c : loaded.obstacles.ellipses) top(c.top_depth_m);
+  for (const auto& p : loaded.obstacles.polygons) top(p.top_depth_m);
+  if (!std::isnan(o.depth_m)) {
+    ObstacleSet left = loaded.obstacles;
+    NoGoSummary s;
+    s.depth_m = o.depth_m;
+    s.clearance_m = o.clearance_m;
+    s.hazards_passable = remove_passable(left, o.depth_m, o.clearance_m);
+    s.area_m2 = union_area(left);
+    s.polygons = left.size();
+    info.no_go = s;
+  }
+}
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+const char* to_string(ChartKind kind) {
+  switch (kind) {
+    case ChartKind::raster: return "bathymetry raster";
+    case ChartKind::s57: return "S-57 cell";
+    case ChartKind::vector: return "hazard file";
+  }
+  return "?";
+}
+
+namespace {
+
+// Opens `path` as any raster or vector dataset, with the messages chart_kind promises.
+GDALDatasetUniquePtr open_chart(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing chart file, found none");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": expected a chart file, got a folder");
+  gdal::ensure_registered();
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!ds) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected a chart GDAL can open (raster, S-57 cell or vector file), got " +
+                     (why.empty() ? std::string("a file no driver recognises") : printable(why, 160)));
+  }
+  return ds;
+}
+
+ChartKind kind_of(GDALDataset& ds, const std::string& path) {
+  const std::string driver = ds.GetDriver() != nullptr ? ds.GetDriver()->GetDescription() : "";
+  if (driver == "S57") return ChartKind::s57;
+  if (ds.GetRasterCount() > 0) return ChartKind::raster;
+  if (ds.GetLayerCount() > 0) return ChartKind::vector;
+  throw InputError(path + ": expected a chart (raster bands or vector layers), got a " + driver +
+                   " file with neither");
+}
+
+}  // namespace
+
+ChartKind chart_kind(const std::string& path) {
+  GDALDatasetUniquePtr ds = open_chart(path);
+  return kind_of(*ds, path);
+}
+
+ChartInfo chart_info(const std::string& path, const ChartInfoOptions& options) {
+  check_options(options);
+  ChartInfo info;
+  info.path = path;
+  GDALDatasetUniquePtr ds = open_chart(path);
+  info.driver = ds->GetDriver() != nullptr ? ds->GetDriver()->GetDescription() : "";
+  info.kind = kind_of(*ds, path);
+  switch (info.kind) {
+    case ChartKind::s57:
+      ds.reset();
+      s57_info(info, options);
+      break;
+    case ChartKind::raster: raster_info(info, *ds, options); break;
+    case ChartKind::vector: vector_info(info, *ds, options); break;
+  }
+  return info;
+}
+
+nlohmann::json to_json(const ChartInfo& info) {
+  nlohmann::json j;
+  j["path"] = info.path;
+  j["kind"] = to_string(info.kind);
+  j["driver"] = info.driver;
+  j["crs"] = info.crs;
+  j["local_crs"] = info.local_crs;
+  nlohmann::json layers = nlohmann::json::array();
+  for (const ChartLayer& l : info.layers) layers.push_back({{"name", l.name}, {"features", l.features}, {"detail", l.detail}});
+  j["layers"] = layers;
+  j["extent"] = {{"west", number_or_null(info.extent.west)},
+                 {"east", number_or_null(info.extent.east)},
+                 {"south", number_or_null(info.extent.south)},
+                 {"north", number_or_null(info.extent.north)}};
+  j["width_m"] = info.width_m;
+  j["height_m"] = info.height_m;
+  j["min_depth_m"] = number_or_null(info.min_depth_m);
+  j["max_depth_m"] = number_or_null(info.max_depth_m);
+  j["hazards"] = info.hazards;
+  if (info.kind == ChartKind::s57) j["land_features"] = info.land_features;
+  if (info.kind == ChartKind::raster) {
+    j["raster"] = {{"width", info.raster_width},
+                   {"height", info.raster_height},
+                   {"cell_x", info.cell_x_m},
+                   {"cell_y", info.cell_y_m},
+                   {"valid_fraction", info.valid_fraction},
+                   {"nodata", info.has_nodata ? number_or_null(info.nodata) : nlohmann::json()},
+                   {"vertical_sense", info.vertical_sense}};
+  }
+  if (info.no_go) {
+    const NoGoSummary& n = *info.no_go;
+    nlohmann::json g = {{"depth_m", n.depth_m},      {"clearance_m", n.clearance_m}, {"area_m2", n.area_m2},
+                        {"polygons", n.polygons}};
+    if (info.kind == ChartKind::raster) {
+      g["no_go_cells"] = n.no_go_cells;
+      g["total_cells"] = n.total_cells;
+    } else {
+      g["hazards_passable"] = n.hazards_passable;
+    }
+    j["no_go"] = g;
+  }
+  return j;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,1034 @@
+#include "deepguide/world/current_field.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "deepguide/core/angles.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return {};
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+std::string num(double v, int decimals = 3) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// ------------------------------------------------------------------ time
+
+// "UNITS since YYYY-MM-DD[( |T)hh:mm[:ss[.f]]][Z| UTC|+hh[:mm]]" -> (seconds per unit, epoch of the origin).
+std::optional<std::pair<double, double>> parse_time_units(const std::string& text) {
+  const std::string t = lower(trim(text));
+  const auto since = t.find(" since ");
+  if (since == std::string::npos) return std::nullopt;
+  const std::string unit = trim(t.substr(0, since));
+  double per = 0;
+  if (unit == "seconds" || unit == "second" || unit == "secs" || unit == "sec" || unit == "s") per = 1;
+  else if (unit == "minutes" || unit == "minute" || unit == "mins" || unit == "min") per = 60;
+  else if (unit == "hours" || unit == "hour" || unit == "hrs" || unit == "hr" || unit == "h") per = 3600;
+  else if (unit == "days" || unit == "day" || unit == "d") per = 86400;
+  else return std::nullopt;
+
+  std::string rest = trim(t.substr(since + 7));
+  int y = 0, mo = 0, d = 0, h = 0, mi = 0, consumed = 0;
+  double sec = 0;
+  if (std::sscanf(rest.c_str(), "%d-%d-%d%n", &y, &mo, &d, &consumed) != 3) return std::nullopt;
+  rest = rest.substr(static_cast<std::size_t>(consumed));
+  if (!rest.empty() && (rest[0] == 't' || rest[0] == ' ')) {
+    const std::string clock = trim(rest.substr(1));
+    int c2 = 0;
+    if (std::sscanf(clock.c_str(), "%d:%d%n", &h, &mi, &c2) == 2) {
+      rest = clock.substr(static_cast<std::size_t>(c2));
+      int c3 = 0;
+      if (!rest.empty() && rest[0] == ':' && std::sscanf(rest.c_str(), ":%lf%n", &sec, &c3) == 1) {
+        rest = rest.substr(static_cast<std::size_t>(c3));
+      }
+    } else {
+      rest = clock;
+    }
+  }
+  rest = trim(rest);
+  double zone_s = 0;
+  if (rest == "z" || rest == "utc" || rest == "gmt" || rest.empty()) {
+  } else if (rest[0] == '+' || rest[0] == '-') {
+    int zh = 0, zm = 0;
+    const int n = std::sscanf(rest.c_str() + 1, "%d:%d", &zh, &zm);
+    if (n < 1) return std::nullopt;
+    zone_s = (rest[0] == '-' ? -1.0 : 1.0) * (zh * 3600.0 + zm * 60.0);
+  } else {
+    return std::nullopt;
+  }
+  using namespace std::chrono;
+  const year_month_day ymd{year{y}, month{static_cast<unsigned>(mo)}, day{static_cast<unsigned>(d)}};
+  if (!ymd.ok() || h < 0 || h > 24 || mi < 0 || mi > 59 || sec < 0 || sec >= 61) return std::nullopt;
+  const double days = static_cast<double>(sys_days{ymd}.time_since_epoch().count());
+  // A local time zone +hh means the clock runs ahead of UTC: subtract it.
+  return std::make_pair(per, days * 86400.0 + h * 3600.0 + mi * 60.0 + sec - zone_s);
+}
+
+// ------------------------------------------------------------------ axes
+
+// An axis stored ascending; `reversed` when the file had it descending.
+struct Axis {
+  std::vector<double> values;
+  bool reversed = false;
+};
+
+Axis ascending_axis(std::vector<double> values, const std::string& path, const std::string& name) {
+  Axis a;
+  for (double v : values) {
+    if (!std::isfinite(v)) throw InputError(path + ": axis '" + printable(name) + "': expected finite coordinates, got NaN or infinity");
+  }
+  if (values.size() >= 2 && values[1] < values[0]) {
+    std::reverse(values.begin(), values.end());
+    a.reversed = true;
+  }
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    if (!(values[i] > values[i - 1])) {
+      throw InputError(path + ": axis '" + printable(name) + "': expected strictly monotonic coordinates, got " +
+                       num(values[i - 1], 6) + " then " + num(values[i], 6));
+    }
+  }
+  a.values = std::move(values);
+  return a;
+}
+
+// Index i of the node interval [a[i], a[i+1]] holding v, and the fraction in it; nullopt outside.
+// The fraction is exactly 0 at a node, so the node's value comes back unchanged.
+inline std::optional<std::pair<std::size_t, double>> locate(const std::vector<double>& a, double v) {
+  const std::size_t n = a.size();
+  if (n == 0 || !(v >= a.front() && v <= a.back())) return std::nullopt;
+  if (n == 1) return std::make_pair(std::size_t{0}, 0.0);
+  // Most axes are regular: guess from the mean step, then correct.
+  const double step = (a.back() - a.front()) / static_cast<double>(n - 1);
+  std::size_t i = std::min(static_cast<std::size_t>((v - a.front()) / step), n - 2);
+  if (a[i] > v || a[i + 1] < v) {
+    const auto it = std::upper_bound(a.begin(), a.end(), v);
+    i = std::min(static_cast<std::size_t>(it - a.begin()) - 1, n - 2);
+  }
+  if (v == a[i + 1] && i + 2 < n) ++i;  // exactly on an inner node: start the interval there
+  return std::make_pair(i, (v - a[i]) / (a[i + 1] - a[i]));
+}
+
+// ------------------------------------------------------------------ multidimensional reading
+
+enum class Role { x, y, z, t, other };
+
+std::string attr_string(const GDALMDArray& a, const char* name) {
+  const auto at = a.GetAttribute(name);
+  if (!at) return {};
+  const char* s = at->ReadAsString();
+  return s != nullptr ? s : "";
+}
+
+Role role_of(const GDALDimension& dim) {
+  const std::string type = dim.GetType();
+  if (type == "HORIZONTAL_X") return Role::x;
+  if (type == "HORIZONTAL_Y") return Role::y;
+  if (type == "VERTICAL") return Role::z;
+  if (type == "TEMPORAL") return Role::t;
+  if (const auto var = dim.GetIndexingVariable()) {
+    const std::string axis = lower(attr_string(*var, "axis"));
+    const std::string units = lower(var->GetUnit());
+    const std::string sn = lower(attr_string(*var, "standard_name"));
+    if (axis == "x" || units == "degrees_east" || sn == "longitude" || sn == "projection_x_coordinate") return Role::x;
+    if (axis == "y" || units == "degrees_north" || sn == "latitude" || sn == "projection_y_coordinate") return Role::y;
+    if (axis == "z" || sn == "depth" || attr_string(*var, "positive").size() > 0) return Role::z;
+    if (axis == "t" || sn == "time" || units.find(" since ") != std::string::npos) return Role::t;
+  }
+  const std::string n = lower(dim.GetName());
+  if (n == "lon" || n == "longitude" || n == "x") return Role::x;
+  if (n == "lat" || n == "latitude" || n == "y") return Role::y;
+  if (n == "depth" || n == "z" || n == "lev" || n == "level" || n == "deptht" || n == "depthu") return Role::z;
+  if (n == "time" || n == "t") return Role::t;
+  return Role::other;
+}
+
+std::vector<double> read_vector(const GDALMDArray& a, const std::string& path) {
+  if (a.GetDimensionCount() != 1) {
+    throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected a one-dimensional coordinate variable");
+  }
+  const std::size_t n = static_cast<std::size_t>(a.GetDimensions()[0]->GetSize());
+  std::vector<double> out(n);
+  const GUInt64 start = 0;
+  const std::size_t count = n;
+  if (n > 0 && !a.Read(&start, &count, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out.data())) {
+    throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected readable values, got: " +
+                     printable(gdal::QuietErrors::last_message(), 160));
+  }
+  return out;
+}
+
+std::shared_ptr<GDALMDArray> find_by(const GDALGroup& root, const std::vector<std::string>& names,
+                                     const std::vector<std::string>& standard_names, const std::string& explicit_name) {
+  if (!explicit_name.empty()) return root.OpenMDArray(explicit_name);
+  for (const auto& sn : standard_names) {
+    for (const auto& name : root.GetMDArrayNames()) {
+      auto a = root.OpenMDArray(name);
+      if (a && lower(attr_string(*a, "standard_name")) == sn) return a;
+    }
+  }
+  for (const auto& n : names) {
+    if (auto a = root.OpenMDArray(n)) return a;
+  }
+  return nullptr;
+}
+
+struct Variables {
+  std::shared_ptr<GDALMDArray> u, v;
+};
+
+Variables find_uv(const GDALGroup& root, const std::string& path, const CurrentOptions& options) {
+  gdal::QuietErrors quiet;  // OpenMDArray on an absent name complains
+  Variables out;
+  out.u = find_by(root, {"water_u", "u", "uo", "U", "ucur", "UCUR", "eastward_velocity"},
+                  {"eastward_sea_water_velocity", "surface_eastward_sea_water_velocity", "sea_water_x_velocity"},
+                  options.u_variable);
+  out.v = find_by(root, {"water_v", "v", "vo", "V", "vcur", "VCUR", "northward_velocity"},
+                  {"northward_sea_water_velocity", "surface_northward_sea_water_velocity", "sea_water_y_velocity"},
+                  options.v_variable);
+  if (!out.u || !out.v) {
+    std::string names;
+    for (const auto& n : root.GetMDArrayNames()) names += (names.empty() ? "" : ", ") + n;
+    const std::string which = !out.u && !out.v ? "u and v" : (!out.u ? "u" : "v");
+    const std::string asked = !options.u_variable.empty() || !options.v_variable.empty()
+                                  ? " (asked for '" + printable(options.u_variable) + "'/'" + printable(options.v_variable) + "')"
+                                  : "";
+    throw InputError(path + ": expected current variables " + which + asked +
+                     " (standard_name eastward/northward_sea_water_velocity or a name such as water_u/water_v, u/v, "
+                     "uo/vo), got variables: " +
+                     (names.empty() ? std::string("none") : printable(names, 120)));
+  }
+  return out;
+}
+
+// The value of a raw read: unknown (NaN) when fill or NaN, else scaled.
+struct Unpack {
+  bool has_fill = false;
+  double fill = 0;
+  bool has_missing = false;
+  double missing = 0;
+  bool float32 = false;
+  double scale = 1;
+  double offset = 0;
+
+  bool same(double v, double f) const {
+    return v == f || (float32 && static_cast<float>(v) == static_cast<float>(f));
+  }
+  double operator()(double raw) const {
+    if (std::isnan(raw) || (has_fill && same(raw, fill)) || (has_missing && same(raw, missing))) return kNaN;
+    return raw * scale + offset;
+  }
+};
+
+Unpack unpack_of(const GDALMDArray& a) {
+  Unpack u;
+  bool has = false;
+  const double fill = a.GetNoDataValueAsDouble(&has);
+  u.has_fill = has;
+  u.fill = fill;
+  if (const auto m = a.GetAttribute("missing_value")) {
+    u.has_missing = true;
+    u.missing = m->ReadAsDouble();
+  }
+  u.float32 = a.GetDataType().GetClass() == GEDTC_NUMERIC && a.GetDataType().GetNumericDataType() == GDT_Float32;
+  bool has_scale = false, has_offset = false;
+  const double s = a.GetScale(&has_scale);
+  const double o = a.GetOffset(&has_offset);
+  if (has_scale) u.scale = s;
+  if (has_offset) u.offset = o;
+  return u;
+}
+
+void set_extent(CurrentField& f, const OGRSpatialReference& srs) {
+  if (f.geographic) {
+    f.extent = {f.x.front(), f.x.back(), f.y.front(), f.y.back()};
+    return;
+  }
+  auto geo = gdal::wgs84();
+  auto ct = gdal::make_transform(srs, *geo);
+  double w, s, e, n;
+  if (!ct || !ct->TransformBounds(f.x.front(), f.y.front(), f.x.back(), f.y.back(), &w, &s, &e, &n, 21)) {
+    throw InputError(f.source + ": expected a field extent that converts to lon/lat from " + f.crs +
+                     ", got one PROJ cannot transform");
+  }
+  f.extent = {w, e, s, n};
+}
+
+void set_crs(CurrentField& f, const OGRSpatialReference& srs, const std::string& source) {
+  f.crs = gdal::srs_id(srs);
+  f.crs_source = source;
+  f.geographic = srs.IsGeographic();
+  char* wkt = nullptr;
+  if (srs.exportToWkt(&wkt) == OGRERR_NONE && wkt != nullptr) f.crs_wkt = wkt;
+  CPLFree(wkt);
+}
+
+void check_size(const std::string& path, std::size_t nx, std::size_t ny, std::size_t steps, const CurrentOptions& o) {
+  const double cells = static_cast<double>(nx) * static_cast<double>(ny);
+  if (cells > static_cast<double>(o.max_cells_per_step) ||
+      cells * static_cast<double>(std::max<std::size_t>(steps, 1)) > static_cast<double>(o.max_total_cells)) {
+    throw InputError(path + ": expected a current field of at most " + std::to_string(o.max_cells_per_step) +
+                     " nodes per time step and " + std::to_string(o.max_total_cells) + " in all, got " +
+                     std::to_string(nx) + " x " + std::to_string(ny) + " nodes x " + std::to_string(steps) +
+                     " step(s); cut the work area out first (e.g. gdal_translate -projwin or ncks)");
+  }
+}
+
+// The netCDF library reads a classic-format file cut short as zeros, silently
+// (measured: a HYCOM file cut to 20 kB gave v = 0 everywhere). Uncompressed
+// classic files must hold at least their variables' bytes: check that.
+void check_classic_size(const GDALGroup& root, const std::string& path) {
+  const char* format = CSLFetchNameValue(root.GetStructuralInfo(), "NC_FORMAT");
+  if (format == nullptr) return;
+  const std::string fmt = format;
+  if (fmt != "CLASSIC" && fmt != "64BIT_OFFSET" && fmt != "CDF5") return;
+  double need = 0;
+  for (const auto& name : root.GetMDArrayNames()) {
+    const auto a = root.OpenMDArray(name);
+    if (!a) continue;
+    const double bytes = static_cast<double>(a->GetTotalElementsCount()) * static_cast<double>(a->GetDataType().GetSize());
+    need += std::ceil(bytes / 4.0) * 4.0;  // classic variables are padded to 4 bytes
+  }
+  std::error_code ec;
+  const auto have = fs::file_size(path, ec);
+  if (!ec && static_cast<double>(have) < need) {
+    throw InputError(path + ": expected a complete NetCDF file (its variables need at least " + num(need, 0) +
+                     " bytes), got " + std::to_string(have) + " bytes: the file is cut short");
+  }
+}
+
+CurrentField load_multidim(GDALDataset& ds, const std::string& path, const CurrentOptions& options) {
+  const auto root = ds.GetRootGroup();
+  if (!root) throw InputError(path + ": expected a NetCDF file with a root group, got none");
+  check_classic_size(*root, path);
+  const Variables vars = find_uv(*root, path, options);
+  const auto& du = vars.u->GetDimensions();
+  const auto& dv = vars.v->GetDimensions();
+  bool same = du.size() == dv.size();
+  for (std::size_t i = 0; same && i < du.size(); ++i) same = du[i]->GetSize() == dv[i]->GetSize();
+  auto shape = [](const std::vector<std::shared_ptr<GDALDimension>>& d) {
+    std::string s;
+    for (const auto& x : d) s += (s.empty() ? "" : " x ") + std::to_string(x->GetSize());
+    return s.empty() ? std::string("scalar") : s;
+  };
+  if (!same) {
+    throw InputError(path + ": variables '" + printable(vars.u->GetName()) + "' and '" + printable(vars.v->GetName()) +
+                     "': expected the same shape, got " + shape(du) + " and " + shape(dv));
+  }
+
+  CurrentField f;
+  f.source = path;
+  f.driver = ds.GetDriver() != nullptr ? ds.GetDriver()->GetDescription() : "";
+  f.u_name = vars.u->GetName();
+  f.v_name = vars.v->GetName();
+  f.depth_m = options.depth_m;
+
+  int ix = -1, iy = -1, iz = -1, it = -1;
+  for (std::size_t i = 0; i < du.size(); ++i) {
+    const Role r = role_of(*du[i]);
+    int* slot = r == Role::x ? &ix : r == Role::y ? &iy : r == Role::z ? &iz : r == Role::t ? &it : nullptr;
+    if (slot != nullptr && *slot < 0) {
+      *slot = static_cast<int>(i);
+    } else if (du[i]->GetSize() != 1) {
+      throw InputError(path + ": variable '" + printable(f.u_name) + "': dimension '" + printable(du[i]->GetName()) +
+                       "': expected lon/x, lat/y, depth or time, got a dimension of size " +
+                       std::to_string(du[i]->GetSize()) + " with no such role");
+    }
+  }
+  if (ix < 0 || iy < 0) {
+    throw InputError(path + ": variable '" + printable(f.u_name) + "': expected horizontal dimensions (lon/x and lat/y), got " +
+                     shape(du));
+  }
+  const auto xvar = du[static_cast<std::size_t>(ix)]->GetIndexingVariable();
+  const auto yvar = du[static_cast<std::size_t>(iy)]->GetIndexingVariable();
+
+  // CRS: CF lon/lat axes, the array's grid mapping, or the assumed one.
+  auto is_lon = [](const std::shared_ptr<GDALMDArray>& a) {
+    return a && (lower(a->GetUnit()).rfind("degrees_e", 0) == 0 || lower(a->GetUnit()) == "degree_east" ||
+                 lower(attr_string(*a, "standard_name")) == "longitude");
+  };
+  auto is_lat = [](const std::shared_ptr<GDALMDArray>& a) {
+    return a && (lower(a->GetUnit()).rfind("degrees_n", 0) == 0 || lower(a->GetUnit()) == "degree_north" ||
+                 lower(attr_string(*a, "standard_name")) == "latitude");
+  };
+  std::unique_ptr<OGRSpatialReference> srs;
+  std::string srs_source;
+  const auto file_srs = vars.u->GetSpatialRef();
+  if (is_lon(xvar) && is_lat(yvar)) {
+    srs = gdal::wgs84();
+    srs_source = "CF lon/lat axes (degrees_east/degrees_north)";
+  } else if (file_srs && !file_srs->IsEmpty()) {
+    srs.reset(file_srs->Clone());
+    srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    srs_source = "file";
+  } else if (!options.assumed_crs.empty()) {
+    srs = gdal::srs_from_user_input(options.assumed_crs);
+    if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
+    srs_source = "assumed (option)";
+  } else {
+    throw InputError(path + ": expected lon/lat axes (units degrees_east/degrees_north) or a CRS (grid_mapping), got " +
+                     "neither; pass the CRS it uses (e.g. EPSG:32632)");
+  }
+  if (!xvar || !yvar) {
+    throw InputError(path + ": variable '" + printable(f.u_name) +
+                     "': expected coordinate variables for its horizontal dimensions, got none");
+  }
+  set_crs(f, *srs, srs_source);
+  const Axis ax = ascending_axis(read_vector(*xvar, path), path, xvar->GetName());
+  const Axis ay = ascending_axis(read_vector(*yvar, path), path, yvar->GetName());
+  f.x = ax.values;
+  f.y = ay.values;
+
+  // Time.
+  std::size_t nt = 1;
+  if (it >= 0) {
+    nt = static_cast<std::size_t>(du[static_cast<std::size_t>(it)]->GetSize());
+    const auto tvar = du[static_cast<std::size_t>(it)]->GetIndexingVariable();
+    if (tvar) {
+      const std::string units = tvar->GetUnit();
+      const auto parsed = parse_time_units(units);
+      if (!parsed) {
+        throw input_error({path, "variable '" + printable(tvar->GetName()) + "'", "units"},
+                          "'UNITS since YYYY-MM-DD hh:mm:ss' with UNITS seconds, minutes, hours or days",
+                          "'" + printable(units) + "'");
+      }
+      const std::string cal = lower(attr_string(*tvar, "calendar"));
+      if (!cal.empty() && cal != "gregorian" && cal != "standard" && cal != "proleptic_gregorian") {
+        throw input_error({path, "variable '" + printable(tvar->GetName()) + "'", "calendar"},
+                          "gregorian, standard or proleptic_gregorian", "'" + printable(cal) + "'");
+      }
+      for (double v : read_vector(*tvar, path)) f.times_s.push_back(parsed->second + v * parsed->first);
+      for (std::size_t i = 1; i < f.times_s.size(); ++i) {
+        if (!(f.times_s[i] > f.times_s[i - 1])) {
+          throw input_error({path, "variable '" + printable(tvar->GetName()) + "'", ""}, "strictly increasing times",
+                            format_utc(f.times_s[i - 1]) + " then " + format_utc(f.times_s[i]));
+        }
+      }
+    } else if (nt > 1) {
+      throw InputError(path + ": dimension '" + printable(du[static_cast<std::size_t>(it)]->GetName()) +
+                       "': expected a time coordinate variable for " + std::to_string(nt) + " steps, got none");
+    }
+  }
+  check_size(path, f.nx(), f.ny(), nt, options);
+
+  // Depth: one level, or two with a weight.
+  std::size_t k0 = 0, k1 = 0;
+  double wk = 0;
+  if (!(std::isfinite(options.depth_m) && options.depth_m >= 0)) {
+    throw InputError(path + ": depth: expected a depth >= 0 m, got " + num(options.depth_m));
+  }
+  if (iz >= 0) {
+    const auto zdim = du[static_cast<std::size_t>(iz)];
+    const std::size_t nz = static_cast<std::size_t>(zdim->GetSize());
+    std::vector<double> z(nz, 0.0);
+    if (const auto zvar = zdim->GetIndexingVariable()) {
+      z = read_vector(*zvar, path);
+      bool up = lower(attr_string(*zvar, "positive")) == "up";
+      if (!up && lower(attr_string(*zvar, "positive")).empty()) {
+        up = std::all_of(z.begin(), z.end(), [](double d) { return d <= 0; }) &&
+             std::any_of(z.begin(), z.end(), [](double d) { return d < 0; });
+      }
+      if (up) for (double& d : z) d = -d;
+    } else if (nz > 1) {
+      throw InputError(path + ": dimension '" + printable(zdim->GetName()) + "': expected a depth coordinate variable for " +
+                       std::to_string(nz) + " levels, got none");
+    }
+    std::vector<std::size_t> order(nz);
+    for (std::size_t i = 0; i < nz; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return z[a] < z[b]; });
+    const double d = options.depth_m;
+    if (d <= z[order.front()]) {
+      k0 = k1 = order.front();
+      f.depth_levels = "level " + std::to_string(k0 + 1) + " of " + std::to_string(nz) + " (" + num(z[k0], 1) + " m)";
+    } else if (d > z[order.back()]) {
+      throw InputError(path + ": depth: expected a depth within the field's levels (" + num(z[order.front()], 1) + " .. " +
+                       num(z[order.back()], 1) + " m), got " + num(d, 1) + " m");
+    } else {
+      std::size_t i = 0;
+      while (z[order[i + 1]] < d) ++i;
+      k0 = order[i];
+      k1 = order[i + 1];
+      wk = (d - z[k0]) / (z[k1] - z[k0]);
+      if (wk == 1.0) {
+        k0 = k1;
+        wk = 0;
+      }
+      f.depth_levels = k0 == k1 || wk == 0.0
+                           ? "level " + std::to_string(k0 + 1) + " of " + std::to_string(nz) + " (" + num(z[k0], 1) + " m)"
+                           : "between levels " + std::to_string(k0 + 1) + " and " + std::to_string(k1 + 1) + " of " +
+                                 std::to_string(nz) + " (" + num(z[k0], 1) + " and " + num(z[k1], 1) + " m)";
+      if (wk == 0.0) k1 = k0;
+    }
+  } else {
+    f.depth_levels = "no depth axis";
+  }
+
+  // Read all steps of one level into [t][y][x] (file order of x and y kept; flipped below).
+  const std::size_t nx = f.nx(), ny = f.ny(), plane = nx * ny;
+  auto read_level = [&](const GDALMDArray& a, std::size_t level) {
+    const std::size_t nd = a.GetDimensionCount();
+    std::vector<GUInt64> start(nd, 0);
+    std::vector<std::size_t> count(nd, 1);
+    std::vector<GPtrDiff_t> stride(nd, 0);
+    count[static_cast<std::size_t>(ix)] = nx;
+    stride[static_cast<std::size_t>(ix)] = 1;
+    count[static_cast<std::size_t>(iy)] = ny;
+    stride[static_cast<std::size_t>(iy)] = static_cast<GPtrDiff_t>(nx);
+    if (it >= 0) {
+      count[static_cast<std::size_t>(it)] = nt;
+      stride[static_cast<std::size_t>(it)] = static_cast<GPtrDiff_t>(plane);
+    }
+    if (iz >= 0) start[static_cast<std::size_t>(iz)] = level;
+    std::vector<double> buf(plane * nt);
+    if (!a.Read(start.data(), count.data(), nullptr, stride.data(), GDALExtendedDataType::Create(GDT_Float64),
+                buf.data(), buf.data(), buf.size() * sizeof(double))) {
+      throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected readable values, got: " +
+                       printable(gdal::QuietErrors::last_message(), 160));
+    }
+    const Unpack unpack = unpack_of(a);
+    for (double& v : buf) v = unpack(v);
+    return buf;
+  };
+  auto read_component = [&](const GDALMDArray& a) {
+    std::vector<double> out = read_level(a, k0);
+    if (k1 != k0) {
+      const std::vector<double> deeper = read_level(a, k1);
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] = out[i] + wk * (deeper[i] - out[i]);  // NaN stays NaN
+    }
+    // Stored ascending in x and y.
+    if (ax.reversed || ay.reversed) {
+      std::vector<double> flipped(out.size());
+      for (std::size_t k = 0; k < nt; ++k)
+        for (std::size_t j = 0; j < ny; ++j)
+          for (std::size_t i = 0; i < nx; ++i) {
+            const std::size_t si = ax.reversed ? nx - 1 - i : i, sj = ay.reversed ? ny - 1 - j : j;
+            flipped[(k * ny + j) * nx + i] = out[(k * ny + sj) * nx + si];
+          }
+      out.swap(flipped);
+    }
+    return out;
+  };
+  f.u = read_component(*vars.u);
+  f.v = read_component(*vars.v);
+  set_extent(f, *srs);
+  return f;
+}
+
+CurrentField load_two_band(GDALDataset& ds, const std::string& path, const CurrentOptions& options) {
+  if (ds.GetRasterCount() != 2) {
+    throw InputError(path + ": expected a two-band raster (band 1 u east, band 2 v north, m/s) or a NetCDF file with u/v " +
+                     "variables, got a raster with " + std::to_string(ds.GetRasterCount()) + " band(s)");
+  }
+  CurrentField f;
+  f.source = path;
+  f.driver = ds.GetDriver() != nullptr ? ds.GetDriver()->GetDescription() : "";
+  f.u_name = "band 1";
+  f.v_name = "band 2";
+  f.depth_m = options.depth_m;
+  f.depth_levels = "no depth axis";
+  std::unique_ptr<OGRSpatialReference> srs;
+  if (const OGRSpatialReference* file_srs = ds.GetSpatialRef(); file_srs != nullptr && !file_srs->IsEmpty()) {
+    srs.reset(file_srs->Clone());
+    srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    set_crs(f, *srs, "file");
+  } else if (!options.assumed_crs.empty()) {
+    srs = gdal::srs_from_user_input(options.assumed_crs);
+    if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
+    set_crs(f, *srs, "assumed (option)");
+  } else {
+    throw InputError(path + ": expected a raster with a CRS, got none; pass the CRS it uses (e.g. EPSG:4326)");
+  }
+  double gt[6];
+  if (ds.GetGeoTransform(gt) != CE_None) throw InputError(path + ": expected a georeferenced raster (a geotransform), got none");
+  if (gt[2] != 0.0 || gt[4] != 0.0) throw InputError(path + ": expected a north-up raster, got a rotated geotransform");
+  const std::size_t nx = static_cast<std::size_t>(ds.GetRasterXSize()), ny = static_cast<std::size_t>(ds.GetRasterYSize());
+  check_size(path, nx, ny, 1, options);
+  std::vector<double> xs(nx), ys(ny);
+  for (std::size_t i = 0; i < nx; ++i) xs[i] = gt[0] + (static_cast<double>(i) + 0.5) * gt[1];
+  for (std::size_t j = 0; j < ny; ++j) ys[j] = gt[3] + (static_cast<double>(j) + 0.5) * gt[5];
+  const Axis ax = ascending_axis(xs, path, "x (columns)");
+  const Axis ay = ascending_axis(ys, path, "y (rows)");
+  f.x = ax.values;
+  f.y = ay.values;
+  for (int b = 1; b <= 2; ++b) {
+    GDALRasterBand& band = *ds.GetRasterBand(b);
+    std::vector<double> buf(nx * ny);
+    if (band.RasterIO(GF_Read, 0, 0, static_cast<int>(nx), static_cast<int>(ny), buf.data(), static_cast<int>(nx),
+                      static_cast<int>(ny), GDT_Float64, 0, 0, nullptr) != CE_None) {
+      throw InputError(path + ": band " + std::to_string(b) + ": expected readable cells, got: " +
+                       printable(gdal::QuietErrors::last_message(), 160));
+    }
+    Unpack unpack;
+    int has = 0;
+    unpack.fill = band.GetNoDataValue(&has);
+    unpack.has_fill = has != 0;
+    unpack.float32 = band.GetRasterDataType() == GDT_Float32;
+    int ok = 0;
+    const double s = band.GetScale(&ok);
+    if (ok) unpack.scale = s;
+    const double o = band.GetOffset(&ok);
+    if (ok) unpack.offset = o;
+    std::vector<double>& out = b == 1 ? f.u : f.v;
+    out.resize(nx * ny);
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        const std::size_t si = ax.reversed ? nx - 1 - i : i, sj = ay.reversed ? ny - 1 - j : j;
+        out[j * nx + i] = unpack(buf[sj * nx + si]);
+      }
+  }
+  set_extent(f, *srs);
+  return f;
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ public
+
+CurrentField load_current_field(const std::string& path, const CurrentOptions& options) {
+  gdal::ensure_registered();
+  gdal::QuietErrors quiet;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing current field file, found none");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": expected a current field file, got a folder");
+  if (!(std::isfinite(options.depth_m) && options.depth_m >= 0)) {
+    throw InputError(path + ": depth: expected a depth >= 0 m, got " + num(options.depth_m));
+  }
+  {
+    GDALDatasetUniquePtr md(GDALDataset::Open(path.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
+    if (md) return load_multidim(*md, path, options);
+  }
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!ds || ds->GetRasterCount() == 0) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected a current field GDAL can open (NetCDF with u/v or a two-band raster)" +
+                     (why.empty() ? std::string(", got a file no driver recognises") : ", got: " + printable(why, 160)));
+  }
+  return load_two_band(*ds, path, options);
+}
+
+CurrentField parse_constant_current(const std::string& text, const std::string& what) {
+  const std::string expected = "SPEED_MPS,DIR_DEG (speed >= 0 m/s, direction it sets towards, clockwise from true north)";
+  const auto comma = text.find(',');
+  double v[2] = {0.0, 0.0};
+  bool ok = comma != std::string::npos && text.find(',', comma + 1) == std::string::npos;
+  for (int i = 0; ok && i < 2; ++i) {
+    const std::string part = trim(i == 0 ? text.substr(0, comma) : text.substr(comma + 1));
+    const char* first = part.data();
+    const char* last = part.data() + part.size();
+    if (first < last && *first == '+') ++first;
+    auto [ptr, e] = std::from_chars(first, last, v[i]);
+    ok = e == std::errc() && ptr == last && std::isfinite(v[i]);
+  }
+  if (!ok) throw InputError(what + ": expected " + expected + ", got '" + printable(text) + "'");
+  if (v[0] < 0) throw InputError(what + ": expected a speed >= 0 m/s, got " + printable(text));
+  CurrentField f;
+  f.source = what;
+  f.driver = "constant";
+  f.constant = true;
+  f.crs = "EPSG:4326";
+  f.crs_source = "constant (true north)";
+  f.geographic = true;
+  f.depth_levels = "constant";
+  f.constant_velocity = v[0] * vector_of_course_deg(v[1]);
+  // sin(180 deg) is not 0 in doubles: keep the exact axis directions exact.
+  for (int i = 0; i < 2; ++i)
+    if (std::abs(f.constant_velocity[i]) < 1e-15 * v[0]) f.constant_velocity[i] = 0.0;
+  return f;
+}
+
+std::optional<Eigen::Vector2d> sample_native(const CurrentField& f, const Eigen::Vector2d& p, double time_s) {
+  if (f.constant) return f.constant_velocity;
+  double px = p.x();
+  if (f.geographic && !f.x.empty()) {
+    if (px < f.x.front()) px += 360.0;
+    else if (px > f.x.back()) px -= 360.0;
+  }
+  const auto lx = locate(f.x, px);
+  const auto ly = locate(f.y, p.y());
+  if (!lx || !ly) return std::nullopt;
+  std::size_t k0 = 0;
+  double wt = 0;
+  if (!f.steady()) {
+    const auto lt = locate(f.times_s, time_s);
+    if (!lt) return std::nullopt;
+    k0 = lt->first;
+    wt = lt->second;
+  }
+  const std::size_t nx = f.nx(), ny = f.ny();
+  const auto [i, fx] = *lx;
+  const auto [j, fy] = *ly;
+  const std::size_t i1 = std::min(i + 1, nx - 1), j1 = std::min(j + 1, ny - 1);
+  auto at = [&](const std::vector<double>& c, std::size_t k) -> double {
+    const std::size_t b = k * ny * nx;
+    const double v00 = c[b + j * nx + i], v10 = c[b + j * nx + i1];
+    const double v01 = c[b + j1 * nx + i], v11 = c[b + j1 * nx + i1];
+    // Weights exactly 1 and 0 at a node, so the node's value comes back bit for bit.
+    return (1 - fy) * ((1 - fx) * v00 + fx * v10) + fy * ((1 - fx) * v01 + fx * v11);
+  };
+  double u = at(f.u, k0), v = at(f.v, k0);
+  if (wt != 0.0) {
+    const double u1 = at(f.u, k0 + 1), v1 = at(f.v, k0 + 1);
+    u = (1 - wt) * u + wt * u1;
+    v = (1 - wt) * v + wt * v1;
+  }
+  // 0 * NaN is NaN: an unknown node poisons the sample even with zero weight.
+  if (std::isnan(u) || std::isnan(v)) return std::nullopt;
+  return Eigen::Vector2d(u, v);
+}
+
+// Bilinear lattice over a local box: field coordinates and the rotation from field axes to local axes.
+struct CurrentSampler::Lattice {
+  Eigen::Vector2d origin{0, 0};
+  double step_x = 1, step_y = 1;
+  std::size_t nx = 0, ny = 0;
+  // cos and sin of the rotation, not the angle: no trigonometry per sample. Across
+  // a lattice cell the angle changes by ~1e-4 rad; the interpolated (c, s) is
+  // renormalised (its length would be short by ~1e-9) and its direction is
+  // right to ~1e-12 rad.
+  std::vector<double> fx, fy, cos_rot, sin_rot;  // NaN where no transform
+
+  // Bilinear interpolation of the lattice at local xy: field x, field y, cos and sin of the rotation; false outside.
+  bool at(const Eigen::Vector2d& xy, double& ox, double& oy, double& oc, double& os) const {
+    const double gx = (xy.x() - origin.x()) / step_x, gy = (xy.y() - origin.y()) / step_y;
+    if (!(gx >= 0 && gy >= 0 && gx <= static_cast<double>(nx - 1) && gy <= static_cast<double>(ny - 1))) return false;
+    const std::size_t i = std::min(static_cast<std::size_t>(gx), nx - 2), j = std::min(static_cast<std::size_t>(gy), ny - 2);
+    const double tx = gx - static_cast<double>(i), ty = gy - static_cast<double>(j);
+    auto bil = [&](const std::vector<double>& c) {
+      const std::size_t b = j * nx + i;
+      return (1 - ty) * ((1 - tx) * c[b] + tx * c[b + 1]) + ty * ((1 - tx) * c[b + nx] + tx * c[b + nx + 1]);
+    };
+    ox = bil(fx);
+    oy = bil(fy);
+    oc = bil(cos_rot);
+    os = bil(sin_rot);
+    const double len = std::sqrt(oc * oc + os * os);
+    oc /= len;
+    os /= len;
+    return std::isfinite(ox) && std::isfinite(oy) && std::isfinite(oc) && std::isfinite(os);
+  }
+};
+
+namespace {
+
+// Exact (OSR) field coordinates and field-to-local rotation at a local point.
+struct ExactMap {
+  const CurrentField& field;
+  const LocalFrame& frame;
+  std::unique_ptr<OGRSpatialReference> srs;
+  gdal::TransformPtr geo_to_field{nullptr, nullptr};
+  double centre_lon = 0;
+
+  ExactMap(const CurrentField& f, const LocalFrame& fr) : field(f), frame(fr) {
+    if (!f.geographic) {
+      srs = std::make_unique<OGRSpatialReference>();
+      srs->importFromWkt(f.crs_wkt.c_str());
+      srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+      geo_to_field = gdal::make_transform(*gdal::wgs84(), *srs);
+    } else if (!f.x.empty()) {
+      centre_lon = 0.5 * (f.x.front() + f.x.back());
+    }
+  }
+  // lon/lat -> field coordinates (NaN if impossible).
+  Eigen::Vector2d field_of(Eigen::Vector2d ll) const {
+    if (!ll.allFinite()) return {kNaN, kNaN};
+    if (field.geographic) {
+      // Wrap into centre +- 180 so the lattice is continuous across the field.
+      ll.x() = centre_lon + (wrap_360(ll.x() - centre_lon + 180.0) - 180.0);
+      return ll;
+    }
+    if (!geo_to_field) return {kNaN, kNaN};
+    double x = ll.x(), y = ll.y();
+    if (!geo_to_field->Transform(1, &x, &y)) return {kNaN, kNaN};
+    return {x, y};
+  }
+  // (field x, field y, rotation field axes -> local axes) at local xy.
+  Eigen::Vector3d at(const Eigen::Vector2d& xy) const {
+    const Eigen::Vector2d ll = frame.to_lonlat(xy);
+    const Eigen::Vector2d p = field_of(ll);
+    if (!p.allFinite()) return {kNaN, kNaN, kNaN};
+    double field_north = kPi / 2;
+    if (!field.geographic) {
+      const double step = ll.y() > 89.0 ? -1e-5 : 1e-5;
+      const Eigen::Vector2d q = field_of({ll.x(), ll.y() + step});
+      if (!q.allFinite()) return {kNaN, kNaN, kNaN};
+      field_north = math_angle(step > 0 ? Eigen::Vector2d(q - p) : Eigen::Vector2d(p - q));
+    }
+    return {p.x(), p.y(), wrap_pi(frame.true_north_angle(xy) - field_north)};
+  }
+};
+
+bool same_crs(const CurrentField& f, const LocalFrame& frame) {
+  if (f.constant || f.geographic) return false;
+  OGRSpatialReference a, b;
+  if (a.importFromWkt(f.crs_wkt.c_str()) != OGRERR_NONE || b.importFromWkt(frame.wkt().c_str()) != OGRERR_NONE) return false;
+  return a.IsSame(&b) != 0;
+}
+
+// Local bounding box of the field's nodes (densified boundary through OSR).
+std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> local_box_of(const CurrentField& f, const LocalFrame& frame) {
+  std::unique_ptr<OGRSpatialReference> srs;
+  gdal::TransformPtr to_geo{nullptr, nullptr};
+  if (!f.geographic) {
+    srs = std::make_unique<OGRSpatialReference>();
+    srs->importFromWkt(f.crs_wkt.c_str());
+    srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    to_geo = gdal::make_transform(*srs, *gdal::wgs84());
+    if (!to_geo) return std::nullopt;
+  }
+  Eigen::Vector2d lo(kNaN, kNaN), hi(kNaN, kNaN);
+  bool any = false;
+  constexpr int kSteps = 64;
+  const double x0 = f.x.front(), x1 = f.x.back(), y0 = f.y.front(), y1 = f.y.back();
+  for (int e = 0; e < 4; ++e)
+    for (int s = 0; s <= kSteps; ++s) {
+      const double t = static_cast<double>(s) / kSteps;
+      double x = e == 0 ? x0 + t * (x1 - x0) : e == 1 ? x1 : e == 2 ? x1 - t * (x1 - x0) : x0;
+      double y = e == 0 ? y0 : e == 1 ? y0 + t * (y1 - y0) : e == 2 ? y1 : y1 - t * (y1 - y0);
+      if (to_geo && !to_geo->Transform(1, &x, &y)) continue;
+      const Eigen::Vector2d p = frame.from_lonlat(x, y);
+      if (!p.allFinite()) continue;
+      lo = any ? Eigen::Vector2d(lo.cwiseMin(p)) : p;
+      hi = any ? Eigen::Vector2d(hi.cwiseMax(p)) : p;
+      any = true;
+    }
+  if (!any) return std::nullopt;
+  return std::make_pair(lo, hi);
+}
+
+}  // namespace
+
+CurrentSampler::CurrentSampler(std::shared_ptr<const CurrentField> field, const LocalFrame& frame,
+                               const std::optional<Eigen::Vector2d>& area_min,
+                               const std::optional<Eigen::Vector2d>& area_max)
+    : field_(std::move(field)), frame_(frame) {
+  const CurrentField& f = *field_;
+  if (same_crs(f, frame_)) return;
+  std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> box;
+  std::size_t n_x = 16, n_y = 16;
+  if (f.constant) {
+    if (!area_min || !area_max) return;  // exact path per sample
+    box = std::make_pair(area_min->cwiseMin(*area_max), area_min->cwiseMax(*area_max));
+  } else {
+    if (f.x.empty() || f.y.empty()) return;
+    box = local_box_of(f, frame_);
+    n_x = std::clamp<std::size_t>(4 * f.nx(), 16, 256);
+    n_y = std::clamp<std::size_t>(4 * f.ny(), 16, 256);
+  }
+  auto lat = std::make_shared<Lattice>();
+  lat->nx = n_x;
+  lat->ny = n_y;
+  if (box) {
+    Eigen::Vector2d lo = box->first, hi = box->second;
+    // One lattice step of margin so points on the field's edge are inside.
+    const Eigen::Vector2d size = (hi - lo).cwiseMax(Eigen::Vector2d(1.0, 1.0));
+    const Eigen::Vector2d margin(size.x() / static_cast<double>(n_x - 3), size.y() / static_cast<double>(n_y - 3));
+    lo -= margin;
+    hi += margin;
+    lat->origin = lo;
+    lat->step_x = (hi.x() - lo.x()) / static_cast<double>(n_x - 1);
+    lat->step_y = (hi.y() - lo.y()) / static_cast<double>(n_y - 1);
+    const ExactMap exact(f, frame_);
+    lat->fx.resize(n_x * n_y);
+    lat->fy.resize(n_x * n_y);
+    lat->cos_rot.resize(n_x * n_y);
+    lat->sin_rot.resize(n_x * n_y);
+    for (std::size_t j = 0; j < n_y; ++j)
+      for (std::size_t i = 0; i < n_x; ++i) {
+        const Eigen::Vector3d m = exact.at(lo + Eigen::Vector2d(static_cast<double>(i) * lat->step_x,
+                                                                static_cast<double>(j) * lat->step_y));
+        lat->fx[j * n_x + i] = m.x();
+        lat->fy[j * n_x + i] = m.y();
+        lat->cos_rot[j * n_x + i] = std::cos(m.z());
+        lat->sin_rot[j * n_x + i] = std::sin(m.z());
+      }
+  } else {
+    lat->nx = lat->ny = 0;  // the field lies nowhere in this frame
+  }
+  lattice_ = std::move(lat);
+}
+
+std::optional<Eigen::Vector2d> CurrentSampler::sample(const Eigen::Vector2d& xy, double time_s) const {
+  const CurrentField& f = *field_;
+  if (!lattice_) {
+    if (!f.constant) return sample_native(f, xy, time_s);
+    // A constant current without a lattice: the exact rotation at this point.
+    const double rot = frame_.true_north_angle(xy) - kPi / 2;
+    if (!std::isfinite(rot)) return std::nullopt;
+    return Eigen::Vector2d(std::cos(rot) * f.constant_velocity.x() - std::sin(rot) * f.constant_velocity.y(),
+                           std::sin(rot) * f.constant_velocity.x() + std::cos(rot) * f.constant_velocity.y());
+  }
+  double fx = 0, fy = 0, c = 1, s = 0;
+  if (lattice_->nx < 2 || !lattice_->at(xy, fx, fy, c, s)) {
+    if (!f.constant) return std::nullopt;
+    const double rot = frame_.true_north_angle(xy) - kPi / 2;
+    if (!std::isfinite(rot)) return std::nullopt;
+    c = std::cos(rot);
+    s = std::sin(rot);
+  }
+  const auto v = sample_native(f, {fx, fy}, time_s);
+  if (!v) return std::nullopt;
+  return Eigen::Vector2d(c * v->x() - s * v->y(), s * v->x() + c * v->y());
+}
+
+CurrentCoverage check_current_coverage(const CurrentField& f, const LocalFrame& frame, const Eigen::Vector2d& area_min,
+                                       const Eigen::Vector2d& area_max, double time_first_s, double time_last_s) {
+  CurrentCoverage cov;
+  if (f.constant) return cov;
+  const ExactMap exact(f, frame);
+  const Eigen::Vector2d lo = area_min.cwiseMin(area_max), hi = area_min.cwiseMax(area_max);
+  double fx0 = kNaN, fx1 = kNaN, fy0 = kNaN, fy1 = kNaN;
+  double lon0 = kNaN, lon1 = kNaN, lat0 = kNaN, lat1 = kNaN;
+  bool inside = !f.x.empty() && !f.y.empty();
+  constexpr int kSteps = 32;
+  for (int e = 0; e < 4; ++e)
+    for (int s = 0; s <= kSteps; ++s) {
+      const double t = static_cast<double>(s) / kSteps;
+      const Eigen::Vector2d p(e == 0 ? lo.x() + t * (hi.x() - lo.x()) : e == 1 ? hi.x() : e == 2 ? hi.x() - t * (hi.x() - lo.x()) : lo.x(),
+                              e == 0 ? lo.y() : e == 1 ? lo.y() + t * (hi.y() - lo.y()) : e == 2 ? hi.y() : hi.y() - t * (hi.y() - lo.y()));
+      const Eigen::Vector2d ll = frame.to_lonlat(p);
+      lon0 = std::fmin(lon0, ll.x());
+      lon1 = std::fmax(lon1, ll.x());
+      lat0 = std::fmin(lat0, ll.y());
+      lat1 = std::fmax(lat1, ll.y());
+      Eigen::Vector2d q = exact.field_of(ll);
+      if (f.geographic && q.allFinite()) {
+        if (q.x() < f.x.front()) q.x() += 360.0;
+        else if (q.x() > f.x.back()) q.x() -= 360.0;
+      }
+      if (!q.allFinite() || !inside || q.x() < f.x.front() || q.x() > f.x.back() || q.y() < f.y.front() || q.y() > f.y.back()) {
+        inside = false;
+        continue;
+      }
+      fx0 = std::fmin(fx0, q.x());
+      fx1 = std::fmax(fx1, q.x());
+      fy0 = std::fmin(fy0, q.y());
+      fy1 = std::fmax(fy1, q.y());
+    }
+  const bool timed = !f.steady() && (std::isfinite(time_first_s) || std::isfinite(time_last_s));
+  bool time_ok = true;
+  if (timed) {
+    const double a = std::isfinite(time_first_s) ? time_first_s : time_last_s;
+    const double b = std::isfinite(time_last_s) ? time_last_s : time_first_s;
+    time_ok = std::min(a, b) >= f.times_s.front() && std::max(a, b) <= f.times_s.back();
+  }
+  if (!inside || !time_ok) {
+    std::string times;
+    if (!f.times_s.empty()) {
+      times = " (times " + format_utc(f.times_s.front()) + (f.steady() ? std::string(", steady") : " .. " + format_utc(f.times_s.back())) + ")";
+    }
+    std::string work = "lon " + num(lon0, 4) + " .. " + num(lon1, 4) + ", lat " + num(lat0, 4) + " .. " + num(lat1, 4);
+    if (timed) {
+      work += ", times " + format_utc(std::isfinite(time_first_s) ? time_first_s : time_last_s) + " .. " +
+              format_utc(std::isfinite(time_last_s) ? time_last_s : time_first_s);
+    }
+    throw InputError(f.source + ": the current field covers lon " + num(f.extent.west, 4) + " .. " + num(f.extent.east, 4) +
+                     ", lat " + num(f.extent.south, 4) + " .. " + num(f.extent.north, 4) + times + "; the work area " +
+                     work + " is " + (inside ? "outside its time axis" : "outside"));
+  }
+  const std::size_t nx = f.nx(), ny = f.ny(), steps = f.steps();
+  for (std::size_t j = 0; j < ny; ++j) {
+    if (f.y[j] < fy0 || f.y[j] > fy1) continue;
+    for (std::size_t i = 0; i < nx; ++i) {
+      if (f.x[i] < fx0 || f.x[i] > fx1) continue;
+      ++cov.nodes;
+      for (std::size_t k = 0; k < steps; ++k) {
+        const std::size_t idx = (k * ny + j) * nx + i;
+        if (std::isnan(f.u[idx]) || std::isnan(f.v[idx])) {
+          ++cov.fill_nodes;
+          break;
+        }
+      }
+    }
+  }
+  return cov;
+}
+
+CurrentSummary summarize_current(const CurrentField& f) {
+  CurrentSummary s;
+  s.source = f.source;
+  s.driver = f.driver;
+  s.crs = f.crs;
+  s.crs_source = f.crs_source;
+  s.u_name = f.u_name;
+  s.v_name = f.v_name;
+  s.width = f.nx();
+  s.height = f.ny();
+  s.steps = f.steps();
+  s.extent = f.extent;
+  if (!f.times_s.empty()) {
+    s.time_first_s = f.times_s.front();
+    s.time_last_s = f.times_s.back();
+  }
+  s.depth_m = f.depth_m;
+  s.depth_levels = f.depth_levels;
+  if (f.constant) {
+    s.u_min = s.u_max = f.constant_velocity.x();
+    s.v_min = s.v_max = f.constant_velocity.y();
+    s.min_speed_mps = s.max_speed_mps = f.constant_velocity.norm();
+    return s;
+  }
+  double umin = INFINITY, umax = -INFINITY, vmin = INFINITY, vmax = -INFINITY, smin = INFINITY, smax = -INFINITY;
+  for (std::size_t i = 0; i < f.u.size(); ++i) {
+    const double u = f.u[i], v = f.v[i];
+    if (std::isnan(u) || std::isnan(v)) {
+      ++s.fill_nodes;
+      continue;
+    }
+    ++s.valid_nodes;
+    umin = std::min(umin, u);
+    umax = std::max(umax, u);
+    vmin = std::min(vmin, v);
+    vmax = std::max(vmax, v);
+    const double sp = std::hypot(u, v);
+    smin = std::min(smin, sp);
+    smax = std::max(smax, sp);
+  }
+  if (s.valid_nodes > 0) {
+    s.u_min = umin;
+    s.u_max = umax;
+    s.v_min = vmin;
+    s.v_max = vmax;
+    s.min_speed_mps = smin;
+    s.max_speed_mps = smax;
+  }
+  return s;
+}
+
+std::string format_utc(double epoch_s) {
+  if (!std::isfinite(epoch_s)) return "?";
+  using namespace std::chrono;
+  const double whole = std::floor(epoch_s + 0.5);
+  const auto days = static_cast<long long>(std::floor(whole / 86400.0));
+  const auto secs = static_cast<long long>(whole - static_cast<double>(days) * 86400.0);
+  const year_month_day ymd{sys_days{std::chrono::days{days}}};
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%04d-%02u-%02uT%02lld:%02lld:%02lldZ", static_cast<int>(ymd.year()),
+                static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()), secs / 3600, (secs / 60) % 60,
+                secs % 60);
+  return buf;
+}
+
+}  // namespace deepguide

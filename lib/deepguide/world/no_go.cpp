@@ -1,0 +1,406 @@
+#include "deepguide/world/no_go.hpp"
+
+#include <gdal_alg.h>
+#include <ogrsf_frmts.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <numeric>
+#include <sstream>
+#include <utility>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/bathymetry_raster.hpp"
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Masks up to this many cells live in memory (one byte each); larger ones go
+// to a compressed GeoTIFF in the temp folder.
+constexpr std::size_t kMemMaskCells = std::size_t{1} << 26;
+// Lines between two drops of the mask's block cache while polygonizing.
+constexpr int kMaskFlushLines = 512;
+constexpr int kCirclePoints = 16;  // round joins of the outward buffer; the header's cos(pi/16)
+
+std::string number(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+void check_option(const std::string& path, const char* field, double value, const char* what) {
+  if (!std::isfinite(value) || value < 0) {
+    throw input_error(InputLocation{path, "", field}, std::string("a finite ") + what + " >= 0 m", number(value));
+  }
+}
+
+// An OGR layer that hands each polygon GDALPolygonize emits to a function and
+// keeps nothing, so the cells' outlines are never all in memory at once.
+class PolygonSink final : public OGRLayer {
+ public:
+  explicit PolygonSink(std::function<void(const OGRPolygon&)> fn)
+      : fn_(std::move(fn)), defn_(new OGRFeatureDefn("nogo")) {
+    defn_->Reference();
+    OGRFieldDefn value("value", OFTInteger);
+    defn_->AddFieldDefn(&value);
+    defn_->SetGeomType(wkbPolygon);
+  }
+  ~PolygonSink() override { defn_->Release(); }
+  PolygonSink(const PolygonSink&) = delete;
+  PolygonSink& operator=(const PolygonSink&) = delete;
+
+  void ResetReading() override {}
+  OGRFeature* GetNextFeature() override { return nullptr; }
+  OGRFeatureDefn* GetLayerDefn() override { return defn_; }
+  int TestCapability(const char* cap) override { return EQUAL(cap, OLCSequentialWrite) ? TRUE : FALSE; }
+  /// An exception from the function, kept until GDAL has returned (it must not cross C code).
+  void rethrow() const {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ protected:
+  OGRErr ICreateFeature(OGRFeature* feature) override {
+    try {
+      const OGRGeometry* g = feature->GetGeometryRef();
+      if (g != nullptr && wkbFlatten(g->getGeometryType()) == wkbPolygon) fn_(*g->toPolygon());
+      return OGRERR_NONE;
+    } catch (...) {
+      error_ = std::current_exception();
+      return OGRERR_FAILURE;
+    }
+  }
+
+ private:
+  std::function<void(const OGRPolygon&)> fn_;
+  OGRFeatureDefn* defn_;
+  std::exception_ptr error_;
+};
+
+// A temporary file removed when this goes out of scope.
+class TempFile {
+ public:
+  TempFile() {
+    static std::atomic<unsigned> counter{0};
+    path_ = (fs::temp_directory_path() / ("deepguide-nogo-" + std::to_string(::getpid()) + "-" +
+                                          std::to_string(counter++) + ".tif"))
+                .string();
+  }
+  ~TempFile() {
+    std::error_code ec;
+    fs::remove(path_, ec);
+  }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// Pixel corners (column, row of the raster) -> the local frame.
+class PixelToFrame {
+ public:
+  PixelToFrame(const detail::OpenedBathymetry& raster, const LocalFrame& frame)
+      : ct_(nullptr, [](OGRCoordinateTransformation*) {}) {
+    std::copy(std::begin(raster.geotransform), std::end(raster.geotransform), gt_);
+    OGRSpatialReference frame_srs;
+    frame_srs.importFromWkt(frame.wkt().c_str());
+    frame_srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    if (!raster.srs->IsSame(&frame_srs)) {
+      ct_ = gdal::make_transform(*raster.srs, frame_srs);
+      if (!ct_) {
+        throw InputError(raster.info.path + ": expected a CRS that converts to the local frame " + frame.id() +
+                         ", got " + raster.info.crs + ", which PROJ cannot transform");
+      }
+    }
+  }
+  /// True when pixel edges bend in the frame (a different CRS), so outlines are split at every cell corner.
+  bool curved() const { return ct_ != nullptr; }
+
+  // Converts xs/ys (pixel coordinates) in place.
+  void apply(std::vector<double>& xs, std::vector<double>& ys, const std::string& path) const {
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      xs[i] = gt_[0] + xs[i] * gt_[1];
+      ys[i] = gt_[3] + ys[i] * gt_[5];
+    }
+    if (ct_ && !xs.empty() &&
+        !ct_->Transform(static_cast<int>(xs.size()), xs.data(), ys.data(), nullptr, nullptr)) {
+      throw InputError(path + ": expected cells that convert to the local frame, got one PROJ cannot transform");
+    }
+  }
+
+ private:
+  double gt_[6];
+  gdal::TransformPtr ct_;
+};
+
+// One ring of a polygonized outline (pixel coordinates, integral corners) in the frame.
+// Points where the outline goes straight on are dropped (exact: integral corners);
+// `corners` counts the ring's distinct corners.
+BgPolygon::ring_type ring_to_frame(const OGRLinearRing& ring, const PixelToFrame& to_frame, const std::string& path,
+                                   std::size_t& corners) {
+  std::vector<double> px, py;
+  const int n = ring.getNumPoints();
+  // Corners only: a point between two collinear edges adds nothing.
+  for (int i = 0; i + 1 < n; ++i) {  // the last point closes the ring
+    const int prev = i == 0 ? n - 2 : i - 1;
+    const double ax = ring.getX(prev), ay = ring.getY(prev), bx = ring.getX(i), by = ring.getY(i);
+    const double cx = ring.getX(i + 1), cy = ring.getY(i + 1);
+    if ((bx - ax) * (cy - by) - (by - ay) * (cx - bx) == 0.0) continue;
+    px.push_back(bx);
+    py.push_back(by);
+  }
+  corners += px.size();
+  if (to_frame.curved()) {
+    // Split every edge at every cell corner it passes (edges are axis-parallel, integral).
+    std::vector<double> dx, dy;
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      const std::size_t j = (i + 1) % px.size();
+      const double steps = std::max(std::abs(px[j] - px[i]), std::abs(py[j] - py[i]));
+      for (double k = 0; k < steps; k += 1.0) {
+        dx.push_back(px[i] + (px[j] - px[i]) * (k / steps));
+        dy.push_back(py[i] + (py[j] - py[i]) * (k / steps));
+      }
+    }
+    px = std::move(dx);
+    py = std::move(dy);
+  }
+  to_frame.apply(px, py, path);
+  BgPolygon::ring_type out;
+  out.reserve(px.size() + 1);
+  for (std::size_t i = 0; i < px.size(); ++i) out.emplace_back(px[i], py[i]);
+  if (!out.empty()) out.push_back(out.front());
+  return out;
+}
+
+std::size_t distinct_vertices(const BgPolygon& p) {
+  std::size_t n = p.outer().empty() ? 0 : p.outer().size() - 1;
+  for (const auto& r : p.inners())
+    if (!r.empty()) n += r.size() - 1;
+  return n;
+}
+
+// The conservative simplification of the header comment: contains `exact`,
+// lies within 0.95 tol of it.
+BgMultiPolygon simplify_outward(const BgPolygon& exact, double tol) {
+  const double grow = 0.5 * tol;
+  BgMultiPolygon grown;
+  bg::buffer(exact, grown, bg::strategy::buffer::distance_symmetric<double>(grow),
+             bg::strategy::buffer::side_straight(), bg::strategy::buffer::join_round(kCirclePoints),
+             bg::strategy::buffer::end_round(kCirclePoints), bg::strategy::buffer::point_circle(kCirclePoints));
+  BgMultiPolygon simple;
+  bg::simplify(grown, simple, 0.45 * tol);
+  if (!simple.empty() && bg::is_valid(simple) && bg::covered_by(exact, simple)) return simple;
+  return grown;  // DP broke a ring (self-touching, collapsed): the buffer itself keeps both promises
+}
+
+// Merges polygons whose envelopes overlap (Boost.Geometry union, cascaded),
+// so the result is disjoint. Polygons far from all others pass untouched.
+std::vector<BgPolygon> merge_overlapping(std::vector<BgPolygon> polys) {
+  namespace bgi = bg::index;
+  using Entry = std::pair<BgBox, std::size_t>;
+  std::vector<Entry> boxes;
+  boxes.reserve(polys.size());
+  for (std::size_t i = 0; i < polys.size(); ++i) boxes.emplace_back(bg::return_envelope<BgBox>(polys[i]), i);
+  bgi::rtree<Entry, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
+  std::vector<std::size_t> parent(polys.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<Entry> hits;
+  for (const auto& [box, i] : boxes) {
+    hits.clear();
+    tree.query(bgi::intersects(box), std::back_inserter(hits));
+    for (const auto& h : hits) parent[find(h.second)] = find(i);
+  }
+  std::vector<std::vector<std::size_t>> groups(polys.size());
+  for (std::size_t i = 0; i < polys.size(); ++i) groups[find(i)].push_back(i);
+
+  std::vector<BgPolygon> out;
+  for (auto& g : groups) {
+    if (g.empty()) continue;
+    if (g.size() == 1) {
+      out.push_back(std::move(polys[g[0]]));
+      continue;
+    }
+    std::vector<BgMultiPolygon> parts;
+    for (std::size_t i : g) parts.push_back(BgMultiPolygon{std::move(polys[i])});
+    while (parts.size() > 1) {  // pairwise, so each union stays balanced
+      std::vector<BgMultiPolygon> next;
+      for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
+        BgMultiPolygon u;
+        bg::union_(parts[i], parts[i + 1], u);
+        next.push_back(std::move(u));
+      }
+      if (parts.size() % 2 == 1) next.push_back(std::move(parts.back()));
+      parts = std::move(next);
+    }
+    for (auto& p : parts.front()) out.push_back(std::move(p));
+  }
+  return out;
+}
+
+struct MaskProgress {
+  GDALRasterBand* band = nullptr;
+  int calls = 0;
+};
+
+// GDALPolygonize reports after every line of each of its two passes: drop the
+// mask's cached blocks now and then, so the mask is never held in memory whole.
+int CPL_STDCALL drop_mask_cache(double, const char*, void* arg) {
+  auto* p = static_cast<MaskProgress*>(arg);
+  if (++p->calls % kMaskFlushLines == 0) p->band->FlushCache(false);
+  return TRUE;
+}
+
+}  // namespace
+
+LocalFrame raster_local_frame(const std::string& path, const BathymetryOptions& options) {
+  gdal::QuietErrors quiet;
+  const detail::OpenedBathymetry raster = detail::open_bathymetry(path, options);
+  const LonLatExtent& e = raster.info.extent;
+  return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
+}
+
+NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const NoGoOptions& options) {
+  check_option(path, "operating_depth_m", options.operating_depth_m, "operating depth");
+  check_option(path, "vertical_clearance_m", options.vertical_clearance_m, "vertical clearance");
+  check_option(path, "simplify_tolerance_m", options.simplify_tolerance_m, "simplification tolerance");
+
+  gdal::QuietErrors quiet;
+  detail::OpenedBathymetry raster = detail::open_bathymetry(path, options.bathymetry);
+  NoGoArea result;
+  result.raster = raster.info;
+  const int width = raster.info.width, height = raster.info.height;
+  result.total_cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  const double limit = options.operating_depth_m + options.vertical_clearance_m;
+  const PixelToFrame to_frame(raster, frame);
+  {
+    std::vector<double> cx = {width / 2.0, width / 2.0 + 1, width / 2.0 + 1, width / 2.0};
+    std::vector<double> cy = {height / 2.0, height / 2.0, height / 2.0 + 1, height / 2.0 + 1};
+    to_frame.apply(cx, cy, path);
+    BgPolygon cell;
+    for (int i = 0; i < 4; ++i) cell.outer().emplace_back(cx[i], cy[i]);
+    cell.outer().emplace_back(cx[0], cy[0]);
+    bg::correct(cell);
+    result.cell_area_m2 = bg::area(cell);
+  }
+
+  // 1. The mask, window by window (whole rows, so strips of the GeoTIFF mask are written whole).
+  gdal::ensure_registered();
+  std::unique_ptr<TempFile> mask_file;
+  GDALDatasetUniquePtr mask;
+  if (result.total_cells <= kMemMaskCells) {
+    mask.reset(GetGDALDriverManager()->GetDriverByName("MEM")->Create("", width, height, 1, GDT_Byte, nullptr));
+  } else {
+    mask_file = std::make_unique<TempFile>();
+    const char* create[] = {"TILED=NO", "BLOCKYSIZE=1", "COMPRESS=DEFLATE", "ZLEVEL=1", nullptr};
+    mask.reset(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(mask_file->path().c_str(), width, height,
+                                                                         1, GDT_Byte, const_cast<char**>(create)));
+  }
+  if (!mask) {
+    throw InputError(path + ": expected room for the no-go mask (" + std::to_string(width) + " x " +
+                     std::to_string(height) + " cells) in " + fs::temp_directory_path().string() + ", got: " +
+                     printable(gdal::QuietErrors::last_message(), 160));
+  }
+  double identity[6] = {0, 1, 0, 0, 0, 1};  // the outlines come in pixel corners
+  mask->SetGeoTransform(identity);
+  GDALRasterBand& mask_band = *mask->GetRasterBand(1);
+
+  GDALRasterBand& band = *raster.band;
+  const auto [win_w, win_h] =
+      detail::scan_window(band, width, height, options.bathymetry.max_window_cells, /*whole_rows=*/true);
+  std::vector<double> buf(static_cast<std::size_t>(win_w) * static_cast<std::size_t>(win_h));
+  std::vector<GByte> bits(buf.size());
+  for (int y = 0; y < height; y += win_h) {
+    const int h = std::min(win_h, height - y);
+    for (int x = 0; x < width; x += win_w) {
+      const int w = std::min(win_w, width - x);
+      if (band.RasterIO(GF_Read, x, y, w, h, buf.data(), w, h, GDT_Float64, 0, 0, nullptr) != CE_None) {
+        const std::string why = gdal::QuietErrors::last_message();
+        throw InputError(path + ": expected readable cells in the window at column " + std::to_string(x) +
+                         ", row " + std::to_string(y) + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+      }
+      const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double v = buf[i];
+        bool no_go;
+        if (raster.is_nodata(v)) {
+          no_go = options.nodata_is_no_go;
+        } else {
+          const double depth = v * raster.to_depth;
+          no_go = depth <= 0.0 || depth < limit;
+        }
+        bits[i] = no_go ? 1 : 0;
+        result.no_go_cells += no_go ? 1 : 0;
+      }
+      if (mask_band.RasterIO(GF_Write, x, y, w, h, bits.data(), w, h, GDT_Byte, 0, 0, nullptr) != CE_None) {
+        throw InputError(path + ": expected room for the no-go mask in " + fs::temp_directory_path().string() +
+                         ", got: " + printable(gdal::QuietErrors::last_message(), 160));
+      }
+    }
+    // Neither band's blocks are needed again: free them (GDAL's cache would
+    // otherwise grow to its limit, 5% of RAM by default).
+    band.FlushCache(false);
+    mask_band.FlushCache(false);
+  }
+  buf = {};
+  bits = {};
+
+  // 2. Polygonize, and convert/simplify each polygon as GDAL emits it.
+  const double tol = options.simplify_tolerance_m;
+  std::vector<BgPolygon> polys;
+  PolygonSink sink([&](const OGRPolygon& cells) {
+    BgPolygon exact;
+    exact.outer() = ring_to_frame(*cells.getExteriorRing(), to_frame, path, result.vertices_before_simplify);
+    for (int i = 0; i < cells.getNumInteriorRings(); ++i)
+      exact.inners().push_back(
+          ring_to_frame(*cells.getInteriorRing(i), to_frame, path, result.vertices_before_simplify));
+    bg::correct(exact);
+    if (tol == 0) {
+      polys.push_back(std::move(exact));
+      return;
+    }
+    for (auto& p : simplify_outward(exact, tol)) polys.push_back(std::move(p));
+  });
+  if (result.no_go_cells > 0) {
+    MaskProgress progress{&mask_band};
+    const CPLErr err = GDALPolygonize(GDALRasterBand::ToHandle(&mask_band), GDALRasterBand::ToHandle(&mask_band),
+                                      OGRLayer::ToHandle(&sink), 0, nullptr, drop_mask_cache, &progress);
+    sink.rethrow();
+    if (err != CE_None) {
+      throw InputError(path + ": expected a mask GDAL can polygonize, got: " +
+                       printable(gdal::QuietErrors::last_message(), 160));
+    }
+  }
+  mask.reset();
+  mask_file.reset();
+
+  // 3. Disjoint polygons for the planners.
+  if (tol > 0) polys = merge_overlapping(std::move(polys));
+  result.polygons.reserve(polys.size());
+  for (auto& p : polys) {
+    result.area_m2 += bg::area(p);
+    result.vertices_after_simplify += distinct_vertices(p);
+    PolygonObstacle o;
+    o.id = "nogo/" + std::to_string(result.polygons.size() + 1);
+    o.footprint = std::move(p);
+    result.polygons.push_back(std::move(o));
+  }
+  return result;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,681 @@
+#include "deepguide/world/obstacle_store.hpp"
+
+#include <fcntl.h>
+#include <ogrsf_frmts.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <boost/geometry/algorithms/equals.hpp>
+#include <boost/geometry/algorithms/intersects.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <unordered_set>
+
+#include "deepguide/core/angles.hpp"
+#include "deepguide/core/atomic_file.hpp"
+#include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+namespace {
+
+constexpr const char* kObstacleLayer = "obstacles";
+constexpr const char* kDetectionLayer = "detections";
+constexpr const char* kStallHook = "DEEPGUIDE_TEST_STALL_IMPORT_AFTER_ROWS";
+
+// Extra fields asked of load_obstacles: the store's first three, the detections' last three.
+const std::vector<std::string> kExtraFields = {"first_seen", "last_seen", "sightings", "time", "mission",
+                                               "contact_id"};
+enum ExtraIndex { kFirstSeen, kLastSeen, kSightings, kTime, kMission, kContactId };
+
+using Millis = std::int64_t;  // milliseconds since 1970-01-01T00:00:00Z
+
+// ---------------------------------------------------------------- times
+
+std::optional<Millis> parse_iso(const std::string& s) {
+  std::size_t i = 0;
+  auto number = [&](std::size_t digits, int& out) {
+    if (i + digits > s.size()) return false;
+    out = 0;
+    for (std::size_t k = 0; k < digits; ++k) {
+      const char c = s[i + k];
+      if (c < '0' || c > '9') return false;
+      out = out * 10 + (c - '0');
+    }
+    i += digits;
+    return true;
+  };
+  auto expect = [&](const char* any_of) {
+    if (i >= s.size() || std::strchr(any_of, s[i]) == nullptr) return false;
+    ++i;
+    return true;
+  };
+  int y = 0, mo = 0, d = 0, h = 0, mi = 0, sec = 0;
+  if (!number(4, y) || !expect("-") || !number(2, mo) || !expect("-") || !number(2, d) || !expect("Tt ") ||
+      !number(2, h) || !expect(":") || !number(2, mi) || !expect(":") || !number(2, sec)) {
+    return std::nullopt;
+  }
+  Millis ms = 0;
+  if (i < s.size() && (s[i] == '.' || s[i] == ',')) {
+    ++i;
+    const std::size_t start = i;
+    double scale = 100.0;
+    double frac = 0.0;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
+      frac += (s[i] - '0') * scale;
+      scale /= 10.0;
+      ++i;
+    }
+    if (i == start) return std::nullopt;
+    ms = static_cast<Millis>(std::llround(frac));
+  }
+  int offset_min = 0;
+  if (expect("Zz")) {
+  } else if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
+    const int sign = s[i] == '-' ? -1 : 1;
+    ++i;
+    int oh = 0, om = 0;
+    if (!number(2, oh)) return std::nullopt;
+    if (i < s.size()) {
+      expect(":");
+      if (!number(2, om)) return std::nullopt;
+    }
+    if (oh > 23 || om > 59) return std::nullopt;
+    offset_min = sign * (oh * 60 + om);
+  } else {
+    return std::nullopt;  // no zone: local time of an unknown place
+  }
+  if (i != s.size()) return std::nullopt;
+  using namespace std::chrono;
+  const year_month_day ymd{year{y}, month{static_cast<unsigned>(mo)}, day{static_cast<unsigned>(d)}};
+  if (!ymd.ok() || h > 23 || mi > 59 || sec > 59) return std::nullopt;
+  const auto t = sys_days{ymd} + hours{h} + minutes{mi} + seconds{sec} + milliseconds{ms} - minutes{offset_min};
+  return duration_cast<milliseconds>(t.time_since_epoch()).count();
+}
+
+std::string format_utc(Millis ms) {
+  using namespace std::chrono;
+  const sys_time<milliseconds> tp{milliseconds{ms}};
+  const auto day = floor<days>(tp);
+  const year_month_day ymd{day};
+  const hh_mm_ss hms{tp - day};
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%04d-%02u-%02uT%02d:%02d:%02d", static_cast<int>(ymd.year()),
+                static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()),
+                static_cast<int>(hms.hours().count()), static_cast<int>(hms.minutes().count()),
+                static_cast<int>(hms.seconds().count()));
+  std::string out = buf;
+  if (const auto sub = hms.subseconds().count(); sub != 0) {
+    std::snprintf(buf, sizeof buf, ".%03d", static_cast<int>(sub));
+    out += buf;
+  }
+  return out + "Z";
+}
+
+Millis checked_time(const std::string& text, const InputLocation& where) {
+  return *parse_iso(normalize_utc_time(text, where));
+}
+
+// ---------------------------------------------------------------- store layout
+
+struct FieldSpec {
+  const char* name;
+  OGRFieldType type;
+  OGRFieldType alt;
+  const char* type_name;
+};
+
+const FieldSpec kObstacleFields[] = {
+    {"id", OFTString, OFTString, "text"},
+    {"semi_major_m", OFTReal, OFTReal, "real"},
+    {"semi_minor_m", OFTReal, OFTReal, "real"},
+    {"orientation_deg", OFTReal, OFTReal, "real"},
+    {"height_m", OFTReal, OFTReal, "real"},
+    {"top_depth_m", OFTReal, OFTReal, "real"},
+    {"first_seen", OFTString, OFTString, "text"},
+    {"last_seen", OFTString, OFTString, "text"},
+    {"sightings", OFTInteger64, OFTInteger, "integer"},
+};
+const FieldSpec kDetectionFields[] = {
+    {"key", OFTString, OFTString, "text"},
+    {"mission", OFTString, OFTString, "text"},
+    {"contact_id", OFTString, OFTString, "text"},
+    {"time", OFTString, OFTString, "text"},
+    {"object_fid", OFTInteger64, OFTInteger, "integer"},
+    {"source", OFTString, OFTString, "text"},
+    {"imported_at", OFTString, OFTString, "text"},
+};
+
+void check_layer(GDALDataset& ds, const std::string& path, const char* name, bool spatial,
+                 const FieldSpec* fields, std::size_t n_fields) {
+  OGRLayer* layer = ds.GetLayerByName(name);
+  const InputLocation where{path, std::string("layer '") + name + "'", ""};
+  if (layer == nullptr) {
+    throw input_error(where, std::string("the obstacle store's ") + (spatial ? "Point layer" : "attribute table") +
+                                 " (a GeoPackage written by 'deepguide obstacles import')",
+                      "none");
+  }
+  if (spatial) {
+    if (wkbFlatten(layer->GetGeomType()) != wkbPoint) {
+      throw input_error(where, "a Point layer", OGRGeometryTypeToName(layer->GetGeomType()));
+    }
+    const OGRSpatialReference* srs = layer->GetSpatialRef();
+    const std::string id = srs != nullptr ? gdal::srs_id(*srs) : "none";
+    if (id != "EPSG:4326") throw input_error(where, "CRS EPSG:4326", id);
+  }
+  OGRFeatureDefn* defn = layer->GetLayerDefn();
+  for (std::size_t k = 0; k < n_fields; ++k) {
+    const FieldSpec& f = fields[k];
+    InputLocation w = where;
+    w.field = f.name;
+    const int i = defn->GetFieldIndex(f.name);
+    if (i < 0) throw input_error(w, std::string("a ") + f.type_name + " field of the obstacle store", "none");
+    const OGRFieldType t = defn->GetFieldDefn(i)->GetType();
+    if (t != f.type && t != f.alt) {
+      throw input_error(w, std::string("a ") + f.type_name + " field", OGRFieldDefn::GetFieldTypeName(t));
+    }
+  }
+}
+
+GDALDatasetUniquePtr open_store(const std::string& path, bool update) {
+  gdal::QuietErrors quiet;
+  const char* const drivers[] = {"GPKG", nullptr};
+  GDALDatasetUniquePtr ds(GDALDataset::Open(
+      path.c_str(), GDAL_OF_VECTOR | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY), drivers, nullptr, nullptr));
+  if (!ds) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": expected a GeoPackage obstacle store, got " +
+                     (why.empty() ? std::string("a file that is not a GeoPackage") : "'" + printable(why, 160) + "'"));
+  }
+  check_layer(*ds, path, kObstacleLayer, true, kObstacleFields, std::size(kObstacleFields));
+  check_layer(*ds, path, kDetectionLayer, false, kDetectionFields, std::size(kDetectionFields));
+  return ds;
+}
+
+void check_writable(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    throw InputError(path + ": expected a readable obstacle store, got: " + std::strerror(errno));
+  }
+  // Root may write anywhere; a store without any write bit was still meant to stay as it is.
+  if ((st.st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0) {
+    throw InputError(path + ": expected a writable obstacle store, got a read-only file");
+  }
+}
+
+// Creates an empty store unless one exists. The hard link never replaces a
+// store another importer created meanwhile.
+bool create_store(const std::string& path) {
+  AtomicOutput out(path);
+  gdal::QuietErrors quiet;
+  auto fail = [&](const std::string& what) {
+    const std::string why = gdal::QuietErrors::last_message();
+    throw InputError(path + ": could not create the obstacle store: " + what + (why.empty() ? "" : ": " + why));
+  };
+  {
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GPKG");
+    if (driver == nullptr) fail("GDAL has no GPKG driver");
+    GDALDatasetUniquePtr ds(driver->Create(out.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    if (!ds) fail("create the file");
+    const auto geo = gdal::wgs84();
+    const char* options[] = {"FID=fid", nullptr};
+    OGRLayer* obstacles = ds->CreateLayer(kObstacleLayer, geo.get(), wkbPoint, const_cast<char**>(options));
+    OGRLayer* detections = ds->CreateLayer(kDetectionLayer, nullptr, wkbNone, const_cast<char**>(options));
+    if (obstacles == nullptr || detections == nullptr) fail("create the layers");
+    for (const auto& [layer, fields, n] : {std::tuple{obstacles, kObstacleFields, std::size(kObstacleFields)},
+                                           std::tuple{detections, kDetectionFields, std::size(kDetectionFields)}}) {
+      for (std::size_t k = 0; k < n; ++k) {
+        OGRFieldDefn fd(fields[k].name, fields[k].type);
+        if (layer->CreateField(&fd) != OGRERR_NONE) fail(std::string("create field ") + fields[k].name);
+      }
+    }
+    ds->ExecuteSQL("CREATE UNIQUE INDEX detections_key ON detections(key)", nullptr, nullptr);
+    if (!gdal::QuietErrors::last_message().empty()) fail("index the detection keys");
+  }
+  if (::link(out.temp_path().c_str(), path.c_str()) != 0) {
+    if (errno == EEXIST) return false;
+    throw InputError(path + ": could not create the obstacle store: " + std::strerror(errno));
+  }
+  return true;  // the temporary name goes with `out`; the store keeps the inode
+}
+
+// Serialises importers: SQLite's own locks would let two of them read the
+// same state and then both write.
+class StoreLock {
+ public:
+  explicit StoreLock(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
+    if (fd_ < 0) throw InputError(path + ": expected a readable obstacle store, got: " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX) != 0) {
+      const int e = errno;
+      ::close(fd_);
+      throw InputError(path + ": could not lock the obstacle store: " + std::strerror(e));
+    }
+  }
+  ~StoreLock() { ::close(fd_); }
+  StoreLock(const StoreLock&) = delete;
+  StoreLock& operator=(const StoreLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+// ---------------------------------------------------------------- records
+
+std::string rounded(double v, double step, int decimals) {
+  double r = std::round(v / step) * step;
+  if (r == 0.0) r = 0.0;  // no "-0.000"
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, r);
+  return buf;
+}
+
+std::string optional_text(const std::optional<double>& v) { return v ? rounded(*v, 1e-3, 3) : std::string(); }
+
+double axis_heading_deg(double heading_deg) {
+  const double h = std::fmod(wrap_360(heading_deg), 180.0);
+  return h >= 180.0 ? 0.0 : h;
+}
+
+struct Detection {
+  InputLocation where;
+  std::string source;
+  std::string mission;
+  std::string contact_id;
+  std::string time;  // UTC text or empty
+  Millis seen_ms = 0;
+  std::string key;
+  EllipticCylinder obstacle;
+  Eigen::Vector2d lonlat{0.0, 0.0};
+  double heading_deg = 0.0;
+};
+
+std::vector<Detection> parse_detections(const LoadedObstacles& l, std::size_t first_source, Millis import_ms) {
+  for (const ObstacleOrigin& o : l.polygon_origins) {
+    if (o.source < first_source) continue;
+    InputLocation w = o.where;
+    w.field = "geometry";
+    throw input_error(w, "a Point detection (a sonar contact with semi_major_m)", "a polygon");
+  }
+  std::vector<Detection> out;
+  for (std::size_t i = 0; i < l.obstacles.ellipses.size(); ++i) {
+    const ObstacleOrigin& o = l.ellipse_origins[i];
+    if (o.source < first_source) continue;
+    Detection d;
+    d.where = o.where;
+    d.source = fs::path(l.sources[o.source].path).filename().string();
+    d.mission = o.extra[kMission].value_or(d.source);
+    d.contact_id = o.extra[kContactId].value_or(l.obstacles.ellipses[i].id);
+    if (o.extra[kTime]) {
+      InputLocation w = o.where;
+      w.field = "time";
+      d.time = normalize_utc_time(*o.extra[kTime], w);
+      d.seen_ms = *parse_iso(d.time);
+    } else {
+      d.seen_ms = import_ms;
+    }
+    d.obstacle = l.obstacles.ellipses[i];
+    d.lonlat = o.lonlat;
+    d.heading_deg = o.heading_deg;
+    const Ellipse& e = d.obstacle.footprint;
+    std::string heading = rounded(axis_heading_deg(o.heading_deg), 1e-3, 3);
+    if (heading == "180.000") heading = "0.000";  // 179.9996 rounds up to the same axis as 0
+    d.key = nlohmann::json::array({d.mission, d.contact_id, d.time, rounded(o.lonlat.x(), 1e-8, 8),
+                                   rounded(o.lonlat.y(), 1e-8, 8), rounded(e.a, 1e-3, 3), rounded(e.b, 1e-3, 3),
+                                   heading, optional_text(d.obstacle.height_m), optional_text(d.obstacle.top_depth_m)})
+                .dump();
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+std::vector<StoredObstacle> parse_stored(const LoadedObstacles& l) {
+  std::vector<StoredObstacle> out;
+  for (std::size_t i = 0; i < l.obstacles.ellipses.size(); ++i) {
+    const ObstacleOrigin& o = l.ellipse_origins[i];
+    if (o.source != 0) continue;
+    StoredObstacle s;
+    s.fid = o.fid;
+    s.obstacle = l.obstacles.ellipses[i];
+    for (const auto& [index, name, target] : {std::tuple{kFirstSeen, "first_seen", &s.first_seen},
+                                              std::tuple{kLastSeen, "last_seen", &s.last_seen}}) {
+      InputLocation w = o.where;
+      w.field = name;
+      if (!o.extra[index]) throw input_error(w, "an ISO 8601 UTC time", "no value");
+      *target = normalize_utc_time(*o.extra[index], w);
+    }
+    InputLocation w = o.where;
+    w.field = "sightings";
+    const std::string text = o.extra[kSightings].value_or("");
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), s.sightings);
+    if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || s.sightings < 1) {
+      throw input_error(w, "a whole number of sightings >= 1", text.empty() ? "no value" : "'" + printable(text) + "'");
+    }
+    if (*parse_iso(s.first_seen) > *parse_iso(s.last_seen)) {
+      w.field = "last_seen";
+      throw input_error(w, "a time not before first_seen (" + s.first_seen + ")", s.last_seen);
+    }
+    out.push_back(std::move(s));
+  }
+  std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.fid < y.fid; });
+  return out;
+}
+
+std::vector<StoredDetection> read_detection_rows(GDALDataset& ds) {
+  OGRLayer* layer = ds.GetLayerByName(kDetectionLayer);
+  std::vector<StoredDetection> out;
+  layer->ResetReading();
+  for (auto& f : *layer) {
+    StoredDetection d;
+    auto text = [&](const char* name) {
+      const int i = f->GetFieldIndex(name);
+      return f->IsFieldSetAndNotNull(i) ? std::string(f->GetFieldAsString(i)) : std::string();
+    };
+    d.key = text("key");
+    d.mission = text("mission");
+    d.contact_id = text("contact_id");
+    d.time = text("time");
+    d.object_fid = f->GetFieldAsInteger64("object_fid");
+    d.source = text("source");
+    d.imported_at = text("imported_at");
+    out.push_back(std::move(d));
+  }
+  std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
+  return out;
+}
+
+// ---------------------------------------------------------------- matching and merging
+
+BgBox footprint_box(const Ellipse& e, double grow) {
+  const double c = std::cos(e.theta), s = std::sin(e.theta);
+  const double hx = std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s) + grow;
+  const double hy = std::sqrt(e.a * e.a * s * s + e.b * e.b * c * c) + grow;
+  return {BgPoint(e.center.x() - hx, e.center.y() - hy), BgPoint(e.center.x() + hx, e.center.y() + hy)};
+}
+
+BgPolygon footprint_polygon(const Ellipse& e) {
+  constexpr int kSides = 256;
+  BgPolygon p;
+  for (int k = 0; k < kSides; ++k) p.outer().push_back(to_bg(e.point_at(-2.0 * kPi * k / kSides)));  // clockwise
+  p.outer().push_back(p.outer().front());
+  return p;
+}
+
+struct Working {
+  StoredObstacle stored;
+  Millis first_ms = 0;
+  Millis last_ms = 0;
+  bool is_new = false;
+  bool dirty = false;
+  // A new, unmerged obstacle is written with the detection's values as read,
+  // so no frame round trip touches them.
+  bool as_read = false;
+  Eigen::Vector2d lonlat{0.0, 0.0};
+  double heading_deg = 0.0;
+};
+
+void merge_into(Working& w, const Detection& d) {
+  const double n = static_cast<double>(w.stored.sightings);
+  Ellipse& e = w.stored.obstacle.footprint;
+  const Ellipse& f = d.obstacle.footprint;
+  e.center = (n * e.center + f.center) / (n + 1.0);
+  e.a = (n * e.a + f.a) / (n + 1.0);
+  e.b = (n * e.b + f.b) / (n + 1.0);
+  const Vec2 doubled = n * Vec2(std::cos(2.0 * e.theta), std::sin(2.0 * e.theta)) +
+                       Vec2(std::cos(2.0 * f.theta), std::sin(2.0 * f.theta));
+  e.theta = 0.5 * std::atan2(doubled.y(), doubled.x());
+  EllipticCylinder& o = w.stored.obstacle;
+  if (o.height_m && d.obstacle.height_m) {
+    o.height_m = std::max(*o.height_m, *d.obstacle.height_m);
+  } else if (o.top_depth_m && d.obstacle.top_depth_m) {
+    o.top_depth_m = std::min(*o.top_depth_m, *d.obstacle.top_depth_m);
+  } else {
+    o.height_m.reset();
+    o.top_depth_m.reset();
+  }
+  w.first_ms = std::min(w.first_ms, d.seen_ms);
+  w.last_ms = std::max(w.last_ms, d.seen_ms);
+  w.stored.first_seen = format_utc(w.first_ms);
+  w.stored.last_seen = format_utc(w.last_ms);
+  ++w.stored.sightings;
+  w.dirty = true;
+  w.as_read = false;
+}
+
+void fill_feature(OGRFeature& f, const Working& w, const LocalFrame& frame) {
+  const EllipticCylinder& o = w.stored.obstacle;
+  const Ellipse& e = o.footprint;
+  const Eigen::Vector2d ll = w.as_read ? w.lonlat : frame.to_lonlat(e.center);
+  OGRPoint point(ll.x(), ll.y());
+  f.SetGeometry(&point);
+  f.SetField("id", o.id.c_str());
+  f.SetField("semi_major_m", e.a);
+  f.SetField("semi_minor_m", e.b);
+  f.SetField("orientation_deg", axis_heading_deg(w.as_read ? w.heading_deg : frame.local_to_heading(e.theta, e.center)));
+  for (const auto& [name, v] : {std::pair{"height_m", o.height_m}, std::pair{"top_depth_m", o.top_depth_m}}) {
+    if (v) {
+      f.SetField(name, *v);
+    } else {
+      f.SetFieldNull(f.GetFieldIndex(name));
+    }
+  }
+  f.SetField("first_seen", w.stored.first_seen.c_str());
+  f.SetField("last_seen", w.stored.last_seen.c_str());
+  f.SetField("sightings", static_cast<GIntBig>(w.stored.sightings));
+}
+
+}  // namespace
+
+std::string normalize_utc_time(const std::string& text, const InputLocation& where) {
+  const auto ms = parse_iso(text);
+  if (!ms) {
+    throw input_error(where, "an ISO 8601 time with a zone, e.g. 2024-05-01T12:30:00Z", "'" + printable(text) + "'");
+  }
+  return format_utc(*ms);
+}
+
+ObstacleStore read_obstacle_store(const std::string& path, const std::string& local_crs) {
+  gdal::ensure_registered();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": expected an existing obstacle store, found none");
+  GDALDatasetUniquePtr ds = open_store(path, false);
+  ObstacleReadOptions options;
+  options.local_crs = local_crs;
+  options.extra_fields = kExtraFields;
+  const LoadedObstacles loaded = load_obstacles({path}, options);
+  ObstacleStore store{loaded.frame, parse_stored(loaded), read_detection_rows(*ds)};
+  return store;
+}
+
+ImportSummary import_detections(const std::string& store_path, const std::vector<std::string>& detection_paths,
+                                const ObstacleStoreOptions& options) {
+  gdal::ensure_registered();
+  if (!std::isfinite(options.merge_distance_m) || options.merge_distance_m < 0.0) {
+    throw InputError("--merge-distance: expected a distance >= 0 m, got " + std::to_string(options.merge_distance_m));
+  }
+  if (detection_paths.empty()) throw InputError(store_path + ": expected at least one detection file to import");
+  Millis import_ms = 0;
+  if (options.import_time.empty()) {
+    using namespace std::chrono;
+    import_ms = duration_cast<seconds>(system_clock::now().time_since_epoch()).count() * 1000;
+  } else {
+    import_ms = checked_time(options.import_time, {"--import-time", "", ""});
+  }
+  std::error_code ec;
+  for (const std::string& p : detection_paths) {
+    if (fs::exists(p, ec) && fs::exists(store_path, ec) && fs::equivalent(p, store_path, ec)) {
+      throw InputError(p + ": expected a detection file, got the store itself");
+    }
+  }
+  ObstacleReadOptions read;
+  read.local_crs = options.local_crs;
+  read.source_crs = options.source_crs;
+  read.extra_fields = kExtraFields;
+
+  ImportSummary summary;
+  if (!fs::exists(store_path, ec)) {
+    // Check every detection before a new store appears on disk.
+    parse_detections(load_obstacles(detection_paths, read), 0, import_ms);
+    summary.created = create_store(store_path);
+  }
+  if (fs::is_directory(store_path, ec)) throw InputError(store_path + ": expected an obstacle store file, got a folder");
+  check_writable(store_path);
+  const StoreLock lock(store_path);
+  GDALDatasetUniquePtr ds = open_store(store_path, true);  // also rolls back what a killed import left
+
+  std::vector<std::string> paths{store_path};
+  paths.insert(paths.end(), detection_paths.begin(), detection_paths.end());
+  const LoadedObstacles loaded = load_obstacles(paths, read);
+  const LocalFrame& frame = loaded.frame;
+  const std::vector<Detection> detections = parse_detections(loaded, 1, import_ms);
+
+  std::vector<Working> objects;
+  for (StoredObstacle& s : parse_stored(loaded)) {
+    Working w;
+    w.first_ms = *parse_iso(s.first_seen);
+    w.last_ms = *parse_iso(s.last_seen);
+    w.stored = std::move(s);
+    objects.push_back(std::move(w));
+  }
+  std::unordered_set<std::string> keys;
+  for (StoredDetection& d : read_detection_rows(*ds)) keys.insert(std::move(d.key));
+
+  using Entry = std::pair<BgBox, std::size_t>;
+  bgi::rtree<Entry, bgi::quadratic<16>> index;
+  std::vector<BgBox> boxes;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    boxes.push_back(footprint_box(objects[i].stored.obstacle.footprint, 0.0));
+    index.insert({boxes[i], i});
+  }
+  const double d_max = options.merge_distance_m;
+  std::vector<std::pair<const Detection*, std::size_t>> rows;  // detection, object index
+  for (const Detection& d : detections) {
+    ++summary.detections;
+    if (!keys.insert(d.key).second) {
+      ++summary.already_imported;
+      continue;
+    }
+    const Ellipse& f = d.obstacle.footprint;
+    std::vector<Entry> candidates;
+    index.query(bgi::intersects(footprint_box(f, d_max)), std::back_inserter(candidates));
+    std::optional<std::size_t> best;
+    double best_dist = std::numeric_limits<double>::infinity();
+    std::optional<BgPolygon> mine;
+    for (const Entry& c : candidates) {
+      const Ellipse& e = objects[c.second].stored.obstacle.footprint;
+      const double dist = (e.center - f.center).norm();
+      if (dist > best_dist || (best && dist == best_dist && c.second > *best)) continue;
+      bool match = dist <= d_max;
+      if (!match) {
+        if (!mine) mine = footprint_polygon(f);
+        match = bg::intersects(*mine, footprint_polygon(e));
+      }
+      if (match) best = c.second, best_dist = dist;
+    }
+    if (best) {
+      index.remove(Entry{boxes[*best], *best});
+      merge_into(objects[*best], d);
+      boxes[*best] = footprint_box(objects[*best].stored.obstacle.footprint, 0.0);
+      index.insert({boxes[*best], *best});
+      ++summary.merged;
+      rows.emplace_back(&d, *best);
+    } else {
+      Working w;
+      w.stored.obstacle = d.obstacle;
+      w.stored.obstacle.id = d.mission + "/" + (d.contact_id.empty() ? d.where.feature : d.contact_id);
+      w.stored.first_seen = w.stored.last_seen = format_utc(d.seen_ms);
+      w.stored.sightings = 1;
+      w.first_ms = w.last_ms = d.seen_ms;
+      w.is_new = w.dirty = w.as_read = true;
+      w.lonlat = d.lonlat;
+      w.heading_deg = d.heading_deg;
+      objects.push_back(std::move(w));
+      boxes.push_back(footprint_box(d.obstacle.footprint, 0.0));
+      index.insert({boxes.back(), objects.size() - 1});
+      ++summary.new_obstacles;
+      rows.emplace_back(&d, objects.size() - 1);
+    }
+  }
+
+  OGRLayer* obstacle_layer = ds->GetLayerByName(kObstacleLayer);
+  OGRLayer* detection_layer = ds->GetLayerByName(kDetectionLayer);
+  if (!rows.empty()) {
+    long stall_after = -1;
+    if (const char* hook = std::getenv(kStallHook)) stall_after = std::strtol(hook, nullptr, 10);
+    long rows_written = 0;
+    auto row_written = [&] {
+      if (++rows_written != stall_after) return;
+      std::fprintf(stderr, "deepguide: test hook: import stalled after %ld rows\n", rows_written);
+      std::fflush(stderr);
+      for (;;) ::pause();
+    };
+    gdal::QuietErrors quiet;
+    auto fail = [&](const std::string& what) {
+      const std::string why = gdal::QuietErrors::last_message();
+      throw InputError(store_path + ": could not " + what + " (nothing was imported)" +
+                       (why.empty() ? "" : ": " + printable(why, 160)));
+    };
+    // Keep the open transaction's pages in memory: the store file then changes
+    // only at commit, and a process killed before leaves a journal SQLite has
+    // not yet marked valid, which read-only readers may ignore. With spills a
+    // "hot" journal would lock them out until a writer rolled it back.
+    if (OGRLayer* r = ds->ExecuteSQL("PRAGMA cache_spill = OFF", nullptr, nullptr)) ds->ReleaseResultSet(r);
+    if (ds->StartTransaction() != OGRERR_NONE) fail("start a transaction");
+    try {
+      for (Working& w : objects) {
+        if (!w.dirty) continue;
+        OGRFeatureUniquePtr f(w.is_new ? OGRFeature::CreateFeature(obstacle_layer->GetLayerDefn())
+                                       : obstacle_layer->GetFeature(w.stored.fid));
+        if (!f) fail("read stored obstacle " + std::to_string(w.stored.fid));
+        fill_feature(*f, w, frame);
+        if (w.is_new) {
+          if (obstacle_layer->CreateFeature(f.get()) != OGRERR_NONE) fail("add an obstacle");
+          w.stored.fid = f->GetFID();
+        } else if (obstacle_layer->SetFeature(f.get()) != OGRERR_NONE) {
+          fail("update obstacle " + std::to_string(w.stored.fid));
+        }
+        row_written();
+      }
+      const std::string imported_at = format_utc(import_ms);
+      for (const auto& [d, object] : rows) {
+        OGRFeature f(detection_layer->GetLayerDefn());
+        f.SetField("key", d->key.c_str());
+        f.SetField("mission", d->mission.c_str());
+        f.SetField("contact_id", d->contact_id.c_str());
+        if (d->time.empty()) {
+          f.SetFieldNull(f.GetFieldIndex("time"));
+        } else {
+          f.SetField("time", d->time.c_str());
+        }
+        f.SetField("object_fid", static_cast<GIntBig>(objects[object].stored.fid));
+        f.SetField("source", d->source.c_str());
+        f.SetField("imported_at", imported_at.c_str());
+        if (detection_layer->CreateFeature(&f) != OGRERR_NONE) fail("record detection '" + printable(d->key) + "'");
+        row_written();
+      }
+      if (ds->CommitTransaction() != OGRERR_NONE) fail("commit the import");
+    } catch (...) {
+      ds->RollbackTransaction();
+      throw;
+    }
+  }
+  summary.obstacles_in_store = static_cast<std::size_t>(obstacle_layer->GetFeatureCount());
+  return summary;
+}
+
+}  // namespace deepguide
