@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers shared by the test suites: scratch folders, files, running the CLI.
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +10,8 @@
 #include <random>
 #include <string>
 #include <sys/wait.h>
+
+#include "deepguide/core/error.hpp"
 
 namespace deepguide::test {
 
@@ -84,6 +88,20 @@ inline RunResult run_cli(const std::string& args) {
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+/// Expects `fn` to throw a deepguide::InputError whose message is one line
+/// and contains `needle`.
+template <class Fn>
+void expect_one_line_error(Fn fn, const std::string& needle) {
+  try {
+    fn();
+    ADD_FAILURE() << "no InputError";
+  } catch (const deepguide::InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_NE(msg.find(needle), std::string::npos) << msg;
+  }
 }
 
 }  // namespace deepguide::test

@@ -25,18 +25,7 @@ namespace fs = std::filesystem;
 using test::real_file;
 #define REAL_FILE_OR_SKIP(var, rel) DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)
 
-// Expects `fn` to throw an InputError whose message is one line and contains `needle`.
-template <class Fn>
-void expect_one_line_error(Fn fn, const std::string& needle) {
-  try {
-    fn();
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    EXPECT_NE(msg.find(needle), std::string::npos) << msg;
-  }
-}
+using test::expect_one_line_error;
 
 BathymetryOptions assumed(const std::string& crs) {
   BathymetryOptions o;

@@ -27,17 +27,7 @@ namespace {
 using test::ScratchDir;
 constexpr const char* kHycom = "currents-hycom/hycom_glby_930_2019030712_t003_uv3z.nc";
 
-template <class Fn>
-void expect_one_line_error(Fn fn, const std::string& needle) {
-  try {
-    fn();
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    EXPECT_NE(msg.find(needle), std::string::npos) << msg;
-  }
-}
+using test::expect_one_line_error;
 
 // ---------------------------------------------------------------- writers
 

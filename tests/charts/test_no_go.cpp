@@ -29,17 +29,7 @@ namespace fs = std::filesystem;
 
 constexpr double kX0 = 500000, kY0 = 6000000, kCell = 10;  // UTM 32N, 10 m cells, north-up
 
-template <class Fn>
-void expect_one_line_error(Fn fn, const std::string& needle) {
-  try {
-    fn();
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    EXPECT_NE(msg.find(needle), std::string::npos) << msg;
-  }
-}
+using test::expect_one_line_error;
 
 // Writes a Float32 GeoTIFF of DEPTHS (rows from north), 10 m cells at (kX0, kY0), EPSG:32632.
 void write_depths(const std::string& path, int w, int h, const std::vector<double>& depth,

@@ -18,6 +18,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/route_scene.hpp"
+#include "png_reader.hpp"
 #include "test_support.hpp"
 
 using namespace deepguide;
@@ -44,30 +45,7 @@ std::vector<std::string> folder_entries(const std::filesystem::path& dir) {
   return names;
 }
 
-/// A decoded PNG, pixels read back as 0..255 RGB.
-class Png {
- public:
-  explicit Png(const std::string& path) : surface_(cairo_image_surface_create_from_png(path.c_str())) {}
-  ~Png() { cairo_surface_destroy(surface_); }
-  Png(const Png&) = delete;
-  Png& operator=(const Png&) = delete;
-  bool ok() const { return cairo_surface_status(surface_) == CAIRO_STATUS_SUCCESS; }
-  int width() const { return cairo_image_surface_get_width(surface_); }
-  int height() const { return cairo_image_surface_get_height(surface_); }
-  /// RGB of the pixel covering the continuous pixel position p.
-  std::array<int, 3> at(const Vec2& p) const {
-    const int x = static_cast<int>(std::floor(p.x()));
-    const int y = static_cast<int>(std::floor(p.y()));
-    EXPECT_TRUE(x >= 0 && y >= 0 && x < width() && y < height()) << "pixel " << x << "," << y << " is outside";
-    const unsigned char* row = cairo_image_surface_get_data(surface_) + y * cairo_image_surface_get_stride(surface_);
-    std::uint32_t v;
-    std::memcpy(&v, row + 4 * x, 4);
-    return {static_cast<int>((v >> 16) & 0xff), static_cast<int>((v >> 8) & 0xff), static_cast<int>(v & 0xff)};
-  }
-
- private:
-  cairo_surface_t* surface_;
-};
+using test::Png;
 
 std::array<int, 3> rgb(const Rgba& c) {
   return {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)),
