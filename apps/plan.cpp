@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
@@ -75,16 +76,21 @@ void register_plan(CLI::App& app) {
       throw CLI::ValidationError("plan", "give --obstacles FILE... or --chart FILE... (or both)");
     }
     // The local frame: --crs, else the UTM zone of the obstacles, else of the start.
-    LocalFrame frame = o->frame.crs.empty() ? LocalFrame::utm_for(0.0, 0.0) : LocalFrame::from_user_crs(o->frame.crs);
+    std::optional<LocalFrame> frame_in_use;
+    if (!o->frame.crs.empty()) frame_in_use = LocalFrame::from_user_crs(o->frame.crs);
     ObstacleSet obstacles;
     if (!o->obstacles.empty()) {
       LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
-      frame = loaded.frame;
+      frame_in_use = loaded.frame;
       obstacles = std::move(loaded.obstacles);
-    } else if (o->frame.crs.empty()) {
-      const Eigen::Vector2d from = frame.to_lonlat(parse_position(o->from, "--from", frame, false));
-      frame = LocalFrame::utm_for(from.x(), from.y());
     }
+    if (!frame_in_use) {
+      // --from is lon,lat here; any frame reads it, and back to lon,lat it picks the zone.
+      const LocalFrame any = LocalFrame::utm_for(0.0, 0.0);
+      const Eigen::Vector2d from = any.to_lonlat(parse_position(o->from, "--from", any, false));
+      frame_in_use = LocalFrame::utm_for(from.x(), from.y());
+    }
+    const LocalFrame& frame = *frame_in_use;
     const PlanningProblem problem{parse_position(o->from, "--from", frame, !o->frame.crs.empty()),
                                   parse_position(o->to, "--to", frame, !o->frame.crs.empty()), o->escape};
     std::size_t passed_over = 0;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <fstream>
 #include <random>
 #include <string>
@@ -88,6 +89,14 @@ inline RunResult run_cli(const std::string& args) {
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+/// Expects `msg` (an InputError's text, empty when none was thrown) to be one
+/// line that contains every one of `parts`.
+inline void expect_error(const std::string& msg, std::initializer_list<const char*> parts) {
+  ASSERT_FALSE(msg.empty()) << "no InputError was thrown";
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
+  for (const char* part : parts) EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
 }
 
 /// Expects `fn` to throw a deepguide::InputError whose message is one line

@@ -205,11 +205,7 @@ std::string error_of(const std::string& text, const std::string& name = "v.yaml"
   return "";
 }
 
-void expect_error(const std::string& msg, std::initializer_list<const char*> parts) {
-  ASSERT_FALSE(msg.empty()) << "no InputError was thrown";
-  EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
-  for (const char* part : parts) EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
-}
+using deepguide::test::expect_error;
 
 }  // namespace
 

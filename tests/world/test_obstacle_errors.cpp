@@ -22,11 +22,7 @@ std::string error_of(const std::vector<std::string>& paths, const ObstacleReadOp
   return "";
 }
 
-void expect_error(const std::string& msg, std::initializer_list<const char*> parts) {
-  ASSERT_FALSE(msg.empty()) << "no InputError was thrown";
-  EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
-  for (const char* part : parts) EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
-}
+using deepguide::test::expect_error;
 
 std::string point_feature(const std::string& props, const std::string& coords = "[10.1, 54.2]") {
   return R"({"type":"Feature","properties":{)" + props + R"(},"geometry":{"type":"Point","coordinates":)" +
