@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <boost/geometry.hpp>
+#include <cmath>
 #include <string>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/single_query.hpp"
 
 using namespace deepguide;
@@ -52,7 +54,7 @@ TEST_P(SingleQuery, LongDetourTakesSeveralRoundsAndMatchesThePlanner) {
   const SingleQueryPlan one = plan_single_query(set, problem, options);
   ASSERT_TRUE(one.outcome.result.found);
   EXPECT_TRUE(one.outcome.check.safe) << one.outcome.check.describe();
-  EXPECT_GE(one.rounds, 2);  // the straight line's 1.05 bound cannot hold a 1000 m detour
+  EXPECT_GE(one.rounds, 2);  // the straight line's 1.01 bound cannot hold a 1000 m detour
   EXPECT_EQ(one.obstacles_total, 5u);
   EXPECT_EQ(one.obstacles_used, 3u);  // never the far ones
   EXPECT_GE(one.bound_m, one.outcome.result.route.length());
@@ -95,6 +97,58 @@ TEST_P(SingleQuery, StartInAZoneIsReportedOrEscaped) {
   ASSERT_TRUE(one.outcome.result.found);
   EXPECT_EQ(one.outcome.escaped_from, "buoy");
   EXPECT_TRUE(one.outcome.check.safe || one.outcome.check.worst_segment == 0) << one.outcome.check.describe();
+}
+
+TEST(QueryFocus, KeepsWhatAPathWithinTheBoundCanUse) {
+  // s = (0, 0), g = (10, 0), U = 12: the ellipse's half-width at x = 5 is
+  // sqrt(6^2 - 5^2) = 3.3166.
+  const QueryFocus f{{0, 0}, {10, 0}, 12.0};
+  EXPECT_TRUE(f.active());
+  EXPECT_TRUE(f.keeps_point({5, 3.3}));
+  EXPECT_FALSE(f.keeps_point({5, 3.4}));
+  // (5, 3) -> (5, -3): 2 sqrt(34) + 6 = 17.66 either way.
+  EXPECT_FALSE(f.keeps_segment({5, 3}, {5, -3}));
+  EXPECT_TRUE((QueryFocus{{0, 0}, {10, 0}, 17.7}).keeps_segment({5, 3}, {5, -3}));
+  // (8, 0) -> (2, 0) is useless as given (8 + 6 + 8 = 22) but a path runs it
+  // the other way round (2 + 6 + 2 = 10).
+  EXPECT_TRUE(f.keeps_segment({8, 0}, {2, 0}));
+  // Discs of radius 1 at (3, 5) and (7, 5): (sqrt(34) - 1) + (4 - 2) + (sqrt(34) - 1) = 11.66.
+  EXPECT_TRUE(f.keeps_disc_pair({3, 5}, 1.0, {7, 5}, 1.0));
+  EXPECT_FALSE((QueryFocus{{0, 0}, {10, 0}, 11.6}).keeps_disc_pair({3, 5}, 1.0, {7, 5}, 1.0));
+  // Overlapping discs and discs around s or g: gaps of zero, never negative.
+  EXPECT_TRUE(f.keeps_disc_pair({0, 0}, 2.0, {10, 0}, 2.0));
+  // The shifted frame judges the same points.
+  const QueryFocus moved = f.shifted({100, -50});
+  EXPECT_TRUE(moved.keeps_point(Vec2(5, 3.3) - Vec2(100, -50)));
+  EXPECT_FALSE(moved.keeps_point(Vec2(5, 3.4) - Vec2(100, -50)));
+  // No focus: everything is kept.
+  const QueryFocus none;
+  EXPECT_FALSE(none.active());
+  EXPECT_TRUE(none.keeps_segment({1e9, 1e9}, {-1e9, 0}));
+  EXPECT_TRUE(none.keeps_disc_pair({1e9, 1e9}, 1.0, {-1e9, 0}, 1.0));
+}
+
+TEST_P(SingleQuery, FocusedGraphWithoutARouteIsNotTheLastWord) {
+  // A 400 m wall across the line, open at both ends: the 1.01 bound's focused
+  // polygon graph keeps no corner of the wall's far ends, finds nothing, and
+  // the round is repeated unfocused before the bound grows. (The tangent
+  // graph joins start and goal to the wall's end caps at query time, finds
+  // the detour in the first round and only grows the bound.)
+  ObstacleSet set;
+  set.polygons.push_back(box(45, -200, 55, 200, "wall"));
+  const PlannerOptions options{2.0, 0.5, GetParam(), SearchAlgorithm::astar};
+  const SingleQueryPlan one = plan_single_query(set, {{0, 0}, {100, 0}}, options);
+  ASSERT_TRUE(one.outcome.result.found);
+  EXPECT_TRUE(one.outcome.check.safe) << one.outcome.check.describe();
+  EXPECT_GE(one.rounds, GetParam() == GraphKind::tangent ? 2 : 3);
+  // Round an end of the wall: two legs of about hypot(45, 202) each at least.
+  EXPECT_GT(one.outcome.result.route.length(), 2.0 * std::hypot(43.0, 202.0));
+  Planner all(set, options);
+  const PlanOutcome ref = all.solve({{0, 0}, {100, 0}});
+  const bool exact = GetParam() == GraphKind::tangent;
+  const double got = exact ? one.outcome.result.exact_length_m : one.outcome.result.route.length();
+  const double want = exact ? ref.result.exact_length_m : ref.result.route.length();
+  EXPECT_NEAR(got, want, 1e-9 * want);
 }
 
 TEST(SingleQueryInput, BadPointsAndOptionsAreBadInput) {

@@ -48,7 +48,7 @@ struct Planner::Impl {
   std::unique_ptr<TangentGraph> tangent;
 };
 
-Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options) : options_(options) {
+Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const QueryFocus& focus) : options_(options) {
   if (!std::isfinite(options.margin) || options.margin < 0.0) {
     throw InputError("--margin: expected a safety margin >= 0 m, got " + std::to_string(options.margin));
   }
@@ -58,12 +58,13 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options) : options
   impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr});
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
   if (options.graph == GraphKind::tangent) {
-    impl_->tangent = std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance);
+    impl_->tangent = std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus);
   } else {
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
     impl_->visibility = std::make_unique<VisibilityGraph>(
         impl_->zones,
-        options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced);
+        options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced,
+        focus);
   }
 }
 

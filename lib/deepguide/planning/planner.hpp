@@ -9,6 +9,7 @@
 #include <string>
 
 #include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/world/obstacle.hpp"
@@ -46,7 +47,11 @@ struct PlanOutcome {
 
 class Planner {
  public:
-  Planner(ObstacleSet obstacles, const PlannerOptions& options);
+  /// With an active `focus` the graph holds only what one query can use
+  /// (query_focus.hpp): the planner then answers that query, exactly when its
+  /// route is within the bound (plan_single_query). Without: the whole graph,
+  /// for any number of queries.
+  Planner(ObstacleSet obstacles, const PlannerOptions& options, const QueryFocus& focus = {});
   ~Planner();
   Planner(Planner&&) noexcept;
   Planner& operator=(Planner&&) noexcept;

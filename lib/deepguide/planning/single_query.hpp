@@ -13,8 +13,13 @@
 //    present, so it is safe among all obstacles; and it is optimal: any
 //    shorter route of the full problem also lies in E(U) and was available to
 //    the restricted graph (the graph inside E(U) is the same).
-// Otherwise L is a lower bound of the optimum: grow U past it and plan again.
-// Each round adds obstacles, so the loop ends (at the latest with all of them).
+// Otherwise grow U past L and plan again; with every obstacle in (U beyond
+// the farthest), the last round is final.
+// The graph of each round is also built with U as its focus
+// (query_focus.hpp): only the vertices and edges a path within U can use.
+// A focused graph without a route proves nothing, so that round is repeated
+// over the same obstacles without the focus; no route then means none at all.
+// The first U is 1.01 |g - s| (single_query.cpp says why).
 // An obstacle is kept when a disc around it (footprint radius + margin +
 // polygon tolerance) meets E(U): for a disc of centre c and radius r,
 // min over the disc of |x - s| + |x - g| >= |c - s| + |c - g| - 2 r.
@@ -34,7 +39,7 @@ struct SingleQueryPlan {
   std::size_t obstacles_used = 0;
   std::size_t obstacles_total = 0;
   int rounds = 0;
-  double bound_m = 0.0;  ///< U of the last round
+  double bound_m = 0.0;  ///< U of the last round (infinite: all obstacles, no focus)
   double build_ms = 0.0;  ///< graph builds over all rounds
   double query_ms = 0.0;  ///< queries over all rounds
 };

@@ -92,6 +92,7 @@ struct TangentGraph::Impl {
   Vec2 origin;
   double margin;
   double tolerance;
+  QueryFocus focus;  // in the shifted frame
   std::vector<ZonePiece> pieces;
   std::vector<std::string> piece_names;
   std::vector<bool> needs_arc_check;  // another zone reaches into the piece's box
@@ -145,13 +146,14 @@ struct TangentGraph::Impl {
   std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
 };
 
-TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance)
+TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus)
     : impl_(std::make_unique<Impl>()) {
   const auto t0 = std::chrono::steady_clock::now();
   Impl& m = *impl_;
   m.origin = centre_of(obstacles);
   m.margin = margin;
   m.tolerance = tolerance;
+  m.focus = focus.shifted(m.origin);
   const ObstacleSet local = shifted(obstacles, m.origin);
   m.pieces = zone_pieces(local, m.margin);
   // The build pairs every two pieces: quadratic, so refuse what cannot finish.
@@ -180,10 +182,13 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
     }
   }
 
+  std::vector<double> radius;
+  for (const ZonePiece& z : m.pieces) radius.push_back(z.bounding_radius());
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
     for (std::size_t j = i + 1; j < m.pieces.size(); ++j) {
       const ZonePiece& zi = m.pieces[i];
       const ZonePiece& zj = m.pieces[j];
+      if (!m.focus.keeps_disc_pair(zi.inner_point(), radius[i], zj.inner_point(), radius[j])) continue;
       auto g_outer = [&](double phi) {
         const Vec2 u = unit(phi);
         return zi.support(u) - zj.support(u);
@@ -202,7 +207,9 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
         phi_j = wrap_two_pi(phi_j);
         const Node a{i, phi_i, zi.point_at_normal(phi_i)};
         const Node b{j, phi_j, zj.point_at_normal(phi_j)};
-        if ((a.p - b.p).norm() > 0.0 && m.segment_free(a.p, b.p, i, j)) m.tangents.push_back({a, b});
+        if ((a.p - b.p).norm() > 0.0 && m.focus.keeps_segment(a.p, b.p) && m.segment_free(a.p, b.p, i, j)) {
+          m.tangents.push_back({a, b});
+        }
       };
       if (periodic_two_roots(g_outer, r[0], r[1], along)) {
         for (double phi : r) add(phi, phi);
@@ -238,7 +245,10 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
     auto& ids = m.on_piece[i];
     std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return m.nodes[x].phi < m.nodes[y].phi; });
-    m.add_arcs(i, ids, m.nodes, [](std::size_t, std::size_t) { return true; }, m.base, m.arcs, m.arc_of);
+    // An arc is no shorter than its chord: the focus judges arcs by chords.
+    m.add_arcs(
+        i, ids, m.nodes, [&](std::size_t a, std::size_t b) { return m.focus.keeps_segment(m.nodes[a].p, m.nodes[b].p); },
+        m.base, m.arcs, m.arc_of);
   }
   m.base_edges = m.tangents.size() + m.arcs.size();
   m.build_ms = elapsed_ms(t0);
@@ -417,12 +427,12 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
     const ZonePiece& z = m.pieces[i];
     const Vec2 c = z.inner_point();
-    const double radius = z.kind == ZonePiece::Kind::ellipse ? z.ellipse.a + z.margin : 0.5 * (z.b - z.a).norm() + z.margin;
+    const double radius = z.bounding_radius();
     low[i] = (c - s).norm() + (c - g).norm() - 2.0 * radius;
     farthest = std::max(farthest, low[i] + 4.0 * radius);
   }
   const bool direct = m.segment_free(s, g);
-  double bound = kFirstBoundStretch * (g - s).norm();
+  double bound = m.focus.active() ? m.focus.bound_m : kFirstBoundStretch * (g - s).norm();
   std::vector<Impl::Arc> arcs;
   std::unordered_map<std::uint64_t, std::size_t> arc_of;
   SearchResult found;

@@ -20,6 +20,7 @@
 #include <memory>
 
 #include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/obstacle.hpp"
 
@@ -27,7 +28,10 @@ namespace deepguide {
 
 class TangentGraph {
  public:
-  TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance);
+  /// With an active `focus` only what a route from its start to its goal no
+  /// longer than its bound can use is built (query_focus.hpp); solve() then
+  /// answers that query.
+  TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus = {});
   ~TangentGraph();
   TangentGraph(TangentGraph&&) noexcept;
   TangentGraph& operator=(TangentGraph&&) noexcept;

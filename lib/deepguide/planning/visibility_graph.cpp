@@ -23,7 +23,8 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 
 }  // namespace
 
-VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant) : variant_(variant) {
+VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus)
+    : variant_(variant) {
   const auto t0 = std::chrono::steady_clock::now();
   // Work around an origin inside the area: UTM coordinates are ~1e6 m, and
   // orientation tests lose six digits on them.
@@ -31,6 +32,7 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   bg::envelope(zones, box);
   origin_ = zones.empty() ? Vec2::Zero() : Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()),
                                                0.5 * (box.min_corner().y() + box.max_corner().y()));
+  focus_ = focus.shifted(origin_);
   BgMultiPolygon local = zones;
   double extent = 1.0;
   for (BgPolygon& poly : local) {
@@ -76,8 +78,10 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   for (std::size_t i = 0; i < n; ++i) {
     const Corner& a = corners_[i];
     if (variant_ == VisibilityVariant::reduced && !a.convex) continue;
+    if (!focus_.keeps_point(a.p)) continue;
     for (std::size_t j = i + 1; j < n; ++j) {
       const Corner& b = corners_[j];
+      if (!focus_.keeps_segment(a.p, b.p)) continue;
       if (variant_ == VisibilityVariant::reduced &&
           (!b.convex || !supporting_at(a, b.p) || !supporting_at(b, a.p))) {
         continue;
@@ -134,7 +138,7 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
     farthest = std::max(farthest, reach[i]);
   }
   const bool direct = visibility_->segment_visible(s, g);
-  double bound = kFirstBoundStretch * (g - s).norm();
+  double bound = focus_.active() ? focus_.bound_m : kFirstBoundStretch * (g - s).norm();
   SearchResult found;
   std::size_t attached = 0;
   for (int round = 0;; ++round) {

@@ -20,6 +20,7 @@
 
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
+#include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 
 namespace deepguide {
@@ -31,7 +32,9 @@ class VisibilityGraph {
   /// `zones`: polygons enclosing the safety zones, in the local frame. Throws
   /// InputError when they have more corners than max_corners(variant): the
   /// build is quadratic in the corners and would not finish in useful time.
-  VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant);
+  /// With an active `focus` only the corners and edges a route from its start
+  /// to its goal no longer than its bound can use are built (query_focus.hpp).
+  VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus = {});
   static std::size_t max_corners(VisibilityVariant variant);
 
   /// Shortest route from start to goal in this graph. Start and goal must not
@@ -59,6 +62,7 @@ class VisibilityGraph {
 
   VisibilityVariant variant_;
   Vec2 origin_;
+  QueryFocus focus_;  // translated to origin_
   std::unique_ptr<PolygonVisibility> visibility_;
   std::vector<Corner> corners_;
   PlanningGraph graph_;

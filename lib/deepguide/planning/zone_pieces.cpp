@@ -97,6 +97,10 @@ double ZonePiece::max_curvature_radius() const {
 
 Vec2 ZonePiece::inner_point() const { return kind == Kind::ellipse ? ellipse.center : 0.5 * (a + b); }
 
+double ZonePiece::bounding_radius() const {
+  return (kind == Kind::ellipse ? ellipse.a : 0.5 * (b - a).norm()) + margin;
+}
+
 std::vector<ZonePiece> zone_pieces(const ObstacleSet& obstacles, double margin) {
   std::vector<ZonePiece> out;
   std::size_t index = 0;

@@ -41,6 +41,8 @@ struct ZonePiece {
   double max_curvature_radius() const;
   /// A point inside the piece.
   Vec2 inner_point() const;
+  /// Radius of a disc around inner_point() that holds the piece.
+  double bounding_radius() const;
 };
 
 /// The pieces of every obstacle's zone for margin d.
