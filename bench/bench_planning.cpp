@@ -482,8 +482,9 @@ int main(int argc, char** argv) {
 
   std::printf("\n## One query: plan_single_query (what `deepguide plan` runs)\n\n");
   std::printf("The graph is built only over the obstacles whose zone meets the ellipse |x-s| + |x-g| <= U, U "
-              "growing from 1.05 x the straight line until the route fits (src: lib/deepguide/planning/"
-              "single_query.hpp). `time` = the whole call (rounds of build + query + the final check against all "
+              "growing from 1.01 x the straight line until the route fits, each round's graph focused on the query "
+              "(only edges a path within U can use; src: lib/deepguide/planning/single_query.hpp, query_focus.hpp). "
+              "`time` = the whole call (rounds of build + query + the final check against all "
               "obstacles). `route / planner` = its route length over the Planner's route on all obstacles (1 = the "
               "same optimum).\n\n");
   std::printf("| N | graph | n | time median ms | time max ms | CPU median ms | rounds median (max) | obstacles "
