@@ -189,13 +189,17 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
       const ZonePiece& zi = m.pieces[i];
       const ZonePiece& zj = m.pieces[j];
       if (!m.focus.keeps_disc_pair(zi.inner_point(), radius[i], zj.inner_point(), radius[j])) continue;
+      // Outer tangents: h_i(u) = h_j(u); inner: h_i(u) = -h_j(-u). The
+      // slopes follow from the support points (see ZonePiece::support_at).
       auto g_outer = [&](double phi) {
         const Vec2 u = unit(phi);
-        return zi.support(u) - zj.support(u);
+        const ZonePiece::Support si = zi.support_at(u), sj = zj.support_at(u);
+        return ValueSlope{si.h - sj.h, (si.p - sj.p).dot(Vec2(-u.y(), u.x()))};
       };
       auto g_inner = [&](double phi) {
         const Vec2 u = unit(phi);
-        return zi.support(u) + zj.support(-u);
+        const ZonePiece::Support si = zi.support_at(u), sj = zj.support_at(-u);
+        return ValueSlope{si.h + sj.h, (si.p - sj.p).dot(Vec2(-u.y(), u.x()))};
       };
       double r[2];
       // Both functions are positive along inner_i - inner_j and, for
@@ -318,7 +322,8 @@ void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>&
     const ZonePiece& z = pieces[i];
     auto f = [&](double phi) {
       const Vec2 u = unit(phi);
-      return u.dot(p) - z.support(u);
+      const ZonePiece::Support sz = z.support_at(u);
+      return ValueSlope{u.dot(p) - sz.h, (p - sz.p).dot(Vec2(-u.y(), u.x()))};
     };
     double r[2];
     const Vec2 out_dir = p - z.inner_point();  // f > 0 this way when p lies outside
@@ -331,7 +336,7 @@ void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>&
     }
     // No tangent: p is inside the piece, or on its boundary. On the boundary,
     // p itself joins the piece's arcs at its normal angle.
-    auto neg = [&](double phi) { return -f(phi); };
+    auto neg = [&](double phi) { return -f(phi).value; };
     const Vec2 d = p - z.inner_point();
     const double guess = std::atan2(d.y(), d.x());
     auto best = boost::math::tools::brent_find_minima(neg, guess - std::numbers::pi, guess + std::numbers::pi, 52);
@@ -365,7 +370,11 @@ std::vector<Vec2> TangentGraph::Impl::arc_polyline(std::size_t piece, double phi
   if (turn < 0) std::reverse(normals.begin(), normals.end());
 
   std::vector<Vec2> out;
+  // Two tangent lines meet at a point whose rounding error grows as 1 / (b - a):
+  // below 1e-7 rad it could land metres off, while the chord is within
+  // R (b - a)^2 / 8 (< 1e-12 m) of the arc: no corner then.
   auto corner = [&](double a, double b, Vec2& v) {
+    if (std::abs(b - a) < 1e-7) return false;
     const Vec2 u1 = unit(a), u2 = unit(b);
     const double h1 = z.support(u1), h2 = z.support(u2);
     const double det = u1.x() * u2.y() - u1.y() * u2.x();

@@ -32,17 +32,20 @@ double ZonePiece::support(const Vec2& u) const {
   return std::max(u.dot(a), u.dot(b)) + margin;
 }
 
-Vec2 ZonePiece::point_at_normal(double phi) const {
-  const Vec2 u = unit(phi);
+ZonePiece::Support ZonePiece::support_at(const Vec2& u) const {
   if (kind == Kind::ellipse) {
     const double ul = u.dot(axis), vl = axis.x() * u.y() - axis.y() * u.x();
     const double aa = ellipse.a * ellipse.a, bb = ellipse.b * ellipse.b;
     const double h = std::sqrt(aa * ul * ul + bb * vl * vl);
     const Vec2 minor(-axis.y(), axis.x());
-    return ellipse.center + (aa * ul / h) * axis + (bb * vl / h) * minor + margin * u;
+    return {u.dot(ellipse.center) + h + margin,
+            ellipse.center + (aa * ul / h) * axis + (bb * vl / h) * minor + margin * u};
   }
-  return (u.dot(b) > u.dot(a) ? b : a) + margin * u;
+  const Vec2& end = u.dot(b) > u.dot(a) ? b : a;
+  return {u.dot(end) + margin, end + margin * u};
 }
+
+Vec2 ZonePiece::point_at_normal(double phi) const { return support_at(unit(phi)).p; }
 
 double ZonePiece::arc_length(double phi0, double phi1) const {
   if (!(phi1 > phi0)) return 0.0;

@@ -31,6 +31,13 @@ struct ZonePiece {
   std::size_t obstacle = 0;  ///< obstacle index: ellipses first, then polygons (ObstacleField numbering)
 
   double support(const Vec2& u) const;
+  /// The support function h(u) and the boundary point p with outward normal u
+  /// (unit), which is also h's gradient: d/dphi h(u(phi)) = p . u'(phi).
+  struct Support {
+    double h;
+    Vec2 p;
+  };
+  Support support_at(const Vec2& u) const;
   /// Boundary point with outward normal angle phi (on a capsule's flat side, an end of the side).
   Vec2 point_at_normal(double phi) const;
   /// Length of the boundary from normal angle phi0 anticlockwise to phi1 (phi1 >= phi0, any number of turns).
