@@ -8,6 +8,7 @@
 namespace deepguide {
 class LocalFrame;
 struct Route;
+enum class ReactiveMethod;
 }  // namespace deepguide
 
 namespace deepguide::app {
@@ -28,11 +29,17 @@ void register_render_route(CLI::App& render);
 void register_chart_synth(CLI::App& chart);
 void register_chart_info(CLI::App& chart);
 void register_render_chart(CLI::App& render);
+void register_render_reactive(CLI::App& render);
 void register_chart_nogo(CLI::App& chart);
+void register_simulate(CLI::App& app);
 
 /// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north
 /// to true north at a local point, and the default title of a route chart.
 double true_north_deg(const LocalFrame& frame, const Eigen::Vector2d& at);
 std::string route_title(const std::string& name, const Route& route, double margin, const LocalFrame& frame);
+
+/// A reactive method named on the command line (simulate, render field): an
+/// unknown name is bad input (exit 1), as --graph's is for plan.
+ReactiveMethod reactive_method_option(const std::string& option, const std::string& name);
 
 }  // namespace deepguide::app

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   app::register_chart_info(*chart);
   app::register_chart_nogo(*chart);
   app::register_plan(app);
+  app::register_simulate(app);
   CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
   check->require_subcommand(1);
   app::register_check_route(*check);
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   render->require_subcommand(1);
   app::register_render_route(*render);
   app::register_render_chart(*render);
+  app::register_render_reactive(*render);
 
   try {
     app.parse(argc, argv);

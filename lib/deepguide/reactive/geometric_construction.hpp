@@ -1,0 +1,57 @@
+#pragma once
+// (b) The seed's geometric construction of gradient lines (Eichhorn, UT'04 /
+// IFAC 2005; reconstructed in shared/notes/algorithms.md 1.2).
+//
+// Zones: each object's security ellipse (reactive_method.hpp), not its
+// enclosing circle: for an elongated object the circle a + d would double the
+// detour, and tangents to an ellipse are as closed-form as to a circle (map to
+// the unit circle, take the circle's tangents, map back; geometry/
+// ellipse_tangents.hpp). For a disc both coincide.
+//
+// Sectors, for vehicle p and target g:
+//   3  p inside a zone (the deepest one if several): leave it. The course the
+//      construction gives just outside the nearest boundary point (sector 1's
+//      tangent on the latched side, or sector 2's line to the target once that
+//      is free), turned outward by beta (reactive_support.hpp): continuous with
+//      the outside at the boundary, and a vehicle riding just inside still
+//      leaves towards the target. Status leaving_zone.
+//   2  the segment p -> g meets no zone's interior: course straight at g; the
+//      side latch is released.
+//   1  blocked: follow the tangent from p to the engaged zone on the latched
+//      side sigma: the tangent point T (left tangent for sigma = +1, seen from p
+//      looking at the centre), course along the zone's tangent line at T,
+//      oriented by sigma (exact even when p is on the boundary and T = p).
+//      On one disc this is the shortest path: tangent, arc at rate U/R, tangent.
+// Side: the symmetry-axis rule with the course tie-break (reactive_support.hpp),
+// latched when the object is first engaged and kept while it blocks the line
+// of sight; released in sector 2. Inside a zone a latched side is kept even if
+// the zone is a neighbour's (overlapping zones), so the rotation sense cannot
+// flip between them.
+//
+// Several objects (notes 1.2 options (a)-(c)):
+//   - engaged zone = the latched one while it still blocks the line of sight,
+//     else the first zone the line of sight enters (option a); hysteresis on
+//     the object, so two zones at similar range cannot take turns;
+//   - the tangent course itself is checked: if the segment p -> T enters
+//     another zone, that zone's tangent on the same side is taken instead, and
+//     so on (the virtual-target cascade, option c). Each step turns the course
+//     further to the same side (the blocking zone's cone contains the previous
+//     course), so the cascade ends within the number of zones; if it does not
+//     find a free tangent, the vehicle is enclosed on that side: stalled.
+//   - overlapping zones need no separate merge (option b): the cascade over
+//     a chain of overlapping zones yields the tangent to their convex hull.
+// A newly engaged object gets its own side from the axis rule (after passing
+// one object the next may be passed on the other side, the shorter way).
+
+#include <span>
+
+#include "deepguide/reactive/reactive_method.hpp"
+
+namespace deepguide {
+
+ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input);
+
+Vec2 geometric_gradient(const ReactiveParams& params, const Vec2& point, const Vec2& target,
+                        std::span<const Ellipse> objects);
+
+}  // namespace deepguide

@@ -1,0 +1,140 @@
+#pragma once
+// The reactive level's one small interface (the seed's Reactive Evasive
+// Control): vehicle state, the objects the sonar reports and the target in,
+// a commanded course over ground and speed out, and an explicit status when the
+// method cannot do what it is asked (MOOS-IvP's behaviours do the same).
+//
+// Three methods sit behind it, one file each:
+//   dipole_field.hpp           (a) uniform flow to the target + a dipole per object
+//   geometric_construction.hpp (b) the seed's three-sector construction
+//   potential_field.hpp        (c) attractive/repulsive potentials, the baseline
+// Objects are the sonar's estimated footprints (not inflated); each method
+// keeps params.margin_m away from them with the same security zone, the
+// security ellipse below (an ellipse, so that tangents, flows and distances
+// stay closed-form; it contains the true offset zone, touching it at the ends
+// of the major axis).
+// Angles are math angles (rad, counter-clockwise from east), the local frame's
+// convention (core/angles.hpp); nautical degrees only at the interfaces.
+//
+// Behaviour common to all methods (reactive_support.hpp):
+//   - no objects: straight to the target;
+//   - within arrival_radius_m of the target: status arrived, speed 0;
+//   - target inside a security zone: the method steers to the nearest point
+//     of the zone boundary instead (status target_in_zone) and stops there
+//     (speed 0, still target_in_zone): it never enters the zone to reach it;
+//   - vehicle inside a security zone: a course that leads out, status
+//     leaving_zone, continuous with the outside course at the boundary;
+//   - stalled (the field vanishes, or no free tangent exists): speed 0 and
+//     the current course held, so that a mission layer can re-plan.
+// Side convention: side +1 passes an object with the vehicle to the left of
+// the axis from the object's centre to the target (it circles the object
+// clockwise), -1 to the right. A vehicle exactly on the axis takes the side
+// its current course points to; with no hint at all it turns to starboard
+// (side -1, as COLREGs rule 14 for head-on encounters).
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/geometry/vec2.hpp"
+
+namespace deepguide {
+
+enum class ReactiveMethod { dipole, geometric, potential };
+
+std::string_view to_string(ReactiveMethod method);
+/// "dipole", "geometric" or "potential"; nullopt otherwise.
+std::optional<ReactiveMethod> parse_reactive_method(std::string_view name);
+
+struct ReactiveParams {
+  double margin_m = 10.0;           ///< security margin around each reported object, >= 0
+  double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< commanded speed through the water (cruise), > 0
+  double arrival_radius_m = 5.0;    ///< within this of the target: status arrived, >= 0
+  /// Distance beyond the security zone within which an object influences the
+  /// dipole and potential methods (outside it their field is pure attraction), > 0.
+  double influence_m = 60.0;
+  double potential_gain = 1.0;      ///< (c) repulsive gain relative to the unit attraction, > 0
+  /// (b) and the zone exits of (a): inside a zone the course turns from the
+  /// boundary tangent to the outward normal over this fraction of the way to
+  /// the centre (notes 1.2: 0.25), in (0, 1].
+  double exit_blend_fraction = 0.25;
+  /// (a) Axis tie-break: a vehicle upstream of the object it is passing and
+  /// closer than this to the dividing streamline (in the circle plane of the
+  /// flow, metres near the object) steers as if this far on its latched side, >= 0.
+  double dipole_axis_band_m = 0.5;
+  /// (a) Near one zone the other zones' dipoles fade out over this distance;
+  /// zones closer than this to each other are merged into one circle, > 0.
+  double dipole_blend_m = 5.0;
+  /// (c) Stalled when the resultant force is below this fraction of the unit attraction, in (0, 1).
+  double potential_stall_fraction = 0.05;
+};
+
+/// Throws InputError naming the first bad field (non-finite, or outside the range documented above).
+void validate(const ReactiveParams& params);
+
+/// The security zone of `object` for margin d, as an ellipse: semi-axes
+///   a' = a + d,   b' = sqrt((a + d)(d + b^2/a)).
+/// It contains the offset zone (object (+) disc(d)): the support functions
+/// must satisfy h'(u) >= h(u) + d; with t = h(u) in [b, a] both sides are
+/// quadratic in t, equal at t = a, and the condition reduces to b' >= b + d and
+/// b'^2 >= (a + d)(d + b^2/a), the second the larger (difference d (a - b)^2 / a).
+/// That is, the ellipse osculates the offset curve at the major-axis ends
+/// (equal curvature radius b^2/a + d). A circle (a = b) gives the circle a + d.
+Ellipse security_ellipse(const Ellipse& object, double margin_m);
+
+struct ReactiveInput {
+  double time_s = 0.0;
+  Vec2 position{0.0, 0.0};  ///< local frame (m)
+  double course = 0.0;      ///< current course over ground (math rad), for tie-breaks
+  double speed_mps = 0.0;
+  Vec2 target{0.0, 0.0};
+  std::span<const Ellipse> objects;  ///< reported footprints (local frame), not inflated
+};
+
+enum class ReactiveStatus {
+  ok,               ///< a course towards the target
+  arrived,          ///< within arrival_radius_m of the target
+  leaving_zone,     ///< inside a security zone, leading out (the geometric method's sector 3)
+  target_in_zone,   ///< the target lies inside a security zone: heading for the nearest reachable point
+  stalled,          ///< the field vanishes here (stagnation point, local minimum): course held
+};
+std::string_view to_string(ReactiveStatus status);
+
+struct ReactiveCommand {
+  double course = 0.0;     ///< commanded course over ground (math rad)
+  double speed_mps = 0.0;  ///< commanded speed through the water
+  ReactiveStatus status = ReactiveStatus::ok;
+  int sector = 0;          ///< the geometric method's sector 1, 2 or 3; 0 for the others
+  std::ptrdiff_t active_object = -1;  ///< index into objects of the object steered around, -1 none
+};
+
+/// What a method remembers between calls (one per vehicle and method;
+/// value-initialise to start): the side latch that keeps a vehicle from
+/// flipping left/right. Set when an object is first engaged (the geometric
+/// method's sector 1 or 3, the dipole method's object blocking the line of
+/// sight), kept while that object stays engaged, cleared when none is. The
+/// object is recognised in later scans by its centre (engaged_center), not by
+/// its index, since the sonar's list can change order.
+struct ReactiveMemory {
+  int side = 0;  ///< +1 / -1: the side of the object passed, as the sign of cross(target - centre, position - centre); 0 none
+  std::ptrdiff_t engaged_object = -1;  ///< the object the side was latched for
+  Vec2 engaged_center{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
+};
+
+/// One control step of `method`. Throws InputError for bad params, a
+/// non-finite position or target, or an object that is not an ellipse
+/// (a >= b > 0, finite).
+ReactiveCommand reactive_command(ReactiveMethod method, const ReactiveParams& params, ReactiveMemory& memory,
+                                 const ReactiveInput& input);
+
+/// The method's memoryless gradient direction at `point` (unit vector, zero
+/// where the field vanishes or at the target): what the figures of gradient
+/// lines draw. The geometric method takes each object's side from the
+/// symmetry-axis rule (no latch); the dipole method has no axis tie-break, so
+/// its field vanishes at the front stagnation point.
+Vec2 reactive_gradient(ReactiveMethod method, const ReactiveParams& params, const Vec2& point, const Vec2& target,
+                       std::span<const Ellipse> objects);
+
+}  // namespace deepguide

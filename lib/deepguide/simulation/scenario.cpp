@@ -1,0 +1,465 @@
+#include "deepguide/simulation/scenario.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/world/current_field.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+
+namespace deepguide {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+std::string line_of(const YAML::Node& node) {
+  const YAML::Mark m = node.Mark();
+  return m.line >= 0 ? "line " + std::to_string(m.line + 1) : std::string();
+}
+
+// A numeric key's range: lo < v (or lo <= v when lo_closed) and v <= hi, in the file's unit.
+struct Range {
+  double lo, hi;
+  bool lo_closed;
+  const char* what;  // "a depth in metres"
+
+  bool holds(double v) const { return std::isfinite(v) && (lo_closed ? v >= lo : v > lo) && v <= hi; }
+  std::string text() const {
+    return what + std::string(lo_closed ? " >= " : " > ") + number(lo) + " and <= " + number(hi);
+  }
+};
+
+constexpr Range kCoordinate{-1e8, 1e8, true, "a coordinate in metres"};
+constexpr Range kLon{-180.0, 180.0, true, "a longitude in degrees"};
+constexpr Range kLat{-90.0, 90.0, true, "a latitude in degrees"};
+constexpr Range kAngle{-360.0, 360.0, true, "an angle in degrees"};
+constexpr Range kAxis{0.0, 1e6, false, "a semi-axis in metres"};
+constexpr Range kSigma{0.0, 1e4, true, "a standard deviation"};
+constexpr Range kDuration{0.0, kMaxSimulationTime_s, false, "a time in seconds"};
+
+// One YAML mapping of known keys: unknown and duplicate keys are refused up
+// front, values are read by key with their expectation.
+class Mapping {
+ public:
+  Mapping(const YAML::Node& node, std::string source, std::string prefix, std::initializer_list<const char*> known,
+          const std::string& expected)
+      : node_(node), source_(std::move(source)), prefix_(std::move(prefix)) {
+    if (!node.IsMap()) {
+      const std::string where = prefix_.empty() ? std::string() : prefix_.substr(0, prefix_.size() - 1);
+      throw input_error({source_, line_of(node), where}, expected, node.IsNull() ? "nothing" : "a scalar or list");
+    }
+    for (const auto& kv : node) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+      const InputLocation at{source_, line_of(kv.first), printable(prefix_ + key)};
+      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) == known.end()) {
+        std::string list;
+        for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+        throw input_error(at, "one of the known keys (" + list + ")", "an unknown key");
+      }
+      for (const auto& [k, first] : entries_)
+        if (k == key) throw input_error(at, "each key once", "a duplicate (first at " + line_of(first) + ")");
+      entries_.emplace_back(key, kv.first);
+      values_.push_back(kv.second);
+    }
+  }
+
+  bool has(const char* key) const { return index(key) >= 0; }
+  /// The value, or an undefined node when absent.
+  YAML::Node value(const char* key) const { return index(key) >= 0 ? values_[index(key)] : YAML::Node(); }
+  InputLocation where(const char* key) const {
+    const int i = index(key);
+    return {source_, i >= 0 ? line_of(entries_[i].second) : line_of(node_), prefix_ + key};
+  }
+  std::string full(const char* key) const { return prefix_ + key; }
+  const std::string& source() const { return source_; }
+
+  double number(const char* key, const Range& r) const {
+    const YAML::Node v = value(key);
+    if (!v.IsDefined()) throw input_error(where(key), r.text(), "nothing");
+    const std::string expected = r.what + std::string(" (a number)");
+    if (!v.IsScalar()) throw input_error(where(key), expected, v.IsNull() ? "nothing" : "a list or mapping");
+    double x = 0.0;
+    try {
+      x = v.as<double>();
+    } catch (const YAML::Exception&) {
+      throw input_error(where(key), expected, "'" + printable(v.Scalar()) + "'");
+    }
+    if (!r.holds(x)) throw input_error(where(key), r.text(), printable(v.Scalar()));
+    return x;
+  }
+  double number_or(const char* key, const Range& r, double fallback) const {
+    return has(key) ? number(key, r) : fallback;
+  }
+  std::string text(const char* key, const char* expected) const {
+    const YAML::Node v = value(key);
+    if (!v.IsScalar() || v.Scalar().empty()) {
+      throw input_error(where(key), expected,
+                        v.IsNull()     ? "nothing"
+                        : v.IsScalar() ? "an empty text"
+                                       : "a list or mapping");
+    }
+    return v.Scalar();
+  }
+
+ private:
+  int index(const char* key) const {
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+      if (entries_[i].first == key) return static_cast<int>(i);
+    return -1;
+  }
+  YAML::Node node_;
+  std::string source_, prefix_;
+  std::vector<std::pair<std::string, YAML::Node>> entries_;  // key text, key node (for its line)
+  std::vector<YAML::Node> values_;
+};
+
+// A path in the file, relative to the file's folder.
+std::string path_in(const Mapping& m, const char* key, const std::string& base_dir) {
+  const std::string p = m.text(key, "a file path");
+  const fs::path path(p);
+  return path.is_absolute() || base_dir.empty() ? p : (fs::path(base_dir) / path).string();
+}
+
+bool node_uses_lonlat(const YAML::Node& node) {
+  return node.IsMap() && (node["lon"].IsDefined() || node["lat"].IsDefined());
+}
+
+// True for {lon, lat}, false for {x, y}; both kinds at once is an error.
+bool is_lonlat(const Mapping& m) {
+  const bool lonlat = m.has("lon") || m.has("lat");
+  if (lonlat && (m.has("x") || m.has("y"))) {
+    throw input_error(m.where(m.has("x") ? "x" : "y"), "either x, y or lon, lat", "both");
+  }
+  return lonlat;
+}
+
+// {x, y} or {lon, lat}; lon/lat need the frame.
+Vec2 read_position(const Mapping& m, const std::optional<LocalFrame>& frame) {
+  if (!is_lonlat(m)) return {m.number("x", kCoordinate), m.number("y", kCoordinate)};
+  if (!frame) throw input_error(m.where("lon"), "x, y (lon, lat need a geographic frame)");
+  const double lon = m.number("lon", kLon), lat = m.number("lat", kLat);
+  const Vec2 xy = frame->from_lonlat(lon, lat);
+  if (!xy.allFinite()) throw input_error(m.where("lon"), "a position inside the frame " + frame->id());
+  return xy;
+}
+
+Vec2 read_point(const Mapping& root, const char* key, const std::optional<LocalFrame>& frame) {
+  if (!root.has(key)) {
+    throw input_error(root.where(key), "a position {x: M, y: M} or {lon: DEG, lat: DEG}", "nothing");
+  }
+  const Mapping m(root.value(key), root.source(), root.full(key) + ".", {"x", "y", "lon", "lat"},
+                  "a position {x: M, y: M} or {lon: DEG, lat: DEG}");
+  return read_position(m, frame);
+}
+
+// Nautical degrees at a point -> math rad: from true north when the frame has a CRS.
+double to_math(double heading_deg, const Vec2& at, const std::optional<LocalFrame>& frame) {
+  return frame ? wrap_pi(frame->heading_to_local(heading_deg, at)) : heading_deg_to_math_rad(heading_deg);
+}
+
+void read_obstacles(const Mapping& root, const std::optional<LocalFrame>& frame, Scenario& sc) {
+  const YAML::Node list = root.value("obstacles");
+  if (!list.IsSequence()) {
+    throw input_error(root.where("obstacles"), "a list of obstacles {x, y, semi_major_m, ...}",
+                      list.IsNull() ? "nothing" : "a scalar or mapping");
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string prefix = "obstacles[" + std::to_string(i) + "].";
+    const Mapping m(list[i], sc.source, prefix,
+                    {"id", "x", "y", "lon", "lat", "semi_major_m", "semi_minor_m", "orientation_deg"},
+                    "an obstacle mapping {x, y, semi_major_m, semi_minor_m, orientation_deg}");
+    EllipticCylinder c;
+    c.id = m.has("id") ? m.text("id", "an obstacle id (text)") : "obstacle " + std::to_string(i + 1);
+    c.footprint.center = read_position(m, frame);
+    c.footprint.a = m.number("semi_major_m", kAxis);
+    c.footprint.b = m.number_or("semi_minor_m", kAxis, c.footprint.a);
+    if (c.footprint.b > c.footprint.a) {
+      throw input_error(m.where("semi_minor_m"), "semi_minor_m <= semi_major_m (" + number(c.footprint.a) + ")",
+                        number(c.footprint.b));
+    }
+    c.footprint.theta = to_math(m.number_or("orientation_deg", kAngle, 0.0), c.footprint.center, frame);
+    sc.obstacles.push_back(std::move(c));
+  }
+}
+
+void read_sonar(const Mapping& root, Scenario& sc) {
+  if (!root.has("sonar")) return;
+  const Mapping m(root.value("sonar"), sc.source, "sonar.",
+                  {"range_m", "field_of_view_deg", "update_rate_hz", "position_sigma_m", "position_sigma_per_m",
+                   "size_sigma_m", "size_sigma_per_m"},
+                  "a mapping of sonar keys");
+  SonarParams& s = sc.sonar;
+  s.range_m = m.number_or("range_m", {0.0, 1e5, true, "a range in metres (0 = no sonar)"}, s.range_m);
+  s.field_of_view = deg_to_rad(
+      m.number_or("field_of_view_deg", {0.0, 360.0, false, "a field of view in degrees"}, rad_to_deg(s.field_of_view)));
+  s.update_rate_hz = m.number_or("update_rate_hz", {0.0, 1e3, false, "a rate in Hz"}, s.update_rate_hz);
+  s.position_sigma_m = m.number_or("position_sigma_m", kSigma, s.position_sigma_m);
+  s.position_sigma_per_m = m.number_or("position_sigma_per_m", kSigma, s.position_sigma_per_m);
+  s.size_sigma_m = m.number_or("size_sigma_m", kSigma, s.size_sigma_m);
+  s.size_sigma_per_m = m.number_or("size_sigma_per_m", kSigma, s.size_sigma_per_m);
+}
+
+void read_reactive(const Mapping& root, Scenario& sc) {
+  sc.reactive.speed_mps = sc.vehicle.cruise_speed_mps;
+  if (!root.has("reactive")) return;
+  const Mapping m(root.value("reactive"), sc.source, "reactive.",
+                  {"margin_m", "arrival_radius_m", "influence_m", "potential_gain", "speed_mps", "exit_blend_fraction",
+                   "dipole_axis_band_m", "dipole_blend_m", "potential_stall_fraction"},
+                  "a mapping of reactive keys");
+  ReactiveParams& r = sc.reactive;
+  r.margin_m = m.number_or("margin_m", {0.0, 1e4, true, "a margin in metres"}, r.margin_m);
+  r.arrival_radius_m = m.number_or("arrival_radius_m", {0.0, 1e4, false, "a radius in metres"}, r.arrival_radius_m);
+  r.influence_m = m.number_or("influence_m", {0.0, 1e5, false, "a distance in metres"}, r.influence_m);
+  r.potential_gain = m.number_or("potential_gain", {0.0, 1e6, false, "a gain"}, r.potential_gain);
+  r.speed_mps = m.number_or(
+      "speed_mps", {0.0, sc.vehicle.max_speed_mps, false, "a speed in m/s up to the vehicle's max_speed"}, r.speed_mps);
+  r.exit_blend_fraction = m.number_or("exit_blend_fraction", {0.0, 1.0, false, "a fraction"}, r.exit_blend_fraction);
+  r.dipole_axis_band_m =
+      m.number_or("dipole_axis_band_m", {0.0, 1e4, true, "a distance in metres"}, r.dipole_axis_band_m);
+  r.dipole_blend_m = m.number_or("dipole_blend_m", {0.0, 1e4, false, "a distance in metres"}, r.dipole_blend_m);
+  r.potential_stall_fraction =
+      m.number_or("potential_stall_fraction", {0.0, 1.0, false, "a fraction below 1"}, r.potential_stall_fraction);
+  if (r.potential_stall_fraction >= 1.0) {
+    throw input_error(m.where("potential_stall_fraction"), "a fraction > 0 and < 1",
+                      number(r.potential_stall_fraction));
+  }
+}
+
+void read_run_rules(const Mapping& root, Scenario& sc) {
+  if (root.has("contacts")) {
+    const Mapping m(root.value("contacts"), sc.source, "contacts.", {"gate_m", "memory_s"},
+                    "a mapping of contact keys (gate_m, memory_s)");
+    sc.contacts.gate_m = m.number_or("gate_m", {0.0, 1e4, true, "a gate in metres"}, sc.contacts.gate_m);
+    sc.contacts.memory_s = m.number_or("memory_s", kDuration, sc.contacts.memory_s);
+  }
+  if (root.has("energy")) {
+    const Mapping m(root.value("energy"), sc.source, "energy.", {"hotel_power_w", "propulsion_k_w_per_mps3"},
+                    "a mapping of energy keys (hotel_power_w, propulsion_k_w_per_mps3)");
+    sc.energy.hotel_power_w = m.number_or("hotel_power_w", {0.0, 1e7, true, "a power in W"}, sc.energy.hotel_power_w);
+    sc.energy.propulsion_k_w_per_mps3 = m.number_or(
+        "propulsion_k_w_per_mps3", {0.0, 1e7, true, "a coefficient in W/(m/s)^3"}, sc.energy.propulsion_k_w_per_mps3);
+  }
+  if (root.has("max_time_s")) sc.max_time_s = root.number("max_time_s", kDuration);
+  sc.stall_time_s = root.number_or("stall_time_s", kDuration, sc.stall_time_s);
+  sc.no_progress_s = root.number_or("no_progress_s", kDuration, sc.no_progress_s);
+  sc.reversal_dead_band = deg_to_rad(root.number_or(
+      "reversal_dead_band_deg_s", {0.0, 180.0, true, "a turning rate in deg/s"}, rad_to_deg(sc.reversal_dead_band)));
+  if (root.has("seed")) {
+    const YAML::Node v = root.value("seed");
+    const std::string text = v.IsScalar() ? v.Scalar() : std::string();
+    std::uint64_t seed = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), seed);
+    if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) {
+      throw input_error(root.where("seed"), "an unsigned integer seed (0 .. 18446744073709551615)",
+                        v.IsScalar() ? "'" + printable(text) + "'" : "a list or mapping");
+    }
+    sc.sonar.seed = seed;
+  }
+}
+
+// The current: a constant (rotated to the frame at the start) or a field sampled as the vehicle goes.
+void read_current(const Mapping& root, const std::string& base_dir, Scenario& sc) {
+  if (root.has("current") && root.has("current_file")) {
+    throw input_error(root.where("current_file"), "either current or current_file", "both");
+  }
+  if (root.has("current")) {
+    const InputLocation at = root.where("current");
+    const CurrentField f = parse_constant_current(root.text("current", "a current SPEED_MPS,DIR_DEG"), at.describe());
+    if (f.constant_velocity.norm() > 20.0)
+      throw input_error(at, "a current of at most 20 m/s", number(f.constant_velocity.norm()));
+    if (!sc.frame) {
+      sc.current = f.constant_velocity;  // true north is +y
+    } else {
+      const auto c = CurrentSampler(std::make_shared<CurrentField>(f), *sc.frame).sample(sc.start, 0.0);
+      if (!c) throw input_error(at, "a start where the frame " + sc.frame->id() + " knows true north");
+      sc.current = *c;
+    }
+    return;
+  }
+  if (!root.has("current_file")) return;
+  if (!sc.frame) {
+    throw input_error(
+        root.where("current_file"),
+        "a scenario with a geographic frame (crs, an obstacles_file or lon/lat positions) to place the field");
+  }
+  CurrentOptions options;
+  options.depth_m = sc.depth_m;
+  options.assumed_crs = sc.frame->id();
+  auto field =
+      std::make_shared<const CurrentField>(load_current_field(path_in(root, "current_file", base_dir), options));
+  sc.current_time_offset_s = field->times_s.empty() ? 0.0 : field->times_s.front();
+  const Vec2 lo = sc.start.cwiseMin(sc.target), hi = sc.start.cwiseMax(sc.target);
+  check_current_coverage(*field, *sc.frame, lo, hi, sc.current_time_offset_s, sc.current_time_offset_s);
+  sc.current_field = std::make_shared<const CurrentSampler>(field, *sc.frame, lo, hi);
+}
+
+Scenario parse(const YAML::Node& doc, const std::string& source, const std::string& base_dir) {
+  const Mapping root(doc, source, "",
+                     {"name",           "vehicle",           "crs",           "start",
+                      "target",         "start_heading_deg", "depth_m",       "obstacles",
+                      "obstacles_file", "current",           "current_file",  "seed",
+                      "sonar",          "reactive",          "contacts",      "energy",
+                      "max_time_s",     "stall_time_s",      "no_progress_s", "reversal_dead_band_deg_s"},
+                     "a YAML mapping of scenario keys (see data/scenarios/one_obstacle.yaml)");
+  Scenario sc;
+  sc.source = source;
+  sc.name = root.has("name") ? root.text("name", "a scenario name (text)") : fs::path(source).stem().string();
+  if (root.has("vehicle")) sc.vehicle = read_vehicle_file(path_in(root, "vehicle", base_dir));
+
+  // The frame: crs, else the obstacle file's, else the start's UTM zone when lon/lat are used.
+  if (root.has("crs")) {
+    sc.frame =
+        LocalFrame::from_user_crs(root.text("crs", "a projected CRS such as EPSG:32632"), root.where("crs").describe());
+  }
+  ObstacleSet from_file;
+  if (root.has("obstacles_file")) {
+    LoadedObstacles loaded =
+        load_obstacles({path_in(root, "obstacles_file", base_dir)}, {sc.frame ? sc.frame->id() : std::string(), ""});
+    if (!loaded.obstacles.polygons.empty()) {
+      throw input_error(root.where("obstacles_file"),
+                        "elliptic-cylinder (Point) obstacles only: the sonar reports no polygons",
+                        std::to_string(loaded.obstacles.polygons.size()) + " polygon(s)");
+    }
+    sc.frame = loaded.frame;
+    from_file = std::move(loaded.obstacles);
+  }
+  bool lonlat = node_uses_lonlat(root.value("start")) || node_uses_lonlat(root.value("target"));
+  if (root.has("obstacles") && root.value("obstacles").IsSequence())
+    for (const auto& o : root.value("obstacles")) lonlat = lonlat || node_uses_lonlat(o);
+  if (!sc.frame && lonlat) {
+    if (!node_uses_lonlat(root.value("start"))) {
+      throw input_error(root.where("start"), "lon, lat like the other positions (or a crs to read x, y in)");
+    }
+    const Mapping m(root.value("start"), source, "start.", {"x", "y", "lon", "lat"}, "a position");
+    is_lonlat(m);
+    sc.frame = LocalFrame::utm_for(m.number("lon", kLon), m.number("lat", kLat));
+  }
+
+  sc.start = read_point(root, "start", sc.frame);
+  sc.target = read_point(root, "target", sc.frame);
+  if (root.has("start_heading_deg"))
+    sc.start_heading = to_math(root.number("start_heading_deg", kAngle), sc.start, sc.frame);
+  sc.depth_m = root.number_or(
+      "depth_m", {0.0, sc.vehicle.max_depth_m, true, "a depth in metres up to the vehicle's max_depth_m"}, 0.0);
+  if (root.has("obstacles")) read_obstacles(root, sc.frame, sc);
+  for (EllipticCylinder& c : from_file.ellipses) sc.obstacles.push_back(std::move(c));
+  read_sonar(root, sc);
+  read_reactive(root, sc);
+  read_run_rules(root, sc);
+  read_current(root, base_dir, sc);
+  validate(sc);
+  return sc;
+}
+
+}  // namespace
+
+double default_max_time_s(const Scenario& sc) {
+  const double straight = (sc.target - sc.start).norm() / sc.reactive.speed_mps;
+  return std::min(3.0 * straight + 300.0, kMaxSimulationTime_s);
+}
+
+void validate(const Scenario& sc) {
+  validate(sc.vehicle, sc.source);
+  auto fail = [&](const std::string& field, const std::string& expected, const std::string& got) {
+    throw input_error({sc.source, "", field}, expected, got);
+  };
+  // The sonar's and the methods' own checks name "sonar" and "reactive": prefix the scenario.
+  auto within = [&](const auto& check) {
+    try {
+      check();
+    } catch (const InputError& e) {
+      throw InputError(sc.source + ": " + e.what());
+    }
+  };
+  // Range 0 (no sonar) is the scenario's addition to the sonar's ranges.
+  if (!(sc.sonar.range_m >= 0.0)) fail("sonar.range_m", "a range >= 0 m (0 = no sonar)", number(sc.sonar.range_m));
+  SonarParams sonar = sc.sonar;
+  if (sonar.range_m == 0.0) sonar.range_m = 1.0;
+  within([&] { validate(sonar); });
+  within([&] { validate(sc.reactive); });
+  const ReactiveParams& r = sc.reactive;
+  if (!(r.arrival_radius_m > 0.0)) fail("reactive.arrival_radius_m", "a radius > 0 m", number(r.arrival_radius_m));
+  if (!(r.speed_mps <= sc.vehicle.max_speed_mps))
+    fail("reactive.speed_mps", "a speed <= the vehicle's max speed " + number(sc.vehicle.max_speed_mps) + " m/s",
+         number(r.speed_mps));
+  if (!sc.start.allFinite()) fail("start", "a finite position", "NaN or infinity");
+  if (!sc.target.allFinite()) fail("target", "a finite position", "NaN or infinity");
+  if (sc.start_heading && !std::isfinite(*sc.start_heading)) fail("start_heading_deg", "a finite heading", "NaN");
+  if (!(sc.depth_m >= 0.0 && sc.depth_m <= sc.vehicle.max_depth_m))
+    fail("depth_m", "a depth >= 0 and <= the vehicle's max depth", number(sc.depth_m));
+  if (!sc.current.allFinite() || sc.current.norm() > 20.0)
+    fail("current", "a finite current of at most 20 m/s", number(sc.current.norm()));
+  for (const EllipticCylinder& o : sc.obstacles) {
+    const Ellipse& e = o.footprint;
+    if (!e.center.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6)) {
+      fail("obstacle '" + printable(o.id) + "'", "a finite ellipse with 0 < semi-minor <= semi-major <= 1e6 m",
+           "a = " + number(e.a) + ", b = " + number(e.b));
+    }
+  }
+  for (const EllipticCylinder& o : sc.obstacles) {
+    if (o.footprint.contains(sc.start))
+      fail("start", "a start outside every obstacle", "inside obstacle '" + printable(o.id) + "'");
+    if (o.footprint.contains(sc.target))
+      fail("target", "a target outside every obstacle (reaching it would be a collision)",
+           "inside obstacle '" + printable(o.id) + "'");
+  }
+  if (!(sc.contacts.gate_m >= 0.0) || !std::isfinite(sc.contacts.gate_m))
+    fail("contacts.gate_m", "a gate >= 0 m", number(sc.contacts.gate_m));
+  if (!(sc.contacts.memory_s > 0.0)) fail("contacts.memory_s", "a time > 0 s", number(sc.contacts.memory_s));
+  if (!(sc.energy.hotel_power_w >= 0.0) || !std::isfinite(sc.energy.hotel_power_w) ||
+      !(sc.energy.propulsion_k_w_per_mps3 >= 0.0) || !std::isfinite(sc.energy.propulsion_k_w_per_mps3))
+    fail("energy", "finite hotel_power_w and propulsion_k_w_per_mps3 >= 0", "a negative or non-finite value");
+  if (!std::isnan(sc.max_time_s) && !(sc.max_time_s > 0.0 && sc.max_time_s <= kMaxSimulationTime_s))
+    fail("max_time_s", "a time > 0 and <= " + number(kMaxSimulationTime_s) + " s", number(sc.max_time_s));
+  if (!(sc.stall_time_s > 0.0) || !std::isfinite(sc.stall_time_s))
+    fail("stall_time_s", "a time > 0 s", number(sc.stall_time_s));
+  if (!(sc.no_progress_s > 0.0) || !std::isfinite(sc.no_progress_s))
+    fail("no_progress_s", "a time > 0 s", number(sc.no_progress_s));
+  if (!(sc.reversal_dead_band >= 0.0) || !std::isfinite(sc.reversal_dead_band))
+    fail("reversal_dead_band_deg_s", "a turning rate >= 0", number(rad_to_deg(sc.reversal_dead_band)));
+}
+
+Scenario parse_scenario_yaml(const std::string& text, const std::string& source, const std::string& base_dir) {
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw input_error({source, e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) : std::string(), ""},
+                      "a YAML scenario file", printable(e.msg, 100));
+  }
+  if (doc.IsNull()) throw input_error({source, "", ""}, "a YAML mapping of scenario keys", "an empty document");
+  return parse(doc, source, base_dir);
+}
+
+Scenario read_scenario_file(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing scenario file");
+  constexpr std::uintmax_t kMaxBytes = 4u << 20;
+  const auto size = fs::file_size(path, ec);
+  if (ec || size > kMaxBytes) {
+    throw input_error({path, "", ""}, "a scenario file under 4 MiB (large obstacle sets go in an obstacles_file)",
+                      std::to_string(size) + " bytes");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw input_error({path, "", ""}, "a readable scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scenario_yaml(text.str(), path, fs::path(path).parent_path().string());
+}
+
+}  // namespace deepguide

@@ -1,0 +1,38 @@
+#pragma once
+// A simulation on disk: the trajectory as CSV, the statistics as JSON.
+//
+// CSV: one header line, one row per sample, comma-separated, '.' decimals,
+// angles in nautical degrees (clockwise from north, [0, 360)), turning rates
+// in deg/s CLOCKWISE positive (a turn to starboard is positive, the nautical
+// sense; the library's r is counter-clockwise), fixed decimals (millimetres,
+// thousandths of a degree):
+//   time_s,x_m,y_m,heading_deg,course_cmd_deg,rate_cmd_deg_s,rate_ref_deg_s,
+//   rate_deg_s,speed_mps,clearance_m,sector,status,course_unreachable
+// (rate_cmd: the commanded course's raw rate; rate_ref: the autopilot's
+// reference; rate: the vehicle's; simulation.hpp)
+// x_m, y_m are in the scenario's frame (its CRS when it has one);
+// clearance_m is "inf" without obstacles; status is the reactive status name
+// (reactive_method.hpp); course_unreachable is 0 or 1. Written atomically.
+//
+// JSON: the statistics with the unit in every name, rates in deg/s (magnitudes),
+// min_clearance_m null without obstacles, plus the scenario name, the method,
+// the seed, why the run ended, samples and contacts remembered.
+
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+
+#include "deepguide/simulation/simulation.hpp"
+
+namespace deepguide {
+
+/// The CSV text of a trajectory (header above).
+std::string trajectory_csv(std::span<const TrajectorySample> trajectory);
+
+/// Writes trajectory_csv to `path` atomically; throws InputError when it cannot.
+void write_trajectory_csv(const std::string& path, std::span<const TrajectorySample> trajectory);
+
+/// The run's statistics as JSON (header above), keys in a fixed order.
+nlohmann::ordered_json simulation_json(const Scenario& scenario, const SimulationResult& result);
+
+}  // namespace deepguide

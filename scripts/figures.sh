@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Regenerates the reactive level's figures (docs/SIMULATION.md) from every
+# scenario in data/scenarios/*.yaml into docs/figures/:
+#   NAME_field_METHOD.png  gradient lines of each method (the seed's Figs. 8, 10)
+#   NAME_simulation.png    the methods' simulated trajectories (Fig. 11)
+#   NAME_turn_rates.png    r_ref and r over time per method (Fig. 12)
+# Builds first (scripts/setup.sh, Release, incremental). To use a deepguide
+# binary that is already built instead: DEEPGUIDE_CLI=path/to/deepguide scripts/figures.sh
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
+if [ -z "${DEEPGUIDE_CLI:-}" ]; then
+  deepguide_setup "$DEEPGUIDE_ROOT/build"
+  DEEPGUIDE_CLI="$DEEPGUIDE_ROOT/build/apps/deepguide"
+fi
+cd "$DEEPGUIDE_ROOT"
+mkdir -p docs/figures
+shopt -s nullglob
+scenarios=(data/scenarios/*.yaml)
+if [ ${#scenarios[@]} -eq 0 ]; then
+  echo "deepguide: no scenarios in data/scenarios/" >&2
+  exit 1
+fi
+for scenario in "${scenarios[@]}"; do
+  name="$(basename "$scenario" .yaml)"
+  for method in dipole geometric potential; do
+    "$DEEPGUIDE_CLI" render field "$scenario" --method "$method" -o "docs/figures/${name}_field_${method}.png"
+  done
+  "$DEEPGUIDE_CLI" render simulation "$scenario" -o "docs/figures/${name}_simulation.png"
+  "$DEEPGUIDE_CLI" render turn-rates "$scenario" -o "docs/figures/${name}_turn_rates.png"
+done
