@@ -49,8 +49,8 @@ void print_monte_carlo(const MonteCarloResult& r) {
               "overlaps allowed; a uniform current of 0..%.2f m/s in any direction; the DeepC-like vehicle at "
               "cruise; the default inexact forward-looking sonar (120 m, 120 deg, 2 Hz, position and size errors "
               "0.5 m + 1 %% of range, seeded per scenario); security margin 10 m. Every method runs every scenario. "
-              "Turning rates: r_ref is the reference turning rate, the rate of the method's commanded course; r the "
-              "vehicle's actual turning rate. Distributions over runs: median / 95th percentile / max.\n\n",
+              "Turning rates: r_ref is the autopilot's reference turning rate (what the method asked, within the "
+              "autopilot's 5 deg/s limit); r the vehicle's actual turning rate. Distributions over runs: median / 95th percentile / max.\n\n",
               p.max_obstacles, p.cross_track_sigma_m, p.max_current_mps);
   std::printf("| method | runs | reached | collisions | stalled | no progress | time out | min clearance m: min / "
               "p5 / median | max abs r_ref deg/s | RMS r_ref deg/s | max abs r deg/s | RMS r deg/s | heading reversals "
@@ -73,28 +73,33 @@ void print_monte_carlo(const MonteCarloResult& r) {
   const MethodSummary* geo = find(r, ReactiveMethod::geometric);
   const MethodSummary* dip = find(r, ReactiveMethod::dipole);
   if (geo != nullptr && dip != nullptr) {
-    // Per scenario: the geometric method's max |r_ref| over the dipole's.
-    std::vector<double> ratios;
-    int lower = 0, both = 0;
-    for (std::size_t i = 0; i < r.runs.size(); ++i) {
-      if (r.runs[i].method != ReactiveMethod::geometric) continue;
-      for (const MonteCarloRun& other : r.runs) {
-        if (other.scenario != r.runs[i].scenario || other.method != ReactiveMethod::dipole) continue;
-        if (other.stats.max_abs_rate_ref > 0.0) {
-          ratios.push_back(r.runs[i].stats.max_abs_rate_ref / other.stats.max_abs_rate_ref);
+    // Per scenario: the geometric method's max |r| (and max |r_ref|) over the dipole's.
+    auto compare = [&](const char* name, double SimulationStats::*stat, const Distribution& g, const Distribution& d) {
+      std::vector<double> ratios;
+      int lower = 0, both = 0;
+      for (const MonteCarloRun& run : r.runs) {
+        if (run.method != ReactiveMethod::geometric) continue;
+        for (const MonteCarloRun& other : r.runs) {
+          if (other.scenario != run.scenario || other.method != ReactiveMethod::dipole || !(other.stats.*stat > 0.0)) {
+            continue;
+          }
+          ratios.push_back(run.stats.*stat / other.stats.*stat);
           ++both;
-          lower += r.runs[i].stats.max_abs_rate_ref < other.stats.max_abs_rate_ref;
+          lower += run.stats.*stat < other.stats.*stat;
         }
       }
-    }
-    const Distribution d = distribution(ratios);
-    std::printf("\nGeometric versus dipole, max |r_ref|: median over runs %.2f vs %.2f deg/s (ratio %.3f); "
-                "per scenario geometric / dipole: median %.3f, p95 %.3f; geometric lower in %d of %d scenarios. "
-                "Collisions: geometric %d, dipole %d, potential %d.\n",
-                deg_s(geo->max_abs_rate_ref.median), deg_s(dip->max_abs_rate_ref.median),
-                geo->max_abs_rate_ref.median / std::max(dip->max_abs_rate_ref.median, 1e-12), d.median, d.p95, lower,
-                both, geo->collisions, dip->collisions,
-                find(r, ReactiveMethod::potential) ? find(r, ReactiveMethod::potential)->collisions : -1);
+      const Distribution q = distribution(ratios);
+      std::printf("- Geometric versus dipole, %s: median over runs %.2f vs %.2f deg/s (ratio %.3f); per scenario "
+                  "geometric / dipole: median %.3f, p95 %.3f, max %.3f; geometric lower in %d of %d scenarios.\n",
+                  name, deg_s(g.median), deg_s(d.median), g.median / std::max(d.median, 1e-12), q.median, q.p95,
+                  q.max, lower, both);
+    };
+    std::printf("\n");
+    compare("max |r|", &SimulationStats::max_abs_rate, geo->max_abs_rate, dip->max_abs_rate);
+    compare("max |r_ref|", &SimulationStats::max_abs_rate_ref, geo->max_abs_rate_ref, dip->max_abs_rate_ref);
+    const MethodSummary* pot = find(r, ReactiveMethod::potential);
+    std::printf("- Collisions: geometric %d, dipole %d, potential %d.\n", geo->collisions, dip->collisions,
+                pot ? pot->collisions : -1);
   }
 }
 

@@ -300,18 +300,42 @@ TEST(Geometric, ElongatedObjectTangentToTheSecurityEllipse) {
 TEST(Geometric, TangentBlockedByASecondZoneTakesThatZonesTangent) {
   // A: disc r 5 at the origin (zone R 15), first on the line of sight; B: disc r 20 at (20, 20) (zone R 30),
   // overlapping A's zone. A's north tangent from p = (-100, 1) touches at about (-2.1, 14.9), inside B's zone:
-  // the course must be B's north tangent: bearing atan2(19, 120) + asin(30 / |(120, 19)|).
+  // the course must be B's north tangent: bearing atan2(19, 120) + asin(30 / |(120, 19)|). The vehicle
+  // heads 0.3 rad, so the north side (0.41 rad) is the smaller turn than the south (-0.15 rad).
   const ReactiveParams params = params_for(10, 2, 5);
   const std::vector<Ellipse> objects{disc(0, 0, 5), disc(20, 20, 20)};
   const Vec2 p(-100, 1);
   ReactiveMemory memory;
-  const ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, 0.0, Vec2(150, 0), objects);
+  const ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, 0.3, Vec2(150, 0), objects);
   EXPECT_EQ(c.sector, 1);
   EXPECT_EQ(c.active_object, 1);
   EXPECT_EQ(memory.engaged_object, 0);  // A is the one engaged (first on the line of sight)
   EXPECT_NEAR(c.course, std::atan2(19.0, 120.0) + std::asin(30.0 / std::hypot(120.0, 19.0)), 1e-9);
   EXPECT_NEAR(line_offset(p, c.course, Vec2(20, 20)), -30.0, 1e-9);
   EXPECT_LT(line_offset(p, c.course, Vec2(0, 0)), -15.0);
+}
+
+// A zone engaged afresh is passed on the side that is the smaller turn from
+// the present course, even against the symmetry-axis rule; once latched, the
+// side stays although the other becomes the smaller turn.
+TEST(Geometric, FreshEngagementTakesTheSmallerTurn) {
+  const ReactiveParams params = params_for(10, 2, 5);  // zone R = 15
+  const std::vector<Ellipse> objects{disc(0, 0, 5)};
+  const Vec2 p(-100, 1);  // north of the axis: the axis rule says north
+  const double tangent = std::asin(15.0 / std::hypot(100.0, 1.0));
+  const double to_centre = std::atan2(-1.0, 100.0);
+  ReactiveMemory memory;
+  ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, -0.2, Vec2(150, 0), objects);
+  EXPECT_EQ(c.sector, 1);
+  EXPECT_EQ(memory.side, -1);  // heading south of the centre: the south tangent is the smaller turn
+  EXPECT_NEAR(c.course, to_centre - tangent, 1e-9);
+  c = command(ReactiveMethod::geometric, params, memory, p, 0.2, Vec2(150, 0), objects);
+  EXPECT_EQ(memory.side, -1);  // latched: kept although north is now the smaller turn
+  EXPECT_NEAR(c.course, to_centre - tangent, 1e-9);
+  ReactiveMemory fresh;
+  c = command(ReactiveMethod::geometric, params, fresh, p, 0.2, Vec2(150, 0), objects);
+  EXPECT_EQ(fresh.side, 1);
+  EXPECT_NEAR(c.course, to_centre + tangent, 1e-9);
 }
 
 TEST(Geometric, OverlappingObjectsArePassedWithoutEnteringEither) {

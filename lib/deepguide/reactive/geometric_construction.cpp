@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include "deepguide/core/angles.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/geometry/ellipse_segment.hpp"
 #include "deepguide/geometry/ellipse_tangents.hpp"
@@ -79,18 +80,37 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     if (memory) release(*memory);
     return {unit_or_zero(g - p), 2, -1};
   }
-  const int side = side_for(zones, active, p, g, course, memory, false);
   // Cascade: the tangent segment p -> T must itself be free.
-  std::ptrdiff_t k = active;
-  for (std::size_t step = 0; step < zones.size(); ++step) {
-    const Ellipse& zone = zones[static_cast<std::size_t>(k)];
-    const std::optional<PointTangents> tangents = tangent_points(zone, p);
-    const Vec2 touch = tangents ? (side > 0 ? tangents->left : tangents->right) : p;  // no tangents: p on the boundary
-    const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, k);
-    if (blocker < 0) return {along_boundary(outward_normal(zone, touch), side), 1, k};
-    k = blocker;
+  auto cascade = [&](int side) -> Construction {
+    std::ptrdiff_t k = active;
+    for (std::size_t step = 0; step < zones.size(); ++step) {
+      const Ellipse& zone = zones[static_cast<std::size_t>(k)];
+      const std::optional<PointTangents> tangents = tangent_points(zone, p);
+      const Vec2 touch = tangents ? (side > 0 ? tangents->left : tangents->right) : p;  // no tangents: on the boundary
+      const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, k);
+      if (blocker < 0) return {along_boundary(outward_normal(zone, touch), side), 1, k};
+      k = blocker;
+    }
+    return {Vec2(0.0, 0.0), 1, active};
+  };
+  const Ellipse& engaged = zones[static_cast<std::size_t>(active)];
+  if (memory && course && !engaged_with(*memory, engaged.center, match_radius(engaged))) {
+    // A zone engaged afresh while under way: the side whose course is the
+    // smaller turn from the present one. The axis rule alone can ask for a
+    // 60 degree turn when a second zone blocks the first's tangent close by,
+    // and a vehicle turning at most 5 deg/s sweeps ~20 m while it turns: into
+    // the zone (the Monte Carlo's collisions). Far from the zones both rules
+    // agree; an even split keeps the axis rule.
+    const Construction left = cascade(+1), right = cascade(-1);
+    auto turn = [&](const Construction& c) {
+      return c.direction.squaredNorm() == 0.0 ? 4.0 : std::abs(wrap_pi(math_angle(c.direction) - *course));
+    };
+    const double tl = turn(left), tr = turn(right);
+    const int side = std::abs(tl - tr) < 1e-9 ? axis_side(engaged.center, g, p, course) : tl < tr ? +1 : -1;
+    latched_side(*memory, active, engaged.center, match_radius(engaged), side);
+    return side > 0 ? left : right;
   }
-  return {Vec2(0.0, 0.0), 1, active};
+  return cascade(side_for(zones, active, p, g, course, memory, false));
 }
 
 }  // namespace
