@@ -18,13 +18,17 @@ Vec2 Ellipse::normal_at(double t) const {
   return n.normalized();
 }
 
+// One cosine and one sine per call (not one pair per axis): reactive
+// methods transform points into every zone's frame at each 10 Hz step.
 Vec2 Ellipse::to_local(const Vec2& p) const {
   const Vec2 d = p - center;
-  return {d.dot(major_dir()), d.dot(minor_dir())};
+  const double c = std::cos(theta), s = std::sin(theta);
+  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
 }
 
 Vec2 Ellipse::from_local(const Vec2& q) const {
-  return center + q.x() * major_dir() + q.y() * minor_dir();
+  const double c = std::cos(theta), s = std::sin(theta);
+  return center + Vec2(c * q.x() - s * q.y(), s * q.x() + c * q.y());
 }
 
 Vec2 Ellipse::to_unit(const Vec2& p) const {

@@ -198,7 +198,8 @@ std::vector<DipoleZone> dipole_zones(std::span<const Ellipse> objects, double ma
       for (std::size_t j = i + 1; j < zones.size() && !merged; ++j) {
         const Ellipse& a = zones[i].shape;
         const Ellipse& b = zones[j].shape;
-        if ((a.center - b.center).norm() - a.a - b.a >= blend_m) continue;  // cheap: far apart
+        const double reach = a.a + b.a + blend_m;
+        if ((a.center - b.center).squaredNorm() >= reach * reach) continue;  // cheap: far apart
         if (zone_gap(a, b) >= blend_m) continue;
         zones[i].shape = enclosing_circle(a, b);
         zones[i].members.insert(zones[i].members.end(), zones[j].members.begin(), zones[j].members.end());

@@ -184,6 +184,8 @@ std::ptrdiff_t deepest_zone(std::span<const Ellipse> zones, const Vec2& p) {
   std::ptrdiff_t best = -1;
   double best_depth = 0.0;
   for (std::size_t i = 0; i < zones.size(); ++i) {
+    // Beyond the semi-major axis from the centre: outside, no transform needed.
+    if ((p - zones[i].center).squaredNorm() >= zones[i].a * zones[i].a) continue;
     const double d = depth_fraction(zones[i], p);
     if (d > best_depth) {
       best_depth = d;
