@@ -338,6 +338,31 @@ TEST(Geometric, FreshEngagementTakesTheSmallerTurn) {
   EXPECT_NEAR(c.course, to_centre + tangent, 1e-9);
 }
 
+// Two zones 5.4 m apart (less than geometric_passage_m) are one group: the
+// north tangent is the group's (B's), not A's, which would lead into the
+// 5 m pocket between them. With passage 0 they are apart again.
+TEST(Geometric, ZonesCloserThanThePassageArePassedAsOne) {
+  ReactiveParams params = params_for(10, 2, 5);  // zones R = 15
+  const std::vector<Ellipse> objects{disc(0, 0, 5), disc(5, 35, 5)};
+  const Vec2 p(-100, 1);
+  const double to_a = std::atan2(-1.0, 100.0), to_b = std::atan2(34.0, 105.0);
+  const double group_course = to_b + std::asin(15.0 / std::hypot(105.0, 34.0));
+  ReactiveMemory memory;
+  ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, 0.3, Vec2(150, 0), objects);
+  EXPECT_EQ(c.sector, 1);
+  EXPECT_EQ(memory.side, 1);
+  EXPECT_EQ(c.active_object, 1);
+  EXPECT_NEAR(c.course, group_course, 1e-9);
+  params.geometric_passage_m = 0.0;
+  ReactiveMemory apart;
+  c = command(ReactiveMethod::geometric, params, apart, p, 0.3, Vec2(150, 0), objects);
+  EXPECT_EQ(apart.side, 1);
+  EXPECT_EQ(c.active_object, 0);
+  EXPECT_NEAR(c.course, to_a + std::asin(15.0 / std::hypot(100.0, 1.0)), 1e-9);
+  params.geometric_passage_m = -1.0;
+  EXPECT_THROW(command(ReactiveMethod::geometric, params, apart, p, 0.3, Vec2(150, 0), objects), InputError);
+}
+
 TEST(Geometric, OverlappingObjectsArePassedWithoutEnteringEither) {
   const ReactiveParams params = params_for(10, 2, 5);
   const std::vector<std::vector<Ellipse>> cases{

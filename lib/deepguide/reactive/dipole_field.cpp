@@ -22,22 +22,6 @@ double smoothstep(double x) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-Vec2 project_onto(const Ellipse& e, const Vec2& x) { return e.contains(x) ? x : project_to_ellipse(e, x).point; }
-
-/// Distance between two zones (0 if they overlap): alternating projections
-/// onto two convex sets converge to a closest pair.
-double zone_gap(const Ellipse& e1, const Ellipse& e2) {
-  Vec2 x = e2.center;
-  Vec2 y = project_onto(e1, x);
-  for (int i = 0; i < 64; ++i) {
-    x = project_onto(e2, y);
-    const Vec2 y_next = project_onto(e1, x);
-    if ((y_next - y).norm() < 1e-9 * (1.0 + e1.a)) break;
-    y = y_next;
-  }
-  return (x - y).norm();
-}
-
 /// The circle enclosing the enclosing circles of two zones.
 Ellipse enclosing_circle(const Ellipse& e1, const Ellipse& e2) {
   const Vec2 d = e2.center - e1.center;

@@ -1,5 +1,9 @@
 #include "deepguide/reactive/geometric_construction.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -34,12 +38,64 @@ int side_for(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p,
   return latched_side(*memory, k, zone.center, match_radius(zone), fresh);
 }
 
+struct Tuning {
+  double blend;    ///< exit_blend_fraction
+  double passage;  ///< geometric_passage_m
+};
+
 Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
-                       ReactiveMemory* memory, double blend, bool outside_only = false);
+                       ReactiveMemory* memory, const Tuning& tuning, bool outside_only = false);
+
+/// Whether the zones labelled `id` surround p: every direction from p meets
+/// one of them (or p is on or in one).
+bool surrounded(const std::vector<Ellipse>& zones, const std::vector<std::size_t>& group, std::size_t id,
+                 const Vec2& p) {
+  std::vector<std::pair<double, double>> arcs;  // [from, to] anticlockwise, from in [0, 2 pi)
+  for (std::size_t m = 0; m < zones.size(); ++m) {
+    if (group[m] != id) continue;
+    const std::optional<PointTangents> t = tangent_points(zones[m], p);
+    if (!t) return true;  // on or in a member
+    const double from = wrap_two_pi(math_angle(t->right - p));
+    double to = wrap_two_pi(math_angle(t->left - p));
+    if (to < from) to += 2.0 * std::numbers::pi;
+    arcs.emplace_back(from, to);
+  }
+  if (arcs.size() < 2) return false;
+  std::sort(arcs.begin(), arcs.end());
+  // Largest uncovered gap going round once (the first arc again after a full turn closes it).
+  double reach = arcs.front().second, gap = 0.0;
+  for (std::size_t i = 1; i <= arcs.size(); ++i) {
+    const double from = i < arcs.size() ? arcs[i].first : arcs.front().first + 2.0 * std::numbers::pi;
+    gap = std::max(gap, from - reach);
+    if (i < arcs.size()) reach = std::max(reach, arcs[i].second);
+  }
+  return gap <= 0.0;
+}
+
+/// Group label per zone: zones less than `passage` apart (overlapping ones
+/// included) share one, transitively.
+std::vector<std::size_t> zone_groups(const std::vector<Ellipse>& zones, double passage) {
+  std::vector<std::size_t> label(zones.size());
+  for (std::size_t i = 0; i < zones.size(); ++i) label[i] = i;
+  auto root = [&](std::size_t i) {
+    while (label[i] != i) i = label[i] = label[label[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    for (std::size_t j = i + 1; j < zones.size(); ++j) {
+      const double reach = zones[i].a + zones[j].a + passage;
+      if ((zones[i].center - zones[j].center).squaredNorm() >= reach * reach) continue;  // cheap: far apart
+      if (root(i) == root(j) || zone_gap(zones[i], zones[j]) >= passage) continue;
+      label[root(j)] = root(i);
+    }
+  }
+  for (std::size_t i = 0; i < zones.size(); ++i) label[i] = root(i);
+  return label;
+}
 
 /// Sector 3: the outside course at the nearest boundary point, blended outward.
 Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p, const Vec2& g,
-                        std::optional<double> course, ReactiveMemory* memory, double blend) {
+                        std::optional<double> course, ReactiveMemory* memory, const Tuning& tuning) {
   const Ellipse& zone = zones[static_cast<std::size_t>(k)];
   const int side = side_for(zones, k, p, g, course, memory, true);
   Vec2 x = project_to_ellipse(zone, p).point;
@@ -53,18 +109,18 @@ Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, con
   // The outside course from the boundary point itself (its tangent is the boundary's), with the same
   // side (a copy of the latch: only this call's counts).
   ReactiveMemory probe{side, k, zone.center};
-  Vec2 along = construct(zones, x, g, course, &probe, blend, true).direction;
+  Vec2 along = construct(zones, x, g, course, &probe, tuning, true).direction;
   if (along.squaredNorm() == 0.0 || along.dot(n) < -1e-9) along = along_boundary(n, side);
-  return {exit_direction(along, n, depth_fraction(zone, p), blend), 3, k};
+  return {exit_direction(along, n, depth_fraction(zone, p), tuning.blend), 3, k};
 }
 
 /// `outside_only`: p is taken as outside every zone (the probe just outside a
 /// boundary, which may lie in an overlapping zone): no sector 3 recursion.
 Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
-                       ReactiveMemory* memory, double blend, bool outside_only) {
+                       ReactiveMemory* memory, const Tuning& tuning, bool outside_only) {
   if (!outside_only) {
     if (const std::ptrdiff_t inside = deepest_zone(zones, p); inside >= 0) {
-      return leave_zone(zones, inside, p, g, course, memory, blend);
+      return leave_zone(zones, inside, p, g, course, memory, tuning);
     }
   }
   std::ptrdiff_t active = -1;
@@ -80,15 +136,43 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     if (memory) release(*memory);
     return {unit_or_zero(g - p), 2, -1};
   }
+  const std::vector<std::size_t> group = zone_groups(zones, tuning.passage);
+  // The tangent from p on `side` to the group of zone k: the most extreme of
+  // its members' tangents (the tangent to their convex hull). Returns the
+  // member touched and the tangent point. (From a pocket of the group, inside
+  // its hull, this is the way out round the group.) A group that surrounds p
+  // has no tangent at all: zone k alone then, as without groups, and the
+  // cascade ends stalled if it finds no free tangent.
+  auto group_tangent = [&](std::ptrdiff_t k, int side) {
+    const Vec2 ref = unit_or_zero(zones[static_cast<std::size_t>(k)].center - p);
+    const bool alone = surrounded(zones, group, group[static_cast<std::size_t>(k)], p);
+    std::ptrdiff_t best = k;
+    Vec2 best_touch = p;
+    double best_turn = -std::numeric_limits<double>::infinity();
+    for (std::size_t m = 0; m < zones.size(); ++m) {
+      if (group[m] != group[static_cast<std::size_t>(k)] || (alone && m != static_cast<std::size_t>(k))) continue;
+      const std::optional<PointTangents> tangents = tangent_points(zones[m], p);
+      const Vec2 touch = tangents ? (side > 0 ? tangents->left : tangents->right) : p;  // none: on the boundary
+      const Vec2 dir = touch - p;
+      const double turn = dir.squaredNorm() == 0.0 ? 0.0 : side * std::atan2(cross(ref, dir), ref.dot(dir));
+      if (turn > best_turn || (m == static_cast<std::size_t>(k) && turn >= best_turn)) {
+        best_turn = turn, best = static_cast<std::ptrdiff_t>(m), best_touch = touch;
+      }
+    }
+    return std::pair{best, best_touch};
+  };
   // Cascade: the tangent segment p -> T must itself be free.
   auto cascade = [&](int side) -> Construction {
     std::ptrdiff_t k = active;
     for (std::size_t step = 0; step < zones.size(); ++step) {
-      const Ellipse& zone = zones[static_cast<std::size_t>(k)];
-      const std::optional<PointTangents> tangents = tangent_points(zone, p);
-      const Vec2 touch = tangents ? (side > 0 ? tangents->left : tangents->right) : p;  // no tangents: on the boundary
-      const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, k);
-      if (blocker < 0) return {along_boundary(outward_normal(zone, touch), side), 1, k};
+      const auto [member, touch] = group_tangent(k, side);
+      const Ellipse& zone = zones[static_cast<std::size_t>(member)];
+      const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, member);
+      const bool own_group = blocker >= 0 && group[static_cast<std::size_t>(blocker)] == group[static_cast<std::size_t>(member)] &&
+                             !surrounded(zones, group, group[static_cast<std::size_t>(member)], p);
+      if (blocker < 0 || own_group) {
+        return {along_boundary(outward_normal(zone, touch), side), 1, member};
+      }
       k = blocker;
     }
     return {Vec2(0.0, 0.0), 1, active};
@@ -124,7 +208,7 @@ ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& 
     return *stop;
   }
   const Construction c = construct(zones, input.position, target.point, input.course, &memory,
-                                   params.exit_blend_fraction);
+                                   {params.exit_blend_fraction, params.geometric_passage_m});
   const ReactiveStatus status = c.sector == 3 ? ReactiveStatus::leaving_zone : ReactiveStatus::ok;
   ReactiveCommand cmd = course_command(params, input, c.direction, status, c.object, target);
   cmd.sector = c.sector;
@@ -136,7 +220,8 @@ Vec2 geometric_gradient(const ReactiveParams& params, const Vec2& point, const V
   validate_query(params, point, target, objects);
   const std::vector<Ellipse> zones = security_ellipses(objects, params.margin_m);
   const Vec2 g = steering_target(zones, target).point;
-  return construct(zones, point, g, std::nullopt, nullptr, params.exit_blend_fraction).direction;
+  return construct(zones, point, g, std::nullopt, nullptr, {params.exit_blend_fraction, params.geometric_passage_m})
+      .direction;
 }
 
 }  // namespace deepguide

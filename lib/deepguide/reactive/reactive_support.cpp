@@ -32,6 +32,8 @@ void validate(const ReactiveParams& p) {
   check(finite(p.dipole_axis_band_m) && p.dipole_axis_band_m >= 0.0, "dipole_axis_band_m", "a distance >= 0 m",
         p.dipole_axis_band_m);
   check(finite(p.dipole_blend_m) && p.dipole_blend_m > 0.0, "dipole_blend_m", "a distance > 0 m", p.dipole_blend_m);
+  check(finite(p.geometric_passage_m) && p.geometric_passage_m >= 0.0, "geometric_passage_m", "a distance >= 0 m",
+        p.geometric_passage_m);
   check(finite(p.potential_stall_fraction) && p.potential_stall_fraction > 0.0 && p.potential_stall_fraction < 1.0,
         "potential_stall_fraction", "a fraction in (0, 1)", p.potential_stall_fraction);
 }
@@ -90,6 +92,22 @@ std::vector<Ellipse> security_ellipses(std::span<const Ellipse> objects, double 
   zones.reserve(objects.size());
   for (const Ellipse& e : objects) zones.push_back(security_ellipse(e, margin_m));
   return zones;
+}
+
+double zone_gap(const Ellipse& e1, const Ellipse& e2) {
+  // Alternating projections onto two convex sets converge to a closest pair.
+  auto project_onto = [](const Ellipse& e, const Vec2& x) {
+    return e.contains(x) ? x : project_to_ellipse(e, x).point;
+  };
+  Vec2 x = e2.center;
+  Vec2 y = project_onto(e1, x);
+  for (int i = 0; i < 64; ++i) {
+    x = project_onto(e2, y);
+    const Vec2 y_next = project_onto(e1, x);
+    if ((y_next - y).norm() < 1e-9 * (1.0 + e1.a)) break;
+    y = y_next;
+  }
+  return (x - y).norm();
 }
 
 SteeringTarget steering_target(std::span<const Ellipse> zones, const Vec2& target) {

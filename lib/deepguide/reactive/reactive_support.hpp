@@ -42,6 +42,9 @@ void validate_input(const ReactiveParams& params, const ReactiveInput& input);
 void validate_query(const ReactiveParams& params, const Vec2& point, const Vec2& target,
                     std::span<const Ellipse> objects);
 
+/// Distance between two zones (0 if they overlap).
+double zone_gap(const Ellipse& e1, const Ellipse& e2);
+
 std::vector<Ellipse> security_ellipses(std::span<const Ellipse> objects, double margin_m);
 
 /// The target a method steers to: the real one, or, if it lies inside a zone,

@@ -219,7 +219,7 @@ void read_reactive(const Mapping& root, Scenario& sc) {
   if (!root.has("reactive")) return;
   const Mapping m(root.value("reactive"), sc.source, "reactive.",
                   {"margin_m", "arrival_radius_m", "influence_m", "potential_gain", "speed_mps", "exit_blend_fraction",
-                   "dipole_axis_band_m", "dipole_blend_m", "potential_stall_fraction"},
+                   "dipole_axis_band_m", "dipole_blend_m", "geometric_passage_m", "potential_stall_fraction"},
                   "a mapping of reactive keys");
   ReactiveParams& r = sc.reactive;
   r.margin_m = m.number_or("margin_m", {0.0, 1e4, true, "a margin in metres"}, r.margin_m);
@@ -232,6 +232,8 @@ void read_reactive(const Mapping& root, Scenario& sc) {
   r.dipole_axis_band_m =
       m.number_or("dipole_axis_band_m", {0.0, 1e4, true, "a distance in metres"}, r.dipole_axis_band_m);
   r.dipole_blend_m = m.number_or("dipole_blend_m", {0.0, 1e4, false, "a distance in metres"}, r.dipole_blend_m);
+  r.geometric_passage_m =
+      m.number_or("geometric_passage_m", {0.0, 1e4, true, "a distance in metres"}, r.geometric_passage_m);
   r.potential_stall_fraction =
       m.number_or("potential_stall_fraction", {0.0, 1.0, false, "a fraction below 1"}, r.potential_stall_fraction);
   if (r.potential_stall_fraction >= 1.0) {
