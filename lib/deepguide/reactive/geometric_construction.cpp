@@ -168,8 +168,9 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
       const auto [member, touch] = group_tangent(k, side);
       const Ellipse& zone = zones[static_cast<std::size_t>(member)];
       const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, member);
-      const bool own_group = blocker >= 0 && group[static_cast<std::size_t>(blocker)] == group[static_cast<std::size_t>(member)] &&
-                             !surrounded(zones, group, group[static_cast<std::size_t>(member)], p);
+      const std::size_t own = group[static_cast<std::size_t>(member)];
+      const bool own_group =
+          blocker >= 0 && group[static_cast<std::size_t>(blocker)] == own && !surrounded(zones, group, own, p);
       if (blocker < 0 || own_group) {
         return {along_boundary(outward_normal(zone, touch), side), 1, member};
       }

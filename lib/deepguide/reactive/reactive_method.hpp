@@ -125,7 +125,8 @@ struct ReactiveCommand {
 /// object is recognised in later scans by its centre (engaged_center), not by
 /// its index, since the sonar's list can change order.
 struct ReactiveMemory {
-  int side = 0;  ///< +1 / -1: the side of the object passed, as the sign of cross(target - centre, position - centre); 0 none
+  /// +1 / -1: the side of the object passed, as the sign of cross(target - centre, position - centre); 0 none
+  int side = 0;
   std::ptrdiff_t engaged_object = -1;  ///< the object the side was latched for
   Vec2 engaged_center{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
 };
