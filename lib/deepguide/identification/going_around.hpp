@@ -1,0 +1,60 @@
+#pragma once
+// Going around an object at a given distance (the seed's Figs. 15-16): a
+// guidance unit in the manner of a MOOS-IvP behaviour. Vehicle position in,
+// course and speed out, with the mode it is in.
+//
+// The path is the offset curve at distance D (offset_path.hpp), travelled
+// anticlockwise (direction +1, the object to port) or clockwise (-1, the
+// object to starboard). The cross-track error e is the signed distance from
+// the path, positive outside.
+//   steering   |e| > switch_m: straight at the nearest point of the path.
+//              That segment runs along the object's normal, so it never
+//              crosses the object.
+//   tracking   |e| <= switch_m: lookahead line of sight (notes 7.4) on the
+//              path's tangent direction alpha, in math angles:
+//                chi = alpha + direction * atan(e / lookahead_m)
+//              Outside the path (e > 0) this turns towards the object. Back
+//              to steering only beyond 2 switch_m, so the mode does not flicker.
+// Laps count the unwrapped change of the ellipse parameter t of the nearest
+// path point, in the travel direction, from the moment tracking starts. The
+// run is done when `laps` laps are complete (status done, speed 0).
+
+#include "deepguide/geometry/ellipse.hpp"
+
+namespace deepguide {
+
+struct AroundParams {
+  double distance_m = 20.0;    ///< D, from the object's footprint, > 0
+  int direction = 1;           ///< +1 anticlockwise (object to port), -1 clockwise
+  double laps = 1.0;           ///< laps to go, > 0
+  double lookahead_m = 20.0;   ///< LOS lookahead distance (notes 7.4: 15-30 m for DeepC), > 0
+  /// Steering -> tracking within this cross-track distance, > 0. About twice
+  /// the turning radius (notes 1.5): joining closer, at right angles, the
+  /// vehicle overshoots by up to its radius (10 m: 8 m inside a 20 m path).
+  double switch_m = 40.0;
+  double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< commanded speed through the water, > 0
+};
+
+/// Throws InputError naming the first bad field.
+void validate(const AroundParams& params);
+
+enum class AroundMode { steering, tracking, done };
+
+struct AroundMemory {
+  AroundMode mode = AroundMode::steering;
+  bool started = false;    ///< tracking has begun (the lap count runs)
+  double last_t = 0.0;     ///< ellipse parameter of the nearest path point at the last call
+  double turned = 0.0;     ///< unwrapped parameter change in the travel direction (rad)
+  double laps_done() const;
+};
+
+struct AroundCommand {
+  double course = 0.0;     ///< math rad
+  double speed_mps = 0.0;
+  AroundMode mode = AroundMode::steering;
+  double cross_track_m = 0.0;  ///< e, positive outside the path
+};
+
+AroundCommand around_command(const Ellipse& object, const AroundParams& params, AroundMemory& memory, const Vec2& p);
+
+}  // namespace deepguide
