@@ -1,0 +1,77 @@
+#pragma once
+// Aligning to an object in a current (the seed's Figs. 13-14): a guidance
+// unit. Vehicle position, course and the current in; course over ground and
+// speed through the water out, with the mode (lee_goal.hpp for the areas).
+//
+// e the lee direction (the current's set; in still water the near side, fixed
+// at the first call), g the held point: the lee goal point on the safety
+// ellipse plus hold_buffer_m along e.
+//   evasive      the reactive geometric method with the object as its only
+//                obstacle (zone margin = standoff), towards the approach point
+//                a = g + approach_m e down the axis. Round the object and
+//                into the shade from downstream, so that the vehicle faces
+//                upstream when it starts to hold (no U-turn next to the object).
+//   positioning  from the moment the vehicle is in the shade facing upstream,
+//                or within approach_radius_m of a; back to evasive only when
+//                it leaves the shade.
+//                In a current: the ground velocity u = -k (p - g), at most
+//                max_approach_mps, made good by the water velocity u - c
+//                (course = direction of u, speed = |u - c|). Near g that is
+//                -c: the bow stays into the current while the autopilot crabs
+//                the small u out of it (autopilot.hpp). Below |u| = 0.05 m/s
+//                the course set-point is the direction of -c: one that swings
+//                with a tiny u made the heading weave by +-13 degrees.
+//                In still water: bow to the object, speed k x (distance along
+//                the axis), a line of sight towards the axis; the vehicle has
+//                no astern, so it creeps in and coasts.
+//                k = 1 / (4 T_u) makes the loop critically damped with the
+//                vehicle's 20 s speed lag; twice that oscillates in still water.
+// A current at least as fast as the vehicle: overpowered, full speed into it.
+
+#include <optional>
+
+#include "deepguide/identification/lee_goal.hpp"
+#include "deepguide/reactive/reactive_method.hpp"
+
+namespace deepguide {
+
+struct AlignParams {
+  double standoff_m = 10.0;          ///< safety margin round the object; the goal lies on this zone, > 0
+  double still_mps = 0.05;           ///< a current below this is still water, >= 0
+  double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< evasive mode's speed through the water, > 0
+  double max_speed_mps = 6.0 * 1852.0 / 3600.0;  ///< the vehicle's, a cap on the positioning speed, > 0
+  double position_gain_per_s = 0.0125;  ///< k of the position loop, > 0 (header)
+  double max_approach_mps = 1.0;     ///< cap on the positioning ground speed, > 0
+  double lookahead_m = 20.0;         ///< line of sight towards the current's axis, > 0
+  /// The held point lies this far beyond the lee goal point along the axis,
+  /// so that the position loop's small overshoot stays outside the standoff, >= 0.
+  double hold_buffer_m = 1.0;
+  double approach_m = 50.0;          ///< the approach point lies this far down the axis from the goal, > 0
+  double approach_radius_m = 10.0;   ///< positioning starts within this of the approach point (or facing upstream), > 0
+};
+
+/// Throws InputError naming the first bad field.
+void validate(const AlignParams& params);
+
+struct AlignMemory {
+  AlignArea mode = AlignArea::evasive;
+  std::optional<Vec2> direction;  ///< the lee direction, fixed at the first call
+  ReactiveMemory reactive;        ///< the evasive mode's side latch
+  int switches = 0;               ///< mode changes so far
+};
+
+struct AlignCommand {
+  double course = 0.0;     ///< course over ground, math rad
+  double speed_mps = 0.0;  ///< through the water
+  AlignArea mode = AlignArea::evasive;
+  Vec2 goal{0.0, 0.0};        ///< the held point (the lee goal point plus hold_buffer_m down the axis)
+  double goal_error_m = 0.0;  ///< |p - g|
+  /// The current is at least as fast as the vehicle (max_speed_mps): it cannot
+  /// hold any point; it heads into the current at full speed and says so.
+  bool overpowered = false;
+};
+
+AlignCommand align_command(const Ellipse& object, const AlignParams& params, AlignMemory& memory, const Vec2& p,
+                           double course, const Vec2& current_mps);
+
+}  // namespace deepguide
