@@ -1,6 +1,7 @@
 #include "deepguide/core/error.hpp"
 
 #include <cstdio>
+#include <sstream>
 
 namespace deepguide {
 
@@ -34,6 +35,13 @@ InputError input_error(const InputLocation& where, const std::string& expected,
   std::string msg = where.describe() + ": expected " + expected;
   if (!got.empty()) msg += ", got " + got;
   return InputError(msg);
+}
+
+void require_param(bool ok, const char* group, const char* field, const char* expected, double got) {
+  if (ok) return;
+  std::ostringstream text;
+  text << got;
+  throw input_error({group, "", field}, expected, text.str());
 }
 
 }  // namespace deepguide

@@ -37,4 +37,9 @@ std::string printable(const std::string& text, std::size_t max_chars = 60);
 InputError input_error(const InputLocation& where, const std::string& expected,
                        const std::string& got = {});
 
+/// For parameter structs' validate(): throws input_error({group, "", field},
+/// expected, got) unless `ok`. E.g. "reactive: field 'margin_m': expected a
+/// margin >= 0 m, got -1".
+void require_param(bool ok, const char* group, const char* field, const char* expected, double got);
+
 }  // namespace deepguide

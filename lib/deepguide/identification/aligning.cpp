@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
@@ -11,10 +10,7 @@ namespace deepguide {
 
 void validate(const AlignParams& p) {
   auto check = [](bool ok, const char* field, const char* expected, double got) {
-    if (ok) return;
-    std::ostringstream text;
-    text << "aligning: " << field << ": expected " << expected << ", got " << got;
-    throw InputError(text.str());
+    require_param(ok, "aligning", field, expected, got);
   };
   check(std::isfinite(p.standoff_m) && p.standoff_m > 0.0, "standoff_m", "a distance > 0 m", p.standoff_m);
   check(std::isfinite(p.still_mps) && p.still_mps >= 0.0, "still_mps", "a speed >= 0 m/s", p.still_mps);

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
@@ -12,10 +11,7 @@ namespace deepguide {
 
 void validate(const AroundParams& p) {
   auto check = [](bool ok, const char* field, const char* expected, double got) {
-    if (ok) return;
-    std::ostringstream text;
-    text << "going around: " << field << ": expected " << expected << ", got " << got;
-    throw InputError(text.str());
+    require_param(ok, "going around", field, expected, got);
   };
   check(std::isfinite(p.distance_m) && p.distance_m > 0.0, "distance_m", "a distance > 0 m", p.distance_m);
   check(p.direction == 1 || p.direction == -1, "direction", "+1 or -1", p.direction);

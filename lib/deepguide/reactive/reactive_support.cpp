@@ -15,10 +15,7 @@ namespace deepguide {
 
 void validate(const ReactiveParams& p) {
   auto check = [](bool ok, const char* field, const char* expected, double got) {
-    if (ok) return;
-    std::ostringstream text;
-    text << got;
-    throw input_error({"reactive", "", field}, expected, text.str());
+    require_param(ok, "reactive", field, expected, got);
   };
   auto finite = [](double v) { return std::isfinite(v); };
   check(finite(p.margin_m) && p.margin_m >= 0.0, "margin_m", "a margin >= 0 m", p.margin_m);
