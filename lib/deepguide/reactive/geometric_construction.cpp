@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "deepguide/core/angles.hpp"
@@ -139,7 +140,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
   const std::vector<std::size_t> group = zone_groups(zones, tuning.passage);
   // The tangent from p on `side` to the group of zone k: the most extreme of
   // its members' tangents (the tangent to their convex hull). Returns the
-  // member touched and the tangent point. (From a pocket of the group, inside
+  // member touched, the tangent point and whether the group surrounds p. (From a pocket of the group, inside
   // its hull, this is the way out round the group.) A group that surrounds p
   // has no tangent at all: zone k alone then, as without groups, and the
   // cascade ends stalled if it finds no free tangent.
@@ -159,18 +160,17 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
         best_turn = turn, best = static_cast<std::ptrdiff_t>(m), best_touch = touch;
       }
     }
-    return std::pair{best, best_touch};
+    return std::tuple{best, best_touch, alone};
   };
   // Cascade: the tangent segment p -> T must itself be free.
   auto cascade = [&](int side) -> Construction {
     std::ptrdiff_t k = active;
     for (std::size_t step = 0; step < zones.size(); ++step) {
-      const auto [member, touch] = group_tangent(k, side);
+      const auto [member, touch, alone] = group_tangent(k, side);
       const Ellipse& zone = zones[static_cast<std::size_t>(member)];
       const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, member);
-      const std::size_t own = group[static_cast<std::size_t>(member)];
       const bool own_group =
-          blocker >= 0 && group[static_cast<std::size_t>(blocker)] == own && !surrounded(zones, group, own, p);
+          blocker >= 0 && group[static_cast<std::size_t>(blocker)] == group[static_cast<std::size_t>(member)] && !alone;
       if (blocker < 0 || own_group) {
         return {along_boundary(outward_normal(zone, touch), side), 1, member};
       }
