@@ -4,58 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 #include "deepguide/core/angles.hpp"
-#include "deepguide/core/error.hpp"
-#include "deepguide/geometry/ellipse_distance.hpp"
-#include "deepguide/vehicle/autopilot.hpp"
-#include "deepguide/world/current_field.hpp"
+#include "deepguide/simulation/plant.hpp"
 
 namespace deepguide {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The exact clearance to the nearest true footprint, pruned (simulation.hpp).
-class Clearance {
- public:
-  explicit Clearance(const std::vector<EllipticCylinder>& obstacles) : obstacles_(obstacles) {}
-
-  double at(const Vec2& p) {
-    if (obstacles_.empty()) return kInf;
-    double best = signed_distance(obstacles_[nearest_].footprint, p);
-    std::size_t best_i = nearest_;
-    for (std::size_t i = 0; i < obstacles_.size(); ++i) {
-      if (i == nearest_) continue;
-      const Ellipse& e = obstacles_[i].footprint;
-      if ((p - e.center).norm() - e.a >= best) continue;
-      const double d = signed_distance(e, p);
-      if (d < best) {
-        best = d;
-        best_i = i;
-      }
-    }
-    nearest_ = best_i;
-    return best;
-  }
-
- private:
-  const std::vector<EllipticCylinder>& obstacles_;
-  std::size_t nearest_ = 0;
-};
-
-// The current where the vehicle is: uniform, or the field (whose absence is an error, never a zero).
-Vec2 field_current(const CurrentSampler& field, const std::string& source, double offset_s, const Vec2& p, double t) {
-  const auto c = field.sample(p, offset_s + t);
-  if (!c) {
-    std::ostringstream s;
-    s << "a current field covering the vehicle's track, got no value at x " << p.x() << ", y " << p.y() << " m, t " << t
-      << " s";
-    throw input_error({source, "", "current_file"}, s.str());
-  }
-  return *c;
-}
 
 }  // namespace
 
@@ -127,27 +83,18 @@ SimulationStats trajectory_stats(std::span<const TrajectorySample> trajectory, c
 
 SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const SimulationOptions& options) {
   validate(sc);
-  const VehicleParams& vp = sc.vehicle;
-  const double h = vp.step_s;
+  const double h = sc.vehicle.step_s;
   const double max_time = std::isnan(sc.max_time_s) ? default_max_time_s(sc) : sc.max_time_s;
   const auto max_steps = static_cast<std::size_t>(std::ceil(max_time / h - 1e-9));
 
-  // The current, as the vehicle model wants it, built once (no per-step allocation).
-  const CurrentSampler* field = sc.current_field.get();
-  const CurrentFunction field_fn = [&](const Vec2& p, double, double t) {
-    return field_current(*field, sc.source, sc.current_time_offset_s, p, t);
-  };
-  auto current_at = [&](const Vec2& p, double t) { return field ? field_fn(p, sc.depth_m, t) : sc.current; };
-
   const double heading0 = sc.start_heading.value_or(math_angle(sc.target - sc.start));
-  VehicleState state =
-      make_vehicle_state(sc.start, sc.depth_m, heading0, sc.reactive.speed_mps, current_at(sc.start, 0.0));
+  Plant plant(sc, sc.start, heading0, sc.reactive.speed_mps);
+  const VehicleState& state = plant.state();
   std::optional<Sonar> sonar;
   if (sc.sonar.range_m > 0.0) sonar.emplace(sc.sonar);
   ContactMemory contacts(sc.contacts, sc.sonar);
-  AutopilotState autopilot;
   ReactiveMemory memory;
-  Clearance clearance(sc.obstacles);
+  NearestClearance clearance(sc.obstacles);
   StatsAccumulator stats(stats_options(sc));
 
   SimulationResult result;
@@ -159,17 +106,15 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
   double stopped_since = -1.0;
   double last_course_cmd = 0.0;
   for (std::size_t k = 0;; ++k) {
-    // Time counted, not summed (3000 x 0.1 is 300 this way), so stop rules fire on the step they name.
-    state.time_s = static_cast<double>(k) * h;
-    const double t = state.time_s;
+    plant.at_step(k);
+    const double t = plant.time_s();
     if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
       contacts.update(sonar->detections(), t);
     }
     const ReactiveInput input{t,         state.position,     course_over_ground(state), state.speed_mps,
                               sc.target, contacts.ellipses()};
     const ReactiveCommand cmd = reactive_command(method, sc.reactive, memory, input);
-    const Vec2 current = current_at(state.position, t);
-    const AutopilotOutput ap = autopilot_step(vp, autopilot, state, {cmd.course, cmd.speed_mps, sc.depth_m}, current);
+    const AutopilotOutput ap = plant.steer({cmd.course, cmd.speed_mps, sc.depth_m});
 
     const TrajectorySample x{.time_s = t,
                              .position = state.position,
@@ -216,11 +161,7 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
       result.end = SimulationEnd::time_out;
       break;
     }
-    if (field) {
-      step_vehicle(vp, state, ap.command, field_fn);
-    } else {
-      step_vehicle(vp, state, ap.command, sc.current);
-    }
+    plant.advance();
   }
   result.stats = stats.stats();
   result.contacts = contacts.size();

@@ -29,11 +29,8 @@
 // A collision does not stop the run (the vehicle is a point; the trajectory
 // shows what the method did next); it is reported in the statistics.
 //
-// Clearance: the signed distance (geometry/ellipse_distance.hpp, exact) from
-// the position to the nearest TRUE footprint, negative inside. Per step the
-// last nearest obstacle is measured first, and an obstacle is skipped when
-// |p - c| - a (a lower bound of its signed distance, also inside) is not below
-// the best so far: with 100 obstacles about one or two exact distances a step.
+// Clearance: the exact signed distance to the nearest TRUE footprint (plant.hpp).
+// The vehicle, its autopilot and the current are the plant (plant.hpp).
 //
 // Statistics (SimulationStats), over the samples k = 0..N, dt_k = t_{k+1} - t_k:
 //   time_s          t_N - t_0
