@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   app::register_chart_nogo(*chart);
   app::register_plan(app);
   app::register_simulate(app);
+  app::register_identify(app);
   CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
   check->require_subcommand(1);
   app::register_check_route(*check);
@@ -63,6 +64,9 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const NoRouteError& e) {
     std::cerr << "deepguide: no safe route: " << e.what() << "\n";
+    return 3;
+  } catch (const ManoeuvreError& e) {
+    std::cerr << "deepguide: manoeuvre failed: " << e.what() << "\n";
     return 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "deepguide: error: out of memory\n";

@@ -20,6 +20,13 @@ class NoRouteError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The manoeuvre is well posed but cannot be done (a current stronger than
+/// the vehicle, a position never reached). Exit code 3, as NoRouteError.
+class ManoeuvreError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Where in an input a problem sits; formats as "FILE: feature F: field 'X'".
 struct InputLocation {
   std::string file;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
@@ -30,7 +31,7 @@ void validate(const AlignParams& p) {
 }
 
 AlignCommand align_command(const Ellipse& object, const AlignParams& params, AlignMemory& memory, const Vec2& p,
-                           double course, const Vec2& current_mps) {
+                           double course, const Vec2& current_mps, std::span<const Ellipse> others) {
   validate(params);
   if (!p.allFinite() || !current_mps.allFinite() || !std::isfinite(course)) {
     throw InputError("aligning: position, course and current: expected finite values");
@@ -65,10 +66,11 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
   memory.mode = cmd.mode = area;
   if (area == AlignArea::evasive) {
     ReactiveParams rp;
-    rp.margin_m = params.standoff_m;
+    rp.margin_m = params.standoff_m + params.hold_buffer_m;
     rp.speed_mps = params.speed_mps;
     rp.arrival_radius_m = 0.0;
-    const Ellipse objects[] = {object};
+    std::vector<Ellipse> objects{object};
+    objects.insert(objects.end(), others.begin(), others.end());
     ReactiveInput in;
     in.position = p;
     in.course = course;
@@ -88,8 +90,10 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
     // the autopilot crabs the small u out of it (autopilot.hpp).
     Vec2 u = -params.position_gain_per_s * d;
     if (u.norm() > params.max_approach_mps) u *= params.max_approach_mps / u.norm();
-    cmd.speed_mps = std::min((u - current_mps).norm(), params.max_speed_mps);
-    cmd.course = u.norm() >= 0.05 ? math_angle(u) : math_angle(-current_mps);
+    const Vec2 w = u - current_mps;
+    cmd.speed_mps = std::min(w.norm(), params.max_speed_mps);
+    cmd.course = w.norm() > 0.0 ? math_angle(w) : math_angle(-current_mps);
+    cmd.is_heading = true;
     return cmd;
   }
   // Still water: bow to the object, closing the distance along the axis

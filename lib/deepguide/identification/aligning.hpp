@@ -6,8 +6,11 @@
 // e the lee direction (the current's set; in still water the near side, fixed
 // at the first call), g the held point: the lee goal point on the safety
 // ellipse plus hold_buffer_m along e.
-//   evasive      the reactive geometric method with the object as its only
-//                obstacle (zone margin = standoff), towards the approach point
+//   evasive      the reactive geometric method round the object and the
+//                other obstacles it is given, with the zone margin standoff +
+//                hold_buffer (the method runs along a zone's edge within
+//                millimetres: at the standoff itself the vehicle came 3 mm
+//                inside it), towards the approach point
 //                a = g + approach_m e down the axis. Round the object and
 //                into the shade from downstream, so that the vehicle faces
 //                upstream when it starts to hold (no U-turn next to the object).
@@ -15,12 +18,14 @@
 //                or within approach_radius_m of a; back to evasive only when
 //                it leaves the shade.
 //                In a current: the ground velocity u = -k (p - g), at most
-//                max_approach_mps, made good by the water velocity u - c
-//                (course = direction of u, speed = |u - c|). Near g that is
-//                -c: the bow stays into the current while the autopilot crabs
-//                the small u out of it (autopilot.hpp). Below |u| = 0.05 m/s
-//                the course set-point is the direction of -c: one that swings
-//                with a tiny u made the heading weave by +-13 degrees.
+//                max_approach_mps, made good by the water velocity w = u - c:
+//                the HEADING set-point is the direction of w and the speed
+//                |w| (autopilot heading mode). Near g, w is about -c: the bow
+//                stays into the current. A course-over-ground set-point (the
+//                direction of u) is ill-defined there: one that swung with a
+//                tiny u made the heading weave by +-13 degrees, and holding
+//                the course at -c below |u| = 0.05 m/s lost the sideways
+//                part of u, leaving the vehicle 1.6-2 m off the axis.
 //                In still water: bow to the object, speed k x (distance along
 //                the axis), a line of sight towards the axis; the vehicle has
 //                no astern, so it creeps in and coasts.
@@ -29,6 +34,7 @@
 // A current at least as fast as the vehicle: overpowered, full speed into it.
 
 #include <optional>
+#include <span>
 
 #include "deepguide/identification/lee_goal.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
@@ -61,7 +67,8 @@ struct AlignMemory {
 };
 
 struct AlignCommand {
-  double course = 0.0;     ///< course over ground, math rad
+  double course = 0.0;     ///< course over ground, or the heading when is_heading; math rad
+  bool is_heading = false;  ///< `course` is a heading set-point (positioning in a current)
   double speed_mps = 0.0;  ///< through the water
   AlignArea mode = AlignArea::evasive;
   Vec2 goal{0.0, 0.0};        ///< the held point (the lee goal point plus hold_buffer_m down the axis)
@@ -71,7 +78,9 @@ struct AlignCommand {
   bool overpowered = false;
 };
 
+/// `others`: the other obstacles the evasive mode keeps clear of (the
+/// positioning mode stays in the object's shade and does not look at them).
 AlignCommand align_command(const Ellipse& object, const AlignParams& params, AlignMemory& memory, const Vec2& p,
-                           double course, const Vec2& current_mps);
+                           double course, const Vec2& current_mps, std::span<const Ellipse> others = {});
 
 }  // namespace deepguide

@@ -23,9 +23,12 @@ void validate(const AroundParams& p) {
 
 double AroundMemory::laps_done() const { return turned / (2.0 * std::numbers::pi); }
 
-AroundCommand around_command(const Ellipse& object, const AroundParams& params, AroundMemory& memory, const Vec2& p) {
+AroundCommand around_command(const Ellipse& object, const AroundParams& params, AroundMemory& memory, const Vec2& p,
+                             const Vec2& ground_velocity) {
   validate(params);
-  if (!p.allFinite()) throw InputError("going around: position: expected finite coordinates");
+  if (!p.allFinite() || !ground_velocity.allFinite()) {
+    throw InputError("going around: position and ground velocity: expected finite values");
+  }
   const OffsetProjection q = project_to_offset(object, params.distance_m, p);
   AroundCommand cmd;
   cmd.cross_track_m = q.signed_m;
@@ -56,6 +59,12 @@ AroundCommand around_command(const Ellipse& object, const AroundParams& params, 
   }
   const double alpha = math_angle(params.direction * q.tangent);
   cmd.course = wrap_pi(alpha + params.direction * std::atan(q.signed_m / params.lookahead_m));
+  // The rate of chi (header); rho + e is the distance to the centre of curvature, > 0 outside the object.
+  const double rho = 1.0 / offset_curvature(object, params.distance_m, q.t);
+  const Vec2 n(q.tangent.y(), -q.tangent.x());  // outward: right of the anticlockwise tangent
+  const double l = params.lookahead_m;
+  cmd.course_rate = ground_velocity.dot(q.tangent) / std::max(rho + q.signed_m, 1e-3) +
+                    params.direction * l * ground_velocity.dot(n) / (l * l + q.signed_m * q.signed_m);
   return cmd;
 }
 

@@ -15,6 +15,19 @@
 //                chi = alpha + direction * atan(e / lookahead_m)
 //              Outside the path (e > 0) this turns towards the object. Back
 //              to steering only beyond 2 switch_m, so the mode does not flicker.
+//              The command carries chi's rate for the autopilot's
+//              feed-forward (autopilot.hpp), from the ground velocity v:
+//                d chi/dt = (v . t) / (rho + e)
+//                         + direction * lookahead (v . n) / (lookahead^2 + e^2)
+//              (t the anticlockwise tangent, n the outward normal, rho the
+//              path's radius of curvature at the nearest point: the nearest
+//              point moves at (v . t) rho / (rho + e), the tangent turns at
+//              1 / rho per metre of it, and e changes at v . n). Without it
+//              the autopilot's reference lags a turning course by 2 r / w_r,
+//              and the real vehicle ran 3-13 m outside the tight ends of a
+//              40 x 18 m wreck's path. (Pure pursuit of a point ahead on the
+//              path leads instead, but cuts the corner: with the feed-forward
+//              it settled 6 m inside.)
 // Laps count the unwrapped change of the ellipse parameter t of the nearest
 // path point, in the travel direction, from the moment tracking starts. The
 // run is done when `laps` laps are complete (status done, speed 0).
@@ -53,8 +66,13 @@ struct AroundCommand {
   double speed_mps = 0.0;
   AroundMode mode = AroundMode::steering;
   double cross_track_m = 0.0;  ///< e, positive outside the path
+  /// d chi / dt for the autopilot's feed-forward (rad/s, ccw positive; header),
+  /// 0 while steering or without a ground velocity.
+  double course_rate = 0.0;
 };
 
-AroundCommand around_command(const Ellipse& object, const AroundParams& params, AroundMemory& memory, const Vec2& p);
+/// `ground_velocity` (m/s) only feeds the course rate; zero gives none.
+AroundCommand around_command(const Ellipse& object, const AroundParams& params, AroundMemory& memory, const Vec2& p,
+                             const Vec2& ground_velocity = Vec2(0.0, 0.0));
 
 }  // namespace deepguide

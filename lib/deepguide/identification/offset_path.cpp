@@ -17,6 +17,12 @@ Vec2 offset_tangent(const Ellipse& object, double t) {
   return d.normalized();
 }
 
+double offset_curvature(const Ellipse& object, double distance_m, double t) {
+  const double s = std::sin(t), c = std::cos(t);
+  const double q = object.a * object.a * s * s + object.b * object.b * c * c;
+  return 1.0 / (q * std::sqrt(q) / (object.a * object.b) + distance_m);
+}
+
 double offset_min_radius(const Ellipse& object, double distance_m) {
   return object.b * object.b / object.a + distance_m;
 }

@@ -29,6 +29,9 @@ Vec2 offset_point(const Ellipse& object, double distance_m, double t);
 /// Its unit tangent at t, anticlockwise (the direction of increasing t).
 Vec2 offset_tangent(const Ellipse& object, double t);
 
+/// Curvature of the offset curve at t (1/m, > 0: it turns anticlockwise with t): 1 / rho(t).
+double offset_curvature(const Ellipse& object, double distance_m, double t);
+
 /// Smallest radius of curvature of the offset curve: b^2 / a + D.
 double offset_min_radius(const Ellipse& object, double distance_m);
 

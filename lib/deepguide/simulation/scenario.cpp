@@ -12,6 +12,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/identification/offset_path.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -274,6 +275,93 @@ void read_run_rules(const Mapping& root, Scenario& sc) {
   }
 }
 
+// The identify section (scenario.hpp); after the obstacles and the reactive speed it defaults to.
+void read_identify(const Mapping& root, Scenario& sc) {
+  if (!root.has("identify")) return;
+  const Mapping m(root.value("identify"), sc.source, "identify.",
+                  {"object", "mode", "hold_time_s", "position_tolerance_m", "align", "around"},
+                  "a mapping of identify keys (object, mode, hold_time_s, position_tolerance_m, align, around)");
+  IdentifySpec spec;
+  spec.object_id = m.text("object", "the id of the obstacle to identify");
+  const auto it = std::find_if(sc.obstacles.begin(), sc.obstacles.end(),
+                               [&](const EllipticCylinder& o) { return o.id == spec.object_id; });
+  if (it == sc.obstacles.end()) {
+    std::string ids;
+    for (std::size_t i = 0; i < sc.obstacles.size() && i < 5; ++i)
+      ids += (i ? ", " : "") + printable(sc.obstacles[i].id);
+    if (sc.obstacles.size() > 5) ids += ", ...";
+    throw input_error(m.where("object"),
+                      sc.obstacles.empty() ? "the id of an obstacle, but the scenario has none"
+                                           : "the id of one of the scenario's obstacles (" + ids + ")",
+                      "'" + printable(spec.object_id) + "'");
+  }
+  spec.object = it->footprint;
+  if (m.has("mode")) {
+    const std::string name = m.text("mode", "align or around");
+    const auto mode = parse_identify_mode(name);
+    if (!mode) throw input_error(m.where("mode"), "align or around", "'" + printable(name) + "'");
+    spec.mode = *mode;
+  }
+  spec.hold_time_s = m.number_or("hold_time_s", kDuration, spec.hold_time_s);
+  spec.position_tolerance_m =
+      m.number_or("position_tolerance_m", {0.0, 1e4, false, "a distance in metres"}, spec.position_tolerance_m);
+  const Range distance{0.0, 1e4, false, "a distance in metres"};
+  const Range speed{0.0, sc.vehicle.max_speed_mps, false, "a speed in m/s up to the vehicle's max_speed"};
+  AlignParams& a = spec.align;
+  a.speed_mps = sc.reactive.speed_mps;
+  a.max_speed_mps = sc.vehicle.max_speed_mps;
+  if (m.has("align")) {
+    const Mapping al(m.value("align"), sc.source, "identify.align.",
+                     {"standoff_m", "hold_buffer_m", "approach_m", "approach_radius_m", "position_gain_per_s",
+                      "max_approach_mps", "lookahead_m", "still_mps", "speed_mps"},
+                     "a mapping of aligning keys");
+    a.standoff_m = al.number_or("standoff_m", distance, a.standoff_m);
+    a.hold_buffer_m = al.number_or("hold_buffer_m", {0.0, 1e4, true, "a distance in metres"}, a.hold_buffer_m);
+    a.approach_m = al.number_or("approach_m", distance, a.approach_m);
+    a.approach_radius_m = al.number_or("approach_radius_m", distance, a.approach_radius_m);
+    a.position_gain_per_s = al.number_or("position_gain_per_s", {0.0, 10.0, false, "a gain in 1/s"}, a.position_gain_per_s);
+    a.max_approach_mps = al.number_or("max_approach_mps", speed, a.max_approach_mps);
+    a.lookahead_m = al.number_or("lookahead_m", distance, a.lookahead_m);
+    a.still_mps = al.number_or("still_mps", {0.0, 20.0, true, "a speed in m/s"}, a.still_mps);
+    a.speed_mps = al.number_or("speed_mps", speed, a.speed_mps);
+  }
+  AroundParams& r = spec.around;
+  r.speed_mps = sc.reactive.speed_mps;
+  if (m.has("around")) {
+    const Mapping ar(m.value("around"), sc.source, "identify.around.",
+                     {"distance_m", "side", "laps", "lookahead_m", "switch_m", "speed_mps"},
+                     "a mapping of going-around keys");
+    r.distance_m = ar.number_or("distance_m", distance, r.distance_m);
+    if (ar.has("side")) {
+      const std::string side = ar.text("side", "port or starboard (the side the object is on)");
+      if (side != "port" && side != "starboard") {
+        throw input_error(ar.where("side"), "port or starboard (the side the object is on)",
+                          "'" + printable(side) + "'");
+      }
+      r.direction = side == "port" ? 1 : -1;  // object to port: anticlockwise
+    }
+    r.laps = ar.number_or("laps", {0.0, 1000.0, false, "a number of laps"}, r.laps);
+    r.lookahead_m = ar.number_or("lookahead_m", distance, r.lookahead_m);
+    r.switch_m = ar.number_or("switch_m", distance, r.switch_m);
+    r.speed_mps = ar.number_or("speed_mps", speed, r.speed_mps);
+  }
+  sc.identify = std::move(spec);
+}
+
+// The box the vehicle works in: start and target, and round the object to identify.
+std::pair<Vec2, Vec2> work_box(const Scenario& sc) {
+  Vec2 lo = sc.start.cwiseMin(sc.target), hi = sc.start.cwiseMax(sc.target);
+  if (sc.identify) {
+    const IdentifySpec& id = *sc.identify;
+    const double reach = id.object.a + std::max(id.align.standoff_m + id.align.hold_buffer_m + id.align.approach_m +
+                                                    id.align.approach_radius_m,
+                                                id.around.distance_m + 2.0 * id.around.switch_m);
+    lo = lo.cwiseMin(id.object.center - Vec2(reach, reach));
+    hi = hi.cwiseMax(id.object.center + Vec2(reach, reach));
+  }
+  return {lo, hi};
+}
+
 // The current: a constant (rotated to the frame at the start) or a field sampled as the vehicle goes.
 void read_current(const Mapping& root, const std::string& base_dir, Scenario& sc) {
   if (root.has("current") && root.has("current_file")) {
@@ -305,7 +393,7 @@ void read_current(const Mapping& root, const std::string& base_dir, Scenario& sc
   auto field =
       std::make_shared<const CurrentField>(load_current_field(path_in(root, "current_file", base_dir), options));
   sc.current_time_offset_s = field->times_s.empty() ? 0.0 : field->times_s.front();
-  const Vec2 lo = sc.start.cwiseMin(sc.target), hi = sc.start.cwiseMax(sc.target);
+  const auto [lo, hi] = work_box(sc);
   check_current_coverage(*field, *sc.frame, lo, hi, sc.current_time_offset_s, sc.current_time_offset_s);
   sc.current_field = std::make_shared<const CurrentSampler>(field, *sc.frame, lo, hi);
 }
@@ -316,7 +404,8 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
                       "target",         "start_heading_deg", "depth_m",       "obstacles",
                       "obstacles_file", "current",           "current_file",  "seed",
                       "sonar",          "reactive",          "contacts",      "energy",
-                      "max_time_s",     "stall_time_s",      "no_progress_s", "reversal_dead_band_deg_s"},
+                      "max_time_s",     "stall_time_s",      "no_progress_s", "reversal_dead_band_deg_s",
+                      "identify"},
                      "a YAML mapping of scenario keys (see data/scenarios/one_obstacle.yaml)");
   Scenario sc;
   sc.source = source;
@@ -353,7 +442,7 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
   }
 
   sc.start = read_point(root, "start", sc.frame);
-  sc.target = read_point(root, "target", sc.frame);
+  if (root.has("target") || !root.has("identify")) sc.target = read_point(root, "target", sc.frame);
   if (root.has("start_heading_deg"))
     sc.start_heading = to_math(root.number("start_heading_deg", kAngle), sc.start, sc.frame);
   sc.depth_m = root.number_or(
@@ -363,6 +452,8 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
   read_sonar(root, sc);
   read_reactive(root, sc);
   read_run_rules(root, sc);
+  read_identify(root, sc);
+  if (sc.identify && !root.has("target")) sc.target = sc.identify->object.center;
   read_current(root, base_dir, sc);
   validate(sc);
   return sc;
@@ -370,10 +461,61 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
 
 }  // namespace
 
+std::string_view to_string(IdentifyMode mode) { return mode == IdentifyMode::align ? "align" : "around"; }
+
+std::optional<IdentifyMode> parse_identify_mode(std::string_view name) {
+  if (name == "align") return IdentifyMode::align;
+  if (name == "around") return IdentifyMode::around;
+  return std::nullopt;
+}
+
 double default_max_time_s(const Scenario& sc) {
   const double straight = (sc.target - sc.start).norm() / sc.reactive.speed_mps;
   return std::min(3.0 * straight + 300.0, kMaxSimulationTime_s);
 }
+
+namespace {
+
+// The identify section's rules (scenario.hpp).
+template <class Fail, class Within>
+void validate_identify(const Scenario& sc, const Fail& fail, const Within& within) {
+  const IdentifySpec& id = *sc.identify;
+  const Ellipse& e = id.object;
+  const std::string object = "object '" + printable(id.object_id) + "'";
+  if (!e.center.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6))
+    fail("identify.object", "a finite ellipse with 0 < semi-minor <= semi-major <= 1e6 m", object);
+  within([&] { validate(id.align); });
+  within([&] { validate(id.around); });
+  if (!(id.hold_time_s > 0.0 && id.hold_time_s <= kMaxSimulationTime_s))
+    fail("identify.hold_time_s", "a time > 0 and <= " + number(kMaxSimulationTime_s) + " s", number(id.hold_time_s));
+  if (!(id.position_tolerance_m > 0.0) || !std::isfinite(id.position_tolerance_m))
+    fail("identify.position_tolerance_m", "a distance > 0 m", number(id.position_tolerance_m));
+  const double vmax = sc.vehicle.max_speed_mps;
+  const auto speed_ok = [&](const char* field, double v) {
+    if (!(v <= vmax)) fail(field, "a speed <= the vehicle's max speed " + number(vmax) + " m/s", number(v));
+  };
+  speed_ok("identify.align.speed_mps", id.align.speed_mps);
+  speed_ok("identify.align.max_speed_mps", id.align.max_speed_mps);
+  speed_ok("identify.around.speed_mps", id.around.speed_mps);
+  if (security_ellipse(e, id.align.standoff_m).contains(sc.start) && id.mode == IdentifyMode::align) {
+    fail("start", "a start outside the " + object + "'s safety ellipse (standoff " + number(id.align.standoff_m) +
+                      " m)", "inside it");
+  }
+  if (e.contains(sc.start)) fail("start", "a start outside the " + object, "inside it");
+  if (id.mode == IdentifyMode::around) {
+    // Over ground, downstream, the vehicle turns on a circle wider by the
+    // current's speed; the autopilot asks for at most its reference rate.
+    const double radius =
+        (id.around.speed_mps + sc.current.norm()) / sc.vehicle.autopilot.max_reference_turn_rate;
+    try {
+      check_offset_path_fits(e, id.around.distance_m, radius, id.object_id);
+    } catch (const InputError& error) {
+      throw InputError(sc.source + ": field 'identify.around.distance_m': " + error.what());
+    }
+  }
+}
+
+}  // namespace
 
 void validate(const Scenario& sc) {
   validate(sc.vehicle, sc.source);
@@ -416,7 +558,7 @@ void validate(const Scenario& sc) {
   for (const EllipticCylinder& o : sc.obstacles) {
     if (o.footprint.contains(sc.start))
       fail("start", "a start outside every obstacle", "inside obstacle '" + printable(o.id) + "'");
-    if (o.footprint.contains(sc.target))
+    if (!sc.identify && o.footprint.contains(sc.target))
       fail("target", "a target outside every obstacle (reaching it would be a collision)",
            "inside obstacle '" + printable(o.id) + "'");
   }
@@ -434,6 +576,7 @@ void validate(const Scenario& sc) {
     fail("no_progress_s", "a time > 0 s", number(sc.no_progress_s));
   if (!(sc.reversal_dead_band >= 0.0) || !std::isfinite(sc.reversal_dead_band))
     fail("reversal_dead_band_deg_s", "a turning rate >= 0", number(rad_to_deg(sc.reversal_dead_band)));
+  if (sc.identify) validate_identify(sc, fail, within);
 }
 
 Scenario parse_scenario_yaml(const std::string& text, const std::string& source, const std::string& base_dir) {

@@ -47,12 +47,28 @@
 //   no_progress_s          stop when the distance to the target has not shrunk by
 //                          kProgress_m for this long (default 300)
 //   reversal_dead_band_deg_s  heading reversals ignore |r_ref| below this (default 0.5)
+//   identify               the identification run's section (deepguide identify; IdentifySpec
+//                          below; data/scenarios/align_in_current.yaml): {object (an obstacle's
+//                          id), mode (align | around), hold_time_s, position_tolerance_m,
+//                          align: {standoff_m, hold_buffer_m, approach_m, approach_radius_m,
+//                          position_gain_per_s, max_approach_mps, lookahead_m, still_mps, speed_mps},
+//                          around: {distance_m, side (port | starboard: where the object is),
+//                          laps, lookahead_m, switch_m, speed_mps}}. With it, target is optional
+//                          (the object's centre when left out; the identify run does not use it).
 //
 // Whole-scenario rules (validate(), also applied to scenarios built in code):
 // the start and the target must lie outside every TRUE obstacle footprint (a
 // vehicle cannot be inside rock, and a target inside one can only be reached
 // through a collision); inside a security zone (the margin) both are allowed,
 // and the reactive method reports leaving_zone / target_in_zone.
+// With `identify`, the target is not checked (the object's centre is inside
+// the object), and the identify section's own rules apply: its parameters
+// (aligning.hpp, going_around.hpp), the start outside the object's safety
+// ellipse, speeds up to the vehicle's, and for going around a path the
+// vehicle can turn on (check_offset_path_fits with the radius of the
+// autopilot's largest reference turning rate at the around speed plus a
+// uniform current's speed: over ground, downstream, the circle the vehicle
+// turns on is that much wider; 23.6 m at cruise in still water).
 // Vertical extents (height_m, top_depth_m) are ignored, as by the sonar:
 // every obstacle blocks the operating depth.
 
@@ -61,9 +77,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "deepguide/geometry/vec2.hpp"
+#include "deepguide/identification/aligning.hpp"
+#include "deepguide/identification/going_around.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
@@ -90,6 +109,23 @@ struct EnergyModel {
   double propulsion_k_w_per_mps3 = 60.0;
 };
 
+enum class IdentifyMode { align, around };
+std::string_view to_string(IdentifyMode mode);
+std::optional<IdentifyMode> parse_identify_mode(std::string_view name);
+
+/// The scenario's identify section: what to identify and how (header).
+struct IdentifySpec {
+  std::string object_id;  ///< an obstacle's id; the object is that obstacle
+  Ellipse object;         ///< its true footprint (local frame)
+  IdentifyMode mode = IdentifyMode::align;
+  AlignParams align;
+  AroundParams around;
+  /// Aligning ends after holding the position this long (s, from the time it is reached), > 0.
+  double hold_time_s = 300.0;
+  /// In position: within this of the held point (aligning) or of the path (going around), > 0 m.
+  double position_tolerance_m = 2.0;
+};
+
 struct Scenario {
   std::string name;
   std::string source = "scenario";  ///< the file, named in messages
@@ -111,6 +147,7 @@ struct Scenario {
   double no_progress_s = 300.0;
   double reversal_dead_band = deg_to_rad(0.5);  ///< rad/s
   std::optional<LocalFrame> frame;              ///< the CRS when the scenario has one
+  std::optional<IdentifySpec> identify;         ///< the identify section, when the file has one
 };
 
 /// 3 x the straight-line time at the reactive speed + 300 s, at most kMaxSimulationTime_s.

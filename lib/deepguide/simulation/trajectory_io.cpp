@@ -11,48 +11,77 @@
 namespace deepguide {
 namespace {
 
-constexpr const char* kHeader =
-    "time_s,x_m,y_m,heading_deg,course_cmd_deg,rate_cmd_deg_s,rate_ref_deg_s,rate_deg_s,speed_mps,"
-    "clearance_m,sector,status,course_unreachable\n";
+// The columns every trajectory has (trajectory_io.hpp), without a line end.
+constexpr const char* kVehicleHeader =
+    "time_s,x_m,y_m,heading_deg,course_cmd_deg,rate_cmd_deg_s,rate_ref_deg_s,rate_deg_s,speed_mps,clearance_m";
 
 // Nautical turning rate: clockwise positive, deg/s.
 double nautical_rate(double r) { return -rad_to_deg(r) + 0.0; }
 
+void append_row(std::string& out, const char* format, auto... values) {
+  char row[320];
+  const int n = std::snprintf(row, sizeof row, format, values...);
+  out.append(row, static_cast<std::size_t>(std::clamp<int>(n, 0, static_cast<int>(sizeof row) - 1)));
+}
+
+void append_vehicle_columns(std::string& out, const TrajectorySample& x) {
+  append_row(out, "%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,", x.time_s, x.position.x(), x.position.y(),
+             math_rad_to_heading_deg(x.heading), math_rad_to_heading_deg(x.course_cmd), nautical_rate(x.rate_cmd),
+             nautical_rate(x.rate_ref), nautical_rate(x.rate), x.speed_mps);
+  if (std::isinf(x.clearance_m) && x.clearance_m > 0) {
+    out += "inf";
+  } else {
+    append_row(out, "%.3f", x.clearance_m);
+  }
+}
+
+// The text to `path`, atomically.
+void write_text(const std::string& path, const std::string& text, const char* what) {
+  AtomicOutput out(path);
+  {
+    std::ofstream file(out.temp_path(), std::ios::binary);
+    file.write(text.data(), static_cast<std::streamsize>(text.size()));
+    file.flush();
+    if (!file) throw InputError(path + ": could not write the " + what);
+  }
+  out.commit();
+}
+
 }  // namespace
 
 std::string trajectory_csv(std::span<const TrajectorySample> trajectory) {
-  std::string out = kHeader;
+  std::string out = std::string(kVehicleHeader) + ",sector,status,course_unreachable\n";
   out.reserve(out.size() + trajectory.size() * 120);
-  char row[320];
   for (const TrajectorySample& x : trajectory) {
-    char clearance[32];
-    if (std::isinf(x.clearance_m) && x.clearance_m > 0) {
-      std::snprintf(clearance, sizeof clearance, "inf");
-    } else {
-      std::snprintf(clearance, sizeof clearance, "%.3f", x.clearance_m);
-    }
+    append_vehicle_columns(out, x);
     const std::string_view status = to_string(x.status);
-    const int n =
-        std::snprintf(row, sizeof row, "%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%s,%d,%.*s,%d\n", x.time_s,
-                      x.position.x(), x.position.y(), math_rad_to_heading_deg(x.heading),
-                      math_rad_to_heading_deg(x.course_cmd), nautical_rate(x.rate_cmd), nautical_rate(x.rate_ref),
-                      nautical_rate(x.rate), x.speed_mps, clearance, x.sector, static_cast<int>(status.size()),
-                      status.data(), x.course_unreachable ? 1 : 0);
-    out.append(row, static_cast<std::size_t>(std::min<int>(n, static_cast<int>(sizeof row) - 1)));
+    append_row(out, ",%d,%.*s,%d\n", x.sector, static_cast<int>(status.size()), status.data(),
+               x.course_unreachable ? 1 : 0);
   }
   return out;
 }
 
 void write_trajectory_csv(const std::string& path, std::span<const TrajectorySample> trajectory) {
-  AtomicOutput out(path);
-  {
-    std::ofstream file(out.temp_path(), std::ios::binary);
-    const std::string text = trajectory_csv(trajectory);
-    file.write(text.data(), static_cast<std::streamsize>(text.size()));
-    file.flush();
-    if (!file) throw InputError(path + ": could not write the trajectory");
+  write_text(path, trajectory_csv(trajectory), "trajectory");
+}
+
+std::string identification_csv(std::span<const IdentifySample> trajectory) {
+  std::string out =
+      std::string(kVehicleHeader) + ",mode,object_distance_m,distance_error_m,cross_track_m,goal_error_m,laps,"
+                                    "course_unreachable\n";
+  out.reserve(out.size() + trajectory.size() * 150);
+  for (const IdentifySample& x : trajectory) {
+    append_vehicle_columns(out, x.vehicle);
+    const std::string_view mode = to_string(x.phase);
+    append_row(out, ",%.*s,%.3f,%.3f,%.3f,%.3f,%.4f,%d\n", static_cast<int>(mode.size()), mode.data(),
+               x.object_distance_m, x.distance_error_m, x.cross_track_m, x.goal_error_m, x.laps,
+               x.vehicle.course_unreachable ? 1 : 0);
   }
-  out.commit();
+  return out;
+}
+
+void write_identification_csv(const std::string& path, std::span<const IdentifySample> trajectory) {
+  write_text(path, identification_csv(trajectory), "trajectory");
 }
 
 nlohmann::ordered_json simulation_json(const Scenario& scenario, const SimulationResult& result) {
@@ -79,6 +108,56 @@ nlohmann::ordered_json simulation_json(const Scenario& scenario, const Simulatio
       {"contacts", result.contacts},
   };
   if (std::isfinite(s.min_clearance_m)) j["min_clearance_m"] = s.min_clearance_m;
+  return j;
+}
+
+namespace {
+
+nlohmann::ordered_json error_json(const ErrorStats& e) { return {{"rms", e.rms}, {"max", e.max_abs}}; }
+
+nlohmann::ordered_json position_json(const Vec2& p) { return {{"x_m", p.x()}, {"y_m", p.y()}}; }
+
+}  // namespace
+
+nlohmann::ordered_json identification_json(const Scenario& scenario, const IdentifyResult& result) {
+  const IdentifyStats& s = result.stats;
+  const SimulationStats& v = s.vehicle;
+  const bool aligning = result.mode == IdentifyMode::align;
+  nlohmann::ordered_json switches = nlohmann::ordered_json::array();
+  for (const ModeSwitch& m : result.switches) {
+    switches.push_back({{"time_s", m.time_s},
+                        {"x_m", m.position.x()},
+                        {"y_m", m.position.y()},
+                        {"from", std::string(to_string(m.from))},
+                        {"to", std::string(to_string(m.to))}});
+  }
+  nlohmann::ordered_json j = {
+      {"scenario", scenario.name},
+      {"object", scenario.identify ? scenario.identify->object_id : std::string()},
+      {"mode", std::string(to_string(result.mode))},
+      {"end", std::string(to_string(result.end))},
+      {"failure", result.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(result.failure)},
+      {"in_position", s.in_position},
+      {"time_to_position_s", s.in_position ? nlohmann::ordered_json(s.time_to_position_s) : nullptr},
+      {"hold_s", s.hold_s},
+      {"requested_distance_m", s.requested_distance_m},
+      {"distance_error_m", error_json(s.distance_error_m)},
+      {"cross_track_m", error_json(s.cross_track_m)},
+      {"station_keeping_m", aligning ? error_json(s.station_keeping_m) : nlohmann::ordered_json(nullptr)},
+      {"laps", aligning ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.laps)},
+      {"goal", aligning ? position_json(result.goal) : nlohmann::ordered_json(nullptr)},
+      {"min_clearance_m", std::isfinite(v.min_clearance_m) ? nlohmann::ordered_json(v.min_clearance_m) : nullptr},
+      {"collided", v.collided},
+      {"time_s", v.time_s},
+      {"path_length_m", v.path_length_m},
+      {"energy_j", v.energy_j},
+      {"max_abs_rate_deg_s", rad_to_deg(v.max_abs_rate)},
+      {"rms_rate_deg_s", rad_to_deg(v.rms_rate)},
+      {"course_unreachable_s", v.course_unreachable_s},
+      {"samples", result.samples},
+      {"start_mode", std::string(to_string(result.start_phase))},
+      {"mode_switches", switches},
+  };
   return j;
 }
 

@@ -14,6 +14,11 @@
 // clearance_m is "inf" without obstacles; status is the reactive status name
 // (reactive_method.hpp); course_unreachable is 0 or 1. Written atomically.
 //
+// The identification run's CSV (identification_run.hpp): the same first ten
+// columns, then
+//   mode,object_distance_m,distance_error_m,cross_track_m,goal_error_m,laps,course_unreachable
+// (mode: evasive, positioning, steering, tracking, done or overpowered).
+//
 // JSON: the statistics with the unit in every name, rates in deg/s (magnitudes),
 // min_clearance_m null without obstacles, plus the scenario name, the method,
 // the seed, why the run ended, samples and contacts remembered.
@@ -22,6 +27,7 @@
 #include <span>
 #include <string>
 
+#include "deepguide/simulation/identification_run.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
 namespace deepguide {
@@ -34,5 +40,13 @@ void write_trajectory_csv(const std::string& path, std::span<const TrajectorySam
 
 /// The run's statistics as JSON (header above), keys in a fixed order.
 nlohmann::ordered_json simulation_json(const Scenario& scenario, const SimulationResult& result);
+
+/// The identification run's CSV text (header above), and the same written atomically.
+std::string identification_csv(std::span<const IdentifySample> trajectory);
+void write_identification_csv(const std::string& path, std::span<const IdentifySample> trajectory);
+
+/// The identification run's statistics and mode switches as JSON: errors as
+/// {rms, max} in metres, null where the mode has no such measure.
+nlohmann::ordered_json identification_json(const Scenario& scenario, const IdentifyResult& result);
 
 }  // namespace deepguide

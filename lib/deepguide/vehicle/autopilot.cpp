@@ -43,6 +43,7 @@ double crab_heading(double course, double speed_mps, const Vec2& current, bool& 
 AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, const VehicleState& vehicle,
                                const AutopilotSetpoint& setpoint, const Vec2& current_estimate) {
   if (!std::isfinite(setpoint.course) || !std::isfinite(setpoint.speed_mps) || !std::isfinite(setpoint.depth_m) ||
+      !std::isfinite(setpoint.course_rate) ||
       !current_estimate.allFinite()) {
     // A guidance method that divides by zero must not steer the vehicle with NaN.
     throw input_error({"autopilot", "", "set-point"}, "finite course, speed, depth and current",
@@ -57,7 +58,8 @@ AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, c
   // 1. Reference model.
   const double wr = tune.reference_natural_frequency_rad_s;
   const double rmax = tune.max_reference_turn_rate;
-  double acc = wr * wr * wrap_pi(setpoint.course - memory.course_ref) - 2.0 * wr * memory.rate_ref;
+  double acc =
+      wr * wr * wrap_pi(setpoint.course - memory.course_ref) + 2.0 * wr * (setpoint.course_rate - memory.rate_ref);
   // The feed-forward (T a + r) / K must stay within kFeedForwardShare of the
   // rudder limit, leaving the rest to the feedback: that bounds a for this r.
   const double reach = kFeedForwardShare * p.nomoto_gain_per_s * p.max_rudder;
@@ -77,15 +79,27 @@ AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, c
   bool reachable = true;
   // The vehicle crabs at the speed it has; before it makes way, at the one it was told.
   const double v = vehicle.speed_mps > 0.05 ? vehicle.speed_mps : std::clamp(setpoint.speed_mps, 0.0, p.max_speed_mps);
-  o.heading_setpoint = crab_heading(memory.course_ref, v, current_estimate, reachable);
+  o.heading_setpoint =
+      setpoint.heading_mode ? memory.course_ref : crab_heading(memory.course_ref, v, current_estimate, reachable);
   o.course_unreachable = !reachable;
 
+  // In a current the heading turns at k = d psi / d chi times the course's
+  // rate (the crab changes with the course): feed that forward, not r_r.
+  double k = 1.0;
+  if (!setpoint.heading_mode && reachable && current_estimate.squaredNorm() > 0.0) {
+    constexpr double kDelta = 1e-4;
+    bool ok_lo = true, ok_hi = true;
+    const double lo = crab_heading(memory.course_ref - kDelta, v, current_estimate, ok_lo);
+    const double hi = crab_heading(memory.course_ref + kDelta, v, current_estimate, ok_hi);
+    if (ok_lo && ok_hi) k = wrap_pi(hi - lo) / (2.0 * kDelta);
+  }
+  const double heading_rate_ref = k * memory.rate_ref;
   const HeadingGains g = heading_gains(p);
   const double m = p.nomoto_time_constant_s / p.nomoto_gain_per_s;
   const double d = 1.0 / p.nomoto_gain_per_s;
   const double e = wrap_pi(vehicle.heading - o.heading_setpoint);
-  const double feed_forward = m * acc + d * memory.rate_ref;
-  const double unsat = feed_forward - g.kp * e - g.kd * (vehicle.yaw_rate - memory.rate_ref) - g.ki * memory.integral;
+  const double feed_forward = m * k * acc + d * heading_rate_ref;
+  const double unsat = feed_forward - g.kp * e - g.kd * (vehicle.yaw_rate - heading_rate_ref) - g.ki * memory.integral;
   o.command.rudder = std::clamp(unsat, -p.max_rudder, p.max_rudder);
   o.rudder_saturated = std::abs(unsat) >= p.max_rudder;
   if (!o.rudder_saturated) memory.integral += h * e;

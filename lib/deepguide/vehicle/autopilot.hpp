@@ -20,7 +20,11 @@
 //     chi_r follows the set-point as a critically damped second-order system
 //     with natural frequency w_r, its rate r_r saturated at
 //     max_reference_turn_rate (0.8 K d_max by default), semi-implicit Euler:
-//       a_r = w_r^2 ssa(chi_d - chi_r) - 2 w_r r_r;  r_r += h a_r (clamped);  chi_r += h r_r
+//       a_r = w_r^2 ssa(chi_d - chi_r) + 2 w_r (r_d - r_r);  r_r += h a_r (clamped);  chi_r += h r_r
+//     r_d the set-point's own rate (course_rate, 0 unless the guidance knows
+//     it): without it the reference lags a course that turns at r_d by
+//     2 r_d / w_r (43 degrees at 4 deg/s), which on a curved path is metres
+//     of cross-track error
 //     and a_r clamped so that the feed-forward (T a_r + r_r) / K stays within
 //     0.8 of the rudder limit (a second-order model jumps in acceleration at a
 //     set-point step; Fossen's third-order model smooths it, the clamp bounds
@@ -46,6 +50,14 @@ struct AutopilotSetpoint {
   double course = 0.0;  ///< course over ground, math angle (rad)
   double speed_mps = 0.0;
   double depth_m = 0.0;
+  /// Feed-forward: how fast the course set-point turns (rad/s, ccw positive),
+  /// e.g. a path's curvature times the ground speed; 0 for a set-point that
+  /// holds still between steps.
+  double course_rate = 0.0;
+  /// `course` is the HEADING (where the bow points), not the course over
+  /// ground: for station keeping, where the ground velocity is too small to
+  /// have a direction. The crab is skipped; the reference model is the same.
+  bool heading_mode = false;
 };
 
 /// The autopilot's memory between steps. Value-initialised = not started; the

@@ -1,0 +1,95 @@
+// deepguide identify SCENARIO.yaml [--mode align|around] [-o TRAJ.csv] [--json]
+// Runs the scenario's identify section (simulation/identification_run.hpp)
+// and prints its statistics and mode switches. Exit 0 when the manoeuvre was
+// done (held, laps_done); 3 when it could not be (a current stronger than the
+// vehicle, the time limit), after printing and writing what there is; 1 for
+// a bad scenario, an unknown mode or an unwritable output; 2 for usage.
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/simulation/identification_run.hpp"
+#include "deepguide/simulation/scenario.hpp"
+#include "deepguide/simulation/trajectory_io.hpp"
+
+namespace deepguide::app {
+namespace {
+
+struct IdentifyOptions {
+  std::string scenario, mode, output;
+  bool json = false;
+};
+
+void print_error(const char* what, const ErrorStats& e) {
+  std::printf("  %-24s RMS %.3f m, max %.3f m\n", what, e.rms, e.max_abs);
+}
+
+void print_summary(const Scenario& sc, const IdentifyResult& r) {
+  const IdentifyStats& s = r.stats;
+  const bool aligning = r.mode == IdentifyMode::align;
+  std::printf("scenario %s, object %s, mode %s\n", sc.name.c_str(), sc.identify->object_id.c_str(),
+              std::string(to_string(r.mode)).c_str());
+  std::printf("  %-24s %s\n", "end", std::string(to_string(r.end)).c_str());
+  if (!s.in_position) {
+    std::printf("  %-24s never\n", "in position");
+  } else {
+    std::printf("  %-24s %.1f s\n", "time to position", s.time_to_position_s);
+    std::printf("  %-24s %.1f s\n", aligning ? "held" : "tracked", s.hold_s);
+    std::printf("  %-24s %.3f m from the object\n", "requested distance", s.requested_distance_m);
+    print_error("distance error", s.distance_error_m);
+    if (aligning) print_error("station-keeping error", s.station_keeping_m);
+    print_error("cross-track error", s.cross_track_m);
+  }
+  if (!aligning) std::printf("  %-24s %.3f\n", "laps", s.laps);
+  std::printf("  %-24s %.3f m%s\n", "min clearance", s.vehicle.min_clearance_m, s.vehicle.collided ? " (COLLIDED)" : "");
+  std::printf("  %-24s %.1f s, %.1f m, %.0f kJ\n", "time, path, energy", s.vehicle.time_s, s.vehicle.path_length_m,
+              s.vehicle.energy_j / 1e3);
+  std::printf("  %-24s %.3f deg/s max, %.3f RMS\n", "turning rate", rad_to_deg(s.vehicle.max_abs_rate),
+              rad_to_deg(s.vehicle.rms_rate));
+  std::printf("  mode switches (%zu; %s at the start)\n", r.switches.size(),
+              std::string(to_string(r.start_phase)).c_str());
+  for (const ModeSwitch& m : r.switches) {
+    std::printf("    %9.1f s  x %10.1f, y %10.1f m  %s -> %s\n", m.time_s, m.position.x(), m.position.y(),
+                std::string(to_string(m.from)).c_str(), std::string(to_string(m.to)).c_str());
+  }
+}
+
+}  // namespace
+
+void register_identify(CLI::App& app) {
+  auto o = std::make_shared<IdentifyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "identify", "Simulate an identification manoeuvre: aligning to an object in a current, or going around it");
+  cmd->add_option("SCENARIO", o->scenario, "Scenario file with an identify section (see data/scenarios/)")
+      ->required();
+  cmd->add_option("--mode", o->mode, "align or around (default: the scenario's identify.mode)");
+  cmd->add_option("-o,--output", o->output, "Trajectory file to write (CSV)");
+  cmd->add_flag("--json", o->json, "Print the statistics and mode switches as JSON");
+  cmd->callback([o] {
+    std::optional<IdentifyMode> mode;
+    if (!o->mode.empty()) {
+      mode = parse_identify_mode(o->mode);
+      if (!mode) throw InputError("--mode: expected align or around, got '" + printable(o->mode) + "'");
+    }
+    Scenario scenario = read_scenario_file(o->scenario);
+    if (!scenario.identify) {
+      throw InputError(o->scenario + ": field 'identify': expected an identify section naming the object "
+                       "(see data/scenarios/align_in_current.yaml)");
+    }
+    if (mode) scenario.identify->mode = *mode;
+    const IdentifyResult result = simulate_identification(scenario, {!o->output.empty()});
+    if (!o->output.empty()) write_identification_csv(o->output, result.trajectory);
+    if (o->json) {
+      std::cout << identification_json(scenario, result).dump(2) << "\n";
+    } else {
+      print_summary(scenario, result);
+      std::fflush(stdout);
+    }
+    if (!result.failure.empty()) throw ManoeuvreError(o->scenario + ": " + result.failure);
+  });
+}
+
+}  // namespace deepguide::app
