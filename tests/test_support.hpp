@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
 #include <fstream>
 #include <random>
@@ -89,6 +90,16 @@ inline RunResult run_cli(const std::string& args) {
   r.out = slurp(out);
   r.err = slurp(err);
   return r;
+}
+
+/// The InputError `fn` throws, its text; empty when it throws none.
+inline std::string error_of(const std::function<void()>& fn) {
+  try {
+    fn();
+  } catch (const deepguide::InputError& e) {
+    return e.what();
+  }
+  return {};
 }
 
 /// Expects `msg` (an InputError's text, empty when none was thrown) to be one

@@ -46,7 +46,7 @@ TEST(GoingAround, SteeringHeadsForTheNearestPathPoint) {
 
 TEST(GoingAround, LineOfSightTurnsTowardsThePath) {
   // On the major axis end, anticlockwise the path runs along +minor; outside by 5 m
-  // the course turns left of it by atan(5 / 20); clockwise it runs along -minor and turns right.
+  // the course turns left of it by atan(5 / lookahead); clockwise it runs along -minor and turns right.
   AroundParams params;
   params.switch_m = 10.0;
   const Vec2 p = kObject.center + 50.0 * kObject.major_dir();
@@ -57,7 +57,7 @@ TEST(GoingAround, LineOfSightTurnsTowardsThePath) {
     const AroundCommand c = around_command(kObject, params, memory, p);
     ASSERT_EQ(c.mode, AroundMode::tracking);
     const double alpha = direction > 0 ? along : wrap_pi(along + kPi);
-    EXPECT_NEAR(wrap_pi(c.course - alpha), direction * std::atan(5.0 / 20.0), 1e-9) << direction;
+    EXPECT_NEAR(wrap_pi(c.course - alpha), direction * std::atan(5.0 / params.lookahead_m), 1e-9) << direction;
   }
 }
 
@@ -126,6 +126,45 @@ TEST(GoingAround, BadParametersAreRejected) {
   EXPECT_THROW(around_command(kObject, params, memory, Vec2(0, 0)), InputError);
   params = AroundParams{};
   EXPECT_THROW(around_command(kObject, params, memory, Vec2(std::nan(""), 0)), InputError);
+}
+
+}  // namespace
+}  // namespace deepguide
+
+namespace deepguide {
+namespace {
+
+// The course rate the unit feeds forward is the time derivative of its own
+// course along the motion: central differences over +-0.01 s at points
+// outside, on and inside the path, both directions, several velocities.
+TEST(GoingAround, CourseRateIsTheDerivativeOfTheCourse) {
+  const Ellipse object{{5.0, -3.0}, 25.0, 12.0, 0.4};
+  AroundParams params;
+  params.distance_m = 20.0;
+  const double dt = 0.01;
+  int checked = 0;
+  for (int direction : {1, -1}) {
+    params.direction = direction;
+    for (double t : {0.0, 0.7, 1.6, 2.9, -2.2}) {
+      for (double off : {-6.0, 0.0, 4.0, 15.0}) {
+        const Vec2 p = offset_point(object, params.distance_m + off, t);
+        for (const Vec2& v : {Vec2(2.0, 0.5), Vec2(-1.0, 2.5), Vec2(0.3, -1.8)}) {
+          AroundMemory m0, m1, m2;
+          const AroundCommand c = around_command(object, params, m0, p, v);
+          ASSERT_EQ(c.mode, AroundMode::tracking);
+          const double ahead = around_command(object, params, m1, p + dt * v).course;
+          const double behind = around_command(object, params, m2, p - dt * v).course;
+          EXPECT_NEAR(c.course_rate, wrap_pi(ahead - behind) / (2.0 * dt), 1e-5)
+              << direction << " t " << t << " off " << off;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 120);
+  // Steering has no rate to feed forward.
+  AroundMemory m;
+  EXPECT_EQ(around_command(object, params, m, object.center + Vec2(300, 0), Vec2(2, 0)).course_rate, 0.0);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 namespace deepguide {
 namespace {
 
+using test::error_of;
 using test::expect_error;
 using test::ScratchDir;
 
@@ -44,15 +45,6 @@ Scenario exact_scenario(Vec2 start, Vec2 target, std::vector<EllipticCylinder> o
   sc.sonar.position_sigma_m = sc.sonar.position_sigma_per_m = 0.0;
   sc.sonar.size_sigma_m = sc.sonar.size_sigma_per_m = 0.0;
   return sc;
-}
-
-std::string error_of(const std::function<void()>& fn) {
-  try {
-    fn();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
 }
 
 // ---------------------------------------------------------------- statistics

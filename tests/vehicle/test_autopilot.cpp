@@ -159,3 +159,44 @@ TEST(Autopilot, ClosedLoopIsBitIdentical) {
   EXPECT_EQ(a.memory, b.memory);
   EXPECT_FALSE(a.vehicle == c.vehicle);
 }
+
+// A course set-point that turns at a steady rate: without its rate the
+// reference lags by 2 r / w_r (notes: critically damped second order); with it
+// fed forward the lag goes (autopilot.hpp).
+TEST(Autopilot, CourseRateFeedForwardRemovesTheRampLag) {
+  const double rate = deg_to_rad(3.0);
+  auto lag_after_a_minute = [&](bool feed_forward, const Vec2& current) {
+    Loop r{make_vehicle_state({0, 0}, 20.0, 0.0, kP.cruise_speed_mps, current), {}, {}};
+    const int steps = 1200;  // 120 s: 60 s to settle, then the ramp's steady state
+    double lag = 0.0;
+    for (int k = 0; k < steps; ++k) {
+      const double t = k * kP.step_s;
+      AutopilotSetpoint sp{rate * t, kP.cruise_speed_mps, 20.0};
+      if (feed_forward) sp.course_rate = rate;
+      step(r, sp, current);
+      lag = std::abs(rad_to_deg(wrap_pi(sp.course - course_over_ground(r.vehicle))));
+    }
+    return lag;
+  };
+  const double w_r = kP.autopilot.reference_natural_frequency_rad_s;
+  const double expected_lag = rad_to_deg(2.0 * rate / w_r);  // 30 deg
+  EXPECT_NEAR(lag_after_a_minute(false, {0, 0}), expected_lag, 2.0);
+  EXPECT_LT(lag_after_a_minute(true, {0, 0}), 1.0);
+  // In a current the heading turns faster or slower than the course (the crab
+  // changes): fed forward through d psi / d chi, the course is still held.
+  EXPECT_LT(lag_after_a_minute(true, {0.0, 0.8}), 2.0);
+}
+
+TEST(Autopilot, HeadingModeHoldsTheBowNotTheCourse) {
+  const Vec2 current(0.0, 1.0);  // north, across an east heading
+  Loop r{make_vehicle_state({0, 0}, 20.0, 0.0, kP.cruise_speed_mps, current), {}, {}};
+  AutopilotSetpoint sp{deg_to_rad(10.0), kP.cruise_speed_mps, 20.0};
+  sp.heading_mode = true;
+  for (int k = 0; k < 3000; ++k) step(r, sp, current);  // 300 s: the integral's slow tail too
+  EXPECT_NEAR(rad_to_deg(wrap_pi(r.vehicle.heading - sp.course)), 0.0, 0.05);
+  // The course over ground is the heading's plus the current's: well off it.
+  const Vec2 ground = r.vehicle.speed_mps * unit_vector(r.vehicle.heading) + current;
+  EXPECT_NEAR(rad_to_deg(wrap_pi(course_over_ground(r.vehicle) - math_angle(ground))), 0.0, 0.1);
+  EXPECT_GT(rad_to_deg(wrap_pi(course_over_ground(r.vehicle) - sp.course)), 15.0);
+  EXPECT_FALSE(r.last.course_unreachable);
+}

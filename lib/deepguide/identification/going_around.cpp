@@ -32,6 +32,7 @@ AroundCommand around_command(const Ellipse& object, const AroundParams& params, 
   const OffsetProjection q = project_to_offset(object, params.distance_m, p);
   AroundCommand cmd;
   cmd.cross_track_m = q.signed_m;
+  cmd.path_course = math_angle(params.direction * q.tangent);
   const double e = std::abs(q.signed_m);
   if (memory.mode == AroundMode::done) {
     cmd.mode = AroundMode::done;
@@ -57,7 +58,7 @@ AroundCommand around_command(const Ellipse& object, const AroundParams& params, 
     cmd.course = math_angle(params.direction * q.tangent);
     return cmd;
   }
-  const double alpha = math_angle(params.direction * q.tangent);
+  const double alpha = cmd.path_course;
   cmd.course = wrap_pi(alpha + params.direction * std::atan(q.signed_m / params.lookahead_m));
   // The rate of chi (header); rho + e is the distance to the centre of curvature, > 0 outside the object.
   const double rho = 1.0 / offset_curvature(object, params.distance_m, q.t);

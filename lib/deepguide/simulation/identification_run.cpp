@@ -13,6 +13,9 @@
 namespace deepguide {
 namespace {
 
+// On the path means going along it too: course over ground within this of the path's.
+const double kAlongPath = deg_to_rad(20.0);
+
 // Running RMS and max |x|.
 class ErrorAccumulator {
  public:
@@ -38,6 +41,7 @@ struct UnitStep {
   double course = 0.0, speed_mps = 0.0;
   double course_rate = 0.0;  // feed-forward for the autopilot (rad/s)
   bool is_heading = false;   // `course` is a heading set-point
+  bool on_track = true;      // going around: the course over ground is along the path (header)
   IdentifyPhase phase = IdentifyPhase::evasive;
   double cross_track_m = 0.0, goal_error_m = 0.0, laps = 0.0;
   double requested_m = 0.0;  // the distance to the object's footprint asked for
@@ -142,6 +146,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
            c.speed_mps,
            0.0,
            c.is_heading,
+           true,
            c.mode == AlignArea::positioning ? IdentifyPhase::positioning : IdentifyPhase::evasive,
            (p - c.goal).dot(Vec2(-e.y(), e.x())), c.goal_error_m, 0.0, signed_distance(object, c.goal), c.goal};
       return u;
@@ -151,7 +156,8 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     const IdentifyPhase phase = c.mode == AroundMode::steering   ? IdentifyPhase::steering
                                 : c.mode == AroundMode::tracking ? IdentifyPhase::tracking
                                                                  : IdentifyPhase::done;
-    u = {c.course, c.speed_mps, c.course_rate, false, phase, c.cross_track_m, std::abs(c.cross_track_m), around_memory.laps_done(),
+    const bool along = std::abs(wrap_pi(math_angle(ground) - c.path_course)) <= kAlongPath;
+    u = {c.course, c.speed_mps, c.course_rate, false, along, phase, c.cross_track_m, std::abs(c.cross_track_m), around_memory.laps_done(),
          id.around.distance_m, Vec2(0.0, 0.0)};
     return u;
   };
@@ -205,7 +211,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
 
     IdentifyStats& s = result.stats;
     const bool holding_phase = aligning ? u.phase == IdentifyPhase::positioning : u.phase == IdentifyPhase::tracking;
-    if (!s.in_position && holding_phase && u.goal_error_m <= id.position_tolerance_m) {
+    if (!s.in_position && holding_phase && u.goal_error_m <= id.position_tolerance_m && u.on_track) {
       s.in_position = true;
       s.time_to_position_s = t;
       s.requested_distance_m = u.requested_m;

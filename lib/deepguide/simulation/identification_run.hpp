@@ -22,7 +22,9 @@
 //
 // In position: aligning, from the first sample in the positioning mode
 // within position_tolerance_m of the held point g; going around, from the
-// first tracking sample within position_tolerance_m of the path.
+// first tracking sample within position_tolerance_m of the path whose
+// course over ground is within 20 degrees of the path's direction (a vehicle
+// crossing the path at an angle on its way in is not on it yet).
 // Statistics, over the samples from that one on (the hold), as RMS and max:
 //   station-keeping error   |p - g|                               (aligning)
 //   cross-track error       aligning: the offset across the current's axis
