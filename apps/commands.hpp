@@ -33,6 +33,7 @@ void register_render_reactive(CLI::App& render);
 void register_chart_nogo(CLI::App& chart);
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
+void register_render_identification(CLI::App& render);
 
 /// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north
 /// to true north at a local point, and the default title of a route chart.

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   app::register_render_route(*render);
   app::register_render_chart(*render);
   app::register_render_reactive(*render);
+  app::register_render_identification(*render);
 
   try {
     app.parse(argc, argv);

@@ -15,6 +15,7 @@
 #include "deepguide/geometry/ellipse_segment.hpp"
 #include "deepguide/render/field_figure.hpp"
 #include "deepguide/render/gradient_lines.hpp"
+#include "deepguide/render/identification_figure.hpp"
 #include "deepguide/render/plot_furniture.hpp"
 #include "deepguide/render/trajectory_figure.hpp"
 #include "deepguide/render/turn_rate_plot.hpp"
@@ -357,4 +358,58 @@ TEST(RenderReactiveCli, WritesTheFiguresAndRefusesBadInputInOneLine) {
              tmp.file("d.png"));
   // A usage error (no output) is exit 2.
   EXPECT_EQ(run_cli("render field " + sc + " --method dipole").exit_code, 2);
+}
+
+// The identification figures: the shade, the track's modes and the path in
+// their colours, every sample on the map, and the CLI with its bad input.
+TEST(IdentificationFigure, DrawsTheShadeTheModesAndThePath) {
+  ScratchDir tmp;
+  const IdentificationFigure align =
+      identification_figure_for(read_scenario_file(source_file("data/scenarios/align_in_current.yaml")));
+  const ReactiveMapLayout l = render_identification_figure(align, tmp.file("align.png"));
+  Png png(tmp.file("align.png"));
+  ASSERT_TRUE(png.ok());
+  EXPECT_EQ(png.height(), l.height);
+  EXPECT_GT(count_colour(png, phase_color(IdentifyPhase::evasive)), 300);
+  EXPECT_GT(count_colour(png, phase_color(IdentifyPhase::positioning)), 300);
+  // The shade (sky blue at 18 % over the sea) 30 m past the held point, down the axis.
+  const Vec2 shade = l.view.to_pixel(align.run.goal + 30.0 * align.scenario.current.normalized());
+  const auto got = png.at(shade + Vec2(0.0, 12.0));  // beside the track, not on it
+  EXPECT_LT(got[0], 232);  // the sea is (243, 246, 249); the tint takes red away
+  EXPECT_GT(got[2], 235);
+  for (const IdentifySample& x : align.run.trajectory) {
+    const Vec2 p = l.view.to_pixel(x.vehicle.position);
+    ASSERT_TRUE(p.x() >= l.plot.x && p.x() <= l.plot.x + l.plot.width && p.y() >= l.plot.y &&
+                p.y() <= l.plot.y + l.plot.height);
+  }
+  EXPECT_NE(identification_summary(align.run).find("held 300 s from"), std::string::npos);
+
+  const IdentificationFigure around =
+      identification_figure_for(read_scenario_file(source_file("data/scenarios/around_object.yaml")));
+  render_identification_figure(around, tmp.file("around.svg"));
+  EXPECT_TRUE(std::filesystem::exists(tmp.file("around.svg")));
+  EXPECT_NE(identification_summary(around.run).find("2.0 laps in"), std::string::npos);
+
+  IdentificationFigure empty = around;
+  empty.run.trajectory.clear();
+  expect_one_line_error([&] { render_identification_figure(empty, tmp.file("e.png")); }, "recorded run");
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("e.png")));
+}
+
+TEST(RenderIdentificationCli, WritesTheFigureAndRefusesBadInputInOneLine) {
+  ScratchDir tmp;
+  const std::string sc = "'" + source_file("data/scenarios/around_object.yaml") + "'";
+  const auto ok = run_cli("render identification " + sc + " --width 600 -o '" + tmp.file("a.png") + "'");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("laps in"), std::string::npos) << ok.out;
+  Png png(tmp.file("a.png"));
+  ASSERT_TRUE(png.ok());
+  EXPECT_EQ(png.width(), 600);
+  const auto bad_ext = run_cli("render identification " + sc + " -o '" + tmp.file("a.jpg") + "'");
+  EXPECT_EQ(bad_ext.exit_code, 1);
+  EXPECT_NE(bad_ext.err.find(".png or .svg"), std::string::npos) << bad_ext.err;
+  const auto bad_mode = run_cli("render identification " + sc + " --mode spin -o '" + tmp.file("b.png") + "'");
+  EXPECT_EQ(bad_mode.exit_code, 1);
+  EXPECT_NE(bad_mode.err.find("--mode: expected align or around, got 'spin'"), std::string::npos) << bad_mode.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("b.png")));
 }

@@ -40,6 +40,9 @@ struct WorldBox {
   double width() const { return empty() ? 0.0 : max.x() - min.x(); }
   double height() const { return empty() ? 0.0 : max.y() - min.y(); }
   Vec2 center() const { return 0.5 * (min + max); }
+  bool contains(const Vec2& p) const {
+    return p.x() >= min.x() && p.x() <= max.x() && p.y() >= min.y() && p.y() <= max.y();
+  }
   /// Grows every side by d metres.
   WorldBox padded(double d) const;
 };

@@ -22,18 +22,6 @@ bool inside_any(const std::vector<Ellipse>& objects, const Vec2& p) {
 
 Rgba grey_arrow() { return rgb_hex(0x9aa4ae); }
 
-/// An arrow of `length` px centred at `c` along the world direction d (unit).
-void add_arrow(std::vector<std::pair<Vec2, Vec2>>& segs, const Vec2& c, const Vec2& d, double length) {
-  const Vec2 dir(d.x(), -d.y());  // rows grow southwards
-  const Vec2 tail = c - 0.5 * length * dir;
-  const Vec2 tip = c + 0.5 * length * dir;
-  const Vec2 side(-dir.y(), dir.x());
-  const double head = 0.32 * length;
-  segs.emplace_back(tail, tip);
-  segs.emplace_back(tip, tip - head * (0.9 * dir + 0.45 * side));
-  segs.emplace_back(tip, tip - head * (0.9 * dir - 0.45 * side));
-}
-
 void end_dot(Canvas& c, const Vec2& at, const Rgba& color, double u) {
   c.circle(at, 4.0 * u, color, Stroke{rgb_hex(0x000000), 1.3 * u, {}});
 }

@@ -10,6 +10,17 @@
 
 namespace deepguide {
 
+void add_arrow(std::vector<std::pair<Vec2, Vec2>>& segments, const Vec2& c, const Vec2& d, double length) {
+  const Vec2 dir(d.x(), -d.y());  // rows grow southwards
+  const Vec2 tail = c - 0.5 * length * dir;
+  const Vec2 tip = c + 0.5 * length * dir;
+  const Vec2 side(-dir.y(), dir.x());
+  const double head = 0.32 * length;
+  segments.emplace_back(tail, tip);
+  segments.emplace_back(tip, tip - head * (0.9 * dir + 0.45 * side));
+  segments.emplace_back(tip, tip - head * (0.9 * dir - 0.45 * side));
+}
+
 void check_figure_width(int width_px) {
   if (width_px < kMinImageWidth || width_px > kMaxImageWidth) {
     throw InputError("image width: expected " + std::to_string(kMinImageWidth) + " to " +

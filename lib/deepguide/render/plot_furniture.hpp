@@ -22,6 +22,10 @@ namespace deepguide {
 /// (route_scene.hpp), the widths every figure accepts.
 void check_figure_width(int width_px);
 
+/// Appends the three segments of an arrow of `length` px centred at the pixel
+/// `c`, along the WORLD direction d (unit; y north, so rows flip).
+void add_arrow(std::vector<std::pair<Vec2, Vec2>>& segments, const Vec2& c, const Vec2& d, double length);
+
 /// The figure's title, bold, at the top left of an image width_px wide;
 /// shrunk to fit when long.
 void draw_figure_title(Canvas& canvas, const std::string& title, int width_px, double unit, const Rgba& color);

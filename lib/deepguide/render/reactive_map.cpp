@@ -164,7 +164,7 @@ void end_reactive_map(Canvas& canvas, const ReactiveMap& map, const ReactiveMapL
   start_marker(canvas, start, s, u);
   target_marker(canvas, target, s, u);
   canvas.text_with_halo(start + Vec2(0.0, -13.0 * u), "start", 14.0 * u, s.text, s.sea, 2.5 * u, TextAlign::center);
-  canvas.text_with_halo(target + Vec2(0.0, -15.0 * u), "target", 14.0 * u, s.text, s.sea, 2.5 * u,
+  canvas.text_with_halo(target + Vec2(0.0, -15.0 * u), map.target_label, 14.0 * u, s.text, s.sea, 2.5 * u,
                         TextAlign::center);
   canvas.unclip();
   draw_axes(canvas, l.plot, l.x, l.y, {"x, east (m)", "y, north (m)", 12, 8, true}, u,
@@ -183,7 +183,7 @@ void end_reactive_map(Canvas& canvas, const ReactiveMap& map, const ReactiveMapL
                    }});
   }
   own.push_back({"start", [&s, u](Canvas& c, const Vec2& m) { start_marker(c, m, s, u); }});
-  own.push_back({"target", [&s, u](Canvas& c, const Vec2& m) { target_marker(c, m, s, u); }});
+  own.push_back({map.target_label, [&s, u](Canvas& c, const Vec2& m) { target_marker(c, m, s, u); }});
   const PixelRect first{l.legend.x, l.legend.y, l.legend.width, legend_height(1, 1, u)};
   draw_legend(canvas, own, first, kMapLegendColumns, u, s.text);
   const PixelRect rest{l.legend.x, first.y + first.height, l.legend.width, l.legend.height - first.height};

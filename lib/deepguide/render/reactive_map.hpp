@@ -50,6 +50,7 @@ struct ReactiveMap {
   double margin_m = 0.0;         ///< security margin: zones drawn when > 0
   Vec2 start{0.0, 0.0};
   Vec2 target{0.0, 0.0};
+  std::string target_label = "target";  ///< the target marker's label and legend entry
   std::string title;
   ReactiveMapStyle style;
 };
