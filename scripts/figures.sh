@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Regenerates the reactive level's figures (docs/SIMULATION.md) from every
-# scenario in data/scenarios/*.yaml into docs/figures/:
+# Regenerates the reactive level's and the identification's figures
+# (docs/SIMULATION.md, docs/IDENTIFICATION.md) from every scenario in
+# data/scenarios/*.yaml into docs/figures/. A scenario with an identify
+# section gets
+#   NAME_identification.png  the areas, the current and the track (Figs. 14-16)
+# every other one
 #   NAME_field_METHOD.png  gradient lines of each method (the seed's Figs. 8, 10)
 #   NAME_simulation.png    the methods' simulated trajectories (Fig. 11)
 #   NAME_turn_rates.png    r_ref and r over time per method (Fig. 12)
@@ -22,6 +26,10 @@ if [ ${#scenarios[@]} -eq 0 ]; then
 fi
 for scenario in "${scenarios[@]}"; do
   name="$(basename "$scenario" .yaml)"
+  if grep -q '^identify:' "$scenario"; then
+    "$DEEPGUIDE_CLI" render identification "$scenario" -o "docs/figures/${name}_identification.png"
+    continue
+  fi
   for method in dipole geometric potential; do
     "$DEEPGUIDE_CLI" render field "$scenario" --method "$method" -o "docs/figures/${name}_field_${method}.png"
   done

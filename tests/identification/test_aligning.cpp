@@ -1,6 +1,6 @@
-// Aligning: the mode logic by hand, and the real vehicle model (Nomoto yaw,
-// 20 s speed lag, the course autopilot) holding the lee goal in currents of
-// 0, 0.5 and 1.0 m/s.
+// Aligning: the mode logic by hand, the positioning command, bad input. The
+// real vehicle holding the lee goal in currents of 0, 0.5 and 1.0 m/s is
+// tests/simulation/test_identification_run.cpp (the identification run).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,8 +11,6 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/identification/aligning.hpp"
-#include "deepguide/vehicle/autopilot.hpp"
-#include "deepguide/vehicle/vehicle_model.hpp"
 
 namespace deepguide {
 namespace {
@@ -48,6 +46,24 @@ TEST(Aligning, ModesFollowTheShadeAndTheHeading) {
               lee_goal_point(security_ellipse(kObject, 10.0), Vec2(1, 0)).x() + 1.0, 1e-12);
 }
 
+TEST(Aligning, PositioningInACurrentSetsTheHeadingOfTheWaterVelocity) {
+  // At the held point the ground velocity asked for is 0: the water velocity
+  // is -c, so the bow points into the current at the current's speed.
+  const AlignParams params;
+  AlignMemory memory;
+  const Vec2 current(0.0, 0.8);  // north: the lee is north of the object
+  AlignCommand c = align_command(kObject, params, memory, Vec2(0, 200), -kPi / 2, current);  // in the shade, facing south
+  c = align_command(kObject, params, memory, c.goal, -kPi / 2, current);
+  ASSERT_EQ(c.mode, AlignArea::positioning);
+  EXPECT_TRUE(c.is_heading);
+  EXPECT_NEAR(wrap_pi(c.course + kPi / 2), 0.0, 1e-12);
+  EXPECT_NEAR(c.speed_mps, 0.8, 1e-12);
+  // 8 m east of it: u = -k (8, 0) = (-0.1, 0), w = u - c = (-0.1, -0.8).
+  c = align_command(kObject, params, memory, c.goal + Vec2(8, 0), -kPi / 2, current);
+  EXPECT_NEAR(c.course, std::atan2(-0.8, -0.1), 1e-12);
+  EXPECT_NEAR(c.speed_mps, std::hypot(0.1, 0.8), 1e-12);
+}
+
 TEST(Aligning, ACurrentFasterThanTheVehicleIsReportedNotSpun) {
   AlignParams params;
   AlignMemory memory;
@@ -68,57 +84,6 @@ TEST(Aligning, BadInputIsRejected) {
   EXPECT_THROW(align_command(kObject, params, memory, Vec2(0, 50), 0.0, Vec2(0, 0)), InputError);
   params = AlignParams{};
   EXPECT_THROW(align_command(kObject, params, memory, Vec2(0, 50), 0.0, Vec2(std::nan(""), 0)), InputError);
-}
-
-struct Hold {
-  bool positioned = false;
-  double distance_rms = 0.0;  ///< |distance to the object - the held point's| over the last 300 s
-  double min_clearance = 1e9;
-  double heading_error = 0.0;  ///< max |heading - upstream| over the last 100 s (rad)
-};
-
-Hold hold(double speed, double direction) {
-  const Vec2 current = speed * Vec2(std::cos(direction), std::sin(direction));
-  const VehicleParams vp;
-  const AlignParams params;
-  AlignMemory memory;
-  VehicleState state = make_vehicle_state(Vec2(-200, 30), 0.0, 0.0, params.speed_mps, current);
-  AutopilotState autopilot;
-  Hold h;
-  double sum = 0.0, n = 0.0;
-  const int steps = 9000;  // 900 s
-  for (int k = 0; k < steps; ++k) {
-    const AlignCommand c = align_command(kObject, params, memory, state.position, course_over_ground(state), current);
-    h.min_clearance = std::min(h.min_clearance, signed_distance(kObject, state.position));
-    h.positioned = h.positioned || c.mode == AlignArea::positioning;
-    if (k >= steps - 3000) {
-      const double e = signed_distance(kObject, state.position) - signed_distance(kObject, c.goal);
-      sum += e * e;
-      n += 1.0;
-    }
-    if (k >= steps - 1000 && speed > 0.0) {
-      h.heading_error = std::max(h.heading_error, std::abs(wrap_pi(state.heading - math_angle(-current))));
-    }
-    const AutopilotOutput out = autopilot_step(vp, autopilot, state, {c.course, c.speed_mps, 0.0}, current);
-    step_vehicle(vp, state, out.command, current);
-  }
-  h.distance_rms = std::sqrt(sum / n);
-  return h;
-}
-
-TEST(Aligning, TheVehicleHoldsTheLeeGoalInCurrentsUpTo1MetrePerSecond) {
-  for (double speed : {0.0, 0.5, 1.0}) {
-    for (double direction : {0.0, 2.0}) {
-      SCOPED_TRACE(testing::Message() << speed << " m/s towards " << direction << " rad");
-      const Hold h = hold(speed, direction);
-      EXPECT_TRUE(h.positioned);
-      EXPECT_LT(h.distance_rms, 1.0);
-      EXPECT_GE(h.min_clearance, 10.0);  // never inside the standoff
-      if (speed > 0.0) {
-        EXPECT_LT(h.heading_error, deg_to_rad(10.0));  // bow into the current
-      }
-    }
-  }
 }
 
 }  // namespace
