@@ -68,7 +68,8 @@ void print_summary(const Scenario& sc, const IdentifyResult& r) {
     print_error("cross-track error", s.cross_track_m);
   }
   if (!aligning) std::printf("  %-24s %.3f\n", "laps", s.laps);
-  std::printf("  %-24s %.3f m%s\n", "min clearance", s.vehicle.min_clearance_m, s.vehicle.collided ? " (COLLIDED)" : "");
+  std::printf("  %-24s %.3f m%s\n", "min clearance", s.vehicle.min_clearance_m,
+              s.vehicle.collided ? " (COLLIDED)" : "");
   std::printf("  %-24s %.1f s, %.1f m, %.0f kJ\n", "time, path, energy", s.vehicle.time_s, s.vehicle.path_length_m,
               s.vehicle.energy_j / 1e3);
   std::printf("  %-24s %.3f deg/s max, %.3f RMS\n", "turning rate", rad_to_deg(s.vehicle.max_abs_rate),

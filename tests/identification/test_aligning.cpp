@@ -52,7 +52,8 @@ TEST(Aligning, PositioningInACurrentSetsTheHeadingOfTheWaterVelocity) {
   const AlignParams params;
   AlignMemory memory;
   const Vec2 current(0.0, 0.8);  // north: the lee is north of the object
-  AlignCommand c = align_command(kObject, params, memory, Vec2(0, 200), -kPi / 2, current);  // in the shade, facing south
+  AlignCommand c =
+      align_command(kObject, params, memory, Vec2(0, 200), -kPi / 2, current);  // in the shade, facing south
   c = align_command(kObject, params, memory, c.goal, -kPi / 2, current);
   ASSERT_EQ(c.mode, AlignArea::positioning);
   EXPECT_TRUE(c.is_heading);

@@ -294,7 +294,8 @@ TEST(IdentifyCli, RunsTheSamplesWritesCsvAndJson) {
   EXPECT_EQ(row.substr(0, 23), "0.000,-200.000,-150.000");
   EXPECT_EQ(std::count(row.begin(), row.end(), ','), 16);
 
-  const test::RunResult text = test::run_cli("identify '" + test::source_file("data/scenarios/align_in_current.yaml") + "'");
+  const test::RunResult text =
+      test::run_cli("identify '" + test::source_file("data/scenarios/align_in_current.yaml") + "'");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("end                      held"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("evasive -> positioning"), std::string::npos) << text.out;

@@ -132,7 +132,8 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
     for (const IdentifySample& x : run.trajectory) extra.extend(x.vehicle.position);
     if (!aligning) {
       for (int i = 0; i < 64; ++i)
-        extra.extend(offset_point(sc.identify->object, sc.identify->around.distance_m, 2.0 * std::numbers::pi * i / 64));
+        extra.extend(
+            offset_point(sc.identify->object, sc.identify->around.distance_m, 2.0 * std::numbers::pi * i / 64));
     }
     // Mode colours, the current, the path or the areas, and the outcome.
     l = reactive_map_layout(figure.map, extra, figure.width_px, phases.size() + 3, 2);
@@ -205,7 +206,8 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
     while (end + 1 < run.trajectory.size() && run.trajectory[end + 1].phase == run.trajectory[begin].phase) ++end;
     std::vector<Vec2> line;
     // Each stretch starts where the last one ended, so the track has no gaps.
-    for (std::size_t k = begin == 0 ? 0 : begin - 1; k <= end; ++k) line.push_back(px(run.trajectory[k].vehicle.position));
+    for (std::size_t k = begin == 0 ? 0 : begin - 1; k <= end; ++k)
+      line.push_back(px(run.trajectory[k].vehicle.position));
     canvas.stroke_polyline(line, Stroke{style.background, 5.0 * u, {}});
     canvas.stroke_polyline(line, Stroke{phase_color(run.trajectory[begin].phase), 2.6 * u, {}});
     begin = end + 1;

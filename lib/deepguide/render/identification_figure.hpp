@@ -32,7 +32,8 @@ struct IdentificationFigure {
 /// the figure. Throws InputError as simulate_identification does.
 IdentificationFigure identification_figure_for(const Scenario& scenario);
 
-/// The legend line of the run: "held at 655 s; distance error RMS 0.14 m, station keeping 0.66 m; min clearance 11.0 m".
+/// The legend line of the run, e.g. "held 300 s from 355 s; distance error RMS
+/// 0.14 m, station keeping 0.66 m; min clearance 11.0 m".
 std::string identification_summary(const IdentifyResult& run);
 
 /// The colour of a mode's stretch of track.

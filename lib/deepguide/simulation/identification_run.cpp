@@ -112,7 +112,8 @@ double identify_max_time_s(const Scenario& sc) {
 IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptions& options) {
   validate(sc);
   if (!sc.identify) {
-    throw input_error({sc.source, "", "identify"}, "an identify section naming the object (data/scenarios/align_in_current.yaml)");
+    throw input_error({sc.source, "", "identify"},
+                      "an identify section naming the object (data/scenarios/align_in_current.yaml)");
   }
   const IdentifySpec& id = *sc.identify;
   const Ellipse& object = id.object;
@@ -157,8 +158,17 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
                                 : c.mode == AroundMode::tracking ? IdentifyPhase::tracking
                                                                  : IdentifyPhase::done;
     const bool along = std::abs(wrap_pi(math_angle(ground) - c.path_course)) <= kAlongPath;
-    u = {c.course, c.speed_mps, c.course_rate, false, along, phase, c.cross_track_m, std::abs(c.cross_track_m), around_memory.laps_done(),
-         id.around.distance_m, Vec2(0.0, 0.0)};
+    u = {c.course,
+         c.speed_mps,
+         c.course_rate,
+         false,
+         along,
+         phase,
+         c.cross_track_m,
+         std::abs(c.cross_track_m),
+         around_memory.laps_done(),
+         id.around.distance_m,
+         Vec2(0.0, 0.0)};
     return u;
   };
 
@@ -241,8 +251,8 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     }
     if (k >= max_steps) {
       result.end = IdentifyEnd::time_out;
-      result.failure = std::string(aligning ? "not held for hold_time_s" : "laps not completed") + " by the time limit " +
-                       where(t, state.position);
+      result.failure = std::string(aligning ? "not held for hold_time_s" : "laps not completed") +
+                       " by the time limit " + where(t, state.position);
       break;
     }
     plant.advance();

@@ -319,7 +319,8 @@ void read_identify(const Mapping& root, Scenario& sc) {
     a.hold_buffer_m = al.number_or("hold_buffer_m", {0.0, 1e4, true, "a distance in metres"}, a.hold_buffer_m);
     a.approach_m = al.number_or("approach_m", distance, a.approach_m);
     a.approach_radius_m = al.number_or("approach_radius_m", distance, a.approach_radius_m);
-    a.position_gain_per_s = al.number_or("position_gain_per_s", {0.0, 10.0, false, "a gain in 1/s"}, a.position_gain_per_s);
+    a.position_gain_per_s =
+        al.number_or("position_gain_per_s", {0.0, 10.0, false, "a gain in 1/s"}, a.position_gain_per_s);
     a.max_approach_mps = al.number_or("max_approach_mps", speed, a.max_approach_mps);
     a.lookahead_m = al.number_or("lookahead_m", distance, a.lookahead_m);
     a.still_mps = al.number_or("still_mps", {0.0, 20.0, true, "a speed in m/s"}, a.still_mps);

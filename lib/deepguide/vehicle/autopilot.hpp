@@ -39,9 +39,10 @@
 //     without error. With a course_rate in the set-point and a current, the
 //     heading turns at k = d psi / d chi times the course (the crab changes
 //     with the course): a_r and r_r are then multiplied by k in the
-//     feed-forward and the damping term (autopilot.cpp says why only then). The error is wrapped to [-pi, pi), so 179 -> -179 deg turns
-//     2 deg, not 358. The integral stops while the rudder is saturated
-//     (anti-windup). Angles are math angles (rad, ccw from east) throughout.
+//     feed-forward and the damping term (autopilot.cpp says why only then).
+//     The error is wrapped to [-pi, pi), so 179 -> -179 deg turns 2 deg, not
+//     358. The integral stops while the rudder is saturated (anti-windup).
+//     Angles are math angles (rad, ccw from east) throughout.
 // Speed and depth: the set-points are clamped to [0, max] and passed to the
 // vehicle's first-order speed and depth loops (vehicle_model.hpp).
 
