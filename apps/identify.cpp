@@ -1,10 +1,12 @@
 // deepguide identify SCENARIO.yaml [--mode align|around] [-o TRAJ.csv] [--json]
 // deepguide render identification SCENARIO.yaml [--mode align|around] [--width PX] [--title T] -o FIG.png|svg
-// Runs the scenario's identify section (simulation/identification_run.hpp)
-// and prints its statistics and mode switches. Exit 0 when the manoeuvre was
-// done (held, laps_done); 3 when it could not be (a current stronger than the
-// vehicle, the time limit), after printing and writing what there is; 1 for
-// a bad scenario, an unknown mode or an unwritable output; 2 for usage.
+// identify runs the scenario's identify section (simulation/
+// identification_run.hpp) and prints its statistics and mode switches. Exit 0
+// when the manoeuvre was done (held, laps_done); 3 when it could not be (a
+// current stronger than the vehicle, the time limit), after printing and
+// writing what there is; 1 for a bad scenario, an unknown mode or an
+// unwritable output; 2 for usage. render identification draws whatever the
+// run did (exit 0 with the figure, the outcome in its legend), 1 and 2 alike.
 
 #include <cstdio>
 #include <iostream>
@@ -54,7 +56,7 @@ void print_error(const char* what, const ErrorStats& e) {
 void print_summary(const Scenario& sc, const IdentifyResult& r) {
   const IdentifyStats& s = r.stats;
   const bool aligning = r.mode == IdentifyMode::align;
-  std::printf("scenario %s, object %s, mode %s\n", sc.name.c_str(), sc.identify->object_id.c_str(),
+  std::printf("scenario %s, object %s, mode %s\n", printable(sc.name).c_str(), printable(sc.identify->object_id).c_str(),
               std::string(to_string(r.mode)).c_str());
   std::printf("  %-24s %s\n", "end", std::string(to_string(r.end)).c_str());
   if (!s.in_position) {
@@ -62,6 +64,7 @@ void print_summary(const Scenario& sc, const IdentifyResult& r) {
   } else {
     std::printf("  %-24s %.1f s\n", "time to position", s.time_to_position_s);
     std::printf("  %-24s %.1f s\n", aligning ? "held" : "tracked", s.hold_s);
+    if (s.position_lost > 0) std::printf("  %-24s %d times\n", "left position", s.position_lost);
     std::printf("  %-24s %.3f m from the object\n", "requested distance", s.requested_distance_m);
     print_error("distance error", s.distance_error_m);
     if (aligning) print_error("station-keeping error", s.station_keeping_m);

@@ -103,6 +103,9 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
   const double along = d.dot(e), across = d.dot(n);
   cmd.speed_mps = std::clamp(params.position_gain_per_s * along, 0.0, params.max_speed_mps);
   cmd.course = math_angle(-e - (across / params.lookahead_m) * n);
+  // A heading: at a creep the course over ground is the drift's (the tide
+  // slackening), and a course set-point turned the bow with it.
+  cmd.is_heading = true;
   return cmd;
 }
 

@@ -26,9 +26,10 @@
 //                tiny u made the heading weave by +-13 degrees, and holding
 //                the course at -c below |u| = 0.05 m/s lost the sideways
 //                part of u, leaving the vehicle 1.6-2 m off the axis.
-//                In still water: bow to the object, speed k x (distance along
-//                the axis), a line of sight towards the axis; the vehicle has
-//                no astern, so it creeps in and coasts.
+//                In still water: bow to the object (a heading set-point too),
+//                speed k x (distance along the axis), a line of sight towards
+//                the axis; the vehicle has no astern, so it creeps in and
+//                coasts.
 //                k = 1 / (4 T_u) makes the loop critically damped with the
 //                vehicle's 20 s speed lag; twice that oscillates in still water.
 // A current at least as fast as the vehicle: overpowered, full speed into it.

@@ -42,6 +42,7 @@ struct UnitStep {
   double course_rate = 0.0;  // feed-forward for the autopilot (rad/s)
   bool is_heading = false;   // `course` is a heading set-point
   bool on_track = true;      // going around: the course over ground is along the path (header)
+  bool overpowered = false;  // aligning: the unit says the current beats it
   IdentifyPhase phase = IdentifyPhase::evasive;
   double cross_track_m = 0.0, goal_error_m = 0.0, laps = 0.0;
   double requested_m = 0.0;  // the distance to the object's footprint asked for
@@ -148,6 +149,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
            0.0,
            c.is_heading,
            true,
+           c.overpowered,
            c.mode == AlignArea::positioning ? IdentifyPhase::positioning : IdentifyPhase::evasive,
            (p - c.goal).dot(Vec2(-e.y(), e.x())), c.goal_error_m, 0.0, signed_distance(object, c.goal), c.goal};
       return u;
@@ -163,6 +165,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
          c.course_rate,
          false,
          along,
+         false,
          phase,
          c.cross_track_m,
          std::abs(c.cross_track_m),
@@ -176,20 +179,24 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
   result.mode = id.mode;
   if (options.record_trajectory) result.trajectory.reserve(std::min<std::size_t>(max_steps + 1, std::size_t{1} << 20));
   ErrorAccumulator station, cross, distance;
+  const double top_speed = aligning ? id.align.max_speed_mps : sc.vehicle.max_speed_mps;
+  bool holding = false;     // in position now (header): the hold runs
+  double hold_start = 0.0;  // when the current hold began
   double last_course_cmd = 0.0;
   IdentifyPhase last_phase = IdentifyPhase::evasive;
   for (std::size_t k = 0;; ++k) {
     plant.at_step(k);
     const double t = plant.time_s();
     const Vec2 current = plant.current();
-    UnitStep u;
-    const bool overpowered = current.norm() >= sc.vehicle.max_speed_mps;
+    // The unit runs even when the current wins, so that aligning's held point is still known.
+    UnitStep u = unit(current);
+    const bool overpowered = current.norm() >= top_speed || u.overpowered;
     if (overpowered) {
       u.phase = IdentifyPhase::overpowered;
       u.course = math_angle(-current);
-      u.speed_mps = sc.vehicle.max_speed_mps;
-    } else {
-      u = unit(current);
+      u.speed_mps = top_speed;
+      u.course_rate = 0.0;
+      u.is_heading = false;
     }
     const AutopilotOutput ap = plant.steer({u.course, u.speed_mps, sc.depth_m, u.course_rate, u.is_heading});
     const double object_distance = signed_distance(object, state.position);
@@ -221,10 +228,18 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
 
     IdentifyStats& s = result.stats;
     const bool holding_phase = aligning ? u.phase == IdentifyPhase::positioning : u.phase == IdentifyPhase::tracking;
-    if (!s.in_position && holding_phase && u.goal_error_m <= id.position_tolerance_m && u.on_track) {
-      s.in_position = true;
-      s.time_to_position_s = t;
-      s.requested_distance_m = u.requested_m;
+    if (holding && !holding_phase) {  // pushed out of the shade, or off the path: the hold starts again
+      holding = false;
+      ++s.position_lost;
+    }
+    if (!holding && holding_phase && u.goal_error_m <= id.position_tolerance_m && u.on_track) {
+      holding = true;
+      hold_start = t;
+      if (!s.in_position) {
+        s.in_position = true;
+        s.time_to_position_s = t;
+        s.requested_distance_m = u.requested_m;
+      }
     }
     if (s.in_position && !overpowered) {
       if (aligning) station.add(u.goal_error_m);
@@ -236,12 +251,12 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
       char text[160];
       std::snprintf(text, sizeof text,
                     "the current (%.2f m/s) is at least the vehicle's top speed (%.2f m/s) %s: it cannot %s",
-                    current.norm(), sc.vehicle.max_speed_mps, where(t, state.position).c_str(),
+                    current.norm(), top_speed, where(t, state.position).c_str(),
                     aligning ? "hold a position" : "keep to the path");
       result.failure = text;
       break;
     }
-    if (aligning && s.in_position && t - s.time_to_position_s >= id.hold_time_s - 1e-9) {
+    if (aligning && holding && t - hold_start >= id.hold_time_s - 1e-9) {
       result.end = IdentifyEnd::held;
       break;
     }

@@ -7,13 +7,15 @@
 // counts for the clearance.
 //
 // Loop, at t_k = k h (sample k describes the state at t_k):
-//   1. the current at the vehicle; at least the vehicle's top speed ->
-//      end `overpowered` (the unit could only head into it at full speed,
-//      losing ground: a clear failure rather than a spin)
+//   1. the current at the vehicle; at least the top speed (aligning's
+//      max_speed_mps, else the vehicle's) -> end `overpowered` (the unit
+//      could only head into it at full speed, losing ground: a clear failure
+//      rather than a spin)
 //   2. the unit's command (course over ground, speed, mode) -> autopilot
 //   3. record sample k; a mode different from sample k-1's is a ModeSwitch,
 //      logged with the time and the position of sample k
-//   4. stop: aligning has held the position for hold_time_s (`held`); going
+//   4. stop: aligning has held the position for hold_time_s without leaving
+//      the positioning mode (`held`; leaving it restarts the hold); going
 //      around has completed its laps (`laps_done`); t_k >= the time limit
 //      (`time_out`)
 //   5. step the plant
@@ -81,7 +83,10 @@ struct IdentifyStats {
   SimulationStats vehicle;  ///< over the whole run; `reached`: it did what was asked (held, laps_done)
   bool in_position = false;
   double time_to_position_s = 0.0;  ///< valid when in_position
-  double hold_s = 0.0;              ///< time from reaching position to the end
+  double hold_s = 0.0;              ///< time from first reaching position to the end
+  /// Times the vehicle left position after reaching it (out of the shade, or
+  /// back to steering); aligning's hold then starts again.
+  int position_lost = 0;
   ErrorStats station_keeping_m;     ///< aligning only (0 going around)
   ErrorStats cross_track_m;
   ErrorStats distance_error_m;

@@ -485,10 +485,28 @@ void validate_identify(const Scenario& sc, const Fail& fail, const Within& withi
   const std::string object = "object '" + printable(id.object_id) + "'";
   if (!e.center.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6))
     fail("identify.object", "a finite ellipse with 0 < semi-minor <= semi-major <= 1e6 m", object);
+  // The object is one of the obstacles (it counts for the clearance), named by one id only.
+  const auto named = std::count_if(sc.obstacles.begin(), sc.obstacles.end(),
+                                   [&](const EllipticCylinder& o) { return o.id == id.object_id; });
+  if (named != 1) {
+    fail("identify.object", "the id of exactly one of the scenario's obstacles",
+         "'" + printable(id.object_id) + "' naming " + std::to_string(named));
+  }
+  const auto it = std::find_if(sc.obstacles.begin(), sc.obstacles.end(),
+                               [&](const EllipticCylinder& o) { return o.id == id.object_id; });
+  const Ellipse& f = it->footprint;
+  if (f.center != e.center || f.a != e.a || f.b != e.b || f.theta != e.theta)
+    fail("identify.object", "the obstacle's own footprint", "a different ellipse");
   within([&] { validate(id.align); });
   within([&] { validate(id.around); });
-  if (!(id.hold_time_s > 0.0 && id.hold_time_s <= kMaxSimulationTime_s))
-    fail("identify.hold_time_s", "a time > 0 and <= " + number(kMaxSimulationTime_s) + " s", number(id.hold_time_s));
+  // At most half the longest run: the approach needs time too.
+  if (!(id.hold_time_s > 0.0 && id.hold_time_s <= 0.5 * kMaxSimulationTime_s))
+    fail("identify.hold_time_s", "a time > 0 and <= " + number(0.5 * kMaxSimulationTime_s) + " s",
+         number(id.hold_time_s));
+  if (id.mode == IdentifyMode::align && !std::isnan(sc.max_time_s) && !(sc.max_time_s > id.hold_time_s)) {
+    fail("max_time_s", "a time longer than identify.hold_time_s (" + number(id.hold_time_s) + " s)",
+         number(sc.max_time_s));
+  }
   if (!(id.position_tolerance_m > 0.0) || !std::isfinite(id.position_tolerance_m))
     fail("identify.position_tolerance_m", "a distance > 0 m", number(id.position_tolerance_m));
   const double vmax = sc.vehicle.max_speed_mps;
@@ -505,11 +523,16 @@ void validate_identify(const Scenario& sc, const Fail& fail, const Within& withi
   if (e.contains(sc.start)) fail("start", "a start outside the " + object, "inside it");
   if (id.mode == IdentifyMode::around) {
     // Over ground, downstream, the vehicle turns on a circle wider by the
-    // current's speed; the autopilot asks for at most its reference rate.
-    const double radius =
-        (id.around.speed_mps + sc.current.norm()) / sc.vehicle.autopilot.max_reference_turn_rate;
+    // current's speed (a field's fastest anywhere); the autopilot asks for at
+    // most its reference rate.
+    double current = sc.current.norm();
+    if (sc.current_field) {
+      const double fastest = summarize_current(sc.current_field->field()).max_speed_mps;
+      current = std::isfinite(fastest) ? fastest : 0.0;
+    }
+    const double radius = (id.around.speed_mps + current) / sc.vehicle.autopilot.max_reference_turn_rate;
     try {
-      check_offset_path_fits(e, id.around.distance_m, radius, id.object_id);
+      check_offset_path_fits(e, id.around.distance_m, radius, printable(id.object_id));
     } catch (const InputError& error) {
       throw InputError(sc.source + ": field 'identify.around.distance_m': " + error.what());
     }

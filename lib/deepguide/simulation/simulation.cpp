@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "deepguide/core/angles.hpp"
+#include "deepguide/core/error.hpp"
 #include "deepguide/simulation/plant.hpp"
 
 namespace deepguide {
@@ -83,6 +84,15 @@ SimulationStats trajectory_stats(std::span<const TrajectorySample> trajectory, c
 
 SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const SimulationOptions& options) {
   validate(sc);
+  // validate() leaves the target alone when there is an identify section (its
+  // target defaults to the object's centre); a reactive run needs one outside.
+  for (const EllipticCylinder& o : sc.obstacles) {
+    if (o.footprint.contains(sc.target)) {
+      throw input_error({sc.source, "", "target"},
+                        "a target outside every obstacle (an identify scenario runs with deepguide identify)",
+                        "inside obstacle '" + printable(o.id) + "'");
+    }
+  }
   const double h = sc.vehicle.step_s;
   const double max_time = std::isnan(sc.max_time_s) ? default_max_time_s(sc) : sc.max_time_s;
   const auto max_steps = static_cast<std::size_t>(std::ceil(max_time / h - 1e-9));

@@ -140,6 +140,7 @@ nlohmann::ordered_json identification_json(const Scenario& scenario, const Ident
       {"in_position", s.in_position},
       {"time_to_position_s", s.in_position ? nlohmann::ordered_json(s.time_to_position_s) : nullptr},
       {"hold_s", s.hold_s},
+      {"position_lost", s.position_lost},
       {"requested_distance_m", s.requested_distance_m},
       {"distance_error_m", error_json(s.distance_error_m)},
       {"cross_track_m", error_json(s.cross_track_m)},

@@ -51,8 +51,19 @@ AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, c
   }
   const double h = p.step_s;
   const AutopilotTuning& tune = p.autopilot;
+  // The reference starts (and restarts on a switch of mode) where the vehicle
+  // is: its heading in heading mode, its course over ground otherwise, so a
+  // switch does not jump the heading error by the crab angle. A vehicle that
+  // switches while all but stopped (station keeping) has no course to speak
+  // of: the current's drift would set it, so it restarts at the heading.
+  const auto where_it_is = [&] { return setpoint.heading_mode ? vehicle.heading : course_over_ground(vehicle); };
   if (!memory.started) {
-    memory = AutopilotState{true, course_over_ground(vehicle), vehicle.yaw_rate, 0.0};
+    memory = AutopilotState{true, where_it_is(), vehicle.yaw_rate, 0.0, setpoint.heading_mode};
+  } else if (memory.heading_mode != setpoint.heading_mode) {
+    constexpr double kSteerageWay_mps = 0.25;
+    const bool crawling = vehicle.speed_mps < kSteerageWay_mps;
+    memory.course_ref = crawling && !setpoint.heading_mode ? vehicle.heading : where_it_is();
+    memory.heading_mode = setpoint.heading_mode;
   }
 
   // 1. Reference model.
@@ -96,7 +107,8 @@ AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, c
     bool ok_lo = true, ok_hi = true;
     const double lo = crab_heading(memory.course_ref - kDelta, v, current_estimate, ok_lo);
     const double hi = crab_heading(memory.course_ref + kDelta, v, current_estimate, ok_hi);
-    if (ok_lo && ok_hi) k = wrap_pi(hi - lo) / (2.0 * kDelta);
+    // Bounded: near an unreachable course the crab turns without limit.
+    if (ok_lo && ok_hi) k = std::clamp(wrap_pi(hi - lo) / (2.0 * kDelta), 0.0, 3.0);
   }
   const double heading_rate_ref = k * memory.rate_ref;
   const HeadingGains g = heading_gains(p);

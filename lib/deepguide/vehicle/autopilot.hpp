@@ -23,7 +23,7 @@
 //       a_r = w_r^2 ssa(chi_d - chi_r) + 2 w_r (r_d - r_r);  r_r += h a_r (clamped);  chi_r += h r_r
 //     r_d the set-point's own rate (course_rate, 0 unless the guidance knows
 //     it): without it the reference lags a course that turns at r_d by
-//     2 r_d / w_r (43 degrees at 4 deg/s), which on a curved path is metres
+//     2 r_d / w_r (40 degrees at 4 deg/s), which on a curved path is metres
 //     of cross-track error
 //     and a_r clamped so that the feed-forward (T a_r + r_r) / K stays within
 //     0.8 of the rudder limit (a second-order model jumps in acceleration at a
@@ -71,6 +71,7 @@ struct AutopilotState {
   double course_ref = 0.0;  ///< chi_r, math rad
   double rate_ref = 0.0;    ///< r_r, rad/s (ccw positive)
   double integral = 0.0;    ///< int of the heading error (rad s)
+  bool heading_mode = false;  ///< the reference is a heading (AutopilotSetpoint::heading_mode)
 
   bool operator==(const AutopilotState&) const = default;
 };
