@@ -65,6 +65,26 @@ TEST(Aligning, PositioningInACurrentSetsTheHeadingOfTheWaterVelocity) {
   EXPECT_NEAR(c.speed_mps, std::hypot(0.1, 0.8), 1e-12);
 }
 
+TEST(Aligning, AtSlackWaterItWaitsAtTheApproachPoint) {
+  const AlignParams params;
+  AlignMemory memory;
+  // Held in a 0.8 m/s current setting north ...
+  AlignCommand c = align_command(kObject, params, memory, Vec2(0, 200), -kPi / 2, Vec2(0.0, 0.8));
+  c = align_command(kObject, params, memory, c.goal, -kPi / 2, Vec2(0.0, 0.8));
+  ASSERT_EQ(c.mode, AlignArea::positioning);
+  EXPECT_FALSE(c.slack);
+  // ... the tide slackens to 0.15 m/s (under 0.25 x 0.8): the vehicle heads
+  // down the axis, away from the object, for the approach point 50 m on.
+  c = align_command(kObject, params, memory, c.goal, -kPi / 2, Vec2(0.0, 0.15));
+  EXPECT_TRUE(c.slack);
+  EXPECT_NEAR(wrap_pi(c.course - kPi / 2), 0.0, 1e-9);  // north: u = k 50 = 0.625 north, minus c
+  EXPECT_NEAR(c.speed_mps, 0.625 - 0.15, 1e-9);
+  // Never slack without a current first: still water holds the near point.
+  AlignMemory still;
+  c = align_command(kObject, params, still, Vec2(0, 100), -kPi / 2, Vec2(0.0, 0.0));
+  EXPECT_FALSE(c.slack);
+}
+
 TEST(Aligning, ACurrentFasterThanTheVehicleIsReportedNotSpun) {
   AlignParams params;
   AlignMemory memory;

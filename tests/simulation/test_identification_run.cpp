@@ -416,12 +416,15 @@ TEST(IdentificationRun, TheHoldRestartsWhenTheTideTurns) {
   // Held on the new lee side: west of the wreck, bow east into the ebb.
   EXPECT_LT(r.goal.x(), origin.x() - 10.0);
   EXPECT_LT(r.trajectory.back().vehicle.position.x(), origin.x());
-  // No collision, but NOT clear of the standoff: at slack water the vehicle
-  // holds at the near point bow to the wreck, the first of the new current
-  // sets it towards the wreck, and turning away it came within 3.1 m
-  // (docs/IDENTIFICATION.md, "Not done").
-  EXPECT_GT(r.stats.vehicle.min_clearance_m, 2.0);
-  EXPECT_FALSE(r.stats.vehicle.collided);
+  // At slack water it waits at the approach point (slack_fraction), so the
+  // turning tide does not set it onto the wreck: it came within 3.1 m while
+  // it held at the near point. Turning round there to go down the axis it
+  // still comes 0.2 m inside the 10 m standoff (docs/IDENTIFICATION.md).
+  EXPECT_GT(r.stats.vehicle.min_clearance_m, 9.5);
+  double farthest = 0.0;  // it did back off
+  for (const IdentifySample& x : r.trajectory)
+    if (x.vehicle.time_s > 700.0 && x.vehicle.time_s < 1050.0) farthest = std::max(farthest, x.object_distance_m);
+  EXPECT_GT(farthest, 40.0);
   // Positioning -> evasive when the shade moved away, then positioning again.
   int back_to_evasive = 0;
   for (const ModeSwitch& s : r.switches)

@@ -28,6 +28,8 @@ void validate(const AlignParams& p) {
   check(std::isfinite(p.approach_m) && p.approach_m > 0.0, "approach_m", "a distance > 0 m", p.approach_m);
   check(std::isfinite(p.approach_radius_m) && p.approach_radius_m > 0.0, "approach_radius_m", "a distance > 0 m",
         p.approach_radius_m);
+  check(p.slack_fraction >= 0.0 && p.slack_fraction < 1.0, "slack_fraction", "a fraction >= 0 and < 1",
+        p.slack_fraction);
 }
 
 AlignCommand align_command(const Ellipse& object, const AlignParams& params, AlignMemory& memory, const Vec2& p,
@@ -40,6 +42,7 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
   if (!memory.direction) memory.direction = align_direction(current_mps, params.still_mps, object.center, p);
   // A current that turns (the tide) turns the lee side with it.
   if (current_mps.norm() > params.still_mps) memory.direction = current_mps.normalized();
+  memory.strongest = std::max(memory.strongest, current_mps.norm());
   const Vec2 e = *memory.direction;
   AlignCommand cmd;
   cmd.goal = lee_goal_point(safety, e) + params.hold_buffer_m * e;
@@ -82,7 +85,8 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
     cmd.speed_mps = r.speed_mps;
     return cmd;
   }
-  const Vec2 d = p - cmd.goal;
+  cmd.slack = memory.strongest > params.still_mps && current_mps.norm() < params.slack_fraction * memory.strongest;
+  const Vec2 d = p - (cmd.slack ? approach : cmd.goal);
   if (current_mps.norm() > params.still_mps) {
     // In a current: ask for the ground velocity u = -k (p - g) (at most
     // max_approach_mps); the water velocity that makes it good is u - c. Near

@@ -32,6 +32,11 @@
 //                coasts.
 //                k = 1 / (4 T_u) makes the loop critically damped with the
 //                vehicle's 20 s speed lag; twice that oscillates in still water.
+// Slack water (the current below slack_fraction of the strongest seen, which
+// was a current): the positioning mode holds the approach point instead of
+// g. A tide that turns sets the vehicle towards the object as the lee side
+// flips; holding at g, bow to the object, it passed 3.1 m from a wreck in a
+// test (10 m standoff). From the approach point it goes round in evasive mode.
 // A current at least as fast as the vehicle: overpowered, full speed into it.
 
 #include <optional>
@@ -55,6 +60,10 @@ struct AlignParams {
   double hold_buffer_m = 1.0;
   double approach_m = 50.0;          ///< the approach point lies this far down the axis from the goal, > 0
   double approach_radius_m = 10.0;   ///< positioning starts within this of the approach point (or facing upstream), > 0
+  /// Slack water: a current below this fraction of the strongest seen (which
+  /// was above still_mps) is a tide about to turn, and the vehicle waits at
+  /// the approach point instead of the held point. In [0, 1); 0 never backs off.
+  double slack_fraction = 0.25;
 };
 
 /// Throws InputError naming the first bad field.
@@ -65,6 +74,7 @@ struct AlignMemory {
   std::optional<Vec2> direction;  ///< the lee direction, fixed at the first call
   ReactiveMemory reactive;        ///< the evasive mode's side latch
   int switches = 0;               ///< mode changes so far
+  double strongest = 0.0;         ///< the strongest current seen (m/s), for slack water
 };
 
 struct AlignCommand {
@@ -77,6 +87,7 @@ struct AlignCommand {
   /// The current is at least as fast as the vehicle (max_speed_mps): it cannot
   /// hold any point; it heads into the current at full speed and says so.
   bool overpowered = false;
+  bool slack = false;  ///< slack water: waiting at the approach point (slack_fraction)
 };
 
 /// `others`: the other obstacles the evasive mode keeps clear of (the

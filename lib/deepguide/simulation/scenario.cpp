@@ -313,7 +313,7 @@ void read_identify(const Mapping& root, Scenario& sc) {
   if (m.has("align")) {
     const Mapping al(m.value("align"), sc.source, "identify.align.",
                      {"standoff_m", "hold_buffer_m", "approach_m", "approach_radius_m", "position_gain_per_s",
-                      "max_approach_mps", "lookahead_m", "still_mps", "speed_mps"},
+                      "max_approach_mps", "lookahead_m", "still_mps", "speed_mps", "slack_fraction"},
                      "a mapping of aligning keys");
     a.standoff_m = al.number_or("standoff_m", distance, a.standoff_m);
     a.hold_buffer_m = al.number_or("hold_buffer_m", {0.0, 1e4, true, "a distance in metres"}, a.hold_buffer_m);
@@ -325,6 +325,7 @@ void read_identify(const Mapping& root, Scenario& sc) {
     a.lookahead_m = al.number_or("lookahead_m", distance, a.lookahead_m);
     a.still_mps = al.number_or("still_mps", {0.0, 20.0, true, "a speed in m/s"}, a.still_mps);
     a.speed_mps = al.number_or("speed_mps", speed, a.speed_mps);
+    a.slack_fraction = al.number_or("slack_fraction", {0.0, 0.99, true, "a fraction"}, a.slack_fraction);
   }
   AroundParams& r = spec.around;
   r.speed_mps = sc.reactive.speed_mps;

@@ -51,7 +51,8 @@
 //                          below; data/scenarios/align_in_current.yaml): {object (an obstacle's
 //                          id), mode (align | around), hold_time_s, position_tolerance_m,
 //                          align: {standoff_m, hold_buffer_m, approach_m, approach_radius_m,
-//                          position_gain_per_s, max_approach_mps, lookahead_m, still_mps, speed_mps},
+//                          position_gain_per_s, max_approach_mps, lookahead_m, still_mps, speed_mps,
+//                          slack_fraction},
 //                          around: {distance_m, side (port | starboard: where the object is),
 //                          laps, lookahead_m, switch_m, speed_mps}}. With it, target is optional
 //                          (the object's centre when left out; the identify run does not use it).
