@@ -86,6 +86,7 @@
 #include "deepguide/identification/going_around.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
+#include "deepguide/vehicle/energy_model.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
@@ -100,15 +101,6 @@ class CurrentSampler;
 inline constexpr double kMaxSimulationTime_s = 2.0e5;
 /// What counts as progress towards the target for no_progress_s (m).
 inline constexpr double kProgress_m = 1.0;
-
-/// Energy E = integral of (P_hotel + k v^3) dt, v the speed through the water
-/// (notes/algorithms.md §6.2). Defaults: k = 60 W/(m/s)^3 and P_hotel = 1050 W,
-/// which makes v* = (P_hotel / 2k)^(1/3) = 2.06 m/s, DeepC's cruise, the
-/// energy-optimal speed. Assumed values, to calibrate.
-struct EnergyModel {
-  double hotel_power_w = 1050.0;
-  double propulsion_k_w_per_mps3 = 60.0;
-};
 
 enum class IdentifyMode { align, around };
 std::string_view to_string(IdentifyMode mode);

@@ -37,9 +37,7 @@ StatsOptions stats_options(const Scenario& sc) {
 }
 
 void StatsAccumulator::add(const TrajectorySample& x) {
-  const auto power = [this](double v) {
-    return options_.energy.hotel_power_w + options_.energy.propulsion_k_w_per_mps3 * v * v * v;
-  };
+  const auto power = [this](double v) { return options_.energy.power_w(v); };
   if (!started_) {
     started_ = true;
     first_ = x;

@@ -82,7 +82,7 @@ struct SimulationStats {
   bool collided = false;  ///< the vehicle's position was ever inside a true obstacle
   double time_s = 0.0;
   double path_length_m = 0.0;                         ///< over ground
-  double energy_j = 0.0;                              ///< EnergyModel (scenario.hpp)
+  double energy_j = 0.0;                              ///< EnergyModel (vehicle/energy_model.hpp)
   double min_clearance_m = 0.0;                       ///< to the true obstacle footprints; +inf without obstacles
   double max_abs_rate_ref = 0.0, rms_rate_ref = 0.0;  ///< rad/s
   double max_abs_rate = 0.0, rms_rate = 0.0;          ///< rad/s

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "deepguide/core/error.hpp"
 
@@ -19,25 +20,30 @@ HeadingGains heading_gains(const VehicleParams& p) {
   return {kp, 2.0 * p.autopilot.damping_ratio * wn * m - d, kp * wn / 10.0};
 }
 
-double crab_heading(double course, double speed_mps, const Vec2& current, bool& reachable) {
-  const Vec2 d = unit_vector(course);
+std::optional<double> ground_speed_along(const Vec2& d, const Vec2& current, double speed_mps) {
   const double along = d.dot(current);
   const double cross = d.x() * current.y() - d.y() * current.x();
   const double v = speed_mps;
+  if (v * v < cross * cross || v <= 0.0) return std::nullopt;
+  const double s = along + std::sqrt(v * v - cross * cross);
+  if (s <= 0.0) return std::nullopt;
+  return s;
+}
+
+double crab_heading(double course, double speed_mps, const Vec2& current, bool& reachable) {
+  const Vec2 d = unit_vector(course);
   reachable = true;
-  if (v * v < cross * cross || v <= 0.0) {
+  if (const auto s = ground_speed_along(d, current, speed_mps)) return math_angle(*s * d - current);
+  reachable = false;
+  const double cross = d.x() * current.y() - d.y() * current.x();
+  if (speed_mps * speed_mps < cross * cross || speed_mps <= 0.0) {
     // No heading cancels the cross-current: push against it as hard as possible.
     reachable = current.norm() == 0.0;
-    const Vec2 perp = current - along * d;
+    const Vec2 perp = current - d.dot(current) * d;
     return perp.norm() > 0.0 ? math_angle(-perp) : course;
   }
-  const double s = along + std::sqrt(v * v - cross * cross);
-  if (s <= 0.0) {
-    // The head current wins: facing the course loses the least ground.
-    reachable = false;
-    return course;
-  }
-  return math_angle(s * d - current);
+  // The head current wins: facing the course loses the least ground.
+  return course;
 }
 
 AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, const VehicleState& vehicle,

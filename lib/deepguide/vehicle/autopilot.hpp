@@ -46,6 +46,8 @@
 // Speed and depth: the set-points are clamped to [0, max] and passed to the
 // vehicle's first-order speed and depth loops (vehicle_model.hpp).
 
+#include <optional>
+
 #include "deepguide/vehicle/vehicle_model.hpp"
 
 namespace deepguide {
@@ -92,6 +94,11 @@ struct HeadingGains {
   double kp, kd, ki;
 };
 HeadingGains heading_gains(const VehicleParams& params);
+
+/// Ground speed along the unit direction `d` at `speed_mps` through the water
+/// in `current` (notes §6.1): s = d.c + sqrt(v^2 - (d x c)^2); nullopt when no
+/// heading holds the line (v < |d x c|) or the current wins (s <= 0).
+std::optional<double> ground_speed_along(const Vec2& d, const Vec2& current, double speed_mps);
 
 /// Heading (math rad) that makes good the course `course` (math rad) at speed
 /// through water `speed_mps` in `current`; sets `reachable` false and returns the
