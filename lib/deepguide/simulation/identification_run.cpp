@@ -144,14 +144,15 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
       const AlignCommand c =
           align_command(object, id.align, align_memory, p, course_over_ground(state), current, others);
       const Vec2 e = *align_memory.direction;
-      u = {c.course,
-           c.speed_mps,
-           0.0,
-           c.is_heading,
-           true,
-           c.overpowered,
-           c.mode == AlignArea::positioning ? IdentifyPhase::positioning : IdentifyPhase::evasive,
-           (p - c.goal).dot(Vec2(-e.y(), e.x())), c.goal_error_m, 0.0, signed_distance(object, c.goal), c.goal};
+      u = {.course = c.course,
+           .speed_mps = c.speed_mps,
+           .is_heading = c.is_heading,
+           .overpowered = c.overpowered,
+           .phase = c.mode == AlignArea::positioning ? IdentifyPhase::positioning : IdentifyPhase::evasive,
+           .cross_track_m = (p - c.goal).dot(Vec2(-e.y(), e.x())),
+           .goal_error_m = c.goal_error_m,
+           .requested_m = signed_distance(object, c.goal),
+           .goal = c.goal};
       return u;
     }
     const Vec2 ground = state.speed_mps * Vec2(std::cos(state.heading), std::sin(state.heading)) + current;
@@ -160,18 +161,15 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
                                 : c.mode == AroundMode::tracking ? IdentifyPhase::tracking
                                                                  : IdentifyPhase::done;
     const bool along = std::abs(wrap_pi(math_angle(ground) - c.path_course)) <= kAlongPath;
-    u = {c.course,
-         c.speed_mps,
-         c.course_rate,
-         false,
-         along,
-         false,
-         phase,
-         c.cross_track_m,
-         std::abs(c.cross_track_m),
-         around_memory.laps_done(),
-         id.around.distance_m,
-         Vec2(0.0, 0.0)};
+    u = {.course = c.course,
+         .speed_mps = c.speed_mps,
+         .course_rate = c.course_rate,
+         .on_track = along,
+         .phase = phase,
+         .cross_track_m = c.cross_track_m,
+         .goal_error_m = std::abs(c.cross_track_m),
+         .laps = around_memory.laps_done(),
+         .requested_m = id.around.distance_m};
     return u;
   };
 
