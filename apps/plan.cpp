@@ -1,4 +1,5 @@
-// deepguide plan --obstacles FILE... --from X,Y --to X,Y [...] -o ROUTE.geojson [--json]
+// deepguide plan --obstacles FILE... --from X,Y --to X,Y [--cost length|time|energy]
+//                [--current FILE | --current-const SPEED,DIR] [...] -o ROUTE.geojson [--json]
 
 #include <cmath>
 #include <cstdio>
@@ -8,11 +9,14 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_scene.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
+#include "deepguide/vehicle/vehicle_params.hpp"
+#include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
@@ -33,7 +37,60 @@ struct PlanOptions {
   std::string render;         ///< --render: chart to draw (.png or .svg)
   bool render_graph = false;  ///< --render-graph: draw the zone polygons and the graph too
   bool escape = false;
+  std::string cost = "length";
+  std::string current_file;
+  std::string current_const;
+  std::string vehicle;
+  std::string speed = "cruise";
+  std::string depart;
 };
+
+// The cost model the options ask for: the vehicle's speeds and energy, the
+// current bound to the frame over the start-goal box, the departure time.
+CostModel cost_model_of(const PlanOptions& o, const LocalFrame& frame, const PlanningProblem& problem) {
+  const VehicleParams vehicle = o.vehicle.empty() ? VehicleParams{} : read_vehicle_file(o.vehicle);
+  CostModel m;
+  m.kind = parse_cost_kind(o.cost);
+  m.leg.energy = vehicle.energy;
+  m.min_speed_mps = vehicle.min_speed_mps;
+  m.max_speed_mps = vehicle.max_speed_mps;
+  m.speed_mps = vehicle.cruise_speed_mps;
+  if (o.speed == "optimal") {
+    m.economical = true;
+  } else if (o.speed != "cruise") {
+    try {
+      std::size_t used = 0;
+      m.speed_mps = std::stod(o.speed, &used);
+      if (used != o.speed.size()) throw std::invalid_argument("trailing text");
+    } catch (const std::exception&) {
+      throw InputError("--speed: expected cruise, optimal or a speed in m/s, got '" + o.speed + "'");
+    }
+  }
+  std::shared_ptr<const CurrentField> field;
+  if (!o.current_file.empty()) {
+    CurrentOptions copts;
+    if (!std::isnan(o.depth)) copts.depth_m = o.depth;
+    if (!o.frame.src_crs.empty()) copts.assumed_crs = o.frame.src_crs;
+    field = std::make_shared<const CurrentField>(load_current_field(o.current_file, copts));
+  } else if (!o.current_const.empty()) {
+    field = std::make_shared<const CurrentField>(parse_constant_current(o.current_const, "--current-const"));
+  }
+  if (field) {
+    const Vec2 lo = problem.start.cwiseMin(problem.goal), hi = problem.start.cwiseMax(problem.goal);
+    attach_current(m, field, frame, lo, hi);
+  }
+  if (!o.depart.empty()) m.depart_s = parse_utc(o.depart, "--depart");
+  else if (!m.steady) m.depart_s = m.time_first_s;  // the start of the forecast
+  validate(m);
+  return m;
+}
+
+std::string hms(double seconds) {
+  const auto s = static_cast<long long>(std::llround(seconds));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%lld:%02lld:%02lld", s / 3600, (s / 60) % 60, s % 60);
+  return buf;
+}
 
 }  // namespace
 
@@ -65,6 +122,19 @@ void register_plan(CLI::App& app) {
   cmd->add_flag("--escape", o->escape, "A start inside a safety zone first leaves it the shortest way");
   cmd->add_option("--render", o->render, "Also draw the route chart (obstacles, zones, route) as .png or .svg");
   cmd->add_flag("--render-graph", o->render_graph, "With --render: draw the zone polygons and the planning graph");
+  cmd->add_option("--cost", o->cost, "What the route minimises: length, time or energy (in the current)")
+      ->capture_default_str();
+  auto* current = cmd->add_option("--current", o->current_file,
+                                  "Sea-current field (NetCDF u/v, possibly with a time axis; or a two-band raster)");
+  cmd->add_option("--current-const", o->current_const,
+                  "A uniform current SPEED_MPS,DIR_DEG (direction it sets towards, clockwise from north)")
+      ->excludes(current);
+  cmd->add_option("--vehicle", o->vehicle, "Vehicle file (speeds, energy model; data/vehicles/deepc.yaml)");
+  cmd->add_option("--speed", o->speed,
+                  "Speed through the water: cruise (the vehicle's), optimal (least energy per leg), or m/s")
+      ->capture_default_str();
+  cmd->add_option("--depart", o->depart,
+                  "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
   cmd->callback([o] {
     PlannerOptions options;
     options.margin = o->margin;
@@ -108,12 +178,21 @@ void register_plan(CLI::App& app) {
       obstacles.polygons.insert(obstacles.polygons.end(), charted.obstacles.polygons.begin(),
                                 charted.obstacles.polygons.end());
     }
+    const auto model = std::make_shared<const CostModel>(cost_model_of(*o, frame, problem));
+    if (model->kind != CostKind::length) options.cost = model;
     // One query: the graph only over the obstacles that can matter (single_query.hpp).
     const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);
     const PlanOutcome& out = plan.outcome;
     if (!out.result.found) throw NoRouteError(out.result.message);
     if (!out.check.safe) {
       throw std::runtime_error("the planned route failed the independent check: " + out.check.describe());
+    }
+    // Time and energy of the route as planned, leg by leg (also for a length route).
+    const RoutePricing priced = price_route(*model, out.result.route.points);
+    const bool timed = !model->steady || !o->depart.empty();
+    if (!priced.feasible) {
+      std::fprintf(stderr, "warning: the current beats the vehicle on part of this %s route; plan with --cost time "
+                   "or energy to avoid it\n", o->cost.c_str());
     }
     nlohmann::json summary = {
         {"length_m", out.result.route.length()},
@@ -132,6 +211,20 @@ void register_plan(CLI::App& app) {
         {"rounds", plan.rounds},
         {"passed_over", passed_over},
         {"crs", frame.id()}};
+    summary["cost"] = o->cost;
+    summary["speed"] = o->speed;
+    summary["feasible"] = priced.feasible;
+    summary["time_s"] = priced.feasible ? nlohmann::json(priced.time_s) : nlohmann::json();
+    summary["energy_j"] = priced.feasible ? nlohmann::json(priced.energy_j) : nlohmann::json();
+    if (model->current) {
+      summary["max_current_mps"] = model->max_current_mps;
+      summary["unknown_current_m"] = priced.unknown_current_m;
+      summary["current"] = !o->current_file.empty() ? o->current_file : "--current-const " + o->current_const;
+    }
+    if (timed) {
+      summary["depart"] = format_utc(model->depart_s);
+      if (priced.feasible) summary["arrive"] = format_utc(model->depart_s + priced.time_s);
+    }
     if (!out.escaped_from.empty()) summary["escaped_from"] = out.escaped_from;
     if (!out.result.legs.empty()) {
       summary["exact_length_m"] = out.result.exact_length_m;
@@ -140,7 +233,30 @@ void register_plan(CLI::App& app) {
       summary["arcs"] = arcs;
       summary["lines"] = out.result.legs.size() - arcs;
     }
-    if (!o->output.empty()) write_route_geojson(o->output, out.result.route, frame, summary);
+    // Per waypoint: the speed of the leg it starts, and time and energy so far.
+    std::vector<nlohmann::json> waypoints(out.result.route.points.size(), nlohmann::json::object());
+    nlohmann::json legs = nlohmann::json::array();
+    double cum_time = 0.0, cum_energy = 0.0;
+    for (std::size_t i = 0; i < priced.legs.size(); ++i) {
+      const PricedLeg& leg = priced.legs[i];
+      waypoints[i]["speed_mps"] = leg.cost.speed_mps;
+      nlohmann::json row = {{"leg", i + 1},
+                            {"length_m", leg.cost.length_m},
+                            {"speed_mps", leg.cost.speed_mps},
+                            {"feasible", leg.cost.feasible}};
+      if (leg.cost.feasible) row["time_s"] = leg.cost.time_s, row["energy_j"] = leg.cost.energy_j;
+      if (timed && leg.cost.feasible) row["arrive"] = format_utc(leg.arrive_s);
+      legs.push_back(row);
+    }
+    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+      if (i > 0) cum_time += priced.legs[i - 1].cost.time_s, cum_energy += priced.legs[i - 1].cost.energy_j;
+      if (!priced.feasible) continue;
+      waypoints[i]["cum_time_s"] = cum_time;
+      waypoints[i]["cum_energy_j"] = cum_energy;
+      if (timed) waypoints[i]["eta"] = format_utc(model->depart_s + cum_time);
+    }
+    if (!o->output.empty()) write_route_geojson(o->output, out.result.route, frame, summary, waypoints);
+    summary["legs"] = legs;
     if (!o->render.empty()) {
       RouteScene scene;
       scene.obstacles = &obstacles;
@@ -171,6 +287,29 @@ void register_plan(CLI::App& app) {
                 out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);
     std::printf("time             build %.2f ms, query %.2f ms (%d round%s)\n", plan.build_ms, plan.query_ms, plan.rounds,
                 plan.rounds == 1 ? "" : "s");
+    if (priced.feasible) {
+      std::printf("time, energy     %.1f s (%s), %.1f kJ at %s speed\n", priced.time_s, hms(priced.time_s).c_str(), priced.energy_j / 1e3, o->speed.c_str());
+      if (timed) {
+        std::printf("depart, arrive   %s, %s\n", format_utc(model->depart_s).c_str(),
+                    format_utc(model->depart_s + priced.time_s).c_str());
+      }
+    }
+    if (model->current && priced.unknown_current_m > 0.0) {
+      std::printf("current unknown  over %.0f m of the route (taken as still water)\n", priced.unknown_current_m);
+    }
+    if (model->current || model->economical) {
+      std::printf("%4s %10s %9s %9s %10s%s\n", "leg", "length m", "speed m/s", "time s", "energy kJ",
+                  timed ? "  arrive" : "");
+      for (const PricedLeg& leg : priced.legs) {
+        const std::size_t k = static_cast<std::size_t>(&leg - priced.legs.data()) + 1;
+        if (!leg.cost.feasible) {
+          std::printf("%4zu %10.1f %9.2f  the current beats the vehicle\n", k, leg.cost.length_m, leg.cost.speed_mps);
+          continue;
+        }
+        std::printf("%4zu %10.1f %9.2f %9.1f %10.1f%s%s\n", k, leg.cost.length_m, leg.cost.speed_mps, leg.cost.time_s,
+                    leg.cost.energy_j / 1e3, timed ? "  " : "", timed ? format_utc(leg.arrive_s).c_str() : "");
+      }
+    }
     if (passed_over > 0) std::printf("passed over      %zu obstacle(s) deeper than the depth band\n", passed_over);
     if (!o->output.empty()) std::printf("wrote            %s\n", o->output.c_str());
     if (!o->render.empty()) std::printf("rendered         %s\n", o->render.c_str());

@@ -99,7 +99,7 @@ void register_render_route(CLI::App& render) {
                       : o->title;
     std::optional<Planner> planner;
     if (graph) {
-      planner.emplace(loaded.obstacles, PlannerOptions{o->margin, o->tolerance, *graph, SearchAlgorithm::astar});
+      planner.emplace(loaded.obstacles, PlannerOptions{.margin = o->margin, .tolerance = o->tolerance, .graph = *graph});
       scene.zone_polygons = &planner->zone_polygons();
       scene.graph_edges = planner->graph_edges();
     }

@@ -197,7 +197,7 @@ CaseResult measure(const Scenario& sc, GraphKind kind, double tolerance) {
   try {
     const double c0 = cpu_ms();
     const auto t0 = Clock::now();
-    Planner planner(sc.obstacles, PlannerOptions{kMargin, tolerance, kind, SearchAlgorithm::astar});
+    Planner planner(sc.obstacles, PlannerOptions{.margin = kMargin, .tolerance = tolerance, .graph = kind});
     r.ctor_ms = ms_since(t0);
     const auto t1 = Clock::now();
     const PlanOutcome out = planner.solve(PlanningProblem{sc.start, sc.goal});
@@ -225,7 +225,7 @@ CaseResult measure(const Scenario& sc, GraphKind kind, double tolerance) {
     const double c0 = cpu_ms();
     const auto t0 = Clock::now();
     const SingleQueryPlan one = plan_single_query(sc.obstacles, PlanningProblem{sc.start, sc.goal},
-                                                  PlannerOptions{kMargin, tolerance, kind, SearchAlgorithm::astar});
+                                                  PlannerOptions{.margin = kMargin, .tolerance = tolerance, .graph = kind});
     r.single_ms = ms_since(t0);
     r.single_cpu_ms = cpu_ms() - c0;
     r.single_ok = true;
@@ -587,7 +587,7 @@ int main(int argc, char** argv) {
       }
       std::fprintf(stderr, "[%6.1f s] prebuilt N=%d %s: %d queries ...\n", ms_since(run_t0) / 1000.0, qn,
                    kind_name(kind), opt.queries);
-      Planner planner(sc.obstacles, PlannerOptions{kMargin, kTolerance, kind, SearchAlgorithm::astar});
+      Planner planner(sc.obstacles, PlannerOptions{.margin = kMargin, .tolerance = kTolerance, .graph = kind});
       std::vector<double> q, s, c;
       int found = 0;
       double build = 0;

@@ -256,6 +256,20 @@ TEST(VehicleFile, OutOfRangeValues) {
                {"line 2", "autopilot.max_reference_turn_rate_deg_s", "6 deg/s"});
 }
 
+TEST(VehicleFile, EnergyKeysAndMinimumSpeed) {
+  const VehicleParams p =
+      parse_vehicle_yaml("hotel_power_w: 800\npropulsion_k_w_per_mps3: 45.5\nmin_speed_kn: 2\n", "e.yaml");
+  EXPECT_EQ(p.energy.hotel_power_w, 800.0);
+  EXPECT_EQ(p.energy.propulsion_k_w_per_mps3, 45.5);
+  EXPECT_NEAR(p.min_speed_mps, 2 * 1852.0 / 3600.0, 1e-15);
+  EXPECT_EQ(parse_vehicle_yaml(vehicle_yaml(p), "again"), p);
+  // Negative or zero power coefficients are refused, naming line and key.
+  expect_error(error_of("name: x\nhotel_power_w: -10\n"), {"v.yaml", "line 2", "hotel_power_w", "> 0", "got -10"});
+  expect_error(error_of("propulsion_k_w_per_mps3: -60\n"), {"line 1", "propulsion_k_w_per_mps3", "> 0", "got -60"});
+  expect_error(error_of("propulsion_k_w_per_mps3: 0\n"), {"line 1", "propulsion_k_w_per_mps3", "> 0"});
+  expect_error(error_of("min_speed_kn: 5\n"), {"line 1", "min_speed_kn", "<= cruise_speed_mps", "got 5"});
+}
+
 TEST(VehicleFile, CruiseAboveMaxSpeed) {
   expect_error(error_of("max_speed_kn: 6\n# faster than max\ncruise_speed_kn: 7\n"),
                {"v.yaml", "line 3", "cruise_speed_kn", "<= max_speed_kn (6)", "got 7"});

@@ -100,6 +100,38 @@ LegCost leg_cost_economical(const Vec2& a, const Vec2& b, double min_speed_mps, 
   return out;
 }
 
+LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s,
+                         const CurrentAtTime& current, const LegOptions& options) {
+  check_speed(speed_mps, "speed");
+  if (!std::isfinite(depart_s)) throw InputError("leg cost: expected a finite departure time");
+  // The pieces' geometry, without currents (they depend on when the vehicle gets there).
+  const Pieces p = cut(a, b, [](const Vec2&) { return Vec2(0.0, 0.0); }, options);
+  LegCost out;
+  out.length_m = p.length;
+  out.speed_mps = speed_mps;
+  out.time_s = kInf;
+  out.energy_j = kInf;
+  const auto ground_speed = [&](const Vec2& x, double t) -> std::optional<double> {
+    const std::optional<Vec2> c = current(x, t);
+    if (!c) return std::nullopt;
+    if (!c->allFinite()) throw InputError("leg cost: the current: expected finite values along the leg");
+    return ground_speed_along(p.d, *c, speed_mps);
+  };
+  double t = depart_s;
+  for (std::size_t k = 0; k < p.currents.size(); ++k) {
+    const Vec2 x = a + (static_cast<double>(k) + 0.5) * p.piece * p.d;
+    const std::optional<double> s0 = ground_speed(x, t);
+    if (!s0) return out;
+    const std::optional<double> s = ground_speed(x, t + 0.5 * p.piece / *s0);
+    if (!s) return out;
+    t += p.piece / *s;
+  }
+  out.feasible = true;
+  out.time_s = t - depart_s;
+  out.energy_j = options.energy.power_w(speed_mps) * out.time_s;
+  return out;
+}
+
 double time_lower_bound(double distance_m, double speed_mps, double max_current_mps) {
   return distance_m / (speed_mps + max_current_mps);
 }

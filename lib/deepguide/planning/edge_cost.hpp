@@ -64,6 +64,19 @@ LegCost leg_cost(const Vec2& a, const Vec2& b, double speed_mps, const CurrentAt
 LegCost leg_cost_economical(const Vec2& a, const Vec2& b, double min_speed_mps, double max_speed_mps,
                             const CurrentAt& current, const LegOptions& options = {});
 
+/// A current that changes in time: the velocity (m/s, local frame) at a point
+/// and a time (seconds since the Unix epoch); std::nullopt where the field has
+/// no value (the caller's adapter decides what that means, see cost_model.hpp).
+using CurrentAtTime = std::function<std::optional<Vec2>(const Vec2&, double)>;
+
+/// The leg a -> b at `speed_mps` leaving at `depart_s` in a current that
+/// changes in time. The time is marched piece by piece (notes §6.1):
+/// t_{k+1} = t_k + dl / s(x_k, t_k + dl / (2 s(x_k, t_k))), the current taken
+/// at the piece's middle in space and (by one predictor step) in time. A piece
+/// where the current has no value is infeasible.
+LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s,
+                         const CurrentAtTime& current, const LegOptions& options = {});
+
 /// Lower bound of the time over `distance_m` at `speed_mps` with currents up to `max_current_mps`.
 double time_lower_bound(double distance_m, double speed_mps, double max_current_mps);
 

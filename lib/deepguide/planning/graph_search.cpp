@@ -2,8 +2,11 @@
 
 #include <boost/graph/astar_search.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/function_property_map.hpp>
 #include <algorithm>
 #include <limits>
+#include <unordered_map>
+#include <utility>
 
 namespace deepguide {
 namespace {
@@ -34,29 +37,62 @@ struct Heuristic : public boost::astar_heuristic<PlanningGraph, double> {
 
 }  // namespace
 
-SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
-                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic) {
-  const std::size_t n = boost::num_vertices(graph);
-  std::vector<GraphVertex> pred(n);
-  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-  SearchResult result;
+namespace {
+
+template <class WeightMap>
+void run_search(const PlanningGraph& graph, GraphVertex source, GraphVertex target, SearchAlgorithm algorithm,
+                const std::function<double(GraphVertex)>& heuristic, WeightMap weight, std::vector<GraphVertex>& pred,
+                std::vector<double>& dist, std::size_t& expanded) {
   try {
     if (algorithm == SearchAlgorithm::astar) {
-      std::vector<double> rank(n, std::numeric_limits<double>::infinity());
+      std::vector<double> rank(dist.size(), std::numeric_limits<double>::infinity());
       Heuristic h;
       h.h = &heuristic;
       boost::astar_search(graph, source, h,
                           boost::predecessor_map(pred.data())
                               .distance_map(dist.data())
                               .rank_map(rank.data())
-                              .visitor(StopAtTarget<boost::default_astar_visitor>(target, result.expanded)));
+                              .weight_map(weight)
+                              .visitor(StopAtTarget<boost::default_astar_visitor>(target, expanded)));
     } else {
       boost::dijkstra_shortest_paths(graph, source,
                                      boost::predecessor_map(pred.data())
                                          .distance_map(dist.data())
-                                         .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, result.expanded)));
+                                         .weight_map(weight)
+                                         .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, expanded)));
     }
   } catch (const TargetReached&) {
+  }
+}
+
+}  // namespace
+
+SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
+                           const EdgeCostFn& edge_cost) {
+  const std::size_t n = boost::num_vertices(graph);
+  std::vector<GraphVertex> pred(n);
+  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  SearchResult result;
+  if (!edge_cost) {
+    run_search(graph, source, target, algorithm, heuristic, boost::get(boost::edge_weight, graph), pred, dist,
+               result.expanded);
+  } else {
+    // Boost reads an edge's weight several times (the negative-weight check,
+    // then the relaxation); a priced edge is kept with the label it was priced at.
+    using Edge = boost::graph_traits<PlanningGraph>::edge_descriptor;
+    std::unordered_map<const void*, std::pair<double, double>> priced;
+    const auto weight = [&](const Edge& e) {
+      const GraphVertex u = boost::source(e, graph);
+      const double label = dist[u];
+      auto [it, fresh] = priced.try_emplace(e.get_property(), label, 0.0);
+      if (fresh || it->second.first != label) {
+        it->second = {label, edge_cost(u, boost::target(e, graph), label)};
+      }
+      return it->second.second;
+    };
+    run_search(graph, source, target, algorithm, heuristic, boost::make_function_property_map<Edge, double>(weight),
+               pred, dist, result.expanded);
   }
   // Boost initialises distances to numeric_limits::max() as its infinity.
   if (!(dist[target] < std::numeric_limits<double>::max())) return result;

@@ -27,10 +27,20 @@ struct SearchResult {
   std::size_t expanded = 0;  ///< vertices examined (popped from the queue)
 };
 
+/// The cost of the directed edge from -> to for a search that reached `from`
+/// with cost `label_from` (so a cost may depend on when the vehicle leaves:
+/// time-dependent currents); +inf makes the edge unusable.
+using EdgeCostFn = std::function<double(GraphVertex from, GraphVertex to, double label_from)>;
+
 /// Cheapest path from source to target. `heuristic(v)` must be admissible and
 /// consistent for A* (it is ignored by Dijkstra). Both stop once the target is
-/// examined, so the cost is exact for both.
+/// examined, so the cost is exact for both. Edge costs are the graph's weights,
+/// or `edge_cost` when given: it is called lazily, once per edge the search
+/// looks at (the search asks more than once; answers are kept). The label of
+/// a vertex is final when its edges are looked at, so a time-dependent cost is
+/// exact when leaving later never arrives earlier (FIFO, notes §6.3).
 SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
-                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic);
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
+                           const EdgeCostFn& edge_cost = {});
 
 }  // namespace deepguide

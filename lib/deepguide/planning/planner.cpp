@@ -55,6 +55,13 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
     throw InputError("--tolerance: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
   }
+  const bool weighed = options.cost != nullptr && options.cost->kind != CostKind::length;
+  if (weighed) validate(*options.cost);
+  if (weighed && options.graph == GraphKind::tangent) {
+    throw InputError("--cost " + to_string(options.cost->kind) +
+                     ": expected --graph visibility or visibility-full (the tangent graph's arcs are priced by "
+                     "length only)");
+  }
   impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr});
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
   if (options.graph == GraphKind::tangent) {
@@ -171,7 +178,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     const bool goal_in_band = graph.strictly_inside(problem.goal);
     if (start_in_band) banded.start = graph.closest_boundary_point(problem.start);
     if (goal_in_band) banded.goal = graph.closest_boundary_point(problem.goal);
-    out.result = graph.solve(banded, options_.search);
+    out.result = graph.solve(banded, options_.search, options_.cost.get());
     if (out.result.found) {
       auto& pts = out.result.route.points;
       if (start_in_band) pts.insert(pts.begin(), problem.start);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
@@ -30,6 +31,10 @@ struct PlannerOptions {
   double tolerance = 0.5;
   GraphKind graph = GraphKind::visibility;
   SearchAlgorithm search = SearchAlgorithm::astar;
+  /// What the search minimises; null (or kind length) = the length. Time and
+  /// energy need a visibility graph (the tangent graph's arcs are priced by
+  /// length only).
+  std::shared_ptr<const CostModel> cost = nullptr;
 };
 
 /// Parses "visibility", "visibility-full", "tangent" / "astar", "dijkstra"; InputError otherwise.

@@ -37,7 +37,7 @@ OGRFieldType field_type(const nlohmann::json& v) {
 }  // namespace
 
 void write_route_geojson(const std::string& path, const Route& route, const LocalFrame& frame,
-                         const nlohmann::json& properties) {
+                         const nlohmann::json& properties, const std::vector<nlohmann::json>& waypoint_properties) {
   gdal::ensure_registered();
   AtomicOutput out(path);
   gdal::QuietErrors quiet;
@@ -55,6 +55,9 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
     // One schema for both feature kinds: `kind` tells the line from the waypoints.
     nlohmann::json fields = {{"kind", ""}, {"index", 0}, {"cum_length_m", 0.0}};
     for (const auto& [key, value] : properties.items()) fields[key] = value;
+    for (const nlohmann::json& w : waypoint_properties) {
+      for (const auto& [key, value] : w.items()) fields.emplace(key, value);
+    }
     for (const auto& [key, value] : fields.items()) {
       OGRFieldDefn fd(key.c_str(), field_type(value));
       if (layer->CreateField(&fd) != OGRERR_NONE) fail(path, "create field " + key);
@@ -82,6 +85,9 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
       f.SetField("kind", "waypoint");
       f.SetField("index", static_cast<GIntBig>(i));
       f.SetField("cum_length_m", cum);
+      if (i < waypoint_properties.size()) {
+        for (const auto& [key, value] : waypoint_properties[i].items()) set_json_field(f, key, value);
+      }
       OGRPoint pt(lonlat[i].x(), lonlat[i].y());
       f.SetGeometry(&pt);
       if (layer->CreateFeature(&f) != OGRERR_NONE) fail(path, "write waypoint " + std::to_string(i));

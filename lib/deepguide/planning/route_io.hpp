@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/local_frame.hpp"
@@ -13,9 +14,11 @@
 namespace deepguide {
 
 /// Writes the route as GeoJSON; `properties` go onto the line feature
-/// (summary values such as length_m, min_clearance_m). Atomic.
+/// (summary values such as length_m, min_clearance_m), `waypoint_properties[i]`
+/// (when given) onto waypoint i (speed, ETA, cost so far). Atomic.
 void write_route_geojson(const std::string& path, const Route& route, const LocalFrame& frame,
-                         const nlohmann::json& properties = nlohmann::json::object());
+                         const nlohmann::json& properties = nlohmann::json::object(),
+                         const std::vector<nlohmann::json>& waypoint_properties = {});
 
 /// Reads the first LineString of the file (layers in order) into the local
 /// frame. Throws InputError naming the file when there is none or it is broken.

@@ -62,6 +62,10 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     farthest = std::max(farthest, centre + 2.0 * (d.radius + reach));
   }
 
+  const bool weighed = options.cost != nullptr && options.cost->kind != CostKind::length;
+  if (weighed) validate(*options.cost);
+  const double per_metre = weighed ? cost_per_metre_lower_bound(*options.cost) : 1.0;
+
   SingleQueryPlan plan;
   plan.obstacles_total = obstacles.size();
   double bound = kFirstStretch * (g - s).norm();
@@ -89,7 +93,11 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     // polyline is no shorter than the graph's path, so this errs on the side
     // of another round).
     const bool found = plan.outcome.result.found;
-    if (found && plan.outcome.result.route.length() <= bound) break;
+    // The longest route that can cost what this one does (its length when
+    // weighed by length): a cheaper route is no longer, so it lies in E(bound).
+    double reach = found ? plan.outcome.result.route.length() : 0.0;
+    if (found && weighed) reach = price_route(*options.cost, plan.outcome.result.route.points).cost / per_metre;
+    if (found && reach <= bound) break;
     // No route in the whole graph over some of the obstacles: none among all.
     if (!found && !focused) break;
     if (last) break;
@@ -100,7 +108,7 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
       continue;
     }
     focus = true;
-    bound = kGrowth * std::max(plan.outcome.result.route.length(), bound);
+    bound = kGrowth * std::max(reach, bound);
     if (bound >= farthest) bound = std::numeric_limits<double>::infinity();
   }
   if (plan.obstacles_used < plan.obstacles_total) {

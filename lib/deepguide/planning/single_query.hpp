@@ -23,6 +23,9 @@
 // An obstacle is kept when a disc around it (footprint radius + margin +
 // polygon tolerance) meets E(U): for a disc of centre c and radius r,
 // min over the disc of |x - s| + |x - g| >= |c - s| + |c - g| - 2 r.
+// Weighed by time or energy (cost_model.hpp), a route of cost C is at most
+// C / c long, c the cost per metre's lower bound, so the argument holds with
+// L replaced by C / c: the route is final once C / c <= U.
 
 #include <cstddef>
 #include <memory>

@@ -115,7 +115,7 @@ bool VisibilityGraph::supporting_at(const Corner& c, const Vec2& other) const {
   return !(s1 * s1 > eps2 && s2 * s2 > eps2);
 }
 
-PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm) {
+PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost) {
   const auto t0 = std::chrono::steady_clock::now();
   const Vec2 s = problem.start - origin_;
   const Vec2 g = problem.goal - origin_;
@@ -123,13 +123,26 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   const GraphVertex sv = n, gv = n + 1;
   auto link = [&](GraphVertex from, GraphVertex to, double w) { boost::add_edge(from, to, w, graph_); };
   auto position = [&](GraphVertex v) { return v == sv ? s : v == gv ? g : corners_[v].p; };
-  const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (position(v) - g).norm(); };
+  if (cost != nullptr && cost->kind == CostKind::length) cost = nullptr;  // the graph's weights are lengths
+  // Cost per metre of progress, at least: the heuristic's factor, and what
+  // turns a cost back into the longest route that can have it.
+  const double per_metre = cost != nullptr ? cost_per_metre_lower_bound(*cost) : 1.0;
+  const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return per_metre * (position(v) - g).norm(); };
+  EdgeCostFn priced;
+  if (cost != nullptr) {
+    priced = [&](GraphVertex from, GraphVertex to, double label) {
+      const LegCost leg = price_leg(*cost, position(from) + origin_, position(to) + origin_,
+                                    departure_after(*cost, label));
+      return edge_weight(*cost, leg);
+    };
+  }
 
   // Start and goal join only the corners within the ellipse
-  // |x - s| + |x - g| <= bound: a path of cost L passes only corners with
-  // |c - s| + |c - g| <= L, so once the search returns a cost within the
-  // bound, no corner left out could have shortened it (the rest of the graph
-  // is complete). Otherwise the bound grows to the cost found (then one more
+  // |x - s| + |x - g| <= bound: a path of length L passes only corners with
+  // |c - s| + |c - g| <= L, and a path of cost C is at most C / per_metre
+  // long, so once the search returns a cost within the bound, no corner left
+  // out could have made it cheaper (the rest of the graph is complete).
+  // Otherwise the bound grows to what the cost found allows (then one more
   // round is final) or, with no path, doubles until it holds every corner.
   std::vector<double> reach(n);
   double farthest = (g - s).norm();
@@ -160,9 +173,16 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
     }
     if (direct) link(sv, gv, (g - s).norm());
     attached = boost::out_degree(sv, graph_) + boost::in_degree(gv, graph_);
-    found = shortest_path(graph_, sv, gv, algorithm, h);
-    if (bound >= farthest || (found.found && found.cost <= bound)) break;
-    bound = found.found ? std::max(found.cost, bound) : std::min(2.0 * bound, farthest);
+    found = shortest_path(graph_, sv, gv, algorithm, h, priced);
+    const double reach_needed = found.cost / per_metre;
+    if (bound >= farthest || (found.found && reach_needed <= bound)) break;
+    bound = found.found ? std::max(reach_needed, bound) : std::min(2.0 * bound, farthest);
+  }
+  // No way at all, or none the current allows? The length search tells.
+  bool current_blocks = false;
+  if (!found.found && cost != nullptr) {
+    current_blocks = shortest_path(graph_, sv, gv, algorithm, [&](GraphVertex v) { return (position(v) - g).norm(); })
+                         .found;
   }
 
   PlanResult result;
@@ -176,7 +196,9 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   if (found.found) {
     for (GraphVertex v : found.path) result.route.points.push_back(position(v) + origin_);
   } else {
-    result.message = "the goal cannot be reached from the start without entering a safety zone";
+    result.message = current_blocks
+                         ? "on every way to the goal the current is stronger than the vehicle: no feasible route"
+                         : "the goal cannot be reached from the start without entering a safety zone";
   }
   result.stats.query_ms = elapsed_ms(t0);
   return result;

@@ -18,6 +18,7 @@
 #include <memory>
 #include <vector>
 
+#include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
 #include "deepguide/planning/query_focus.hpp"
@@ -37,9 +38,10 @@ class VisibilityGraph {
   VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus = {});
   static std::size_t max_corners(VisibilityVariant variant);
 
-  /// Shortest route from start to goal in this graph. Start and goal must not
-  /// lie strictly inside a zone polygon (the planner facade checks and explains).
-  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm);
+  /// Cheapest route from start to goal in this graph: shortest, or by `cost`
+  /// (time or energy in a current, cost_model.hpp) when given. Start and goal
+  /// must not lie strictly inside a zone polygon (the planner facade checks and explains).
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost = nullptr);
 
   VisibilityVariant variant() const { return variant_; }
   std::size_t vertex_count() const { return corners_.size(); }

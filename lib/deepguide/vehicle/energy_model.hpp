@@ -14,6 +14,8 @@ struct EnergyModel {
   double hotel_power_w = 1050.0;
   double propulsion_k_w_per_mps3 = 60.0;
 
+  bool operator==(const EnergyModel&) const = default;
+
   /// P(v) in W.
   double power_w(double speed_mps) const {
     return hotel_power_w + propulsion_k_w_per_mps3 * speed_mps * speed_mps * speed_mps;

@@ -53,6 +53,14 @@ const Field kFields[] = {
      "a speed in m/s"},
     {"max_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0,
      "a speed in knots"},
+    {"min_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.min_speed_mps; }, 0.0, 20.0,
+     "a speed in m/s"},
+    {"min_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.min_speed_mps; }, 0.0, 20.0,
+     "a speed in knots"},
+    {"hotel_power_w", kSI, [](VehicleParams& p) -> double& { return p.energy.hotel_power_w; }, 0.0, 1e7,
+     "a power in W"},
+    {"propulsion_k_w_per_mps3", kSI, [](VehicleParams& p) -> double& { return p.energy.propulsion_k_w_per_mps3; },
+     0.0, 1e7, "a coefficient in W/(m/s)^3"},
     {"speed_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.speed_time_constant_s; }, 0.0,
      3600.0, "a time constant in seconds"},
     {"nomoto_gain_per_s", kSI, [](VehicleParams& p) -> double& { return p.nomoto_gain_per_s; }, 0.0, 10.0,
@@ -134,6 +142,12 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
     throw input_error(where(cruise->key), std::string("cruise speed <= ") + max->key + " (" +
                                               number(from_si(max->scale, p.max_speed_mps)) + ")",
                       number(from_si(cruise->scale, p.cruise_speed_mps)));
+  }
+  const Field* min = key_of("min_speed_mps");
+  if (p.min_speed_mps > p.cruise_speed_mps) {
+    throw input_error(where(min->key), std::string("a minimum speed <= ") + cruise->key + " (" +
+                                           number(from_si(cruise->scale, p.cruise_speed_mps)) + ")",
+                      number(from_si(min->scale, p.min_speed_mps)));
   }
   // RK4 on a first-order lag is accurate to about (h/T)^4 / 120; half the smallest
   // time constant keeps that under 1e-3 and far inside the stability bound 2.78 T.

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "deepguide/core/angles.hpp"
+#include "deepguide/vehicle/energy_model.hpp"
 
 namespace deepguide {
 
@@ -46,6 +47,8 @@ struct VehicleParams {
   double mass_kg = 2400.0;  ///< seed; informational (the Nomoto model hides it in K, T)
   double cruise_speed_mps = 4.0 * kMetresPerSecondPerKnot;  ///< seed: 4 kn
   double max_speed_mps = 6.0 * kMetresPerSecondPerKnot;     ///< seed: 6 kn
+  /// est.: 1 kn, the slowest speed with steerage way; the floor of --speed optimal.
+  double min_speed_mps = 1.0 * kMetresPerSecondPerKnot;
   double speed_time_constant_s = 20.0;  ///< T_u, notes §7.1
 
   double nomoto_gain_per_s = 0.25;       ///< K (r per rad of rudder), notes §7.1
@@ -64,6 +67,8 @@ struct VehicleParams {
   double step_s = 0.1;  ///< fixed integration step; notes §7.5: T is seconds, 0.1 s is ample
 
   AutopilotTuning autopilot;
+  /// Propulsion power P(v) = P_hotel + k v^3 (energy_model.hpp says where the numbers come from).
+  EnergyModel energy;
 
   bool operator==(const VehicleParams&) const = default;
 };

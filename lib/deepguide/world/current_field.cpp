@@ -1031,4 +1031,13 @@ std::string format_utc(double epoch_s) {
   return buf;
 }
 
+double parse_utc(const std::string& text, const std::string& what) {
+  // The CF reference date's grammar, which is ISO 8601's common forms.
+  const auto parsed = parse_time_units("seconds since " + text);
+  if (!parsed || text.find_first_not_of(" \t") == std::string::npos) {
+    throw InputError(what + ": expected a UTC time such as 2019-03-07T15:00:00Z, got '" + printable(text) + "'");
+  }
+  return parsed->second;
+}
+
 }  // namespace deepguide
