@@ -160,3 +160,106 @@ TEST(CliPlan, ChartInputErrors) {
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("/nonexistent/chart.tif"), std::string::npos) << missing.err;
 }
+
+// --- Costs in a current (issue 6) ---------------------------------------------------------------
+
+TEST(CliPlanCost, EnergyRouteReportsLegsAndWritesSpeedsPerWaypoint) {
+  ScratchDir dir;
+  const std::string route = dir.file("eco.geojson");
+  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo +
+                         " --cost energy --speed optimal --current-const 0.8,200 -o '" + route + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("cost").get<std::string>(), "energy");
+  EXPECT_TRUE(j.at("feasible").get<bool>());
+  EXPECT_DOUBLE_EQ(j.at("max_current_mps").get<double>(), 0.8);
+  const auto& legs = j.at("legs");
+  ASSERT_EQ(legs.size() + 1, j.at("waypoints").get<std::size_t>());
+  double time = 0.0, energy = 0.0;
+  for (const auto& leg : legs) {
+    const double v = leg.at("speed_mps").get<double>();
+    EXPECT_GE(v, 1852.0 / 3600.0 - 1e-9);  // the vehicle's minimum, 1 kn
+    EXPECT_LE(v, 6 * 1852.0 / 3600.0 + 1e-9);
+    // E = P(v) t per leg with the default model.
+    EXPECT_NEAR(leg.at("energy_j").get<double>(), (1050.0 + 60.0 * v * v * v) * leg.at("time_s").get<double>(),
+                1e-6 * leg.at("energy_j").get<double>());
+    time += leg.at("time_s").get<double>();
+    energy += leg.at("energy_j").get<double>();
+  }
+  EXPECT_NEAR(j.at("time_s").get<double>(), time, 1e-6);
+  EXPECT_NEAR(j.at("energy_j").get<double>(), energy, 1e-3);
+  // The file's waypoints carry the leg's speed and the energy so far.
+  std::ifstream in(route);
+  const auto geo = nlohmann::json::parse(in);
+  int waypoints = 0;
+  for (const auto& f : geo.at("features")) {
+    if (f.at("properties").at("kind") != "waypoint") continue;
+    const auto& p = f.at("properties");
+    const int i = p.at("index").get<int>();
+    if (i + 1 < j.at("waypoints").get<int>()) {
+      EXPECT_DOUBLE_EQ(p.at("speed_mps").get<double>(), legs.at(static_cast<std::size_t>(i)).at("speed_mps").get<double>());
+    }
+    if (i == 0) {
+      EXPECT_EQ(p.at("cum_energy_j").get<double>(), 0.0);
+    }
+    ++waypoints;
+  }
+  EXPECT_EQ(waypoints, j.at("waypoints").get<int>());
+}
+
+TEST(CliPlanCost, ACurrentStrongerThanTheVehicleIsExit3) {
+  // 3 m/s setting south-west; the goal lies north-east and the vehicle makes 2.06 m/s.
+  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --cost time --current-const 3,225");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.err.find("no feasible route"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(CliPlanCost, BadCostOptionsAreOneLineErrors) {
+  ScratchDir dir;
+  const std::string base = "plan --obstacles '" + kSample + "'" + kFromTo;
+  const std::string vehicle = dir.write("v.yaml", "name: x\nhotel_power_w: -100\n");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {" --cost fastest", {"--cost", "length, time or energy", "fastest"}},
+      {" --cost time --speed brisk", {"--speed", "brisk"}},
+      {" --cost time --speed 9", {"--speed", "maximum"}},
+      {" --cost time --depart yesterday --current-const 1,0", {"--depart", "yesterday"}},
+      {" --cost energy --vehicle '" + vehicle + "'", {"v.yaml", "line 2", "hotel_power_w", "> 0"}},
+      {" --cost time --graph tangent", {"--cost time", "visibility"}},
+      {" --cost time --current-const 1,north", {"--current-const"}},
+      {" --cost time --current /nonexistent/tide.nc", {"/nonexistent/tide.nc"}},
+  };
+  for (const auto& [args, words] : cases) {
+    const auto r = run_cli(base + args);
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    for (const std::string& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << ": " << r.err;
+  }
+  // Both kinds of current at once: usage.
+  EXPECT_EQ(run_cli(base + " --current a.nc --current-const 1,0").exit_code, 2);
+}
+
+TEST(CliPlanCost, TimeRouteThroughTheRealGulfStream) {
+  // HYCOM off Cape Hatteras (a 1.5-2 m/s stream setting north-east): a route
+  // south-west against it around two synthetic banks, by length and by time.
+  DEEPGUIDE_REAL_FILE_OR_SKIP(hycom, "currents-hycom/hycom_glby_930_2019030712_t003_uv3z.nc");
+  ScratchDir dir;
+  const std::string banks = dir.write("banks.geojson", R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"id": "bank-a"}, "geometry": {"type": "Polygon", "coordinates":
+      [[[-75.05, 34.90], [-74.95, 34.90], [-74.95, 35.00], [-75.05, 35.00], [-75.05, 34.90]]]}},
+    {"type": "Feature", "properties": {"id": "bank-b"}, "geometry": {"type": "Polygon", "coordinates":
+      [[[-75.25, 34.75], [-75.15, 34.75], [-75.15, 34.82], [-75.25, 34.82], [-75.25, 34.75]]]}}]})");
+  const std::string base = "plan --obstacles '" + banks + "' --from -74.80,35.10 --to -75.40,34.60 --current '" +
+                           hycom + "' --json";
+  const auto by_length = run_cli(base + " --cost length");
+  const auto by_time = run_cli(base + " --cost time");
+  ASSERT_EQ(by_length.exit_code, 0) << by_length.err;
+  ASSERT_EQ(by_time.exit_code, 0) << by_time.err;
+  const auto l = nlohmann::json::parse(by_length.out), t = nlohmann::json::parse(by_time.out);
+  EXPECT_EQ(t.at("crs").get<std::string>(), "EPSG:32618");
+  EXPECT_GT(t.at("max_current_mps").get<double>(), 1.0);
+  // The time route is never slower, and never shorter, than the length route.
+  EXPECT_LE(t.at("time_s").get<double>(), l.at("time_s").get<double>() * (1.0 + 1e-9));
+  EXPECT_GE(t.at("length_m").get<double>(), l.at("length_m").get<double>() * (1.0 - 1e-9));
+  EXPECT_GE(t.at("min_clearance_m").get<double>(), 5.0 - 1e-9);
+}

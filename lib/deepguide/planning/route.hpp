@@ -51,6 +51,7 @@ struct PlanResult {
   Route route;               ///< a polyline; curved legs are approximated from outside
   std::vector<RouteLeg> legs;  ///< exact lines and arcs, where the planner knows them
   double exact_length_m = 0.0; ///< length of the legs (0 when legs is empty)
+  double cost = 0.0;         ///< the search's cost of the graph path: metres, or the cost model's s or J
   PlanStats stats;
   std::string message;  ///< why no route was found, one line
 };

@@ -489,6 +489,7 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
   result.stats.expanded = found.expanded;
   result.stats.build_ms = m.build_ms;
   result.found = found.found;
+  result.cost = found.cost;
   if (!found.found) {
     result.message = "the goal cannot be reached from the start without entering a safety zone";
     result.stats.query_ms = elapsed_ms(t0);

@@ -193,6 +193,7 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   boost::clear_vertex(sv, graph_);
   boost::clear_vertex(gv, graph_);
   result.found = found.found;
+  result.cost = found.cost;
   if (found.found) {
     for (GraphVertex v : found.path) result.route.points.push_back(position(v) + origin_);
   } else {
