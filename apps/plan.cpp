@@ -266,6 +266,25 @@ void register_plan(CLI::App& app) {
       scene.goal = problem.goal;
       scene.true_north_deg = true_north_deg(frame, problem.start);
       scene.title = route_title("deepguide plan", out.result.route, o->margin, frame);
+      if (model->current) {
+        scene.current = [model](const Vec2& p) { return model->current(p, model->depart_s); };
+        char label[96];
+        std::snprintf(label, sizeof label, "current%s (fastest %.2f m/s)", timed ? " at departure" : "",
+                      model->max_current_mps);
+        scene.current_label = label;
+      }
+      if (model->current || model->economical) {
+        for (const PricedLeg& leg : priced.legs) {
+          char text[96];
+          if (leg.cost.feasible) {
+            std::snprintf(text, sizeof text, "%.2f m/s, %s, %.0f kJ", leg.cost.speed_mps, hms(leg.cost.time_s).c_str(),
+                          leg.cost.energy_j / 1e3);
+          } else {
+            std::snprintf(text, sizeof text, "%.2f m/s: the current wins", leg.cost.speed_mps);
+          }
+          scene.leg_labels.push_back(text);
+        }
+      }
       if (o->render_graph) {
         scene.zone_polygons = &plan.planner->zone_polygons();
         scene.graph_edges = plan.planner->graph_edges();

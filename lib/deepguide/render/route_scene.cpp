@@ -7,6 +7,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
+#include "deepguide/render/plot_furniture.hpp"  // add_arrow
 
 namespace deepguide {
 namespace {
@@ -162,6 +163,7 @@ struct Painter {
   void map() {
     canvas.fill_rect(layout.map, style.sea);
     canvas.clip(layout.map);
+    if (scene.current) current_arrows();
     const double d = scene.margin;
     const ObstacleSet* obs = scene.obstacles;
 
@@ -209,12 +211,52 @@ struct Painter {
       canvas.stroke_polyline(line, Stroke{style.background, 6.0 * u, {}});
       canvas.stroke_polyline(line, route_stroke());
       for (std::size_t i = 1; i + 1 < line.size(); ++i) waypoint(line[i]);
+      leg_labels(line);
     }
     if (obs != nullptr && scene.label_obstacles) labels(*obs);
     if (scene.start) start_marker(px(*scene.start));
     if (scene.goal) goal_marker(px(*scene.goal));
     canvas.unclip();
     canvas.stroke_rect(layout.map, Stroke{style.frame, 1.0 * u, {}});
+  }
+
+  /// The current on a lattice over the map, sampled at the lattice points
+  /// world positions; arrow length = spacing x speed / fastest.
+  void current_arrows() {
+    const double spacing = 55.0 * u;
+    std::vector<std::pair<Vec2, Vec2>> samples;  // pixel centre, current
+    double fastest = 0.0;
+    for (double y = layout.map.y + spacing / 2.0; y < layout.map.y + layout.map.height; y += spacing) {
+      for (double x = layout.map.x + spacing / 2.0; x < layout.map.x + layout.map.width; x += spacing) {
+        const std::optional<Vec2> c = scene.current(layout.view.to_world(Vec2(x, y)));
+        if (!c || !c->allFinite() || c->norm() == 0.0) continue;
+        samples.emplace_back(Vec2(x, y), *c);
+        fastest = std::max(fastest, c->norm());
+      }
+    }
+    std::vector<std::pair<Vec2, Vec2>> arrows;
+    for (const auto& [at, c] : samples) {
+      add_arrow(arrows, at, c.normalized(), std::max(0.15, c.norm() / fastest) * 0.8 * spacing);
+    }
+    canvas.stroke_segments(arrows, Stroke{style.current, 1.3 * u, {}});
+  }
+
+  /// Each leg's label along its middle, on the left of the direction of travel.
+  void leg_labels(const std::vector<Vec2>& line) {
+    const double size = 11.5 * u;
+    for (std::size_t i = 0; i + 1 < line.size() && i < scene.leg_labels.size(); ++i) {
+      const Vec2 a = line[i], b = line[i + 1];
+      const double len = (b - a).norm();
+      const double w = canvas.text_width(scene.leg_labels[i], size);
+      if (len < w + 20.0 * u) continue;  // too short on the map to carry it
+      Vec2 normal(-(b - a).y(), (b - a).x());  // pixel rows grow downwards: this is to the right...
+      normal = -normal / len;                  // ...so flip it to the left of travel
+      const Vec2 mid = 0.5 * (a + b) + 12.0 * u * normal;
+      const TextAlign align = normal.x() < -0.3 ? TextAlign::right : normal.x() > 0.3 ? TextAlign::left
+                                                                                      : TextAlign::center;
+      canvas.text_with_halo(mid + Vec2(0.0, 4.0 * u), scene.leg_labels[i], size, style.route, style.sea, 2.5 * u,
+                            align);
+    }
   }
 
   /// Each obstacle's id to the right of its zone, as error messages name them.
@@ -250,7 +292,7 @@ struct Painter {
                    furniture());
   }
 
-  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal };
+  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal, current };
 
   void swatch(Swatch kind, double x, double y) {
     const double sw = 30.0 * u;
@@ -283,6 +325,12 @@ struct Painter {
       case Swatch::goal:
         goal_marker(mid);
         break;
+      case Swatch::current: {
+        std::vector<std::pair<Vec2, Vec2>> arrow;
+        add_arrow(arrow, mid, Vec2(1.0, 0.0), sw);
+        canvas.stroke_segments(arrow, Stroke{style.current, 1.3 * u, {}});
+        break;
+      }
     }
   }
 
@@ -302,6 +350,9 @@ struct Painter {
     if (scene.zone_polygons != nullptr) columns[1].push_back({Swatch::zone_polygon, "zone polygon"});
     if (!scene.graph_edges.empty()) columns[1].push_back({Swatch::graph, "graph edge"});
     if (scene.route.size() >= 2) columns[2].push_back({Swatch::route, "route, waypoints"});
+    if (scene.current) {
+      columns[2].push_back({Swatch::current, scene.current_label.empty() ? "current" : scene.current_label});
+    }
     if (scene.start) columns[3].push_back({Swatch::start, "start"});
     if (scene.goal) columns[3].push_back({Swatch::goal, "goal"});
 

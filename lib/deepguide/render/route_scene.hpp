@@ -7,6 +7,7 @@
 //   title band | map (north up, equal scale, the content padded) | footer
 //   with the scale bar, the legend and the north arrow.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -32,6 +33,7 @@ struct RouteStyle {
   Rgba start = rgb_hex(0x2f9e44);
   Rgba goal = rgb_hex(0xc92a2a);
   Rgba text = rgb_hex(0x212529);
+  Rgba current = rgb_hex(0x8fa3b8);        ///< current arrows
 };
 
 struct RouteScene {
@@ -47,6 +49,14 @@ struct RouteScene {
   /// north, i.e. minus the meridian convergence; noted under the north arrow.
   std::optional<double> true_north_deg;
   bool label_obstacles = true;  ///< write each obstacle's id beside it
+  /// Optional: the current (m/s, local frame) to draw as arrows under
+  /// everything, on a lattice about 55 px apart, their length proportional to
+  /// the speed (the fastest as long as the lattice spacing); nullopt = none there.
+  std::function<std::optional<Vec2>(const Vec2&)> current;
+  std::string current_label;  ///< its legend text, e.g. "current, max 1.8 m/s"
+  /// Optional: one label per route leg (speed, time, energy), written beside
+  /// the legs long enough on the map to carry it.
+  std::vector<std::string> leg_labels;
   RouteStyle style;
 };
 
