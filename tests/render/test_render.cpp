@@ -245,6 +245,57 @@ TEST(RenderRoute, GraphEdgesAreDrawnOnlyWhenGiven) {
   EXPECT_TRUE(same_colour(Png(plain).at(p), s.scene.style.sea));
 }
 
+TEST(RenderRoute, CurrentArrowsAndLegLabelsAreDrawnOnlyWhenGiven) {
+  ScratchDir dir;
+  SmallScene s;
+  // Pixels of the map in the arrows' colour; the map's top row of arrows
+  // lies above the route, in open water.
+  const auto arrow_pixels = [&](const std::string& path) {
+    const Png png(path);
+    const RouteLayout l = route_layout(s.scene, 900);
+    int n = 0;
+    for (double y = l.map.y + 1; y < l.map.y + 0.2 * l.map.height; y += 1.0) {
+      for (double x = l.map.x + 1; x < l.map.x + l.map.width - 1; x += 1.0) {
+        n += same_colour(png.at({x, y}), s.scene.style.current, 8) ? 1 : 0;
+      }
+    }
+    return n;
+  };
+  const std::string plain = dir.file("plain.png");
+  render_route(s.scene, plain, 900);
+  EXPECT_EQ(arrow_pixels(plain), 0);
+  // 1 m/s setting east in the northern half, nothing known in the south.
+  s.scene.current = [](const Vec2& p) -> std::optional<Vec2> {
+    if (p.y() < 0.0) return std::nullopt;
+    return Vec2(1.0, 0.0);
+  };
+  s.scene.current_label = "current, 1 m/s";
+  s.scene.leg_labels = {"2.06 m/s, 0:01:37, 200 kJ", "x"};
+  const std::string with = dir.file("current.png");
+  render_route(s.scene, with, 900);
+  EXPECT_GT(arrow_pixels(with), 200);
+  // No arrow where the field has no value: the open water south-west of the route.
+  const RouteLayout l = route_layout(s.scene, 900);
+  const Vec2 south = l.view.to_pixel({-220.0, -80.0});
+  int near_south = 0;
+  const Png png(with);
+  for (double dy = -25; dy <= 25; ++dy) {
+    for (double dx = -25; dx <= 25; ++dx) near_south += same_colour(png.at(south + Vec2(dx, dy)), s.scene.style.current, 8);
+  }
+  EXPECT_EQ(near_south, 0);
+  // The first leg's label sits above it (left of eastbound travel), in the route's colour.
+  const Vec2 a = l.view.to_pixel({-300.0, -200.0}), b = l.view.to_pixel({-100.0, -200.0});
+  const auto bluish = [&](const Png& image) {
+    int n = 0;
+    for (double y = a.y() - 18; y < a.y() - 3; ++y) {
+      for (double x = a.x() + 10; x < b.x() - 10; ++x) n += same_colour(image.at({x, y}), s.scene.style.route, 60);
+    }
+    return n;
+  };
+  EXPECT_EQ(bluish(Png(plain)), 0);
+  EXPECT_GT(bluish(png), 8);
+}
+
 TEST(RenderRoute, SvgIsWritten) {
   ScratchDir dir;
   SmallScene s;
