@@ -43,6 +43,7 @@ struct PlanOptions {
   std::string vehicle;
   std::string speed = "cruise";
   std::string depart;
+  double waypoint_grid = 0.0;
 };
 
 // The cost model the options ask for: the vehicle's speeds and energy, the
@@ -133,6 +134,9 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--speed", o->speed,
                   "Speed through the water: cruise (the vehicle's), optimal (least energy per leg), or m/s")
       ->capture_default_str();
+  cmd->add_option("--waypoint-grid", o->waypoint_grid,
+                  "Open-water vertices SPACING_M apart around start and goal, so time and energy routes can bend "
+                  "where the current changes (visibility graphs)");
   cmd->add_option("--depart", o->depart,
                   "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
   cmd->callback([o] {
@@ -180,6 +184,7 @@ void register_plan(CLI::App& app) {
     }
     const auto model = std::make_shared<const CostModel>(cost_model_of(*o, frame, problem));
     if (model->kind != CostKind::length) options.cost = model;
+    if (o->waypoint_grid != 0.0) options.grid = waypoint_grid_for(problem.start, problem.goal, o->waypoint_grid);
     // One query: the graph only over the obstacles that can matter (single_query.hpp).
     const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);
     const PlanOutcome& out = plan.outcome;
@@ -203,6 +208,7 @@ void register_plan(CLI::App& app) {
         {"search", o->search},
         {"graph_vertices", out.result.stats.graph_vertices},
         {"graph_edges", out.result.stats.graph_edges},
+        {"open_water_vertices", out.result.stats.open_water_vertices},
         {"expanded", out.result.stats.expanded},
         {"build_ms", plan.build_ms},
         {"query_ms", plan.query_ms},
@@ -304,6 +310,10 @@ void register_plan(CLI::App& app) {
     std::printf("graph            %s over %zu of %zu obstacles, %zu vertices, %zu edges; %s expanded %zu\n",
                 o->graph.c_str(), plan.obstacles_used, plan.obstacles_total, out.result.stats.graph_vertices,
                 out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);
+    if (out.result.stats.open_water_vertices > 0) {
+      std::printf("waypoint grid    %zu open-water vertices %.0f m apart\n", out.result.stats.open_water_vertices,
+                  o->waypoint_grid);
+    }
     std::printf("time             build %.2f ms, query %.2f ms (%d round%s)\n", plan.build_ms, plan.query_ms, plan.rounds,
                 plan.rounds == 1 ? "" : "s");
     if (priced.feasible) {

@@ -177,6 +177,77 @@ TEST(CostPlanning, TheEnergyRouteGoesAroundAnAdverseJet) {
   EXPECT_LE(e.energy_j, around.energy_j * (1.0 + 1e-9));  // choosing the speed can only save
 }
 
+TEST(CostPlanning, AWaypointGridLetsTheRouteBendAroundAJetInOpenWater) {
+  // No obstacles at all: a jet up to 1.5 m/s, about 300 m wide and 1.4 km
+  // long, sets west along y = 0, right against a 3 km leg east. Without
+  // open-water vertices the route is the straight line through it; with a
+  // 100 m lattice it bends out of the jet (which fades beyond |y| = 300 m).
+  const auto jet = [](const Vec2& p) {
+    return Vec2(-1.5 * std::exp(-std::pow(p.y() / 150.0, 2)) * std::exp(-std::pow(p.x() / 700.0, 2)), 0.0);
+  };
+  auto m = model_of(CostKind::energy, steady_current(jet), 1.5);
+  const PlanningProblem problem{{-1500.0, 0.0}, {1500.0, 0.0}};
+  Planner straight(ObstacleSet{}, options_with(m));
+  const PlanOutcome line = straight.solve(problem);
+  ASSERT_TRUE(line.result.found);
+  EXPECT_EQ(line.result.route.points.size(), 2u);
+  PlannerOptions gridded = options_with(m);
+  gridded.grid = waypoint_grid_for(problem.start, problem.goal, 100.0);
+  Planner lattice(ObstacleSet{}, gridded);
+  const PlanOutcome bent = lattice.solve(problem);
+  ASSERT_TRUE(bent.result.found);
+  EXPECT_GT(bent.result.stats.open_water_vertices, 1000u);
+  const RoutePricing through = price_route(*m, line.result.route.points);
+  const RoutePricing around = price_route(*m, bent.result.route.points);
+  EXPECT_LT(around.energy_j, 0.8 * through.energy_j) << through.energy_j << " J straight, " << around.energy_j;
+  double farthest = 0.0;
+  for (const Vec2& p : bent.result.route.points) farthest = std::max(farthest, std::abs(p.y()));
+  EXPECT_GT(farthest, 200.0);  // out of the jet's core
+  // Re-integrated independently, within 0.1 %.
+  const std::vector<double> cruise(around.legs.size(), kCruise);
+  EXPECT_NEAR(around.energy_j / (EnergyModel{}.power_w(kCruise) * reintegrated_time(bent.result.route.points, cruise,
+                                                                                     jet)),
+              1.0, 1e-3);
+  // A* and Dijkstra agree on the lattice too.
+  gridded.search = SearchAlgorithm::dijkstra;
+  Planner lattice_dijkstra(ObstacleSet{}, gridded);
+  EXPECT_NEAR(lattice_dijkstra.solve(problem).result.cost, bent.result.cost, 1e-9 * bent.result.cost);
+}
+
+TEST(CostPlanning, WaypointGridsAreCheckedAndAvoidTheZones) {
+  using deepguide::test::expect_error;
+  const auto error_of = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, 0.0); }), {"--waypoint-grid", "> 0"});
+  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, -5.0); }), {"--waypoint-grid", "-5"});
+  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1e6, 1e6}, 10.0); }),
+               {"--waypoint-grid", "at most 40000", "spacing of at least"});
+  expect_error(error_of([] {
+                 PlannerOptions o = options_with(nullptr, SearchAlgorithm::astar, GraphKind::tangent);
+                 o.grid = waypoint_grid_for({0, 0}, {1000, 0}, 50.0);
+                 Planner p(ObstacleSet{}, o);
+               }),
+               {"--waypoint-grid", "visibility"});
+  // Lattice points never lie inside a zone, and routes through the lattice pass the checker.
+  ObstacleSet set;
+  set.polygons.push_back(box(-100.0, -300.0, 100.0, 300.0, "reef"));
+  auto m = model_of(CostKind::time, steady_current([](const Vec2& p) { return Vec2(0.0, 0.8 * std::tanh(p.x() / 300.0)); }),
+                    0.8);
+  PlannerOptions o = options_with(m);
+  o.grid = waypoint_grid_for({-800.0, 0.0}, {800.0, 0.0}, 37.0);
+  Planner planner(set, o);
+  const PlanOutcome out = planner.solve({{-800.0, 0.0}, {800.0, 0.0}});
+  ASSERT_TRUE(out.result.found);
+  EXPECT_TRUE(out.check.safe) << out.check.describe();
+  EXPECT_GE(out.check.min_clearance_m, 5.0 - 1e-6);
+}
+
 TEST(CostPlanning, AStarEqualsDijkstraOn500RandomCases) {
   // Random ellipses, a uniform current plus an eddy, and each cost model in
   // turn (time, energy, energy at economical speeds, time in a tide).
@@ -217,8 +288,13 @@ TEST(CostPlanning, AStarEqualsDijkstraOn500RandomCases) {
       m->depart_s = period * u(rng);
     }
     const PlanningProblem problem{{-60.0, 1000.0 * u(rng)}, {1060.0, 1000.0 * u(rng)}};
-    Planner astar(set, options_with(m, SearchAlgorithm::astar));
-    Planner dijkstra(set, options_with(m, SearchAlgorithm::dijkstra));
+    PlannerOptions with_astar = options_with(m, SearchAlgorithm::astar);
+    // Every eighth case also has open-water vertices (a 90 m lattice).
+    if (scenario % 8 == 7) with_astar.grid = waypoint_grid_for(problem.start, problem.goal, 90.0);
+    PlannerOptions with_dijkstra = with_astar;
+    with_dijkstra.search = SearchAlgorithm::dijkstra;
+    Planner astar(set, with_astar);
+    Planner dijkstra(set, with_dijkstra);
     const PlanOutcome a = astar.solve(problem), d = dijkstra.solve(problem);
     ASSERT_EQ(a.result.found, d.result.found) << "scenario " << scenario;
     if (!a.result.found) continue;
@@ -228,8 +304,8 @@ TEST(CostPlanning, AStarEqualsDijkstraOn500RandomCases) {
     // The search's cost is the route's, priced leg after leg from the departure.
     EXPECT_NEAR(price_route(*m, a.result.route.points).cost / a.result.cost, 1.0, 1e-9) << "scenario " << scenario;
     // And one query over only the obstacles that matter finds the same cost.
-    if (scenario % 5 == 0) {
-      const SingleQueryPlan one = plan_single_query(set, problem, options_with(m));
+    if (scenario % 5 == 0 || scenario % 8 == 7) {
+      const SingleQueryPlan one = plan_single_query(set, problem, with_astar);
       ASSERT_TRUE(one.outcome.result.found);
       EXPECT_NEAR(one.outcome.result.cost, d.result.cost, 1e-9 * d.result.cost) << "scenario " << scenario;
     }

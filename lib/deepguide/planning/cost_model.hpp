@@ -69,8 +69,9 @@ struct CostModel {
 };
 
 /// Binds a loaded current field to the model: its sampler in `frame`, its
-/// fastest current (over all nodes and steps), whether it is steady, and its
-/// time axis. Checks that the field covers the box [area_min, area_max]
+/// fastest current (over all nodes and steps), whether it is steady, its time
+/// axis, and the integration step (a quarter of the node spacing, at least
+/// the model's; one piece per leg for a constant current). Checks that the field covers the box [area_min, area_max]
 /// (InputError naming the file otherwise, current_field.hpp).
 void attach_current(CostModel& model, std::shared_ptr<const CurrentField> field, const LocalFrame& frame,
                     const Vec2& area_min, const Vec2& area_max);

@@ -62,6 +62,10 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
                      ": expected --graph visibility or visibility-full (the tangent graph's arcs are priced by "
                      "length only)");
   }
+  if (options.grid.active() && options.graph == GraphKind::tangent) {
+    throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the tangent graph has no "
+                     "open-water vertices)");
+  }
   impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr});
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
   if (options.graph == GraphKind::tangent) {
@@ -70,8 +74,8 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
     impl_->visibility = std::make_unique<VisibilityGraph>(
         impl_->zones,
-        options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced,
-        focus);
+        options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced, focus,
+        options.grid);
   }
 }
 

@@ -13,6 +13,7 @@
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/planning/route_check.hpp"
+#include "deepguide/planning/waypoint_grid.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
@@ -35,6 +36,9 @@ struct PlannerOptions {
   /// energy need a visibility graph (the tangent graph's arcs are priced by
   /// length only).
   std::shared_ptr<const CostModel> cost = nullptr;
+  /// Open-water vertices on a lattice (waypoint_grid.hpp), for routes that
+  /// bend where the current changes; visibility graphs only. Off by default.
+  WaypointGrid grid = {};
 };
 
 /// Parses "visibility", "visibility-full", "tangent" / "astar", "dijkstra"; InputError otherwise.

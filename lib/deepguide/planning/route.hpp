@@ -31,6 +31,7 @@ struct RouteLeg {
 struct PlanStats {
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;
+  std::size_t open_water_vertices = 0;  ///< of graph_vertices, lattice points (--waypoint-grid)
   std::size_t expanded = 0;   ///< vertices the search examined
   double build_ms = 0.0;      ///< building the environment's graph (once per environment)
   double query_ms = 0.0;      ///< attaching start and goal plus the search

@@ -23,7 +23,8 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 
 }  // namespace
 
-VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus)
+VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus,
+                                 const WaypointGrid& grid)
     : variant_(variant) {
   const auto t0 = std::chrono::steady_clock::now();
   // Work around an origin inside the area: UTM coordinates are ~1e6 m, and
@@ -74,7 +75,10 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
                      " visibility graph handles (" + std::to_string(max_corners(variant_)) +
                      "); raise --tolerance, plan a smaller area, or use the reduced graph");
   }
-  graph_ = PlanningGraph(n + 2);  // + start and goal slots
+  // Lattice points follow the polygon corners in corners_; start and goal take the two slots after all.
+  std::vector<std::size_t> lattice_cells;
+  if (grid.active()) lattice_cells = add_lattice_points(grid);
+  graph_ = PlanningGraph(corners_.size() + 2);
   for (std::size_t i = 0; i < n; ++i) {
     const Corner& a = corners_[i];
     if (variant_ == VisibilityVariant::reduced && !a.convex) continue;
@@ -93,7 +97,77 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
       ++base_edges_;
     }
   }
+  if (grid.active()) link_lattice(grid, lattice_cells, n);
   build_ms_ = elapsed_ms(t0);
+}
+
+// The lattice points outside the zone polygons and within the focus, appended
+// to corners_; returns the vertex of each lattice cell (kNoVertex: none).
+std::vector<std::size_t> VisibilityGraph::add_lattice_points(const WaypointGrid& grid) {
+  validate(grid);
+  const std::size_t cols = grid.columns(), rows = grid.rows();
+  link_radius_ = grid.link_radius();
+  std::vector<std::size_t> vertex(cols * rows, kNoVertex);
+  for (std::size_t j = 0; j < rows; ++j) {
+    for (std::size_t i = 0; i < cols; ++i) {
+      const Vec2 p = grid.point(i, j) - origin_;
+      if (!focus_.keeps_point(p) || visibility_->strictly_inside(p)) continue;
+      vertex[j * cols + i] = corners_.size();
+      corners_.push_back(Corner{p, p, p, true, true});
+      ++lattice_points_;
+    }
+  }
+  return vertex;
+}
+
+// Joins each lattice point to the lattice points and polygon corners (the
+// first n of corners_) it sees within the link radius.
+void VisibilityGraph::link_lattice(const WaypointGrid& grid, const std::vector<std::size_t>& vertex, std::size_t n) {
+  const std::size_t cols = grid.columns(), rows = grid.rows();
+  const Vec2 min = grid.min - origin_;
+  const auto link = [&](std::size_t a, std::size_t b) {
+    const Vec2 pa = corners_[a].p, pb = corners_[b].p;
+    if (!focus_.keeps_segment(pa, pb) || !visibility_->segment_visible(pa, pb)) return;
+    const double w = (pb - pa).norm();
+    boost::add_edge(a, b, w, graph_);
+    boost::add_edge(b, a, w, graph_);
+    ++base_edges_;
+  };
+  const auto kNone = kNoVertex;
+  // Lattice to lattice: each unordered pair once, by offsets in one half plane.
+  const auto reach = static_cast<long>(std::floor(link_radius_ / grid.spacing_m));
+  for (std::size_t j = 0; j < rows; ++j) {
+    for (std::size_t i = 0; i < cols; ++i) {
+      const std::size_t a = vertex[j * cols + i];
+      if (a == kNone) continue;
+      for (long dj = 0; dj <= reach; ++dj) {
+        for (long di = -reach; di <= reach; ++di) {
+          if (dj == 0 && di <= 0) continue;
+          if (std::hypot(static_cast<double>(di), static_cast<double>(dj)) * grid.spacing_m > link_radius_) continue;
+          const long ii = static_cast<long>(i) + di, jj = static_cast<long>(j) + dj;
+          if (ii < 0 || jj < 0 || ii >= static_cast<long>(cols) || jj >= static_cast<long>(rows)) continue;
+          const std::size_t b = vertex[static_cast<std::size_t>(jj) * cols + static_cast<std::size_t>(ii)];
+          if (b != kNone) link(a, b);
+        }
+      }
+    }
+  }
+  // Corners to the lattice points around them.
+  for (std::size_t c = 0; c < n; ++c) {
+    if (variant_ == VisibilityVariant::reduced && !corners_[c].convex) continue;
+    const Vec2 q = (corners_[c].p - min) / grid.spacing_m;
+    const long i0 = static_cast<long>(std::ceil(q.x() - link_radius_ / grid.spacing_m));
+    const long i1 = static_cast<long>(std::floor(q.x() + link_radius_ / grid.spacing_m));
+    const long j0 = static_cast<long>(std::ceil(q.y() - link_radius_ / grid.spacing_m));
+    const long j1 = static_cast<long>(std::floor(q.y() + link_radius_ / grid.spacing_m));
+    for (long jj = std::max(j0, 0L); jj <= std::min(j1, static_cast<long>(rows) - 1); ++jj) {
+      for (long ii = std::max(i0, 0L); ii <= std::min(i1, static_cast<long>(cols) - 1); ++ii) {
+        const std::size_t b = vertex[static_cast<std::size_t>(jj) * cols + static_cast<std::size_t>(ii)];
+        if (b == kNone || (corners_[b].p - corners_[c].p).norm() > link_radius_) continue;
+        link(c, b);
+      }
+    }
+  }
 }
 
 std::size_t VisibilityGraph::max_corners(VisibilityVariant variant) {
@@ -102,6 +176,7 @@ std::size_t VisibilityGraph::max_corners(VisibilityVariant variant) {
 }
 
 bool VisibilityGraph::supporting_at(const Corner& c, const Vec2& other) const {
+  if (c.open_water) return true;
   // Both polygon neighbours on one closed side of the line c -> other, up to
   // eps in distance: s_i / |d| compared with eps, squared to spare the root
   // (this runs for every pair of corners).
@@ -164,6 +239,7 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
       if (reach[i] > bound) continue;
       if (variant_ == VisibilityVariant::reduced && !c.convex) continue;
       for (const auto& [point, vertex] : {std::pair{s, sv}, std::pair{g, gv}}) {
+        if (c.open_water && (c.p - point).norm() > link_radius_) continue;  // lattice edges stay short
         if (variant_ == VisibilityVariant::reduced && !supporting_at(c, point)) continue;
         if (!visibility_->segment_visible(point, c.p)) continue;
         const double w = (c.p - point).norm();
@@ -187,6 +263,7 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
 
   PlanResult result;
   result.stats.graph_vertices = n + 2;
+  result.stats.open_water_vertices = lattice_points_;
   result.stats.graph_edges = base_edges_ + attached;
   result.stats.expanded = found.expanded;
   result.stats.build_ms = build_ms_;

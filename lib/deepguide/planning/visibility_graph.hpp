@@ -23,6 +23,7 @@
 #include "deepguide/planning/polygon_visibility.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
+#include "deepguide/planning/waypoint_grid.hpp"
 
 namespace deepguide {
 
@@ -35,7 +36,10 @@ class VisibilityGraph {
   /// build is quadratic in the corners and would not finish in useful time.
   /// With an active `focus` only the corners and edges a route from its start
   /// to its goal no longer than its bound can use are built (query_focus.hpp).
-  VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus = {});
+  /// With an active `grid`, its lattice points outside the zone polygons
+  /// (and within the focus) are vertices too (waypoint_grid.hpp).
+  VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus = {},
+                  const WaypointGrid& grid = {});
   static std::size_t max_corners(VisibilityVariant variant);
 
   /// Cheapest route from start to goal in this graph: shortest, or by `cost`
@@ -46,6 +50,7 @@ class VisibilityGraph {
   VisibilityVariant variant() const { return variant_; }
   std::size_t vertex_count() const { return corners_.size(); }
   std::size_t edge_count() const { return base_edges_; }
+  std::size_t lattice_points() const { return lattice_points_; }
   double build_ms() const { return build_ms_; }
   /// Corner positions and graph edges in the local frame (for drawings).
   std::vector<Vec2> corner_positions() const;
@@ -59,7 +64,11 @@ class VisibilityGraph {
   struct Corner {
     Vec2 p, prev, next;  // translated to origin_
     bool convex;         // the obstacle's interior angle is below 180 degrees
+    bool open_water = false;  // a lattice point: no polygon, every direction supports
   };
+  static constexpr std::size_t kNoVertex = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> add_lattice_points(const WaypointGrid& grid);
+  void link_lattice(const WaypointGrid& grid, const std::vector<std::size_t>& vertex, std::size_t n);
   bool supporting_at(const Corner& c, const Vec2& other) const;
 
   VisibilityVariant variant_;
@@ -69,6 +78,8 @@ class VisibilityGraph {
   std::vector<Corner> corners_;
   PlanningGraph graph_;
   std::size_t base_edges_ = 0;
+  std::size_t lattice_points_ = 0;
+  double link_radius_ = 0.0;  // lattice points join what they see within it (0: no lattice)
   double build_ms_ = 0.0;
 };
 
