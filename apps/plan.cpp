@@ -195,6 +195,15 @@ void register_plan(CLI::App& app) {
     // Time and energy of the route as planned, leg by leg (also for a length route).
     const RoutePricing priced = price_route(*model, out.result.route.points);
     const bool timed = !model->steady || !o->depart.empty();
+    // Weighed by time or energy: what the shortest route would cost, for comparison.
+    std::optional<RoutePricing> shortest;
+    if (model->kind != CostKind::length) {
+      PlannerOptions by_length = options;
+      by_length.cost = nullptr;
+      by_length.grid = {};
+      const SingleQueryPlan plain = plan_single_query(obstacles, problem, by_length);
+      if (plain.outcome.result.found) shortest = price_route(*model, plain.outcome.result.route.points);
+    }
     if (!priced.feasible) {
       std::fprintf(stderr, "warning: the current beats the vehicle on part of this %s route; plan with --cost time "
                    "or energy to avoid it\n", o->cost.c_str());
@@ -226,6 +235,11 @@ void register_plan(CLI::App& app) {
       summary["max_current_mps"] = model->max_current_mps;
       summary["unknown_current_m"] = priced.unknown_current_m;
       summary["current"] = !o->current_file.empty() ? o->current_file : "--current-const " + o->current_const;
+    }
+    if (shortest) {
+      summary["shortest"] = {{"length_m", shortest->length_m}, {"feasible", shortest->feasible}};
+      if (shortest->feasible) summary["shortest"]["time_s"] = shortest->time_s;
+      if (shortest->feasible) summary["shortest"]["energy_j"] = shortest->energy_j;
     }
     if (timed) {
       summary["depart"] = format_utc(model->depart_s);
@@ -322,6 +336,14 @@ void register_plan(CLI::App& app) {
         std::printf("depart, arrive   %s, %s\n", format_utc(model->depart_s).c_str(),
                     format_utc(model->depart_s + priced.time_s).c_str());
       }
+    }
+    if (shortest && !shortest->feasible) {
+      std::printf("shortest route   %.2f m: the current beats the vehicle on it\n", shortest->length_m);
+    } else if (shortest && priced.feasible) {
+      const bool by_time = model->kind == CostKind::time;
+      const double saved = 1.0 - (by_time ? priced.time_s / shortest->time_s : priced.energy_j / shortest->energy_j);
+      std::printf("shortest route   %.2f m: %.1f s, %.1f kJ; this route saves %.2f %% %s\n", shortest->length_m,
+                  shortest->time_s, shortest->energy_j / 1e3, 100.0 * saved, by_time ? "time" : "energy");
     }
     if (model->current && priced.unknown_current_m > 0.0) {
       std::printf("current unknown  over %.0f m of the route (taken as still water)\n", priced.unknown_current_m);

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the reactive level's and the identification's figures
+# Regenerates the Gulf Stream time route (docs/PLANNING.md, when ../shared has
+# the HYCOM sample), and the reactive level's and the identification's figures
 # (docs/SIMULATION.md, docs/IDENTIFICATION.md) from every scenario in
 # data/scenarios/*.yaml into docs/figures/. A scenario with an identify
 # section gets
@@ -36,3 +37,14 @@ for scenario in "${scenarios[@]}"; do
   "$DEEPGUIDE_CLI" render simulation "$scenario" -o "docs/figures/${name}_simulation.png"
   "$DEEPGUIDE_CLI" render turn-rates "$scenario" -o "docs/figures/${name}_turn_rates.png"
 done
+
+# The time route through the real HYCOM Gulf Stream sample (docs/PLANNING.md),
+# when ../shared holds it (it is never copied into the project).
+hycom="$DEEPGUIDE_ROOT/../shared/data/real/currents-hycom/hycom_glby_930_2019030712_t003_uv3z.nc"
+if [ -f "$hycom" ]; then
+  mkdir -p docs/images
+  "$DEEPGUIDE_CLI" plan --obstacles data/gulf_stream_banks.geojson --from -74.80,35.10 --to -75.40,34.60 \
+    --current "$hycom" --cost time --waypoint-grid 1000 --render docs/images/gulf_stream_time_route.png >/dev/null
+else
+  echo "deepguide: $hycom is absent: skipping the Gulf Stream route figure" >&2
+fi
