@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "nc_writer.hpp"
 #include "test_support.hpp"
 
 using deepguide::test::run_cli;
@@ -262,4 +263,58 @@ TEST(CliPlanCost, TimeRouteThroughTheRealGulfStream) {
   EXPECT_LE(t.at("time_s").get<double>(), l.at("time_s").get<double>() * (1.0 + 1e-9));
   EXPECT_GE(t.at("length_m").get<double>(), l.at("length_m").get<double>() * (1.0 - 1e-9));
   EXPECT_GE(t.at("min_clearance_m").get<double>(), 5.0 - 1e-9);
+}
+
+TEST(CliPlanCost, ATidalFieldChoosesTheSideByTheDepartureTime) {
+  // An island about 650 m square; north of it the tidal stream sets east
+  // when south of it it sets west, reversing every 6.21 h (hourly steps over a day).
+  ScratchDir dir;
+  const std::string island = dir.write("island.geojson", R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"id": "island"}, "geometry": {"type": "Polygon", "coordinates":
+      [[[10.245, 54.447], [10.255, 54.447], [10.255, 54.453], [10.245, 54.453], [10.245, 54.447]]]}}]})");
+  deepguide::test::NcSpec tide;
+  tide.lon.clear();
+  tide.lat.clear();
+  for (int i = 0; i <= 20; ++i) tide.lon.push_back(10.20 + 0.005 * i);
+  for (int j = 0; j <= 16; ++j) tide.lat.push_back(54.43 + 0.0025 * j);
+  for (int k = 0; k <= 24; ++k) tide.time.push_back(k);
+  tide.time_units = "hours since 2020-01-01 00:00:00";
+  tide.u = [](double, double lat, double hours, double) {
+    return 1.2 * std::tanh((lat - 54.45) / 0.0015) * std::cos(2.0 * M_PI * hours / 12.42);
+  };
+  tide.v = [](double, double, double, double) { return 0.0; };
+  const std::string nc = dir.file("tide.nc");
+  deepguide::test::write_nc(nc, tide);
+  const std::string base = "plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 --cost time " +
+                           "--current '" + nc + "'";
+  // The mean latitude of a written route's waypoints, against the island's middle.
+  const auto side = [&](const std::string& depart, const std::string& file) {
+    const auto r = run_cli(base + " --depart " + depart + " -o '" + file + "' --json");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("depart").get<std::string>(), depart);
+    EXPECT_TRUE(j.contains("arrive"));
+    std::ifstream in(file);
+    const auto geo = nlohmann::json::parse(in);
+    double lat = 0.0;
+    int n = 0;
+    for (const auto& f : geo.at("features")) {
+      if (f.at("properties").at("kind") != "waypoint") continue;
+      lat += f.at("geometry").at("coordinates").at(1).get<double>();
+      EXPECT_TRUE(f.at("properties").contains("eta"));
+      ++n;
+    }
+    return lat / n - 54.45;
+  };
+  EXPECT_GT(side("2020-01-01T00:00:00Z", dir.file("high.geojson")), 0.0);  // the east-setting stream is north
+  EXPECT_LT(side("2020-01-01T06:13:00Z", dir.file("half.geojson")), 0.0);  // six hours later it is south
+  // Before the forecast, and a speed per leg in a changing current: one-line errors.
+  const auto early = run_cli(base + " --depart 2019-12-31T23:00:00Z");
+  EXPECT_EQ(early.exit_code, 1) << early.err;
+  for (const char* w : {"--depart", "2020-01-01T00:00:00Z", "2020-01-02T00:00:00Z", "2019-12-31T23:00:00Z"}) {
+    EXPECT_NE(early.err.find(w), std::string::npos) << early.err;
+  }
+  const auto optimal = run_cli(base + " --speed optimal");
+  EXPECT_EQ(optimal.exit_code, 1) << optimal.err;
+  EXPECT_NE(optimal.err.find("steady"), std::string::npos) << optimal.err;
 }
