@@ -16,20 +16,15 @@
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "test_support.hpp"
+#include "planning/obstacle_builders.hpp"
 
 using namespace deepguide;
 
 namespace {
 
-constexpr double kCruise = 4.0 * 1852.0 / 3600.0;
+using deepguide::test::box;
 
-PolygonObstacle box(double x0, double y0, double x1, double y1, std::string id) {
-  PolygonObstacle p;
-  p.id = std::move(id);
-  p.footprint.outer() = {to_bg({x0, y0}), to_bg({x0, y1}), to_bg({x1, y1}), to_bg({x1, y0}), to_bg({x0, y0})};
-  boost::geometry::correct(p.footprint);
-  return p;
-}
+constexpr double kCruise = 4.0 * 1852.0 / 3600.0;
 
 CurrentAtTime steady_current(std::function<Vec2(const Vec2&)> f) {
   return [f = std::move(f)](const Vec2& p, double) -> std::optional<Vec2> { return f(p); };

@@ -10,25 +10,14 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/single_query.hpp"
+#include "planning/obstacle_builders.hpp"
 
 using namespace deepguide;
 
 namespace {
 
-PolygonObstacle box(double x0, double y0, double x1, double y1, std::string id) {
-  PolygonObstacle p;
-  p.id = std::move(id);
-  p.footprint.outer() = {to_bg({x0, y0}), to_bg({x0, y1}), to_bg({x1, y1}), to_bg({x1, y0}), to_bg({x0, y0})};
-  boost::geometry::correct(p.footprint);
-  return p;
-}
-
-EllipticCylinder disc(double x, double y, double r, std::string id) {
-  EllipticCylinder c;
-  c.id = std::move(id);
-  c.footprint = Ellipse{{x, y}, r, r, 0.0};
-  return c;
-}
+using deepguide::test::box;
+using deepguide::test::disc;
 
 }  // namespace
 

@@ -12,11 +12,14 @@
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
+#include "planning/obstacle_builders.hpp"
 
 using namespace deepguide;
 namespace bg = boost::geometry;
 
 namespace {
+
+using deepguide::test::box;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -25,14 +28,6 @@ EllipticCylinder ellipse(double x, double y, double a, double b, double theta, s
   c.id = std::move(id);
   c.footprint = Ellipse{{x, y}, a, b, theta};
   return c;
-}
-
-PolygonObstacle box(double x0, double y0, double x1, double y1, std::string id = "") {
-  PolygonObstacle p;
-  p.id = std::move(id);
-  p.footprint.outer() = {to_bg({x0, y0}), to_bg({x0, y1}), to_bg({x1, y1}), to_bg({x1, y0}), to_bg({x0, y0})};
-  bg::correct(p.footprint);
-  return p;
 }
 
 // Polygon with its vertices ON the zone boundary (points of the offset curve):
