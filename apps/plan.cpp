@@ -2,6 +2,7 @@
 //                [--current FILE | --current-const SPEED,DIR] [...] -o ROUTE.geojson [--json]
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
+#include "deepguide/planning/replanning.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_scene.hpp"
@@ -44,7 +46,16 @@ struct PlanOptions {
   std::string speed = "cruise";
   std::string depart;
   double waypoint_grid = 0.0;
+  double min_cell = QuadtreeOptions{}.min_cell_m;
+  bool smooth = false;
+  std::string replan_events;
 };
+
+// ROUTE.geojson -> ROUTE_repair_K.geojson
+std::string repair_path(const std::string& output, std::size_t k) {
+  const std::filesystem::path p(output);
+  return (p.parent_path() / (p.stem().string() + "_repair_" + std::to_string(k) + p.extension().string())).string();
+}
 
 // The cost model the options ask for: the vehicle's speeds and energy, the
 // current bound to the frame over the start-goal box, the departure time.
@@ -116,7 +127,8 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--vertical-clearance", o->vertical_clearance, "Vertical clearance above obstacle tops (m)")
       ->capture_default_str();
   cmd->add_option("--graph", o->graph,
-                  "visibility (reduced polygon graph), visibility-full (the seed's), or tangent (exact, curved)")
+                  "visibility (reduced polygon graph), visibility-full (the seed's), tangent (exact, curved), or "
+                  "quadtree (free cells' centres, the seed's Fig. 7)")
       ->capture_default_str();
   cmd->add_option("--search", o->search, "astar or dijkstra")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the summary as JSON");
@@ -137,6 +149,11 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--waypoint-grid", o->waypoint_grid,
                   "Open-water vertices SPACING_M apart around start and goal, so time and energy routes can bend "
                   "where the current changes (visibility graphs)");
+  cmd->add_option("--min-cell", o->min_cell, "Quadtree: the smallest cell side (m)")->capture_default_str();
+  cmd->add_flag("--smooth", o->smooth, "Quadtree: shortcut the cell-centre route where the straight line is free");
+  cmd->add_option("--replan-events", o->replan_events,
+                  "Quadtree: replay sonar detections (an obstacle file with detected_at_m) with D* Lite and write "
+                  "each repaired route (ROUTE_repair_K.geojson)");
   cmd->add_option("--depart", o->depart,
                   "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
   cmd->callback([o] {
@@ -145,6 +162,15 @@ void register_plan(CLI::App& app) {
     options.tolerance = o->tolerance;
     options.graph = parse_graph_kind(o->graph);
     options.search = parse_search(o->search);
+    options.quadtree.min_cell_m = o->min_cell;
+    options.quadtree.smooth = o->smooth;
+    if (!o->replan_events.empty() && (options.graph != GraphKind::quadtree || o->cost != "length" || o->smooth)) {
+      throw InputError("--replan-events: expected --graph quadtree with --cost length and no --smooth (D* Lite "
+                       "repairs the cell route by length)");
+    }
+    if (o->smooth && options.graph != GraphKind::quadtree) {
+      throw InputError("--smooth: expected --graph quadtree (the other graphs' routes are taut already)");
+    }
     if (!o->render.empty()) image_format_for(o->render);  // before the work, not after
     if (o->obstacles.empty() && o->charts.empty()) {
       throw CLI::ValidationError("plan", "give --obstacles FILE... or --chart FILE... (or both)");
@@ -236,10 +262,11 @@ void register_plan(CLI::App& app) {
       summary["unknown_current_m"] = priced.unknown_current_m;
       summary["current"] = !o->current_file.empty() ? o->current_file : "--current-const " + o->current_const;
     }
-    if (shortest) {
-      summary["shortest"] = {{"length_m", shortest->length_m}, {"feasible", shortest->feasible}};
-      if (shortest->feasible) summary["shortest"]["time_s"] = shortest->time_s;
-      if (shortest->feasible) summary["shortest"]["energy_j"] = shortest->energy_j;
+    if (shortest) {  // flat keys: the GeoJSON's properties hold no nested objects
+      summary["shortest_length_m"] = shortest->length_m;
+      summary["shortest_feasible"] = shortest->feasible;
+      if (shortest->feasible) summary["shortest_time_s"] = shortest->time_s;
+      if (shortest->feasible) summary["shortest_energy_j"] = shortest->energy_j;
     }
     if (timed) {
       summary["depart"] = format_utc(model->depart_s);
@@ -253,6 +280,26 @@ void register_plan(CLI::App& app) {
       summary["arcs"] = arcs;
       summary["lines"] = out.result.legs.size() - arcs;
     }
+    // Replanning: the detections replayed along the route, each repair written and listed.
+    nlohmann::json repairs = nlohmann::json::array();
+    std::optional<Replay> replay;
+    if (!o->replan_events.empty()) {
+      const std::vector<Detection> detections = load_detections(o->replan_events, frame, o->frame.src_crs);
+      replay = replay_detections(*plan.planner->quadtree(), problem, detections, o->margin);
+      for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
+        const Repair& r = replay->repairs[k];
+        nlohmann::json row = {{"repair", k + 1},        {"along_m", r.along_m},   {"blocked_edges", r.blocked_edges},
+                              {"found", r.found},       {"expanded", r.expanded}, {"repair_ms", r.repair_ms}};
+        if (r.found) row["length_m"] = r.cost;
+        if (r.found && !o->output.empty()) {
+          row["file"] = repair_path(o->output, k + 1);
+          write_route_geojson(row["file"], Route{r.route}, frame,
+                              {{"repair", k + 1}, {"along_m", r.along_m}, {"length_m", r.cost}});
+        }
+        repairs.push_back(row);
+      }
+    }
+
     // Per waypoint: the speed of the leg it starts, and time and energy so far.
     std::vector<nlohmann::json> waypoints(out.result.route.points.size(), nlohmann::json::object());
     nlohmann::json legs = nlohmann::json::array();
@@ -277,6 +324,10 @@ void register_plan(CLI::App& app) {
     }
     if (!o->output.empty()) write_route_geojson(o->output, out.result.route, frame, summary, waypoints);
     summary["legs"] = legs;
+    if (replay) {
+      summary["repairs"] = repairs;
+      summary["reached_goal"] = replay->reached_goal;
+    }
     if (!o->render.empty()) {
       RouteScene scene;
       scene.obstacles = &obstacles;
@@ -305,14 +356,30 @@ void register_plan(CLI::App& app) {
           scene.leg_labels.push_back(text);
         }
       }
+      if (o->render_graph && plan.planner->quadtree() != nullptr) {
+        for (const auto& leaf : plan.planner->quadtree()->tree().leaves()) {
+          auto& cells = leaf.state == CellState::free ? scene.free_cells : scene.occupied_cells;
+          cells.emplace_back(leaf.box.min, leaf.box.max);
+        }
+      }
       if (o->render_graph) {
-        scene.zone_polygons = &plan.planner->zone_polygons();
+        if (!plan.planner->zone_polygons().empty()) scene.zone_polygons = &plan.planner->zone_polygons();
         scene.graph_edges = plan.planner->graph_edges();
       }
       render_route(scene, o->render);
     }
+    // Written and printed first, then said loudly: a replay where the vehicle is walled in is exit 3.
+    const auto stopped = [&] {
+      if (!replay || replay->reached_goal) return;
+      const Repair& last = replay->repairs.back();
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "after detection %zu, %.1f m along the route at (%.2f, %.2f), no way on to the goal",
+                    replay->repairs.size(), last.along_m, last.vehicle.x(), last.vehicle.y());
+      throw NoRouteError(buf);
+    };
     if (o->json) {
       std::cout << summary.dump(2) << "\n";
+      stopped();
       return;
     }
     std::printf("length           %.2f m, %zu waypoints\n", out.result.route.length(), out.result.route.points.size());
@@ -361,9 +428,25 @@ void register_plan(CLI::App& app) {
                     leg.cost.energy_j / 1e3, timed ? "  " : "", timed ? format_utc(leg.arrive_s).c_str() : "");
       }
     }
+    if (replay) {
+      std::printf("replanning       %zu detection(s) replayed with D* Lite; the vehicle %s\n", replay->repairs.size(),
+                  replay->reached_goal ? "reaches the goal" : "stops: no way on");
+      std::printf("%6s %10s %8s %10s %9s %10s\n", "repair", "along m", "blocked", "length m", "expanded", "repair ms");
+      for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
+        const Repair& r = replay->repairs[k];
+        if (r.found) {
+          std::printf("%6zu %10.1f %8zu %10.2f %9zu %10.2f\n", k + 1, r.along_m, r.blocked_edges, r.cost, r.expanded,
+                      r.repair_ms);
+        } else {
+          std::printf("%6zu %10.1f %8zu %10s %9zu %10.2f\n", k + 1, r.along_m, r.blocked_edges, "no route",
+                      r.expanded, r.repair_ms);
+        }
+      }
+    }
     if (passed_over > 0) std::printf("passed over      %zu obstacle(s) deeper than the depth band\n", passed_over);
     if (!o->output.empty()) std::printf("wrote            %s\n", o->output.c_str());
     if (!o->render.empty()) std::printf("rendered         %s\n", o->render.c_str());
+    stopped();
   });
 }
 

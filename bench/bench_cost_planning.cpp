@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
       {"energy, grid 50 m", CostKind::energy, false, false, 50.0},
       {"time, tidal, grid 50 m", CostKind::time, false, true, 50.0},
   };
-  std::printf("%d random scenarios: 20 ellipses over 2 km x 2 km, a drift up to 0.6 m/s and an eddy up to 1.4 m/s\n",
+  std::printf("%d random scenarios: 20 ellipses over 2 km x 2 km, a drift up to 0.6 m/s and an eddy up to 1.0 m/s\n",
               scenarios);
   std::printf("(the tidal cases scale it by cos(2 pi t / 12.42 h) from a random departure); margin 5 m, cruise 2.06 m/s\n\n");
   std::printf("| cost | routes | query ms (median / max) | A* examined | Dijkstra examined | saves vs shortest (mean / max) |\n");

@@ -294,6 +294,7 @@ const char* kind_name(GraphKind k) {
     case GraphKind::visibility_full: return "visibility-full";
     case GraphKind::visibility: return "visibility (reduced)";
     case GraphKind::tangent: return "tangent";
+    case GraphKind::quadtree: return "quadtree";
   }
   return "?";
 }
@@ -629,6 +630,50 @@ int main(int argc, char** argv) {
     std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind), ms(median(single)).c_str(),
                 ms(max_of(single)).c_str(), verdict(max_of(single), 50.0), ms(median(total)).c_str(),
                 ms(max_of(total)).c_str(), verdict(max_of(total), 50.0), ms(pm).c_str(), verdict(pm, 1.0));
+  }
+
+  // ------------------------------------------------------------ visibility versus quadtree
+  // The seed's choice (its Fig. 7 against Fig. 6): the same scenarios, one
+  // query each as `deepguide plan` runs it, and the quadtree's route with and
+  // without smoothing against the visibility route.
+  {
+    constexpr double kCell = 2.0;
+    std::printf("\n## Visibility versus quadtree graph (one query each, the same scenarios)\n\n");
+    std::printf("plan_single_query; quadtree with %.0f m minimum cells over the start-goal box widened by half their "
+                "distance. Medians over scenarios; length ratios against the visibility route (median / max).\n\n",
+                kCell);
+    std::printf("| N | graph | vertices | build ms | query ms | route / visibility | smoothed route / visibility | "
+                "smoothed query ms |\n|---|---|---:|---:|---:|---|---|---:|\n");
+    for (int n : opt.sizes) {
+      if (n > 200) continue;  // the quadtree over N = 1000's 4.7 km box at 2 m: seconds per scenario
+      std::vector<double> vis_v, vis_b, vis_q, qt_v, qt_b, qt_q, ratio, smooth_ratio, smooth_q;
+      for (const Scenario& sc : scenarios[n]) {
+        const PlanningProblem problem{sc.start, sc.goal};
+        const SingleQueryPlan vis = plan_single_query(sc.obstacles, problem, PlannerOptions{.margin = kMargin});
+        PlannerOptions q{.margin = kMargin, .graph = GraphKind::quadtree};
+        q.quadtree.min_cell_m = kCell;
+        const SingleQueryPlan raw = plan_single_query(sc.obstacles, problem, q);
+        q.quadtree.smooth = true;
+        const SingleQueryPlan smooth = plan_single_query(sc.obstacles, problem, q);
+        if (!vis.outcome.result.found || !raw.outcome.result.found || !smooth.outcome.result.found) continue;
+        const double best = vis.outcome.result.route.length();
+        vis_v.push_back(static_cast<double>(vis.outcome.result.stats.graph_vertices));
+        vis_b.push_back(vis.build_ms);
+        vis_q.push_back(vis.query_ms);
+        qt_v.push_back(static_cast<double>(raw.outcome.result.stats.graph_vertices));
+        qt_b.push_back(raw.build_ms);
+        qt_q.push_back(raw.query_ms);
+        ratio.push_back(raw.outcome.result.route.length() / best);
+        smooth_ratio.push_back(smooth.outcome.result.route.length() / best);
+        smooth_q.push_back(smooth.query_ms);
+      }
+      if (ratio.empty()) continue;
+      std::printf("| %d | visibility | %.0f | %s | %s | 1 | 1 | — |\n", n, median(vis_v), ms(median(vis_b)).c_str(),
+                  ms(median(vis_q)).c_str());
+      std::printf("| %d | quadtree | %.0f | %s | %s | %.3f / %.3f | %.4f / %.4f | %s |\n", n, median(qt_v),
+                  ms(median(qt_b)).c_str(), ms(median(qt_q)).c_str(), median(ratio), max_of(ratio),
+                  median(smooth_ratio), max_of(smooth_ratio), ms(median(smooth_q)).c_str());
+    }
   }
 
   // ------------------------------------------------------------ OMPL peer

@@ -35,6 +35,7 @@ for b in "$DEEPGUIDE_ROOT"/build/bench/bench_*; do
     bench_reactive) "$b" ;;  # Monte Carlo over 500 scenarios x 3 methods, then the 1-hour throughput run
     bench_identification) (cd "$DEEPGUIDE_ROOT" && "$b") ;;  # the sample identify scenarios in 0..1 m/s currents
     bench_cost_planning) (cd "$DEEPGUIDE_ROOT" && "$b") ;;  # 100 random current fields, then HYCOM from ../shared
+    bench_replanning) "$b" ;;  # D* Lite repair against A* from scratch, 2 km quadtree at 2 m
     bench_no_go) "$b" ;;  # writes a 20000 x 20000 GeoTIFF in the temp folder (~1 GiB), then deletes it
     *) "$b" --benchmark_min_time=0.2 "$@" ;;
   esac

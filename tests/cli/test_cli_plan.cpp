@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -189,6 +190,13 @@ TEST(CliPlanCost, EnergyRouteReportsLegsAndWritesSpeedsPerWaypoint) {
   }
   EXPECT_NEAR(j.at("time_s").get<double>(), time, 1e-6);
   EXPECT_NEAR(j.at("energy_j").get<double>(), energy, 1e-3);
+  // Choosing the speed per leg spends no more than cruising, and the shortest route is reported beside it.
+  const auto cruise = run_cli("plan --obstacles '" + kSample + "'" + kFromTo +
+                              " --cost energy --current-const 0.8,200 --json");
+  ASSERT_EQ(cruise.exit_code, 0) << cruise.err;
+  const auto c = nlohmann::json::parse(cruise.out);
+  EXPECT_LT(energy, 0.99 * c.at("energy_j").get<double>());
+  EXPECT_LE(c.at("energy_j").get<double>(), c.at("shortest_energy_j").get<double>() * (1.0 + 1e-9));
   // The file's waypoints carry the leg's speed and the energy so far.
   std::ifstream in(route);
   const auto geo = nlohmann::json::parse(in);
@@ -314,7 +322,84 @@ TEST(CliPlanCost, ATidalFieldChoosesTheSideByTheDepartureTime) {
   for (const char* w : {"--depart", "2020-01-01T00:00:00Z", "2020-01-02T00:00:00Z", "2019-12-31T23:00:00Z"}) {
     EXPECT_NE(early.err.find(w), std::string::npos) << early.err;
   }
-  const auto optimal = run_cli(base + " --speed optimal");
+  const auto optimal = run_cli("plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 --cost energy " +
+                               "--current '" + nc + "' --speed optimal");
   EXPECT_EQ(optimal.exit_code, 1) << optimal.err;
   EXPECT_NE(optimal.err.find("steady"), std::string::npos) << optimal.err;
+  // Leaving five minutes before the forecast ends (the crossing takes 20 to 40):
+  // no time route (exit 3); the length route is planned, with a warning and
+  // its legs past the end infeasible.
+  const auto late = run_cli(base + " --depart 2020-01-01T23:55:00Z");
+  EXPECT_EQ(late.exit_code, 3) << late.err;
+  EXPECT_NE(late.err.find("no feasible route"), std::string::npos) << late.err;
+  const std::string length_base = "plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 " +
+                                  "--current '" + nc + "' --cost length --depart 2020-01-01T23:55:00Z --json";
+  const auto length = run_cli(length_base);
+  EXPECT_EQ(length.exit_code, 0) << length.err;
+  EXPECT_NE(length.err.find("warning"), std::string::npos) << length.err;
+  const auto lj = nlohmann::json::parse(length.out);
+  EXPECT_FALSE(lj.at("feasible").get<bool>());
+  EXPECT_FALSE(lj.at("legs").back().at("feasible").get<bool>());
+}
+
+// --- Quadtree graph and replanning (issue 5) ----------------------------------------------------
+
+TEST(CliPlanQuadtree, SmoothedRouteIsCheckedAndReplanningWritesEachRepair) {
+  ScratchDir dir;
+  const std::string route = dir.file("q.geojson");
+  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph quadtree --smooth -o '" + route +
+                         "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("graph").get<std::string>(), "quadtree");
+  const auto ok = run_cli("check route '" + route + "' --obstacles '" + kSample + "' --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(nlohmann::json::parse(ok.out).at("safe").get<bool>());
+  // Two rocks reported on the way: each repair is written next to the route.
+  const std::string events = dir.write("events.csv",
+                                       "lon,lat,semi_major_m,detected_at_m,id\n"
+                                       "10.2480,54.4503,15,300,rock-1\n"
+                                       "10.2530,54.4525,25,800,rock-2\n");
+  const std::string replanned = dir.file("r.geojson");
+  const auto rp = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph quadtree --replan-events '" +
+                          events + "' -o '" + replanned + "' --json");
+  ASSERT_EQ(rp.exit_code, 0) << rp.err;
+  const auto rj = nlohmann::json::parse(rp.out);
+  ASSERT_EQ(rj.at("repairs").size(), 2u);
+  EXPECT_TRUE(rj.at("reached_goal").get<bool>());
+  for (const auto& repair : rj.at("repairs")) {
+    const std::string file = repair.at("file").get<std::string>();
+    EXPECT_TRUE(std::filesystem::exists(file)) << file;
+  }
+  EXPECT_LE(rj.at("repairs").at(0).at("along_m").get<double>(), rj.at("repairs").at(1).at("along_m").get<double>());
+}
+
+TEST(CliPlanQuadtree, BadOptionsAndAWalledInVehicle) {
+  ScratchDir dir;
+  const std::string base = "plan --obstacles '" + kSample + "'" + kFromTo;
+  const std::string no_distance = dir.write("nd.csv", "lon,lat,semi_major_m\n10.25,54.45,15\n");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {" --graph quadtree --min-cell 0", {"--min-cell", "> 0"}},
+      {" --graph quadtree --min-cell -3", {"--min-cell", "-3"}},
+      {" --smooth", {"--smooth", "quadtree"}},
+      {" --replan-events '" + no_distance + "'", {"--replan-events", "quadtree"}},
+      {" --graph quadtree --replan-events '" + no_distance + "'", {"nd.csv", "line 2", "detected_at_m"}},
+      {" --graph quadtree --replan-events /nonexistent/events.csv", {"/nonexistent/events.csv"}},
+  };
+  for (const auto& [args, words] : cases) {
+    const auto r = run_cli(base + args);
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    for (const std::string& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << ": " << r.err;
+  }
+  // A wall reported across the whole way: the replay says where the vehicle stopped, exit 3.
+  const std::string wall = dir.write(
+      "wall.geojson",
+      R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": "new-wall",
+      "detected_at_m": 0}, "geometry": {"type": "Polygon", "coordinates": [[[10.2425, 54.40], [10.2430, 54.40],
+      [10.2430, 54.50], [10.2425, 54.50], [10.2425, 54.40]]]}}]})");
+  const auto walled = run_cli(base + " --graph quadtree --replan-events '" + wall + "'");
+  EXPECT_EQ(walled.exit_code, 3) << walled.out << walled.err;
+  EXPECT_NE(walled.err.find("after detection 1"), std::string::npos) << walled.err;
+  EXPECT_NE(walled.out.find("no route"), std::string::npos) << walled.out;
 }

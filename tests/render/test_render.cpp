@@ -401,7 +401,7 @@ TEST(RenderCli, RenderRouteAndPlanRender) {
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.err.find(".png or .svg"), std::string::npos) << bad.err;
   const auto bad_graph = run_cli("render route --obstacles '" + sample + "' --route '" + route +
-                                 "' --graph quadtree -o '" + dir.file("g.png") + "'");
+                                 "' --graph octree -o '" + dir.file("g.png") + "'");
   EXPECT_EQ(bad_graph.exit_code, 1);
   EXPECT_NE(bad_graph.err.find("expected none, "), std::string::npos) << bad_graph.err;
   // plan checks --render before planning, so a bad name writes no route either.

@@ -112,6 +112,10 @@ void validate(const CostModel& m) {
     throw InputError("--depart: expected a time within the current field's time axis " + format_utc(m.time_first_s) +
                      " .. " + format_utc(m.time_last_s) + ", got " + format_utc(m.depart_s));
   }
+  if (m.economical && m.kind == CostKind::time) {
+    throw InputError("--speed optimal: expected --cost energy or length (the least-energy speed per leg; the "
+                     "fastest route is flown at the maximum speed: give --speed " + num(m.max_speed_mps) + ")");
+  }
   if (m.economical && !m.steady) {
     throw InputError(
         "--speed optimal: expected a steady current (choosing the speed per leg in a current that changes in time "
@@ -168,10 +172,17 @@ RoutePricing price_route(const CostModel& m, const std::vector<Vec2>& points) {
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     PricedLeg leg;
     leg.depart_s = t;
-    leg.cost = price_leg(m, points[i], points[i + 1], t);
+    if (out.feasible) {
+      leg.cost = price_leg(m, points[i], points[i + 1], t);
+    } else {
+      // After a leg the vehicle cannot sail there is no time to leave at:
+      // the rest is infeasible too, unpriced.
+      leg.cost.length_m = (points[i + 1] - points[i]).norm();
+      leg.cost.time_s = leg.cost.energy_j = std::numeric_limits<double>::infinity();
+    }
     out.feasible = out.feasible && leg.cost.feasible;
-    t += leg.cost.time_s;
-    leg.arrive_s = t;
+    if (leg.cost.feasible) t += leg.cost.time_s;
+    leg.arrive_s = leg.cost.feasible ? t : std::numeric_limits<double>::infinity();
     out.length_m += leg.cost.length_m;
     out.time_s += leg.cost.time_s;
     out.energy_j += leg.cost.energy_j;

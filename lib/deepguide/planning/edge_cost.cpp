@@ -126,6 +126,8 @@ LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double 
     if (!s) return out;
     t += p.piece / *s;
   }
+  // The arrival too must lie where the field has a value (within its time axis).
+  if (!current(b, t)) return out;
   out.feasible = true;
   out.time_s = t - depart_s;
   out.energy_j = options.energy.power_w(speed_mps) * out.time_s;

@@ -72,8 +72,8 @@ using CurrentAtTime = std::function<std::optional<Vec2>(const Vec2&, double)>;
 /// The leg a -> b at `speed_mps` leaving at `depart_s` in a current that
 /// changes in time. The time is marched piece by piece (notes §6.1):
 /// t_{k+1} = t_k + dl / s(x_k, t_k + dl / (2 s(x_k, t_k))), the current taken
-/// at the piece's middle in space and (by one predictor step) in time. A piece
-/// where the current has no value is infeasible.
+/// at the piece's middle in space and (by one predictor step) in time. A leg
+/// is infeasible where the current has no value at a piece or at its arrival.
 LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s,
                          const CurrentAtTime& current, const LegOptions& options = {});
 

@@ -17,7 +17,8 @@ GraphKind parse_graph_kind(const std::string& text) {
   if (text == "visibility") return GraphKind::visibility;
   if (text == "visibility-full") return GraphKind::visibility_full;
   if (text == "tangent") return GraphKind::tangent;
-  throw InputError("--graph: expected visibility, visibility-full or tangent, got '" + text + "'");
+  if (text == "quadtree") return GraphKind::quadtree;
+  throw InputError("--graph: expected visibility, visibility-full, tangent or quadtree, got '" + text + "'");
 }
 
 SearchAlgorithm parse_search(const std::string& text) {
@@ -31,6 +32,7 @@ std::string to_string(GraphKind kind) {
     case GraphKind::visibility: return "visibility";
     case GraphKind::visibility_full: return "visibility-full";
     case GraphKind::tangent: return "tangent";
+    case GraphKind::quadtree: return "quadtree";
   }
   return "?";
 }
@@ -46,7 +48,31 @@ struct Planner::Impl {
   BgMultiPolygon zones;                      // visibility graphs only
   std::unique_ptr<VisibilityGraph> visibility;
   std::unique_ptr<TangentGraph> tangent;
+  std::unique_ptr<QuadtreeGraph> quadtree;
 };
+
+namespace {
+
+// The quadtree's area when none is given: the zones' box, widened by a tenth
+// (at least ten cells) on every side.
+QuadtreeOptions quadtree_area(const ObstacleSet& obstacles, QuadtreeOptions q, double margin) {
+  if ((q.area_max - q.area_min).minCoeff() > 0.0) return q;
+  if (obstacles.empty()) throw InputError("quadtree: expected obstacles or a work area");
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& c : obstacles.ellipses) {
+    lo = lo.cwiseMin(c.footprint.center - Vec2::Constant(c.footprint.a));
+    hi = hi.cwiseMax(c.footprint.center + Vec2::Constant(c.footprint.a));
+  }
+  for (const auto& p : obstacles.polygons) {
+    for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));
+  }
+  const double pad = margin + std::max(0.1 * (hi - lo).maxCoeff(), 10.0 * q.min_cell_m);
+  q.area_min = lo - Vec2::Constant(pad);
+  q.area_max = hi + Vec2::Constant(pad);
+  return q;
+}
+
+}  // namespace
 
 Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const QueryFocus& focus) : options_(options) {
   if (!std::isfinite(options.margin) || options.margin < 0.0) {
@@ -66,9 +92,16 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the tangent graph has no "
                      "open-water vertices)");
   }
-  impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr});
+  impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr, nullptr});
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
-  if (options.graph == GraphKind::tangent) {
+  if (options.graph == GraphKind::quadtree) {
+    if (options.grid.active()) {
+      throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the quadtree's free cells "
+                       "are its open-water vertices)");
+    }
+    impl_->quadtree = std::make_unique<QuadtreeGraph>(impl_->field, quadtree_area(obstacles, options.quadtree,
+                                                                                     options.margin));
+  } else if (options.graph == GraphKind::tangent) {
     impl_->tangent = std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus);
   } else {
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
@@ -86,8 +119,12 @@ Planner& Planner::operator=(Planner&&) noexcept = default;
 const ObstacleField& Planner::field() const { return impl_->field; }
 const BgMultiPolygon& Planner::zone_polygons() const { return impl_->zones; }
 std::vector<std::pair<Vec2, Vec2>> Planner::graph_edges() const {
+  if (impl_->quadtree) return impl_->quadtree->edges();
   return impl_->tangent ? impl_->tangent->tangent_segments() : impl_->visibility->edges();
 }
+
+const QuadtreeGraph* Planner::quadtree() const { return impl_->quadtree.get(); }
+QuadtreeGraph* Planner::quadtree() { return impl_->quadtree.get(); }
 
 namespace {
 
@@ -171,7 +208,9 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   require_free(impl_->field, problem.goal, "the goal");
 
   PlanOutcome out;
-  if (impl_->tangent) {
+  if (impl_->quadtree) {
+    out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get());
+  } else if (impl_->tangent) {
     out.result = impl_->tangent->solve(problem, options_.search);
   } else {
     // A point outside the true zone can still lie in the thin band between a

@@ -10,6 +10,7 @@
 
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/quadtree_graph.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/planning/route_check.hpp"
@@ -19,7 +20,7 @@
 
 namespace deepguide {
 
-enum class GraphKind { visibility, visibility_full, tangent };
+enum class GraphKind { visibility, visibility_full, tangent, quadtree };
 
 struct PlannerOptions {
   /// Safety margin to every obstacle footprint (m). Below 1 um the graphs use
@@ -39,9 +40,13 @@ struct PlannerOptions {
   /// Open-water vertices on a lattice (waypoint_grid.hpp), for routes that
   /// bend where the current changes; visibility graphs only. Off by default.
   WaypointGrid grid = {};
+  /// The quadtree graph's cells and area (quadtree_graph.hpp). An empty area
+  /// is the obstacles' zones' box, widened by a tenth (plan_single_query
+  /// gives the start-goal box instead).
+  QuadtreeOptions quadtree = {};
 };
 
-/// Parses "visibility", "visibility-full", "tangent" / "astar", "dijkstra"; InputError otherwise.
+/// Parses "visibility", "visibility-full", "tangent", "quadtree" / "astar", "dijkstra"; InputError otherwise.
 GraphKind parse_graph_kind(const std::string& text);
 SearchAlgorithm parse_search(const std::string& text);
 std::string to_string(GraphKind kind);
@@ -76,6 +81,9 @@ class Planner {
   /// Graph geometry for drawings: zone polygons (empty for the tangent graph) and edges.
   const BgMultiPolygon& zone_polygons() const;
   std::vector<std::pair<Vec2, Vec2>> graph_edges() const;
+  /// The quadtree (its cells, for drawings), or null for the other graphs.
+  const QuadtreeGraph* quadtree() const;
+  QuadtreeGraph* quadtree();
 
  private:
   struct Impl;

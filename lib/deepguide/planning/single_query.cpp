@@ -68,6 +68,25 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
 
   SingleQueryPlan plan;
   plan.obstacles_total = obstacles.size();
+  if (options.graph == GraphKind::quadtree) {
+    // The quadtree covers a box, not the ellipse bound: one round over the
+    // start-goal box widened by half their distance (at least ten cells).
+    PlannerOptions boxed = options;
+    QuadtreeOptions& q = boxed.quadtree;
+    if (!((q.area_max - q.area_min).minCoeff() > 0.0)) {
+      const double pad = std::max(0.5 * (g - s).norm(), 10.0 * q.min_cell_m);
+      q.area_min = s.cwiseMin(g) - Vec2::Constant(pad);
+      q.area_max = s.cwiseMax(g) + Vec2::Constant(pad);
+    }
+    plan.rounds = 1;
+    plan.obstacles_used = obstacles.size();
+    plan.bound_m = std::numeric_limits<double>::infinity();
+    plan.planner = std::make_unique<Planner>(obstacles, boxed);
+    plan.outcome = plan.planner->solve(problem);
+    plan.build_ms = plan.outcome.result.stats.build_ms;
+    plan.query_ms = plan.outcome.result.stats.query_ms;
+    return plan;
+  }
   double bound = kFirstStretch * (g - s).norm();
   bool focus = true;  // off for one round after a focused graph found nothing
   for (;;) {

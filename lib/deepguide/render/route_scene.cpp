@@ -182,6 +182,7 @@ struct Painter {
     for (const auto& ring : ellipse_zones) canvas.fill_rings({ring}, zone_fill());
     for (const auto& rings : polygon_zones) canvas.fill_rings(rings, zone_fill());
 
+    if (!scene.free_cells.empty() || !scene.occupied_cells.empty()) cells();
     if (!scene.graph_edges.empty()) {
       std::vector<std::pair<Vec2, Vec2>> edges;
       edges.reserve(scene.graph_edges.size());
@@ -218,6 +219,23 @@ struct Painter {
     if (scene.goal) goal_marker(px(*scene.goal));
     canvas.unclip();
     canvas.stroke_rect(layout.map, Stroke{style.frame, 1.0 * u, {}});
+  }
+
+  /// Quadtree cells: occupied ones shaded, every one outlined (hairlines).
+  void cells() {
+    const auto corners = [&](const std::pair<Vec2, Vec2>& c) {
+      return std::vector<Vec2>{px(c.first), px(Vec2(c.second.x(), c.first.y())), px(c.second),
+                               px(Vec2(c.first.x(), c.second.y()))};
+    };
+    for (const auto& c : scene.occupied_cells) canvas.fill_rings({corners(c)}, style.occupied_cell);
+    std::vector<std::pair<Vec2, Vec2>> lines;
+    for (const auto* list : {&scene.free_cells, &scene.occupied_cells}) {
+      for (const auto& c : *list) {
+        const std::vector<Vec2> q = corners(c);
+        for (int k = 0; k < 4; ++k) lines.emplace_back(q[k], q[(k + 1) % 4]);
+      }
+    }
+    canvas.stroke_segments(lines, Stroke{style.cell, std::max(0.6, 0.5 * u), {}, false});
   }
 
   /// The current on a lattice over the map, sampled at the lattice points
@@ -292,7 +310,7 @@ struct Painter {
                    furniture());
   }
 
-  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal, current };
+  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal, current, cell };
 
   void swatch(Swatch kind, double x, double y) {
     const double sw = 30.0 * u;
@@ -325,6 +343,13 @@ struct Painter {
       case Swatch::goal:
         goal_marker(mid);
         break;
+      case Swatch::cell: {
+        const std::vector<Vec2> box{{x + 4 * u, y - 7 * u}, {x + sw - 4 * u, y - 7 * u}, {x + sw - 4 * u, y + 7 * u},
+                                    {x + 4 * u, y + 7 * u}};
+        canvas.fill_rings({box}, style.occupied_cell);
+        canvas.stroke_polyline(box, Stroke{style.cell, 1.0 * u, {}}, true);
+        break;
+      }
       case Swatch::current: {
         std::vector<std::pair<Vec2, Vec2>> arrow;
         add_arrow(arrow, mid, Vec2(1.0, 0.0), sw);
@@ -349,6 +374,7 @@ struct Painter {
     }
     if (scene.zone_polygons != nullptr) columns[1].push_back({Swatch::zone_polygon, "zone polygon"});
     if (!scene.graph_edges.empty()) columns[1].push_back({Swatch::graph, "graph edge"});
+    if (!scene.occupied_cells.empty()) columns[1].push_back({Swatch::cell, "occupied cell"});
     if (scene.route.size() >= 2) columns[2].push_back({Swatch::route, "route, waypoints"});
     if (scene.current) {
       columns[2].push_back({Swatch::current, scene.current_label.empty() ? "current" : scene.current_label});

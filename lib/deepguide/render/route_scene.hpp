@@ -34,6 +34,8 @@ struct RouteStyle {
   Rgba goal = rgb_hex(0xc92a2a);
   Rgba text = rgb_hex(0x212529);
   Rgba current = rgb_hex(0x8fa3b8);        ///< current arrows
+  Rgba cell = rgb_hex(0x9fb3c8);           ///< quadtree cell outlines
+  Rgba occupied_cell = rgb_hex(0xe8c9b8);  ///< occupied cells' fill
 };
 
 struct RouteScene {
@@ -41,6 +43,10 @@ struct RouteScene {
   double margin = 0.0;                     ///< safety margin (m); zones drawn when > 0
   const BgMultiPolygon* zone_polygons = nullptr;          ///< optional: the planner's zone polygons
   std::vector<std::pair<Vec2, Vec2>> graph_edges;         ///< optional: the planning graph
+  /// Optional: quadtree cells as (min corner, max corner), free and occupied
+  /// (the seed's Fig. 7): outlines, occupied ones shaded.
+  std::vector<std::pair<Vec2, Vec2>> free_cells;
+  std::vector<std::pair<Vec2, Vec2>> occupied_cells;
   std::vector<Vec2> route;                                ///< waypoints, start to goal
   std::optional<Vec2> start;
   std::optional<Vec2> goal;

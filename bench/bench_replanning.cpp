@@ -1,0 +1,122 @@
+// D* Lite repairs against planning from scratch (docs/PERFORMANCE.md
+// "Replanning"): a 2000 m x 2000 m area with 2 m minimum quadtree cells,
+// random obstacles, and one rock the sonar reports on the route ahead. Per
+// event: the D* Lite repair (blocking the edges and resuming the search)
+// against A* from scratch from the vehicle's cell on the same changed graph,
+// and against rebuilding the quadtree with the rock and planning again.
+//
+//   build/bench/bench_replanning [--scenarios N]
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "deepguide/planning/quadtree_graph.hpp"
+#include "deepguide/planning/replanning.hpp"
+
+using namespace deepguide;
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? NAN : v[v.size() / 2];
+}
+
+Vec2 along(const std::vector<Vec2>& pts, double s) {
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double len = (pts[i + 1] - pts[i]).norm();
+    if (s <= len) return pts[i] + (s / len) * (pts[i + 1] - pts[i]);
+    s -= len;
+  }
+  return pts.back();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int scenarios = 10;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--scenarios") == 0) scenarios = std::max(1, std::atoi(argv[i + 1]));
+  }
+  std::mt19937 rng(20021);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> build, repair, scratch, rebuild, ratio, rebuild_ratio, leaves, expanded_repair, expanded_scratch;
+  int events = 0;
+  for (int sc = 0; sc < scenarios; ++sc) {
+    ObstacleSet set;
+    for (int i = 0; i < 60; ++i) {
+      EllipticCylinder c;
+      c.id = "e" + std::to_string(i);
+      const double a = 10.0 + 40.0 * u(rng);
+      c.footprint = Ellipse{{2000.0 * u(rng), 2000.0 * u(rng)}, a, a * (0.3 + 0.7 * u(rng)), M_PI * u(rng)};
+      set.ellipses.push_back(c);
+    }
+    const ObstacleField field(set, 5.0);
+    const PlanningProblem problem{{10.0, 1000.0}, {1990.0, 1000.0}};
+    if (!field.is_free(problem.start) || !field.is_free(problem.goal)) continue;
+    QuadtreeOptions q;
+    q.min_cell_m = 2.0;
+    q.area_min = {0.0, 0.0};
+    q.area_max = {2000.0, 2000.0};
+    auto t0 = std::chrono::steady_clock::now();
+    QuadtreeGraph graph(field, q);
+    build.push_back(ms_since(t0));
+    leaves.push_back(static_cast<double>(graph.tree().leaves().size()));
+    const PlanResult first = graph.solve(problem, SearchAlgorithm::astar);
+    if (!first.found) continue;
+    // One rock 25 m across, reported on the route 40 % along, when the vehicle has sailed 30 %.
+    const double length = first.route.length();
+    const Vec2 c = along(first.route.points, 0.4 * length);
+    Detection d;
+    d.along_m = 0.3 * length;
+    EllipticCylinder rock;
+    rock.id = "rock";
+    rock.footprint = Ellipse{c, 12.5, 12.5, 0.0};
+    d.obstacles.ellipses.push_back(rock);
+    replay_detections(graph, problem, {d}, 5.0, [&](const Repair& r, GraphVertex at) {
+      const GraphVertex goal = graph.goal_vertex();
+      const auto t1 = std::chrono::steady_clock::now();
+      const SearchResult s = shortest_path(graph.graph(), at, goal, SearchAlgorithm::astar,
+                                           [&](GraphVertex v) { return (graph.position(v) - graph.position(goal)).norm(); });
+      const double scratch_ms = ms_since(t1);
+      // Rebuilding: the quadtree over the obstacles and the rock, then A* from the vehicle.
+      ObstacleSet with_rock = set;
+      with_rock.ellipses.push_back(rock);
+      const auto t2 = std::chrono::steady_clock::now();
+      const ObstacleField field2(with_rock, 5.0);
+      QuadtreeGraph rebuilt(field2, q);
+      (void)rebuilt.solve({r.vehicle, problem.goal}, SearchAlgorithm::astar);
+      const double rebuild_ms = ms_since(t2);
+      if (!r.found || !s.found) return;
+      ++events;
+      repair.push_back(r.repair_ms);
+      scratch.push_back(scratch_ms);
+      rebuild.push_back(rebuild_ms);
+      ratio.push_back(scratch_ms / r.repair_ms);
+      rebuild_ratio.push_back(rebuild_ms / r.repair_ms);
+      expanded_repair.push_back(static_cast<double>(r.expanded));
+      expanded_scratch.push_back(static_cast<double>(s.expanded));
+      if (std::abs(r.cost - s.cost) > 1e-9 * s.cost) std::printf("MISMATCH %.9f vs %.9f\n", r.cost, s.cost);
+    });
+  }
+  std::printf("2000 m x 2000 m, 60 random ellipses, margin 5 m, quadtree with 2 m minimum cells; one 25 m rock "
+              "reported on the route 40 %% along when the vehicle has sailed 30 %%. %d events. Medians.\n\n",
+              events);
+  std::printf("| quadtree leaves | build ms | D* Lite repair ms | A* from scratch ms | ratio | rebuild + A* ms | ratio | "
+              "vertices processed: repair / from scratch |\n|---:|---:|---:|---:|---:|---:|---:|---|\n");
+  std::printf("| %.0f | %.0f | %.2f | %.2f | %.1f× (min %.1f×) | %.0f | %.0f× | %.0f / %.0f |\n", median(leaves),
+              median(build), median(repair), median(scratch), median(ratio),
+              ratio.empty() ? NAN : *std::min_element(ratio.begin(), ratio.end()), median(rebuild),
+              median(rebuild_ratio), median(expanded_repair), median(expanded_scratch));
+  return 0;
+}

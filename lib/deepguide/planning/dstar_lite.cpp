@@ -1,0 +1,141 @@
+#include "deepguide/planning/dstar_lite.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace deepguide {
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+DStarLite::DStarLite(PlanningGraph& graph, GraphVertex start, GraphVertex goal, Heuristic heuristic)
+    : graph_(&graph), start_(start), goal_(goal), last_(start), h_(std::move(heuristic)) {
+  const std::size_t n = boost::num_vertices(graph);
+  g_.assign(n, kInf);
+  rhs_.assign(n, kInf);
+  queued_key_.assign(n, Key{kInf, kInf});
+  in_queue_.assign(n, false);
+  rhs_[goal_] = 0.0;
+  queued_key_[goal_] = key(goal_);
+  queue_.emplace(queued_key_[goal_], goal_);
+  in_queue_[goal_] = true;
+}
+
+DStarLite::Key DStarLite::key(GraphVertex s) const {
+  const double m = std::min(g_[s], rhs_[s]);
+  return {m + h_(start_, s) + k_m_, m};
+}
+
+double DStarLite::edge_cost(GraphVertex u, GraphVertex v) const {
+  const auto [e, found] = boost::edge(u, v, *graph_);
+  return found ? boost::get(boost::edge_weight, *graph_, e) : kInf;
+}
+
+double DStarLite::best_successor_rhs(GraphVertex u) const {
+  double best = kInf;
+  for (auto [it, end] = boost::out_edges(u, *graph_); it != end; ++it) {
+    best = std::min(best, boost::get(boost::edge_weight, *graph_, *it) + g_[boost::target(*it, *graph_)]);
+  }
+  return best;
+}
+
+void DStarLite::update_vertex(GraphVertex u) {
+  if (in_queue_[u]) {
+    queue_.erase({queued_key_[u], u});
+    in_queue_[u] = false;
+  }
+  if (g_[u] != rhs_[u]) {
+    queued_key_[u] = key(u);
+    queue_.emplace(queued_key_[u], u);
+    in_queue_[u] = true;
+  }
+}
+
+bool DStarLite::compute() {
+  while (!queue_.empty() && (queue_.begin()->first < key(start_) || rhs_[start_] > g_[start_])) {
+    const auto [k_old, u] = *queue_.begin();
+    ++expanded_;
+    const Key k_new = key(u);
+    if (k_old < k_new) {  // stale: k_m grew since u was queued
+      queue_.erase(queue_.begin());
+      queued_key_[u] = k_new;
+      queue_.emplace(k_new, u);
+      continue;
+    }
+    queue_.erase(queue_.begin());
+    in_queue_[u] = false;
+    if (g_[u] > rhs_[u]) {  // overconsistent: settle
+      g_[u] = rhs_[u];
+      for (auto [it, end] = boost::in_edges(u, *graph_); it != end; ++it) {
+        const GraphVertex p = boost::source(*it, *graph_);
+        if (p != goal_) rhs_[p] = std::min(rhs_[p], boost::get(boost::edge_weight, *graph_, *it) + g_[u]);
+        update_vertex(p);
+      }
+    } else {  // underconsistent: raise, and repair whoever relied on u
+      const double g_old = g_[u];
+      g_[u] = kInf;
+      for (auto [it, end] = boost::in_edges(u, *graph_); it != end; ++it) {
+        const GraphVertex p = boost::source(*it, *graph_);
+        if (p != goal_ && rhs_[p] == boost::get(boost::edge_weight, *graph_, *it) + g_old) {
+          rhs_[p] = best_successor_rhs(p);
+        }
+        update_vertex(p);
+      }
+      if (u != goal_) rhs_[u] = best_successor_rhs(u);
+      update_vertex(u);
+    }
+  }
+  return rhs_[start_] < kInf;
+}
+
+GraphVertex DStarLite::next_from(GraphVertex v) const {
+  GraphVertex best = v;
+  double best_cost = kInf, best_g = kInf;
+  for (auto [it, end] = boost::out_edges(v, *graph_); it != end; ++it) {
+    const GraphVertex s = boost::target(*it, *graph_);
+    const double c = boost::get(boost::edge_weight, *graph_, *it) + g_[s];
+    if (!(c < kInf)) continue;
+    if (c < best_cost || (c == best_cost && (g_[s] < best_g || (g_[s] == best_g && s < best)))) {
+      best = s;
+      best_cost = c;
+      best_g = g_[s];
+    }
+  }
+  return best;
+}
+
+std::vector<GraphVertex> DStarLite::path() const {
+  std::vector<GraphVertex> out;
+  if (!(rhs_[start_] < kInf)) return out;
+  GraphVertex v = start_;
+  out.push_back(v);
+  for (std::size_t steps = 0; v != goal_ && steps < g_.size(); ++steps) {
+    const GraphVertex next = next_from(v);
+    if (next == v) return {};
+    out.push_back(v = next);
+  }
+  if (v != goal_) return {};
+  return out;
+}
+
+void DStarLite::move_to(GraphVertex v) {
+  k_m_ += h_(last_, v);
+  last_ = v;
+  start_ = v;
+}
+
+void DStarLite::update_edge(GraphVertex u, GraphVertex v, double cost) {
+  const auto [e, found] = boost::edge(u, v, *graph_);
+  if (!found) return;
+  const double c_old = boost::get(boost::edge_weight, *graph_, e);
+  boost::put(boost::edge_weight, *graph_, e, cost);
+  if (u == goal_) return;
+  if (c_old > cost) {
+    rhs_[u] = std::min(rhs_[u], cost + g_[v]);
+  } else if (rhs_[u] == c_old + g_[v]) {
+    rhs_[u] = best_successor_rhs(u);
+  }
+  update_vertex(u);
+}
+
+}  // namespace deepguide

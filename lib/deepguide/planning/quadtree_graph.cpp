@@ -1,0 +1,229 @@
+#include "deepguide/planning/quadtree_graph.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <tuple>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace {
+
+constexpr std::size_t kNoVertex = static_cast<std::size_t>(-1);
+constexpr int kMaxDepth = 24;
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
+
+QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& options)
+    : field_(&field), options_(options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!(options.min_cell_m > 0.0) || !std::isfinite(options.min_cell_m)) {
+    throw InputError("--min-cell: expected a cell size > 0 m, got " + num(options.min_cell_m));
+  }
+  const Vec2 extent = options.area_max - options.area_min;
+  if (!options.area_min.allFinite() || !options.area_max.allFinite() || !(extent.minCoeff() > 0.0)) {
+    throw InputError("quadtree: expected a work area with a positive, finite extent");
+  }
+  // The root: a square of min_cell * 2^depth over the area.
+  const double need = extent.maxCoeff() / options.min_cell_m;
+  const int depth = std::max(0, static_cast<int>(std::ceil(std::log2(need))));
+  if (depth > kMaxDepth) {
+    throw InputError("--min-cell: " + num(options.min_cell_m) + " m over a " + num(extent.maxCoeff()) +
+                     " m area needs " + std::to_string(depth) + " levels, more than " + std::to_string(kMaxDepth) +
+                     "; give a larger cell");
+  }
+  const double root = std::ldexp(options.min_cell_m, depth);
+  std::size_t cells = 0;
+  const double margin = field.margin();
+  const auto classify = [&](const CellTree<2>::Box& box) {
+    if (++cells > options.max_cells) {
+      throw InputError("--min-cell: " + num(options.min_cell_m) + " m cells over this area make more than " +
+                       std::to_string(options.max_cells) + " cells; give a larger cell or a smaller area");
+    }
+    const double d = field.clearance(box.centre());
+    const double r = 0.5 * (box.max - box.min).norm();
+    if (d - r >= margin) return CellState::free;
+    if (d + r < margin) return CellState::occupied;
+    return CellState::mixed;
+  };
+  tree_ = std::make_unique<CellTree<2>>(options.area_min, root, depth, classify);
+
+  const auto& leaves = tree_->leaves();
+  vertex_of_.assign(leaves.size(), kNoVertex);
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    if (leaves[i].state != CellState::free) continue;
+    vertex_of_[i] = free_.size();
+    free_.push_back(i);
+  }
+  if (free_.empty()) {
+    throw InputError("quadtree: no free cell in the work area (every cell lies within " + num(margin) +
+                     " m of an obstacle)");
+  }
+  graph_ = PlanningGraph(free_.size() + 2);  // + start and goal
+  for (std::size_t v = 0; v < free_.size(); ++v) {
+    const std::size_t leaf = free_[v];
+    const Vec2 a = leaves[leaf].box.centre();
+    for (const auto& [other, face] : tree_->neighbours(leaf)) {
+      const std::size_t w = vertex_of_[other];
+      if (w == kNoVertex || w < v) continue;  // occupied, or the pair is done from the other side
+      const Vec2 b = leaves[other].box.centre();
+      if (!face && !field.segment_free(a, b)) continue;
+      const double len = (b - a).norm();
+      boost::add_edge(v, w, len, graph_);
+      boost::add_edge(w, v, len, graph_);
+      ++edges_;
+    }
+  }
+  build_ms_ = elapsed_ms(t0);
+}
+
+Vec2 QuadtreeGraph::position(GraphVertex v) const {
+  if (v < free_.size()) return tree_->leaves()[free_[v]].box.centre();
+  return v == start_vertex() ? ends_[0] : ends_[1];
+}
+
+std::size_t QuadtreeGraph::attach(const PlanningProblem& problem) {
+  const auto& leaves = tree_->leaves();
+  const GraphVertex sv = start_vertex(), gv = goal_vertex();
+  detach();
+  ends_ = {problem.start, problem.goal};
+  std::size_t attached = 0;
+  // Start and goal: their own free cell, else the free neighbours they see.
+  for (const auto& [point, vertex, name] :
+       {std::tuple{problem.start, sv, "the start"}, std::tuple{problem.goal, gv, "the goal"}}) {
+    const std::optional<std::size_t> leaf = tree_->locate(point);
+    if (!leaf) throw NoRouteError(std::string(name) + " lies outside the quadtree's work area");
+    std::vector<std::size_t> joins;
+    if (vertex_of_[*leaf] != kNoVertex) {
+      joins.push_back(vertex_of_[*leaf]);
+    } else {
+      for (const auto& [other, face] : tree_->neighbours(*leaf)) {
+        const std::size_t w = vertex_of_[other];
+        if (w != kNoVertex && field_->segment_free(point, leaves[other].box.centre())) joins.push_back(w);
+      }
+    }
+    for (std::size_t w : joins) {
+      const double len = (position(w) - point).norm();
+      if (vertex == sv) boost::add_edge(sv, w, len, graph_);
+      else boost::add_edge(w, gv, len, graph_);
+      ++attached;
+    }
+  }
+  if (field_->segment_free(problem.start, problem.goal)) {
+    boost::add_edge(sv, gv, (problem.goal - problem.start).norm(), graph_);
+    ++attached;
+  }
+  return attached;
+}
+
+void QuadtreeGraph::detach() {
+  boost::clear_vertex(start_vertex(), graph_);
+  boost::clear_vertex(goal_vertex(), graph_);
+}
+
+PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::size_t n = free_.size();
+  const GraphVertex sv = start_vertex(), gv = goal_vertex();
+  const Vec2 g = problem.goal;
+  const std::size_t attached = attach(problem);
+  const auto position = [this](GraphVertex v) { return this->position(v); };
+  if (cost != nullptr && cost->kind == CostKind::length) cost = nullptr;
+  const double per_metre = cost != nullptr ? cost_per_metre_lower_bound(*cost) : 1.0;
+  const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return per_metre * (position(v) - g).norm(); };
+  EdgeCostFn priced;
+  if (cost != nullptr) {
+    priced = [&](GraphVertex from, GraphVertex to, double label) {
+      return edge_weight(*cost, price_leg(*cost, position(from), position(to), departure_after(*cost, label)));
+    };
+  }
+  const SearchResult found = shortest_path(graph_, sv, gv, algorithm, h, priced);
+  detach();
+
+  PlanResult result;
+  result.stats.graph_vertices = n + 2;
+  result.stats.graph_edges = edges_ + attached;
+  result.stats.expanded = found.expanded;
+  result.stats.build_ms = build_ms_;
+  result.found = found.found;
+  result.cost = found.cost;
+  if (!found.found) {
+    result.message = "the goal cannot be reached from the start through the quadtree's free cells";
+    result.stats.query_ms = elapsed_ms(t0);
+    return result;
+  }
+  std::vector<Vec2> points;
+  for (GraphVertex v : found.path) points.push_back(position(v));
+  if (options_.smooth && points.size() > 2) {
+    // Greedy string pulling: from each anchor, the farthest later waypoint it sees.
+    std::vector<Vec2> pulled{points.front()};
+    std::size_t anchor = 0;
+    while (anchor + 1 < points.size()) {
+      std::size_t next = points.size() - 1;
+      while (next > anchor + 1 && !field_->segment_free(points[anchor], points[next])) --next;
+      pulled.push_back(points[next]);
+      anchor = next;
+    }
+    // Shorter is not always cheaper in a current: keep the pulled route only if it costs no more.
+    const double pulled_cost = cost != nullptr ? price_route(*cost, pulled).cost : Route{pulled}.length();
+    if (pulled_cost <= result.cost) {
+      points = std::move(pulled);
+      result.cost = pulled_cost;
+    }
+  }
+  result.route.points = std::move(points);
+  result.stats.query_ms = elapsed_ms(t0);
+  return result;
+}
+
+std::vector<std::pair<GraphVertex, GraphVertex>> QuadtreeGraph::edges_blocked_by(const ObstacleField& newcomers) const {
+  // A box around the newcomers' zones first: most edges are far from them.
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  const ObstacleSet& set = newcomers.obstacles();
+  for (const auto& c : set.ellipses) {
+    lo = lo.cwiseMin(c.footprint.center - Vec2::Constant(c.footprint.a));
+    hi = hi.cwiseMax(c.footprint.center + Vec2::Constant(c.footprint.a));
+  }
+  for (const auto& p : set.polygons) {
+    for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));
+  }
+  lo -= Vec2::Constant(newcomers.margin());
+  hi += Vec2::Constant(newcomers.margin());
+  std::vector<std::pair<GraphVertex, GraphVertex>> out;
+  for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
+    const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
+    const Vec2 p = position(a), q = position(b);
+    if (p.cwiseMax(q).x() < lo.x() || p.cwiseMin(q).x() > hi.x() || p.cwiseMax(q).y() < lo.y() ||
+        p.cwiseMin(q).y() > hi.y()) {
+      continue;
+    }
+    if (!newcomers.segment_free(p, q)) out.emplace_back(a, b);
+  }
+  return out;
+}
+
+std::vector<std::pair<Vec2, Vec2>> QuadtreeGraph::edges() const {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  const auto& leaves = tree_->leaves();
+  for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
+    const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
+    if (a < b && b < free_.size()) out.emplace_back(leaves[free_[a]].box.centre(), leaves[free_[b]].box.centre());
+  }
+  return out;
+}
+
+}  // namespace deepguide

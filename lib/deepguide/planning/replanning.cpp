@@ -1,0 +1,125 @@
+#include "deepguide/planning/replanning.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/dstar_lite.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+
+namespace deepguide {
+
+std::vector<Detection> load_detections(const std::string& path, const LocalFrame& frame,
+                                       const std::string& source_crs) {
+  ObstacleReadOptions options;
+  options.local_crs = frame.id();
+  options.source_crs = source_crs;
+  options.extra_fields = {"detected_at_m"};
+  const LoadedObstacles loaded = load_obstacles({path}, options);
+  std::vector<Detection> out;
+  const auto distance = [](const ObstacleOrigin& origin) {
+    const std::optional<std::string>& text = origin.extra.at(0);
+    InputLocation at = origin.where;
+    at.field = "detected_at_m";
+    double v = std::nan("");
+    if (text) {
+      try {
+        std::size_t used = 0;
+        v = std::stod(*text, &used);
+        if (used != text->size()) v = std::nan("");
+      } catch (const std::exception&) {
+      }
+    }
+    if (!(v >= 0.0) || !std::isfinite(v)) {
+      throw input_error(at, "the distance sailed (m, >= 0) when the sonar reports it",
+                        text ? "'" + *text + "'" : std::string("nothing"));
+    }
+    return v;
+  };
+  for (std::size_t i = 0; i < loaded.obstacles.ellipses.size(); ++i) {
+    Detection d;
+    d.along_m = distance(loaded.ellipse_origins.at(i));
+    d.obstacles.ellipses.push_back(loaded.obstacles.ellipses[i]);
+    out.push_back(std::move(d));
+  }
+  for (std::size_t i = 0; i < loaded.obstacles.polygons.size(); ++i) {
+    Detection d;
+    d.along_m = distance(loaded.polygon_origins.at(i));
+    d.obstacles.polygons.push_back(loaded.obstacles.polygons[i]);
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<Detection> detections,
+                         double margin, const std::function<void(const Repair&, GraphVertex)>& after_repair) {
+  for (const Detection& d : detections) {
+    if (!(d.along_m >= 0.0) || !std::isfinite(d.along_m)) {
+      throw InputError("detection: along_m: expected a distance >= 0 m along the route");
+    }
+  }
+  std::stable_sort(detections.begin(), detections.end(),
+                   [](const Detection& a, const Detection& b) { return a.along_m < b.along_m; });
+  graph.attach(problem);
+  const GraphVertex goal = graph.goal_vertex();
+  const auto h = [&graph](GraphVertex a, GraphVertex b) { return (graph.position(a) - graph.position(b)).norm(); };
+  DStarLite dstar(graph.graph(), graph.start_vertex(), goal, h);
+  const auto positions = [&graph](const std::vector<GraphVertex>& path) {
+    std::vector<Vec2> out;
+    for (GraphVertex v : path) out.push_back(graph.position(v));
+    return out;
+  };
+
+  Replay replay;
+  if (!dstar.compute()) {
+    graph.detach();
+    throw NoRouteError("the goal cannot be reached from the start through the quadtree's free cells");
+  }
+  replay.initial_route = positions(dstar.path());
+  replay.initial_cost = dstar.cost();
+  GraphVertex at = graph.start_vertex();
+  replay.track = {graph.position(at)};
+  replay.track_vertices = {at};
+  double sailed = 0.0;
+  // Sails on along the current route until `until` metres (or the goal, or a dead end).
+  const auto sail = [&](double until) {
+    while (at != goal && sailed < until) {
+      const GraphVertex next = dstar.next_from(at);
+      if (next == at) return;
+      sailed += (graph.position(next) - graph.position(at)).norm();
+      at = next;
+      replay.track.push_back(graph.position(at));
+      replay.track_vertices.push_back(at);
+    }
+  };
+  for (const Detection& d : detections) {
+    sail(d.along_m);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::size_t before = dstar.expanded();
+    dstar.move_to(at);
+    Repair r;
+    r.along_m = sailed;
+    r.vehicle = graph.position(at);
+    const ObstacleField newcomers(d.obstacles, margin);
+    for (const auto& [u, v] : graph.edges_blocked_by(newcomers)) {
+      dstar.update_edge(u, v, std::numeric_limits<double>::infinity());
+      ++r.blocked_edges;
+    }
+    r.found = dstar.compute();
+    r.cost = dstar.cost();
+    r.expanded = dstar.expanded() - before;
+    r.repair_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (r.found) r.route = positions(dstar.path());
+    if (after_repair) after_repair(r, at);
+    replay.repairs.push_back(std::move(r));
+    if (!replay.repairs.back().found) break;  // no way on: the vehicle stops here
+  }
+  if (replay.repairs.empty() || replay.repairs.back().found) sail(std::numeric_limits<double>::infinity());
+  replay.reached_goal = at == goal;
+  graph.detach();
+  return replay;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,142 @@
+// D* Lite replanning (planning/dstar_lite.hpp, planning/replanning.hpp):
+// every repaired route costs what A* from scratch finds on the changed graph
+// (over 200 random detections), the vehicle never shuttles between two
+// cells, and bad detections are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/replanning.hpp"
+#include "planning/obstacle_builders.hpp"
+#include "test_support.hpp"
+
+using namespace deepguide;
+
+namespace {
+
+using deepguide::test::box;
+using deepguide::test::disc;
+
+QuadtreeOptions area(double x0, double y0, double x1, double y1, double cell) {
+  QuadtreeOptions q;
+  q.min_cell_m = cell;
+  q.area_min = {x0, y0};
+  q.area_max = {x1, y1};
+  return q;
+}
+
+// A point at distance s along a polyline.
+Vec2 along(const std::vector<Vec2>& pts, double s) {
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double len = (pts[i + 1] - pts[i]).norm();
+    if (s <= len) return pts[i] + (s / len) * (pts[i + 1] - pts[i]);
+    s -= len;
+  }
+  return pts.back();
+}
+
+}  // namespace
+
+TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
+  std::mt19937 rng(2002);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int compared = 0, found = 0;
+  for (int scenario = 0; scenario < 25; ++scenario) {
+    ObstacleSet set;
+    for (int i = 0; i < 8; ++i) set.ellipses.push_back(disc(100 + 400 * u(rng), 100 + 400 * u(rng), 10 + 30 * u(rng),
+                                                            "e" + std::to_string(i)));
+    const ObstacleField field(set, 5.0);
+    const PlanningProblem problem{{5.0, 300.0 + 100 * (u(rng) - 0.5)}, {595.0, 300.0 + 100 * (u(rng) - 0.5)}};
+    if (!field.is_free(problem.start) || !field.is_free(problem.goal)) continue;
+    QuadtreeGraph graph(field, area(0, 0, 600, 600, 4.0));
+    const PlanResult first = graph.solve(problem, SearchAlgorithm::astar);
+    if (!first.found) continue;
+    // Ten sonar reports of small rocks on or beside the route ahead, 40 m apart in time.
+    std::vector<Detection> detections;
+    const double length = first.route.length();
+    for (int k = 0; k < 10; ++k) {
+      const double s = 40.0 * (k + 1);
+      const Vec2 c = along(first.route.points, std::min(length - 60.0, s + 30.0 + 60.0 * u(rng))) +
+                     Vec2(30.0 * (u(rng) - 0.5), 30.0 * (u(rng) - 0.5));
+      Detection d;
+      d.along_m = s;
+      d.obstacles.ellipses.push_back(disc(c.x(), c.y(), 3.0 + 10.0 * u(rng), "rock" + std::to_string(k)));
+      detections.push_back(d);
+    }
+    const Replay replay = replay_detections(graph, problem, detections, 5.0, [&](const Repair& r, GraphVertex at) {
+      // A* from scratch on the changed graph, from where the vehicle is.
+      const GraphVertex goal = graph.goal_vertex();
+      const SearchResult scratch = shortest_path(graph.graph(), at, goal, SearchAlgorithm::astar, [&](GraphVertex v) {
+        return (graph.position(v) - graph.position(goal)).norm();
+      });
+      ++compared;
+      ASSERT_EQ(scratch.found, r.found) << "scenario " << scenario;
+      if (!r.found) return;
+      ++found;
+      EXPECT_NEAR(r.cost, scratch.cost, 1e-9 * scratch.cost) << "scenario " << scenario;
+      // The repaired route is what it claims: its length is its cost, and it avoids the new rocks.
+      EXPECT_NEAR(Route{r.route}.length(), r.cost, 1e-9 * r.cost);
+      EXPECT_EQ(r.route.front(), r.vehicle);
+    });
+    EXPECT_NEAR(replay.initial_cost, first.cost, 1e-9 * first.cost);  // summed backwards: the last bits differ
+    if (replay.reached_goal) {
+      EXPECT_EQ(replay.track.back(), problem.goal);
+    }
+  }
+  EXPECT_GE(compared, 200);
+  EXPECT_GE(found, 150);
+}
+
+TEST(DStarLite, TheVehicleNeverShuttlesBetweenTwoCells) {
+  // A wall across the way with two equal gaps, north and south of the
+  // straight line; each report blocks the gap the vehicle is heading for
+  // only partly, so the best way flips from side to side.
+  ObstacleSet set;
+  set.polygons.push_back(box(290, 0, 310, 190, "wall-south"));
+  set.polygons.push_back(box(290, 230, 310, 370, "wall-middle"));
+  set.polygons.push_back(box(290, 410, 310, 600, "wall-north"));
+  const ObstacleField field(set, 5.0);
+  QuadtreeGraph graph(field, area(0, 0, 600, 600, 4.0));
+  const PlanningProblem problem{{20.0, 300.0}, {580.0, 300.0}};
+  std::vector<Detection> detections;
+  const double ys[] = {210, 390, 214, 386, 206, 394};
+  for (int k = 0; k < 6; ++k) {
+    Detection d;
+    d.along_m = 20.0 + 25.0 * k;
+    d.obstacles.ellipses.push_back(disc(330.0, ys[k], 2.0, "buoy" + std::to_string(k)));
+    detections.push_back(d);
+  }
+  const Replay replay = replay_detections(graph, problem, detections, 5.0);
+  ASSERT_EQ(replay.repairs.size(), 6u);
+  for (const Repair& r : replay.repairs) ASSERT_TRUE(r.found);
+  EXPECT_TRUE(replay.reached_goal);
+  const auto& t = replay.track_vertices;
+  for (std::size_t i = 0; i + 3 < t.size(); ++i) {
+    EXPECT_FALSE(t[i] == t[i + 2] && t[i + 1] == t[i + 3]) << "shuttles between two cells at step " << i;
+  }
+}
+
+TEST(DStarLite, DetectionsNeedADistanceAlongTheRoute) {
+  ObstacleSet set;
+  set.ellipses.push_back(disc(300, 300, 20, "rock"));
+  const ObstacleField field(set, 5.0);
+  QuadtreeGraph graph(field, area(0, 0, 600, 600, 8.0));
+  for (double bad : {-1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    Detection d;
+    d.along_m = bad;
+    d.obstacles.ellipses.push_back(disc(200, 300, 5, "x"));
+    EXPECT_THROW(replay_detections(graph, {{10, 300}, {590, 300}}, {d}, 5.0), InputError);
+  }
+  // A report that walls the vehicle in: the repair says so, and the vehicle stops.
+  Detection wall;
+  wall.along_m = 0.0;
+  wall.obstacles.polygons.push_back(box(100, -10, 110, 610, "new-wall"));
+  const Replay r = replay_detections(graph, {{10, 300}, {590, 300}}, {wall}, 5.0);
+  ASSERT_EQ(r.repairs.size(), 1u);
+  EXPECT_FALSE(r.repairs[0].found);
+  EXPECT_FALSE(r.reached_goal);
+}
