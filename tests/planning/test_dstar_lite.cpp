@@ -10,6 +10,7 @@
 #include <string>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/dstar_lite.hpp"
 #include "deepguide/planning/replanning.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
@@ -139,4 +140,54 @@ TEST(DStarLite, DetectionsNeedADistanceAlongTheRoute) {
   ASSERT_EQ(r.repairs.size(), 1u);
   EXPECT_FALSE(r.repairs[0].found);
   EXPECT_FALSE(r.reached_goal);
+}
+
+TEST(DStarLite, CollinearCellsDoNotHideARepairInRounding) {
+  // A straight corridor of vertices at awkward spacings, where the summed
+  // edge lengths come out below the straight-line heuristic in doubles, and
+  // a detour around its far end. Blocking the corridor's last edge must cost
+  // the vehicle the detour, exactly as Dijkstra from scratch says.
+  int tried = 0, shortfalls = 0;
+  for (int seed = 0; seed < 400 && shortfalls < 40; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const int n = 40;
+    std::vector<Vec2> pos;
+    const Vec2 origin(1234.567 * u(rng), 8765.4321 * u(rng));
+    const Vec2 dir = Vec2(1.0 + u(rng), 0.3 * u(rng)).normalized();
+    double s = 0.0;
+    for (int i = 0; i <= n; ++i) {
+      pos.push_back(origin + s * dir);
+      s += 0.7 + 2.9 * u(rng);
+    }
+    PlanningGraph graph(pos.size() + 1);
+    const auto link = [&](std::size_t a, std::size_t b) {
+      const double w = (pos[b] - pos[a]).norm();
+      boost::add_edge(a, b, w, graph);
+      boost::add_edge(b, a, w, graph);
+    };
+    for (int i = 0; i < n; ++i) link(i, i + 1);
+    // The detour: from vertex n-3 out sideways and on to the goal n.
+    pos.push_back(0.5 * (pos[n - 3] + pos[n]) + 5.0 * Vec2(-dir.y(), dir.x()));
+    link(n - 3, pos.size() - 1);
+    link(pos.size() - 1, n);
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += (pos[i + 1] - pos[i]).norm();
+    ++tried;
+    if (!(sum < (pos[n] - pos[0]).norm())) continue;  // only the cases rounding makes short
+    ++shortfalls;
+    const auto h = [&](GraphVertex a, GraphVertex b) { return (pos[a] - pos[b]).norm(); };
+    DStarLite dstar(graph, 0, n, h);
+    ASSERT_TRUE(dstar.compute());
+    dstar.move_to(1);
+    dstar.update_edge(n - 1, n, std::numeric_limits<double>::infinity());
+    dstar.update_edge(n, n - 1, std::numeric_limits<double>::infinity());
+    ASSERT_TRUE(dstar.compute());
+    const SearchResult scratch =
+        shortest_path(graph, 1, n, SearchAlgorithm::dijkstra, [](GraphVertex) { return 0.0; });
+    ASSERT_TRUE(scratch.found);
+    EXPECT_NEAR(dstar.cost(), scratch.cost, 1e-9 * scratch.cost) << "seed " << seed;
+    EXPECT_EQ(dstar.path().back(), static_cast<GraphVertex>(n));
+  }
+  EXPECT_GE(shortfalls, 10) << "of " << tried;
 }

@@ -6,6 +6,13 @@
 namespace deepguide {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The heuristic is shrunk by a relative 1e-9. With straight-line costs and a
+// straight-line h, a path along collinear cell centres costs exactly h in
+// reals, but its summed doubles can come out a hair below h: the vertex that
+// must be repaired then keys level with the start and is left unprocessed
+// (found on a 2 km quadtree: a repair 36 m short of A*'s). (1 - 1e-9) h is
+// still consistent and breaks those ties the safe way.
+constexpr double kShrink = 1.0 - 1e-9;
 }  // namespace
 
 DStarLite::DStarLite(PlanningGraph& graph, GraphVertex start, GraphVertex goal, Heuristic heuristic)
@@ -23,7 +30,7 @@ DStarLite::DStarLite(PlanningGraph& graph, GraphVertex start, GraphVertex goal, 
 
 DStarLite::Key DStarLite::key(GraphVertex s) const {
   const double m = std::min(g_[s], rhs_[s]);
-  return {m + h_(start_, s) + k_m_, m};
+  return {m + kShrink * h_(start_, s) + k_m_, m};
 }
 
 double DStarLite::edge_cost(GraphVertex u, GraphVertex v) const {
@@ -119,7 +126,7 @@ std::vector<GraphVertex> DStarLite::path() const {
 }
 
 void DStarLite::move_to(GraphVertex v) {
-  k_m_ += h_(last_, v);
+  k_m_ += kShrink * h_(last_, v);
   last_ = v;
   start_ = v;
 }
@@ -136,6 +143,14 @@ void DStarLite::update_edge(GraphVertex u, GraphVertex v, double cost) {
     rhs_[u] = best_successor_rhs(u);
   }
   update_vertex(u);
+}
+
+long long DStarLite::first_inconsistent() const {
+  for (GraphVertex s = 0; s < g_.size(); ++s) {
+    if (s != goal_ && rhs_[s] != best_successor_rhs(s)) return static_cast<long long>(s);
+    if (!in_queue_[s] && g_[s] != rhs_[s]) return static_cast<long long>(s);
+  }
+  return -1;
 }
 
 }  // namespace deepguide

@@ -58,6 +58,11 @@ class DStarLite {
   /// The directed edge u -> v now costs `cost` (+inf: blocked); the graph's weight changes too.
   void update_edge(GraphVertex u, GraphVertex v, double cost);
 
+  /// For tests: the first vertex (or none) that breaks D* Lite's invariants:
+  /// rhs(s) = min over successors of c + g (s not the goal), and g = rhs for
+  /// every vertex out of the queue. Returns -1 when all hold.
+  long long first_inconsistent() const;
+
   GraphVertex start() const { return start_; }
   std::size_t expanded() const { return expanded_; }
 

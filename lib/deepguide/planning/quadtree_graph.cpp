@@ -1,6 +1,8 @@
 #include "deepguide/planning/quadtree_graph.hpp"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -88,6 +90,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
       ++edges_;
     }
   }
+  index_edges();
   build_ms_ = elapsed_ms(t0);
 }
 
@@ -190,8 +193,30 @@ PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm 
   return result;
 }
 
+struct QuadtreeGraph::EdgeIndex {
+  using Item = std::pair<BgBox, std::pair<GraphVertex, GraphVertex>>;
+  boost::geometry::index::rtree<Item, boost::geometry::index::rstar<16>> tree;
+};
+
+// The cell edges (both directions of a pair share one box) in an R-tree, for
+// edges_blocked_by; start and goal edges change with every attach and are few.
+void QuadtreeGraph::index_edges() const {
+  std::vector<EdgeIndex::Item> items;
+  for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
+    const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
+    if (a > b || b >= free_.size()) continue;
+    const Vec2 p = position(a), q = position(b);
+    items.push_back({BgBox(to_bg(p.cwiseMin(q)), to_bg(p.cwiseMax(q))), {a, b}});
+  }
+  auto index = std::make_shared<EdgeIndex>();
+  index->tree = decltype(index->tree)(items);  // bulk load (packing)
+  edge_index_ = std::move(index);
+}
+
 std::vector<std::pair<GraphVertex, GraphVertex>> QuadtreeGraph::edges_blocked_by(const ObstacleField& newcomers) const {
-  // A box around the newcomers' zones first: most edges are far from them.
+  namespace bgi = boost::geometry::index;
+  if (!edge_index_) index_edges();
+  // A box around the newcomers' zones: only edges whose box meets it can be blocked.
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   const ObstacleSet& set = newcomers.obstacles();
   for (const auto& c : set.ellipses) {
@@ -204,14 +229,24 @@ std::vector<std::pair<GraphVertex, GraphVertex>> QuadtreeGraph::edges_blocked_by
   lo -= Vec2::Constant(newcomers.margin());
   hi += Vec2::Constant(newcomers.margin());
   std::vector<std::pair<GraphVertex, GraphVertex>> out;
-  for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
-    const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
-    const Vec2 p = position(a), q = position(b);
-    if (p.cwiseMax(q).x() < lo.x() || p.cwiseMin(q).x() > hi.x() || p.cwiseMax(q).y() < lo.y() ||
-        p.cwiseMin(q).y() > hi.y()) {
-      continue;
+  std::vector<EdgeIndex::Item> near;
+  edge_index_->tree.query(bgi::intersects(BgBox(to_bg(lo), to_bg(hi))), std::back_inserter(near));
+  for (const auto& [box, ends] : near) {
+    if (newcomers.segment_free(position(ends.first), position(ends.second))) continue;
+    out.emplace_back(ends.first, ends.second);
+    out.emplace_back(ends.second, ends.first);
+  }
+  // Start and goal edges: the attached ones (none when detached).
+  for (GraphVertex end : {start_vertex(), goal_vertex()}) {
+    for (auto [it, stop] = boost::out_edges(end, graph_); it != stop; ++it) {
+      const GraphVertex t = boost::target(*it, graph_);
+      if (!newcomers.segment_free(position(end), position(t))) out.emplace_back(end, t);
     }
-    if (!newcomers.segment_free(p, q)) out.emplace_back(a, b);
+    for (auto [it, stop] = boost::in_edges(end, graph_); it != stop; ++it) {
+      const GraphVertex f = boost::source(*it, graph_);
+      if (f >= free_.size()) continue;  // start -> goal, seen above
+      if (!newcomers.segment_free(position(f), position(end))) out.emplace_back(f, end);
+    }
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/dstar_lite.hpp"
@@ -84,8 +85,11 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
   replay.track_vertices = {at};
   double sailed = 0.0;
   // Sails on along the current route until `until` metres (or the goal, or a dead end).
+  const std::size_t vertices = boost::num_vertices(graph.graph());
   const auto sail = [&](double until) {
-    while (at != goal && sailed < until) {
+    for (std::size_t steps = 0; at != goal && sailed < until; ++steps) {
+      // An optimal route visits no vertex twice: more steps than vertices is a defect, not a voyage.
+      if (steps > vertices) throw std::logic_error("replanning: the vehicle's route does not reach the goal");
       const GraphVertex next = dstar.next_from(at);
       if (next == at) return;
       sailed += (graph.position(next) - graph.position(at)).norm();
