@@ -32,14 +32,6 @@ double median(std::vector<double> v) {
   return v.empty() ? NAN : v[v.size() / 2];
 }
 
-Vec2 along(const std::vector<Vec2>& pts, double s) {
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const double len = (pts[i + 1] - pts[i]).norm();
-    if (s <= len) return pts[i] + (s / len) * (pts[i + 1] - pts[i]);
-    s -= len;
-  }
-  return pts.back();
-}
 
 }  // namespace
 
@@ -76,7 +68,7 @@ int main(int argc, char** argv) {
     if (!first.found) continue;
     // One rock 25 m across, reported on the route 40 % along, when the vehicle has sailed 30 %.
     const double length = first.route.length();
-    const Vec2 c = along(first.route.points, 0.4 * length);
+    const Vec2 c = first.route.point_at(0.4 * length);
     Detection d;
     d.along_m = 0.3 * length;
     EllipticCylinder rock;

@@ -30,15 +30,6 @@ QuadtreeOptions area(double x0, double y0, double x1, double y1, double cell) {
   return q;
 }
 
-// A point at distance s along a polyline.
-Vec2 along(const std::vector<Vec2>& pts, double s) {
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const double len = (pts[i + 1] - pts[i]).norm();
-    if (s <= len) return pts[i] + (s / len) * (pts[i + 1] - pts[i]);
-    s -= len;
-  }
-  return pts.back();
-}
 
 }  // namespace
 
@@ -61,7 +52,7 @@ TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
     const double length = first.route.length();
     for (int k = 0; k < 10; ++k) {
       const double s = 40.0 * (k + 1);
-      const Vec2 c = along(first.route.points, std::min(length - 60.0, s + 30.0 + 60.0 * u(rng))) +
+      const Vec2 c = first.route.point_at(std::min(length - 60.0, s + 30.0 + 60.0 * u(rng))) +
                      Vec2(30.0 * (u(rng) - 0.5), 30.0 * (u(rng) - 0.5));
       Detection d;
       d.along_m = s;

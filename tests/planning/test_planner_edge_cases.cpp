@@ -220,3 +220,13 @@ TEST(PlannerInput, EscapeIntoAnotherZoneIsRefused) {
     EXPECT_NE(std::string(e.what()).find("'b'"), std::string::npos) << e.what();
   }
 }
+
+TEST(Route, PointAtADistanceAlongIt) {
+  const Route r{{{0.0, 0.0}, {30.0, 40.0}, {30.0, 40.0}, {30.0, 100.0}}};  // 50 m, a repeated point, 60 m
+  EXPECT_TRUE(r.point_at(0.0).isApprox(Vec2(0.0, 0.0)));
+  EXPECT_TRUE(r.point_at(25.0).isApprox(Vec2(15.0, 20.0)));
+  EXPECT_TRUE(r.point_at(50.0).isApprox(Vec2(30.0, 40.0)));
+  EXPECT_TRUE(r.point_at(80.0).isApprox(Vec2(30.0, 70.0)));
+  EXPECT_TRUE(r.point_at(500.0).isApprox(Vec2(30.0, 100.0)));  // past the end: the end
+  EXPECT_TRUE(r.point_at(-5.0).isApprox(Vec2(0.0, 0.0)));      // before the start: the start
+}

@@ -12,6 +12,8 @@ namespace deepguide {
 struct Route {
   std::vector<Vec2> points;  ///< waypoints from start to goal, local frame (m)
   double length() const;
+  /// The point `s` metres along the route from its start (clamped to its ends).
+  Vec2 point_at(double s) const;
 };
 
 /// A leg of a route made of the seed's basic manoeuvres: a straight line, or
