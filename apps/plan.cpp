@@ -283,8 +283,9 @@ void register_plan(CLI::App& app) {
     // Replanning: the detections replayed along the route, each repair written and listed.
     nlohmann::json repairs = nlohmann::json::array();
     std::optional<Replay> replay;
+    std::vector<Detection> detections;
     if (!o->replan_events.empty()) {
-      const std::vector<Detection> detections = load_detections(o->replan_events, frame, o->frame.src_crs);
+      detections = load_detections(o->replan_events, frame, o->frame.src_crs);
       replay = replay_detections(*plan.planner->quadtree(), problem, detections, o->margin);
       for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
         const Repair& r = replay->repairs[k];
@@ -355,6 +356,18 @@ void register_plan(CLI::App& app) {
           }
           scene.leg_labels.push_back(text);
         }
+      }
+      ObstacleSet reported;
+      if (replay) {
+        for (const Detection& d : detections) {
+          reported.ellipses.insert(reported.ellipses.end(), d.obstacles.ellipses.begin(), d.obstacles.ellipses.end());
+          reported.polygons.insert(reported.polygons.end(), d.obstacles.polygons.begin(), d.obstacles.polygons.end());
+        }
+        scene.detected = &reported;
+        for (const Repair& r : replay->repairs) {
+          if (r.found) scene.repaired_routes.push_back(r.route);
+        }
+        scene.track = replay->track;
       }
       if (o->render_graph && plan.planner->quadtree() != nullptr) {
         for (const auto& leaf : plan.planner->quadtree()->tree().leaves()) {

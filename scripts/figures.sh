@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates the Gulf Stream time route (docs/PLANNING.md, when ../shared has
-# the HYCOM sample), and the reactive level's and the identification's figures
+# Regenerates the quadtree and replanning figures and the Gulf Stream time
+# route (docs/PLANNING.md; the latter when ../shared has the HYCOM sample),
+# and the reactive level's and the identification's figures
 # (docs/SIMULATION.md, docs/IDENTIFICATION.md) from every scenario in
 # data/scenarios/*.yaml into docs/figures/. A scenario with an identify
 # section gets
@@ -37,6 +38,14 @@ for scenario in "${scenarios[@]}"; do
   "$DEEPGUIDE_CLI" render simulation "$scenario" -o "docs/figures/${name}_simulation.png"
   "$DEEPGUIDE_CLI" render turn-rates "$scenario" -o "docs/figures/${name}_turn_rates.png"
 done
+
+# The seed's Fig. 7 (the quadtree over the sample obstacles) and a D* Lite
+# replay of two sonar reports (docs/PLANNING.md).
+mkdir -p docs/images
+"$DEEPGUIDE_CLI" plan --obstacles data/sample_obstacles.geojson --from 10.2405,54.4470 --to 10.2640,54.4560 \
+  --graph quadtree --min-cell 4 --render docs/images/quadtree_cells.png --render-graph >/dev/null
+"$DEEPGUIDE_CLI" plan --obstacles data/sample_obstacles.geojson --from 10.2405,54.4470 --to 10.2640,54.4560 \
+  --graph quadtree --replan-events data/replan_events.csv --render docs/images/replanning_replay.png >/dev/null
 
 # The time route through the real HYCOM Gulf Stream sample (docs/PLANNING.md),
 # when ../shared holds it (it is never copied into the project).

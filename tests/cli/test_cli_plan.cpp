@@ -361,8 +361,9 @@ TEST(CliPlanQuadtree, SmoothedRouteIsCheckedAndReplanningWritesEachRepair) {
                                        "10.2480,54.4503,15,300,rock-1\n"
                                        "10.2530,54.4525,25,800,rock-2\n");
   const std::string replanned = dir.file("r.geojson");
+  const std::string figure = dir.file("replay.png");
   const auto rp = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph quadtree --replan-events '" +
-                          events + "' -o '" + replanned + "' --json");
+                          events + "' -o '" + replanned + "' --render '" + figure + "' --json");
   ASSERT_EQ(rp.exit_code, 0) << rp.err;
   const auto rj = nlohmann::json::parse(rp.out);
   ASSERT_EQ(rj.at("repairs").size(), 2u);
@@ -372,6 +373,7 @@ TEST(CliPlanQuadtree, SmoothedRouteIsCheckedAndReplanningWritesEachRepair) {
     EXPECT_TRUE(std::filesystem::exists(file)) << file;
   }
   EXPECT_LE(rj.at("repairs").at(0).at("along_m").get<double>(), rj.at("repairs").at(1).at("along_m").get<double>());
+  EXPECT_GT(std::filesystem::file_size(figure), 10000u);  // the chart with the reports, repairs and track
 }
 
 TEST(CliPlanQuadtree, BadOptionsAndAWalledInVehicle) {

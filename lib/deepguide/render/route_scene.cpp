@@ -75,9 +75,25 @@ WorldBox content_box(const RouteScene& scene) {
     box.extend(a);
     box.extend(b);
   }
-  for (const Vec2& p : scene.route) {
-    require_finite(p, "route");
-    box.extend(p);
+  if (scene.detected != nullptr) {
+    for (const EllipticCylinder& c : scene.detected->ellipses) box.extend(ellipse_box(c.footprint, d));
+    for (const PolygonObstacle& p : scene.detected->polygons) {
+      WorldBox pb;
+      extend_ring(pb, p.footprint.outer(), "detected obstacle");
+      box.extend(pb.padded(d));
+    }
+  }
+  for (const auto* line : {&scene.route, &scene.track}) {
+    for (const Vec2& p : *line) {
+      require_finite(p, "route");
+      box.extend(p);
+    }
+  }
+  for (const auto& line : scene.repaired_routes) {
+    for (const Vec2& p : line) {
+      require_finite(p, "repaired route");
+      box.extend(p);
+    }
   }
   if (scene.start) {
     require_finite(*scene.start, "start");
@@ -147,6 +163,7 @@ struct Painter {
   Stroke zone_polygon_stroke() const { return {style.zone_polygon, 1.0 * u, {}}; }
   Stroke graph_stroke() const { return {style.graph_edge, std::max(1.0, 0.8 * u), {}, false}; }
   Stroke route_stroke() const { return {style.route, 3.2 * u, {}}; }
+  Rgba track_band() const { return {style.track.r, style.track.g, style.track.b, 0.35}; }
 
   void start_marker(const Vec2& c) const {
     canvas.circle(c, 8.0 * u, style.start, Stroke{style.background, 2.0 * u, {}});
@@ -204,6 +221,18 @@ struct Painter {
       for (const PolygonObstacle& p : obs->polygons) canvas.fill_rings(polygon_px(p.footprint), style.obstacle);
     }
 
+    if (scene.detected != nullptr) detected_obstacles(*scene.detected);
+    // The track sailed as a broad, light band under the routes (a highlighter).
+    if (scene.track.size() >= 2) {
+      std::vector<Vec2> line;
+      for (const Vec2& p : scene.track) line.push_back(px(p));
+      canvas.stroke_polyline(line, Stroke{track_band(), 9.0 * u, {}});
+    }
+    for (const auto& repaired : scene.repaired_routes) {
+      std::vector<Vec2> line;
+      for (const Vec2& p : repaired) line.push_back(px(p));
+      canvas.stroke_polyline(line, Stroke{style.repaired, 2.2 * u, {6.0 * u, 4.0 * u}});
+    }
     if (scene.route.size() >= 2) {
       std::vector<Vec2> line;
       line.reserve(scene.route.size());
@@ -215,10 +244,37 @@ struct Painter {
       leg_labels(line);
     }
     if (obs != nullptr && scene.label_obstacles) labels(*obs);
+    if (scene.detected != nullptr && scene.label_obstacles) labels(*scene.detected);
     if (scene.start) start_marker(px(*scene.start));
     if (scene.goal) goal_marker(px(*scene.goal));
     canvas.unclip();
     canvas.stroke_rect(layout.map, Stroke{style.frame, 1.0 * u, {}});
+  }
+
+  /// Obstacles the sonar reported: zone and footprint in their own colour.
+  void detected_obstacles(const ObstacleSet& set) {
+    const Rgba fill{style.detected.r, style.detected.g, style.detected.b, 0.12};
+    const Stroke outline{style.detected, 1.5 * u, {7.0 * u, 4.0 * u}};
+    const double d = scene.margin;
+    const ZoneOptions zone{d, std::max(0.3 / layout.view.scale(), 1e-6)};
+    for (const EllipticCylinder& c : set.ellipses) {
+      if (d > 0.0) {
+        const std::vector<Vec2> ring = offset_px(c.footprint, d);
+        canvas.fill_rings({ring}, fill);
+        canvas.stroke_polyline(ring, outline, true);
+      }
+      canvas.fill_rings({ellipse_px(c.footprint)}, style.detected);
+    }
+    for (const PolygonObstacle& p : set.polygons) {
+      if (d > 0.0) {
+        for (const BgPolygon& part : polygon_zone(p.footprint, zone)) {
+          const auto rings = polygon_px(part);
+          canvas.fill_rings(rings, fill);
+          for (const auto& ring : rings) canvas.stroke_polyline(ring, outline, true);
+        }
+      }
+      canvas.fill_rings(polygon_px(p.footprint), style.detected);
+    }
   }
 
   /// Quadtree cells: occupied ones shaded, every one outlined (hairlines).
@@ -310,7 +366,7 @@ struct Painter {
                    furniture());
   }
 
-  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal, current, cell };
+  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal, current, cell, detected, repaired, track };
 
   void swatch(Swatch kind, double x, double y) {
     const double sw = 30.0 * u;
@@ -343,6 +399,17 @@ struct Painter {
       case Swatch::goal:
         goal_marker(mid);
         break;
+      case Swatch::detected:
+        canvas.fill_rings({{{x + 4 * u, y - 6 * u}, {x + sw - 4 * u, y - 6 * u}, {x + sw - 4 * u, y + 6 * u},
+                            {x + 4 * u, y + 6 * u}}},
+                          style.detected);
+        break;
+      case Swatch::repaired:
+        canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{style.repaired, 2.2 * u, {6.0 * u, 4.0 * u}});
+        break;
+      case Swatch::track:
+        canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{track_band(), 9.0 * u, {}});
+        break;
       case Swatch::cell: {
         const std::vector<Vec2> box{{x + 4 * u, y - 7 * u}, {x + sw - 4 * u, y - 7 * u}, {x + sw - 4 * u, y + 7 * u},
                                     {x + 4 * u, y + 7 * u}};
@@ -366,7 +433,7 @@ struct Painter {
       Swatch kind;
       std::string label;
     };
-    std::vector<std::vector<Entry>> columns(4);
+    std::vector<std::vector<Entry>> columns(5);
     const bool has_obstacles = scene.obstacles != nullptr && !scene.obstacles->empty();
     if (has_obstacles) columns[0].push_back({Swatch::obstacle, "obstacle"});
     if (has_obstacles && scene.margin > 0.0) {
@@ -379,6 +446,11 @@ struct Painter {
     if (scene.current) {
       columns[2].push_back({Swatch::current, scene.current_label.empty() ? "current" : scene.current_label});
     }
+    if (scene.detected != nullptr && !scene.detected->empty()) {
+      columns[4].push_back({Swatch::detected, "reported by the sonar"});
+    }
+    if (!scene.repaired_routes.empty()) columns[4].push_back({Swatch::repaired, "repaired route"});
+    if (scene.track.size() >= 2) columns[2].push_back({Swatch::track, "track sailed"});
     if (scene.start) columns[3].push_back({Swatch::start, "start"});
     if (scene.goal) columns[3].push_back({Swatch::goal, "goal"});
 

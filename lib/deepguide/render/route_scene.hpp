@@ -36,6 +36,9 @@ struct RouteStyle {
   Rgba current = rgb_hex(0x8fa3b8);        ///< current arrows
   Rgba cell = rgb_hex(0x9fb3c8);           ///< quadtree cell outlines
   Rgba occupied_cell = rgb_hex(0xe8c9b8);  ///< occupied cells' fill
+  Rgba detected = rgb_hex(0xe67700);       ///< obstacles the sonar reported
+  Rgba repaired = rgb_hex(0x7048e8);       ///< repaired routes
+  Rgba track = rgb_hex(0x2b8a3e);          ///< the track sailed
 };
 
 struct RouteScene {
@@ -63,6 +66,12 @@ struct RouteScene {
   /// Optional: one label per route leg (speed, time, energy), written beside
   /// the legs long enough on the map to carry it.
   std::vector<std::string> leg_labels;
+  /// Optional, for replanning replays: obstacles the sonar reported (drawn in
+  /// their own colour with their zones), each repaired route (dashed), and
+  /// the track the vehicle sailed.
+  const ObstacleSet* detected = nullptr;
+  std::vector<std::vector<Vec2>> repaired_routes;
+  std::vector<Vec2> track;
   RouteStyle style;
 };
 
