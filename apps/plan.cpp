@@ -164,9 +164,10 @@ void register_plan(CLI::App& app) {
     options.search = parse_search(o->search);
     options.quadtree.min_cell_m = o->min_cell;
     options.quadtree.smooth = o->smooth;
-    if (!o->replan_events.empty() && (options.graph != GraphKind::quadtree || o->cost != "length" || o->smooth)) {
-      throw InputError("--replan-events: expected --graph quadtree with --cost length and no --smooth (D* Lite "
-                       "repairs the cell route by length)");
+    if (!o->replan_events.empty() &&
+        (options.graph != GraphKind::quadtree || o->cost != "length" || o->smooth || o->escape)) {
+      throw InputError("--replan-events: expected --graph quadtree with --cost length, and neither --smooth nor "
+                       "--escape (D* Lite repairs the cell route by length from a start outside every zone)");
     }
     if (o->smooth && options.graph != GraphKind::quadtree) {
       throw InputError("--smooth: expected --graph quadtree (the other graphs' routes are taut already)");
@@ -218,8 +219,34 @@ void register_plan(CLI::App& app) {
     if (!out.check.safe) {
       throw std::runtime_error("the planned route failed the independent check: " + out.check.describe());
     }
+    // Replanning: the detections replayed along the route, each repair written and listed. The route
+    // written is D* Lite's first (of equal length to A*'s, but on a cell grid ties abound): the one
+    // the vehicle sails and detected_at_m is measured along.
+    nlohmann::json repairs = nlohmann::json::array();
+    std::optional<Replay> replay;
+    std::vector<Detection> detections;
+    if (!o->replan_events.empty()) {
+      detections = load_detections(o->replan_events, frame, o->frame.src_crs);
+      replay = replay_detections(*plan.planner->quadtree(), problem, detections, o->margin);
+      for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
+        const Repair& r = replay->repairs[k];
+        nlohmann::json row = {{"repair", k + 1},        {"along_m", r.along_m},   {"blocked_edges", r.blocked_edges},
+                              {"found", r.found},       {"expanded", r.expanded}, {"repair_ms", r.repair_ms}};
+        if (r.found) row["length_m"] = r.cost;
+        if (r.found && !o->output.empty()) {
+          row["file"] = repair_path(o->output, k + 1);
+          write_route_geojson(row["file"], Route{r.route}, frame,
+                              {{"repair", k + 1}, {"along_m", r.along_m}, {"length_m", r.cost}});
+        }
+        repairs.push_back(row);
+      }
+    }
+
+    const Route route = replay ? Route{replay->initial_route} : out.result.route;
+    const RouteCheck check = replay ? check_route(route.points, plan.planner->field()) : out.check;
+    if (!check.safe) throw std::runtime_error("the replanned route failed the independent check: " + check.describe());
     // Time and energy of the route as planned, leg by leg (also for a length route).
-    const RoutePricing priced = price_route(*model, out.result.route.points);
+    const RoutePricing priced = price_route(*model, route.points);
     const bool timed = !model->steady || !o->depart.empty();
     // Weighed by time or energy: what the shortest route would cost, for comparison.
     std::optional<RoutePricing> shortest;
@@ -235,9 +262,9 @@ void register_plan(CLI::App& app) {
                    "or energy to avoid it\n", o->cost.c_str());
     }
     nlohmann::json summary = {
-        {"length_m", out.result.route.length()},
-        {"waypoints", out.result.route.points.size()},
-        {"min_clearance_m", out.check.min_clearance_m},
+        {"length_m", route.length()},
+        {"waypoints", route.points.size()},
+        {"min_clearance_m", check.min_clearance_m},
         {"margin_m", o->margin},
         {"graph", o->graph},
         {"search", o->search},
@@ -280,29 +307,8 @@ void register_plan(CLI::App& app) {
       summary["arcs"] = arcs;
       summary["lines"] = out.result.legs.size() - arcs;
     }
-    // Replanning: the detections replayed along the route, each repair written and listed.
-    nlohmann::json repairs = nlohmann::json::array();
-    std::optional<Replay> replay;
-    std::vector<Detection> detections;
-    if (!o->replan_events.empty()) {
-      detections = load_detections(o->replan_events, frame, o->frame.src_crs);
-      replay = replay_detections(*plan.planner->quadtree(), problem, detections, o->margin);
-      for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
-        const Repair& r = replay->repairs[k];
-        nlohmann::json row = {{"repair", k + 1},        {"along_m", r.along_m},   {"blocked_edges", r.blocked_edges},
-                              {"found", r.found},       {"expanded", r.expanded}, {"repair_ms", r.repair_ms}};
-        if (r.found) row["length_m"] = r.cost;
-        if (r.found && !o->output.empty()) {
-          row["file"] = repair_path(o->output, k + 1);
-          write_route_geojson(row["file"], Route{r.route}, frame,
-                              {{"repair", k + 1}, {"along_m", r.along_m}, {"length_m", r.cost}});
-        }
-        repairs.push_back(row);
-      }
-    }
-
     // Per waypoint: the speed of the leg it starts, and time and energy so far.
-    std::vector<nlohmann::json> waypoints(out.result.route.points.size(), nlohmann::json::object());
+    std::vector<nlohmann::json> waypoints(route.points.size(), nlohmann::json::object());
     nlohmann::json legs = nlohmann::json::array();
     double cum_time = 0.0, cum_energy = 0.0;
     for (std::size_t i = 0; i < priced.legs.size(); ++i) {
@@ -323,7 +329,7 @@ void register_plan(CLI::App& app) {
       waypoints[i]["cum_energy_j"] = cum_energy;
       if (timed) waypoints[i]["eta"] = format_utc(model->depart_s + cum_time);
     }
-    if (!o->output.empty()) write_route_geojson(o->output, out.result.route, frame, summary, waypoints);
+    if (!o->output.empty()) write_route_geojson(o->output, route, frame, summary, waypoints);
     summary["legs"] = legs;
     if (replay) {
       summary["repairs"] = repairs;
@@ -333,11 +339,11 @@ void register_plan(CLI::App& app) {
       RouteScene scene;
       scene.obstacles = &obstacles;
       scene.margin = o->margin;
-      scene.route = out.result.route.points;
+      scene.route = route.points;
       scene.start = problem.start;
       scene.goal = problem.goal;
       scene.true_north_deg = true_north_deg(frame, problem.start);
-      scene.title = route_title("deepguide plan", out.result.route, o->margin, frame);
+      scene.title = route_title("deepguide plan", route, o->margin, frame);
       if (model->current) {
         scene.current = [model](const Vec2& p) { return model->current(p, model->depart_s); };
         char label[96];
@@ -386,7 +392,9 @@ void register_plan(CLI::App& app) {
       if (!replay || replay->reached_goal) return;
       const Repair& last = replay->repairs.back();
       char buf[160];
-      std::snprintf(buf, sizeof buf, "after detection %zu, %.1f m along the route at (%.2f, %.2f), no way on to the goal",
+      std::snprintf(buf, sizeof buf,
+                    "after report %zu (in order of detected_at_m), %.1f m along the route at (%.2f, %.2f), no way on "
+                    "to the goal",
                     replay->repairs.size(), last.along_m, last.vehicle.x(), last.vehicle.y());
       throw NoRouteError(buf);
     };
@@ -395,12 +403,12 @@ void register_plan(CLI::App& app) {
       stopped();
       return;
     }
-    std::printf("length           %.2f m, %zu waypoints\n", out.result.route.length(), out.result.route.points.size());
+    std::printf("length           %.2f m, %zu waypoints\n", route.length(), route.points.size());
     if (!out.result.legs.empty()) {
       std::printf("exact length     %.3f m in %zu lines and arcs (the polyline keeps outside the arcs)\n",
                   out.result.exact_length_m, out.result.legs.size());
     }
-    std::printf("min clearance    %.2f m (margin %.2f m)\n", out.check.min_clearance_m, o->margin);
+    std::printf("min clearance    %.2f m (margin %.2f m)\n", check.min_clearance_m, o->margin);
     std::printf("graph            %s over %zu of %zu obstacles, %zu vertices, %zu edges; %s expanded %zu\n",
                 o->graph.c_str(), plan.obstacles_used, plan.obstacles_total, out.result.stats.graph_vertices,
                 out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);

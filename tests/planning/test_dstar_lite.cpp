@@ -12,6 +12,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/dstar_lite.hpp"
 #include "deepguide/planning/replanning.hpp"
+#include "deepguide/planning/route_check.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
 
@@ -59,6 +60,7 @@ TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
       d.obstacles.ellipses.push_back(disc(c.x(), c.y(), 3.0 + 10.0 * u(rng), "rock" + std::to_string(k)));
       detections.push_back(d);
     }
+    std::size_t reported = 0;
     const Replay replay = replay_detections(graph, problem, detections, 5.0, [&](const Repair& r, GraphVertex at) {
       // A* from scratch on the changed graph, from where the vehicle is.
       const GraphVertex goal = graph.goal_vertex();
@@ -70,9 +72,15 @@ TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
       if (!r.found) return;
       ++found;
       EXPECT_NEAR(r.cost, scratch.cost, 1e-9 * scratch.cost) << "scenario " << scenario;
-      // The repaired route is what it claims: its length is its cost, and it avoids the new rocks.
+      // The repaired route is what it claims: its length is its cost, and it keeps the margin from the
+      // old obstacles and from every rock reported so far.
       EXPECT_NEAR(Route{r.route}.length(), r.cost, 1e-9 * r.cost);
       EXPECT_EQ(r.route.front(), r.vehicle);
+      ObstacleSet known = set;  // repairs come in the order of the reports (generated in increasing along_m)
+      for (std::size_t k = 0; k <= reported; ++k) known.ellipses.push_back(detections[k].obstacles.ellipses.front());
+      ++reported;
+      const RouteCheck safe = check_route(r.route, ObstacleField(known, 5.0));
+      EXPECT_TRUE(safe.safe) << "scenario " << scenario << ": " << safe.describe();
     });
     EXPECT_NEAR(replay.initial_cost, first.cost, 1e-9 * first.cost);  // summed backwards: the last bits differ
     if (replay.reached_goal) {
@@ -174,6 +182,7 @@ TEST(DStarLite, CollinearCellsDoNotHideARepairInRounding) {
     dstar.update_edge(n - 1, n, std::numeric_limits<double>::infinity());
     dstar.update_edge(n, n - 1, std::numeric_limits<double>::infinity());
     ASSERT_TRUE(dstar.compute());
+    EXPECT_EQ(dstar.first_inconsistent(), -1) << "seed " << seed;
     const SearchResult scratch =
         shortest_path(graph, 1, n, SearchAlgorithm::dijkstra, [](GraphVertex) { return 0.0; });
     ASSERT_TRUE(scratch.found);

@@ -19,6 +19,7 @@
 // size, across levels, are found.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -88,24 +89,32 @@ class CellTree {
     std::vector<std::pair<std::size_t, bool>> out;
     std::array<int, D> dir{};
     for (int code = 0; code < ipow3(); ++code) {
-      int c = code, nonzero = 0;
+      int c = code, nonzero = 0, last_free = -1;
       for (int k = 0; k < D; ++k, c /= 3) {
         dir[k] = c % 3 - 1;
         nonzero += dir[k] != 0;
+        if (dir[k] == 0) last_free = k;
       }
       if (nonzero == 0) continue;
       // The finest cells just outside the leaf in this direction: along the
-      // axes where dir is 0 every position of the leaf's span.
+      // axes where dir is 0 every position of the leaf's span, except that
+      // along the last such axis a neighbour found is skipped to its end (so a
+      // big leaf's face costs its neighbours, not its finest cells).
       Index probe{};
-      probe_all(dir, lo, span, 0, probe, [&](const Index& p) {
+      probe_all(dir, lo, span, last_free, 0, probe, [&](const Index& p) -> std::int64_t {
         const std::optional<std::size_t> j = leaf_at_finest(p);
-        if (!j) return;
+        const std::int64_t past = last_free < 0 ? 0 : p[last_free] + 1;
+        if (!j) return past;
+        const Leaf& other = leaves_[*j];
+        const std::int64_t other_span = std::int64_t{1} << (max_depth_ - other.level);
+        const std::int64_t end = last_free < 0 ? 0 : (other.index[last_free] + 1) * other_span;
         for (auto& [k, face] : out) {
           if (k != *j) continue;
           face = face || nonzero == 1;  // met first across an edge or corner, then across a face
-          return;
+          return end;
         }
         out.emplace_back(*j, nonzero == 1);
+        return end;
       });
     }
     return out;
@@ -157,22 +166,22 @@ class CellTree {
     return std::nullopt;
   }
 
+  // Visits the probe cells; visit returns where the next probe along the
+  // last free axis may start (past the leaf it found).
   template <class F>
-  void probe_all(const std::array<int, D>& dir, const Index& lo, std::int64_t span, int axis, Index& probe,
-                 const F& visit) const {
-    if (axis == D) {
-      visit(probe);
-      return;
-    }
+  std::int64_t probe_all(const std::array<int, D>& dir, const Index& lo, std::int64_t span, int last_free, int axis,
+                         Index& probe, const F& visit) const {
+    if (axis == D) return visit(probe);
     if (dir[axis] != 0) {
       probe[axis] = dir[axis] < 0 ? lo[axis] - 1 : lo[axis] + span;
-      probe_all(dir, lo, span, axis + 1, probe, visit);
-      return;
+      return probe_all(dir, lo, span, last_free, axis + 1, probe, visit);
     }
-    for (std::int64_t t = 0; t < span; ++t) {
-      probe[axis] = lo[axis] + t;
-      probe_all(dir, lo, span, axis + 1, probe, visit);
+    for (std::int64_t t = lo[axis]; t < lo[axis] + span;) {
+      probe[axis] = t;
+      const std::int64_t next = probe_all(dir, lo, span, last_free, axis + 1, probe, visit);
+      t = axis == last_free ? std::max(t + 1, next) : t + 1;
     }
+    return 0;
   }
 
   Point origin_;

@@ -131,18 +131,20 @@ void DStarLite::move_to(GraphVertex v) {
   start_ = v;
 }
 
-void DStarLite::update_edge(GraphVertex u, GraphVertex v, double cost) {
+bool DStarLite::update_edge(GraphVertex u, GraphVertex v, double cost) {
   const auto [e, found] = boost::edge(u, v, *graph_);
-  if (!found) return;
+  if (!found) return false;
   const double c_old = boost::get(boost::edge_weight, *graph_, e);
+  if (c_old == cost) return false;
   boost::put(boost::edge_weight, *graph_, e, cost);
-  if (u == goal_) return;
+  if (u == goal_) return true;
   if (c_old > cost) {
     rhs_[u] = std::min(rhs_[u], cost + g_[v]);
   } else if (rhs_[u] == c_old + g_[v]) {
     rhs_[u] = best_successor_rhs(u);
   }
   update_vertex(u);
+  return true;
 }
 
 long long DStarLite::first_inconsistent() const {

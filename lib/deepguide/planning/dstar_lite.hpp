@@ -55,8 +55,10 @@ class DStarLite {
 
   /// The vehicle is now at `v` (call compute() after the edge changes that came with the move).
   void move_to(GraphVertex v);
-  /// The directed edge u -> v now costs `cost` (+inf: blocked); the graph's weight changes too.
-  void update_edge(GraphVertex u, GraphVertex v, double cost);
+  /// The directed edge u -> v now costs `cost` (+inf: blocked); the graph's
+  /// weight changes too. Returns false when there is no such edge or its cost
+  /// was that already.
+  bool update_edge(GraphVertex u, GraphVertex v, double cost);
 
   /// For tests: the first vertex (or none) that breaks D* Lite's invariants:
   /// rhs(s) = min over successors of c + g (s not the goal), and g = rhs for

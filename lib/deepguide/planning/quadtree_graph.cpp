@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 #include <tuple>
+#include <unordered_set>
 
 #include "deepguide/core/error.hpp"
 
@@ -17,6 +18,7 @@ namespace {
 
 constexpr std::size_t kNoVertex = static_cast<std::size_t>(-1);
 constexpr int kMaxDepth = 24;
+constexpr int kAttachRings = 4;
 
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
@@ -40,14 +42,14 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   if (!options.area_min.allFinite() || !options.area_max.allFinite() || !(extent.minCoeff() > 0.0)) {
     throw InputError("quadtree: expected a work area with a positive, finite extent");
   }
-  // The root: a square of min_cell * 2^depth over the area.
+  // The root: a square of min_cell * 2^depth over the area (compared in
+  // doubles first: a tiny cell over a wide area overflows an int).
   const double need = extent.maxCoeff() / options.min_cell_m;
-  const int depth = std::max(0, static_cast<int>(std::ceil(std::log2(need))));
-  if (depth > kMaxDepth) {
+  if (!(need <= std::ldexp(1.0, kMaxDepth))) {
     throw InputError("--min-cell: " + num(options.min_cell_m) + " m over a " + num(extent.maxCoeff()) +
-                     " m area needs " + std::to_string(depth) + " levels, more than " + std::to_string(kMaxDepth) +
-                     "; give a larger cell");
+                     " m area needs more than " + std::to_string(kMaxDepth) + " levels; give a larger cell");
   }
+  const int depth = std::max(0, static_cast<int>(std::ceil(std::log2(need))));
   const double root = std::ldexp(options.min_cell_m, depth);
   std::size_t cells = 0;
   const double margin = field.margin();
@@ -56,6 +58,11 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
       throw InputError("--min-cell: " + num(options.min_cell_m) + " m cells over this area make more than " +
                        std::to_string(options.max_cells) + " cells; give a larger cell or a smaller area");
     }
+    // The root square reaches past the area on its far sides: cells wholly
+    // out of the area are occupied, so routes keep to the cells that meet it
+    // (splitting the cells that straddle its edge would line it with a band
+    // of minimum cells for no use).
+    if ((box.min.array() >= options.area_max.array()).any()) return CellState::occupied;
     const double d = field.clearance(box.centre());
     const double r = 0.5 * (box.max - box.min).norm();
     if (d - r >= margin) return CellState::free;
@@ -114,9 +121,24 @@ std::size_t QuadtreeGraph::attach(const PlanningProblem& problem) {
     if (vertex_of_[*leaf] != kNoVertex) {
       joins.push_back(vertex_of_[*leaf]);
     } else {
-      for (const auto& [other, face] : tree_->neighbours(*leaf)) {
-        const std::size_t w = vertex_of_[other];
-        if (w != kNoVertex && field_->segment_free(point, leaves[other].box.centre())) joins.push_back(w);
+      // Its own cell is occupied by the conservative rule (the point itself
+      // is free: the planner checked): the free cells it sees, ring by ring
+      // outwards through the neighbours, until a ring has some (at most
+      // kAttachRings rings; a free neighbour may be two cells away where a
+      // zone's edge runs along the grid).
+      std::vector<std::size_t> ring{*leaf};
+      std::unordered_set<std::size_t> seen{*leaf};
+      for (int r = 0; r < kAttachRings && joins.empty() && !ring.empty(); ++r) {
+        std::vector<std::size_t> next;
+        for (std::size_t cell : ring) {
+          for (const auto& [other, face] : tree_->neighbours(cell)) {
+            if (!seen.insert(other).second) continue;
+            next.push_back(other);
+            const std::size_t w = vertex_of_[other];
+            if (w != kNoVertex && field_->segment_free(point, leaves[other].box.centre())) joins.push_back(w);
+          }
+        }
+        ring = std::move(next);
       }
     }
     for (std::size_t w : joins) {

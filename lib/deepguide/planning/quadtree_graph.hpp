@@ -15,8 +15,11 @@
 // the two cells), edge and corner neighbours when the obstacle field says the
 // segment between the centres is free. Start and goal join the centre of the
 // free leaf that holds them (a segment inside one convex free cell), or, when
-// their own cell is occupied by the conservative rule, the free neighbours
-// they see; and each other when the straight line is free.
+// their own cell is occupied by the conservative rule, the free cells they
+// see among the nearest rings of neighbours; and each other when the straight
+// line is free. Cells wholly outside the work area count as occupied: the
+// root square reaches past the area's far sides, and routes keep to the cells
+// that meet the area (at most one cell beyond its edge).
 //
 // `smooth` (plan --smooth) shortcuts the route afterwards: from each anchor
 // it jumps to the farthest later waypoint it sees (segment_free), so the
@@ -42,8 +45,9 @@ struct QuadtreeOptions {
   Vec2 area_min{0.0, 0.0};  ///< the work area (local frame); the root is the square over it
   Vec2 area_max{0.0, 0.0};
   bool smooth = false;
-  /// Refused above this many cells (InputError): the tree would not fit or finish.
-  std::size_t max_cells = 20'000'000;
+  /// Refused above this many cells (InputError): a free cell costs about
+  /// 1 KiB with its edges, so 2 million is about 2 GiB.
+  std::size_t max_cells = 2'000'000;
 };
 
 class QuadtreeGraph {

@@ -108,8 +108,8 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
     r.vehicle = graph.position(at);
     const ObstacleField newcomers(d.obstacles, margin);
     for (const auto& [u, v] : graph.edges_blocked_by(newcomers)) {
-      dstar.update_edge(u, v, std::numeric_limits<double>::infinity());
-      ++r.blocked_edges;
+      // Edges an earlier report blocked already are not counted again.
+      if (dstar.update_edge(u, v, std::numeric_limits<double>::infinity())) ++r.blocked_edges;
     }
     r.found = dstar.compute();
     r.cost = dstar.cost();

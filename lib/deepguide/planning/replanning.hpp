@@ -29,7 +29,7 @@ struct Detection {
 struct Repair {
   double along_m = 0.0;          ///< distance sailed when the route was repaired (at a vertex)
   Vec2 vehicle{0.0, 0.0};        ///< where the vehicle was
-  std::size_t blocked_edges = 0; ///< directed edges the detection blocked
+  std::size_t blocked_edges = 0; ///< directed edges the detection blocked (not blocked before)
   bool found = false;
   std::vector<Vec2> route;       ///< from the vehicle to the goal
   double cost = 0.0;             ///< its length (+inf when none)
@@ -38,7 +38,7 @@ struct Repair {
 };
 
 struct Replay {
-  std::vector<Vec2> initial_route;
+  std::vector<Vec2> initial_route;  ///< D* Lite's first route: the one the vehicle sails until a report
   double initial_cost = 0.0;
   std::vector<Repair> repairs;   ///< one per detection, in order
   std::vector<Vec2> track;       ///< every vertex the vehicle reached, start first
