@@ -58,14 +58,7 @@ namespace {
 QuadtreeOptions quadtree_area(const ObstacleSet& obstacles, QuadtreeOptions q, double margin) {
   if ((q.area_max - q.area_min).minCoeff() > 0.0) return q;
   if (obstacles.empty()) throw InputError("quadtree: expected obstacles or a work area");
-  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const auto& c : obstacles.ellipses) {
-    lo = lo.cwiseMin(c.footprint.center - Vec2::Constant(c.footprint.a));
-    hi = hi.cwiseMax(c.footprint.center + Vec2::Constant(c.footprint.a));
-  }
-  for (const auto& p : obstacles.polygons) {
-    for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));
-  }
+  const auto [lo, hi] = footprint_box(obstacles);
   const double pad = margin + std::max(0.1 * (hi - lo).maxCoeff(), 10.0 * q.min_cell_m);
   q.area_min = lo - Vec2::Constant(pad);
   q.area_max = hi + Vec2::Constant(pad);

@@ -222,7 +222,7 @@ struct QuadtreeGraph::EdgeIndex {
 
 // The cell edges (both directions of a pair share one box) in an R-tree, for
 // edges_blocked_by; start and goal edges change with every attach and are few.
-void QuadtreeGraph::index_edges() const {
+void QuadtreeGraph::index_edges() {
   std::vector<EdgeIndex::Item> items;
   for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
     const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
@@ -237,17 +237,8 @@ void QuadtreeGraph::index_edges() const {
 
 std::vector<std::pair<GraphVertex, GraphVertex>> QuadtreeGraph::edges_blocked_by(const ObstacleField& newcomers) const {
   namespace bgi = boost::geometry::index;
-  if (!edge_index_) index_edges();
   // A box around the newcomers' zones: only edges whose box meets it can be blocked.
-  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  const ObstacleSet& set = newcomers.obstacles();
-  for (const auto& c : set.ellipses) {
-    lo = lo.cwiseMin(c.footprint.center - Vec2::Constant(c.footprint.a));
-    hi = hi.cwiseMax(c.footprint.center + Vec2::Constant(c.footprint.a));
-  }
-  for (const auto& p : set.polygons) {
-    for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));
-  }
+  auto [lo, hi] = footprint_box(newcomers.obstacles());
   lo -= Vec2::Constant(newcomers.margin());
   hi += Vec2::Constant(newcomers.margin());
   std::vector<std::pair<GraphVertex, GraphVertex>> out;

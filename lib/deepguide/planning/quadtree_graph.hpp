@@ -91,8 +91,8 @@ class QuadtreeGraph {
   PlanningGraph graph_;
   std::array<Vec2, 2> ends_{Vec2::Zero(), Vec2::Zero()};  // the attached start and goal
   struct EdgeIndex;  // R-tree of the cell edges' boxes (edges_blocked_by)
-  void index_edges() const;
-  mutable std::shared_ptr<const EdgeIndex> edge_index_;
+  void index_edges();
+  std::shared_ptr<const EdgeIndex> edge_index_;
   std::size_t edges_ = 0;
   double build_ms_ = 0.0;
 };

@@ -133,13 +133,12 @@ void VisibilityGraph::link_lattice(const WaypointGrid& grid, const std::vector<s
     boost::add_edge(b, a, w, graph_);
     ++base_edges_;
   };
-  const auto kNone = kNoVertex;
   // Lattice to lattice: each unordered pair once, by offsets in one half plane.
   const auto reach = static_cast<long>(std::floor(link_radius_ / grid.spacing_m));
   for (std::size_t j = 0; j < rows; ++j) {
     for (std::size_t i = 0; i < cols; ++i) {
       const std::size_t a = vertex[j * cols + i];
-      if (a == kNone) continue;
+      if (a == kNoVertex) continue;
       for (long dj = 0; dj <= reach; ++dj) {
         for (long di = -reach; di <= reach; ++di) {
           if (dj == 0 && di <= 0) continue;
@@ -147,7 +146,7 @@ void VisibilityGraph::link_lattice(const WaypointGrid& grid, const std::vector<s
           const long ii = static_cast<long>(i) + di, jj = static_cast<long>(j) + dj;
           if (ii < 0 || jj < 0 || ii >= static_cast<long>(cols) || jj >= static_cast<long>(rows)) continue;
           const std::size_t b = vertex[static_cast<std::size_t>(jj) * cols + static_cast<std::size_t>(ii)];
-          if (b != kNone) link(a, b);
+          if (b != kNoVertex) link(a, b);
         }
       }
     }
@@ -163,7 +162,7 @@ void VisibilityGraph::link_lattice(const WaypointGrid& grid, const std::vector<s
     for (long jj = std::max(j0, 0L); jj <= std::min(j1, static_cast<long>(rows) - 1); ++jj) {
       for (long ii = std::max(i0, 0L); ii <= std::min(i1, static_cast<long>(cols) - 1); ++ii) {
         const std::size_t b = vertex[static_cast<std::size_t>(jj) * cols + static_cast<std::size_t>(ii)];
-        if (b == kNone || (corners_[b].p - corners_[c].p).norm() > link_radius_) continue;
+        if (b == kNoVertex || (corners_[b].p - corners_[c].p).norm() > link_radius_) continue;
         link(c, b);
       }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "deepguide/core/error.hpp"
@@ -20,6 +21,18 @@ std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double verti
   std::erase_if(obstacles.ellipses, passable);
   std::erase_if(obstacles.polygons, passable);
   return before - obstacles.size();
+}
+
+std::pair<Vec2, Vec2> footprint_box(const ObstacleSet& obstacles) {
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const EllipticCylinder& c : obstacles.ellipses) {
+    lo = lo.cwiseMin(c.footprint.center - Vec2::Constant(c.footprint.a));
+    hi = hi.cwiseMax(c.footprint.center + Vec2::Constant(c.footprint.a));
+  }
+  for (const PolygonObstacle& p : obstacles.polygons) {
+    for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));
+  }
+  return {lo, hi};
 }
 
 }  // namespace deepguide

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deepguide/geometry/ellipse.hpp"
@@ -35,6 +36,10 @@ struct ObstacleSet {
   std::size_t size() const { return ellipses.size() + polygons.size(); }
   bool empty() const { return size() == 0; }
 };
+
+/// A box (min, max corners) around every footprint, an ellipse by the disc of
+/// its semi-major axis; min > max for an empty set.
+std::pair<Vec2, Vec2> footprint_box(const ObstacleSet& obstacles);
 
 /// Removes the obstacles a vehicle at `depth_m` passes over: those whose top
 /// lies deeper than depth_m + vertical_clearance_m. Obstacles given by their
