@@ -376,9 +376,11 @@ void register_plan(CLI::App& app) {
         scene.track = replay->track;
       }
       if (o->render_graph && plan.planner->quadtree() != nullptr) {
-        for (const auto& leaf : plan.planner->quadtree()->tree().leaves()) {
+        const CellTree<2>& tree = plan.planner->quadtree()->tree();
+        for (const auto& leaf : tree.leaves()) {
           auto& cells = leaf.state == CellState::free ? scene.free_cells : scene.occupied_cells;
-          cells.emplace_back(leaf.box.min, leaf.box.max);
+          const auto box = tree.box(leaf);
+          cells.emplace_back(box.min, box.max);
         }
       }
       if (o->render_graph) {

@@ -40,11 +40,11 @@ ObstacleSet random_ellipses(std::mt19937& rng, int count, double area) {
 template <int D>
 std::set<std::pair<std::size_t, bool>> touching(const CellTree<D>& tree, std::size_t i) {
   std::set<std::pair<std::size_t, bool>> out;
-  const auto& a = tree.leaves()[i].box;
-  const double eps = 1e-9 * tree.root_size();
+  const auto a = tree.box(i);
+  const double eps = 1e-9 * tree.root_size().maxCoeff();
   for (std::size_t j = 0; j < tree.leaves().size(); ++j) {
     if (j == i) continue;
-    const auto& b = tree.leaves()[j].box;
+    const auto b = tree.box(j);
     bool meet = true;
     int flat = 0;  // axes along which they only touch
     for (int k = 0; k < D; ++k) {
@@ -82,7 +82,7 @@ TEST(CellTree, NeighboursAcrossLevelsMatchBruteForceIn2D) {
     for (double y = 0.5; y < 128; y += 2.9) {
       const auto leaf = tree.locate({x, y});
       ASSERT_TRUE(leaf);
-      const auto& b = tree.leaves()[*leaf].box;
+      const auto b = tree.box(*leaf);
       EXPECT_TRUE(x >= b.min.x() && x < b.max.x() && y >= b.min.y() && y < b.max.y());
     }
   }
@@ -111,7 +111,8 @@ TEST(Quadtree, FreeCellsAreFreeAndOccupiedCellsAreInsideZones) {
   const QuadtreeGraph graph(field, q);
   std::size_t free = 0, occupied = 0;
   for (const auto& leaf : graph.tree().leaves()) {
-    const Vec2 lo = leaf.box.min, hi = leaf.box.max;
+    const auto cell = graph.tree().box(leaf);
+    const Vec2 lo = cell.min, hi = cell.max;
     const bool minimal = (hi - lo).x() <= q.min_cell_m + 1e-9;
     // Out of the area (the root square reaches past its far sides) is occupied by rule, not by a zone.
     const bool outside = (lo.array() >= q.area_max.array()).any();

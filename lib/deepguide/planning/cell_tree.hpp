@@ -3,20 +3,25 @@
 // occupied and mixed cells: one implementation generic over the dimension
 // (shared/notes/algorithms.md §4).
 //
-// The root is a cube of side root_size at `origin`; a cell of level L has side
-// root_size / 2^L and integer index i (per axis) at that level, so it spans
-// origin + [i, i + 1) * side. classify(cell) says whether a cell is free (no
-// point of it is inside any safety zone), occupied (every point is) or mixed;
-// mixed cells split into 2^D children down to max_depth, where a mixed leaf
-// counts as occupied. The classifier must be conservative: "free" only when
-// the whole closed cell is free (planning/cell_classifier.hpp gives one from
-// any 1-Lipschitz clearance).
+// The root is a box of extent root_size (per axis) at `origin`; a cell of
+// level L has extent root_size / 2^L and integer index i (per axis) at that
+// level, so it spans origin + [i, i + 1) * side. Octree cells need not be
+// cubes: the octree graph flattens them to the vehicle's dive angle.
+// classify(cell) says whether a cell is free (no point of it is inside any
+// safety zone), occupied (every point is) or mixed; mixed cells split into
+// 2^D children down to max_depth, where a mixed leaf counts as occupied. The
+// classifier must be conservative: "free" only when the whole closed cell is.
 //
-// Neighbours (§4.2, a linear quadtree): leaves are kept in a hash map keyed
-// by (level, index). For each leaf and each of the 3^D - 1 directions (faces,
-// edges, corners) the finest cells just outside it are probed and the leaf
-// holding each is found by its key at every level, so neighbours of every
-// size, across levels, are found.
+// Storage: a linear tree (§4.2). Each leaf is its level and the Morton code
+// (bits of the D indices interleaved) of its lowest finest cell, 16 bytes in
+// all. The depth-first build visits children in Morton order, so leaves come
+// out sorted by code and tile the code range: the leaf holding a finest cell
+// is the last leaf whose code is not above the cell's (one binary search, no
+// hash map). An octree of ten million leaves is 160 MB.
+//
+// Neighbours: for each leaf and each of the 3^D - 1 directions (faces, edges,
+// corners) the finest cells just outside it are probed and the leaf holding
+// each is looked up, so neighbours of every size, across levels, are found.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -26,7 +31,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace deepguide {
@@ -40,38 +45,60 @@ class CellTree {
  public:
   using Point = Eigen::Matrix<double, D, 1>;
   using Index = std::array<std::int64_t, D>;
+  /// Deepest level the 64-bit Morton code holds.
+  static constexpr int kMaxLevels = D == 2 ? 31 : 21;
 
   struct Box {
     Point min, max;
     Point centre() const { return 0.5 * (min + max); }
   };
   struct Leaf {
-    int level = 0;
-    Index index{};
+    std::uint64_t code = 0;  ///< Morton code of the leaf's lowest finest cell
+    std::uint8_t level = 0;
     CellState state = CellState::free;  ///< free or occupied (a mixed leaf at max_depth is occupied)
-    Box box;
   };
   /// `classify` answers for one cell; it must never call a cell free that is not.
   using Classifier = std::function<CellState(const Box&)>;
 
+  /// A root of the same extent along every axis (a square or a cube).
   CellTree(const Point& origin, double root_size, int max_depth, const Classifier& classify)
-      : origin_(origin), root_size_(root_size), max_depth_(max_depth) {
+      : CellTree(origin, Point::Constant(root_size), max_depth, classify) {}
+  CellTree(const Point& origin, const Point& root_size, int max_depth, const Classifier& classify)
+      : origin_(origin), root_size_(root_size), max_depth_(std::clamp(max_depth, 0, kMaxLevels)) {
     build(0, Index{}, classify);
   }
 
   const std::vector<Leaf>& leaves() const { return leaves_; }
   int max_depth() const { return max_depth_; }
-  double root_size() const { return root_size_; }
+  const Point& root_size() const { return root_size_; }
   const Point& origin() const { return origin_; }
-  double side(int level) const { return std::ldexp(root_size_, -level); }
+  Point side(int level) const { return root_size_ * std::ldexp(1.0, -level); }
+
+  /// The leaf's index per axis at its own level.
+  Index index(const Leaf& leaf) const {
+    Index at = decode(leaf.code);
+    for (auto& v : at) v >>= (max_depth_ - leaf.level);
+    return at;
+  }
+  Box box(const Leaf& leaf) const {
+    const Index at = index(leaf);
+    const Point s = side(leaf.level);
+    Box b;
+    for (int k = 0; k < D; ++k) {
+      b.min[k] = origin_[k] + s[k] * static_cast<double>(at[k]);
+      b.max[k] = b.min[k] + s[k];
+    }
+    return b;
+  }
+  Box box(std::size_t i) const { return box(leaves_[i]); }
 
   /// The leaf holding p (cells are half-open), or none outside the root.
   std::optional<std::size_t> locate(const Point& p) const {
     Index finest{};
-    const double unit = side(max_depth_);
+    const Point unit = side(max_depth_);
     const std::int64_t cells = std::int64_t{1} << max_depth_;
     for (int k = 0; k < D; ++k) {
-      const double q = std::floor((p[k] - origin_[k]) / unit);
+      const double q = std::floor((p[k] - origin_[k]) / unit[k]);
       if (!(q >= 0.0) || q >= static_cast<double>(cells)) return std::nullopt;
       finest[k] = static_cast<std::int64_t>(q);
     }
@@ -82,11 +109,16 @@ class CellTree {
   /// once, with whether it shares a face (its centre segment then stays
   /// inside the two cells: the crossing point lies on the shared face).
   std::vector<std::pair<std::size_t, bool>> neighbours(std::size_t i) const {
+    std::vector<std::pair<std::size_t, bool>> out;
+    neighbours(i, out);
+    return out;
+  }
+  /// The same into `out` (cleared first), for callers that reuse one buffer.
+  void neighbours(std::size_t i, std::vector<std::pair<std::size_t, bool>>& out) const {
+    out.clear();
     const Leaf& leaf = leaves_[i];
     const std::int64_t span = std::int64_t{1} << (max_depth_ - leaf.level);  // finest cells per side
-    Index lo{};
-    for (int k = 0; k < D; ++k) lo[k] = leaf.index[k] * span;
-    std::vector<std::pair<std::size_t, bool>> out;
+    const Index lo = decode(leaf.code);
     std::array<int, D> dir{};
     for (int code = 0; code < ipow3(); ++code) {
       int c = code, nonzero = 0, last_free = -1;
@@ -103,11 +135,10 @@ class CellTree {
       Index probe{};
       probe_all(dir, lo, span, last_free, 0, probe, [&](const Index& p) -> std::int64_t {
         const std::optional<std::size_t> j = leaf_at_finest(p);
-        const std::int64_t past = last_free < 0 ? 0 : p[last_free] + 1;
-        if (!j) return past;
+        if (!j) return last_free < 0 ? 0 : p[last_free] + 1;
         const Leaf& other = leaves_[*j];
         const std::int64_t other_span = std::int64_t{1} << (max_depth_ - other.level);
-        const std::int64_t end = last_free < 0 ? 0 : (other.index[last_free] + 1) * other_span;
+        const std::int64_t end = last_free < 0 ? 0 : (index(other)[last_free] + 1) * other_span;
         for (auto& [k, face] : out) {
           if (k != *j) continue;
           face = face || nonzero == 1;  // met first across an edge or corner, then across a face
@@ -117,32 +148,73 @@ class CellTree {
         return end;
       });
     }
-    return out;
   }
 
  private:
   static constexpr int ipow3() { return D == 2 ? 9 : 27; }
 
-  struct KeyHash {
-    std::size_t operator()(const std::pair<int, Index>& key) const {
-      std::uint64_t h = static_cast<std::uint64_t>(key.first) * 0x9E3779B97F4A7C15ull;
-      for (std::int64_t v : key.second) h = (h ^ static_cast<std::uint64_t>(v)) * 0x100000001B3ull;
-      return static_cast<std::size_t>(h ^ (h >> 29));
+  // Morton codes by the usual bit spreading: the bits of one index moved to
+  // every D-th place, and back.
+  static std::uint64_t spread(std::uint64_t x) {
+    if constexpr (D == 2) {
+      x &= 0xffffffffull;
+      x = (x | x << 16) & 0x0000ffff0000ffffull;
+      x = (x | x << 8) & 0x00ff00ff00ff00ffull;
+      x = (x | x << 4) & 0x0f0f0f0f0f0f0f0full;
+      x = (x | x << 2) & 0x3333333333333333ull;
+      return (x | x << 1) & 0x5555555555555555ull;
+    } else {
+      x &= 0x1fffffull;
+      x = (x | x << 32) & 0x001f00000000ffffull;
+      x = (x | x << 16) & 0x001f0000ff0000ffull;
+      x = (x | x << 8) & 0x100f00f00f00f00full;
+      x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+      return (x | x << 2) & 0x1249249249249249ull;
     }
-  };
+  }
+  static std::uint64_t compact(std::uint64_t x) {
+    if constexpr (D == 2) {
+      x &= 0x5555555555555555ull;
+      x = (x | x >> 1) & 0x3333333333333333ull;
+      x = (x | x >> 2) & 0x0f0f0f0f0f0f0f0full;
+      x = (x | x >> 4) & 0x00ff00ff00ff00ffull;
+      x = (x | x >> 8) & 0x0000ffff0000ffffull;
+      return (x | x >> 16) & 0xffffffffull;
+    } else {
+      x &= 0x1249249249249249ull;
+      x = (x | x >> 2) & 0x10c30c30c30c30c3ull;
+      x = (x | x >> 4) & 0x100f00f00f00f00full;
+      x = (x | x >> 8) & 0x001f0000ff0000ffull;
+      x = (x | x >> 16) & 0x001f00000000ffffull;
+      return (x | x >> 32) & 0x1fffffull;
+    }
+  }
+  static std::uint64_t encode(const Index& at) {
+    std::uint64_t code = 0;
+    for (int k = 0; k < D; ++k) code |= spread(static_cast<std::uint64_t>(at[k])) << k;
+    return code;
+  }
+  static Index decode(std::uint64_t code) {
+    Index at{};
+    for (int k = 0; k < D; ++k) at[k] = static_cast<std::int64_t>(compact(code >> k));
+    return at;
+  }
 
+  // Depth first, children in Morton order (child bit k = axis k), so leaves
+  // are appended in increasing code.
   void build(int level, const Index& index, const Classifier& classify) {
-    Box box;
-    const double s = side(level);
+    Box b;
+    const Point s = side(level);
     for (int k = 0; k < D; ++k) {
-      box.min[k] = origin_[k] + s * static_cast<double>(index[k]);
-      box.max[k] = box.min[k] + s;
+      b.min[k] = origin_[k] + s[k] * static_cast<double>(index[k]);
+      b.max[k] = b.min[k] + s[k];
     }
-    CellState state = classify(box);
+    CellState state = classify(b);
     if (state == CellState::mixed && level == max_depth_) state = CellState::occupied;  // conservative
     if (state != CellState::mixed) {
-      by_key_.emplace(std::pair{level, index}, leaves_.size());
-      leaves_.push_back(Leaf{level, index, state, box});
+      Index finest = index;
+      for (auto& v : finest) v <<= (max_depth_ - level);
+      leaves_.push_back(Leaf{encode(finest), static_cast<std::uint8_t>(level), state});
       return;
     }
     for (int child = 0; child < (1 << D); ++child) {
@@ -157,13 +229,12 @@ class CellTree {
     for (int k = 0; k < D; ++k) {
       if (finest[k] < 0 || finest[k] >= cells) return std::nullopt;
     }
-    for (int level = 0; level <= max_depth_; ++level) {
-      Index at{};
-      for (int k = 0; k < D; ++k) at[k] = finest[k] >> (max_depth_ - level);
-      const auto it = by_key_.find(std::pair{level, at});
-      if (it != by_key_.end()) return it->second;
-    }
-    return std::nullopt;
+    const std::uint64_t code = encode(finest);
+    // The leaves tile the code range in order: the last one starting at or below `code` holds it.
+    const auto it = std::upper_bound(leaves_.begin(), leaves_.end(), code,
+                                     [](std::uint64_t c, const Leaf& leaf) { return c < leaf.code; });
+    if (it == leaves_.begin()) return std::nullopt;
+    return static_cast<std::size_t>(it - leaves_.begin() - 1);
   }
 
   // Visits the probe cells; visit returns where the next probe along the
@@ -185,10 +256,9 @@ class CellTree {
   }
 
   Point origin_;
-  double root_size_;
+  Point root_size_;
   int max_depth_;
   std::vector<Leaf> leaves_;
-  std::unordered_map<std::pair<int, Index>, std::size_t, KeyHash> by_key_;
 };
 
 }  // namespace deepguide

@@ -85,11 +85,11 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   graph_ = PlanningGraph(free_.size() + 2);  // + start and goal
   for (std::size_t v = 0; v < free_.size(); ++v) {
     const std::size_t leaf = free_[v];
-    const Vec2 a = leaves[leaf].box.centre();
+    const Vec2 a = tree_->box(leaf).centre();
     for (const auto& [other, face] : tree_->neighbours(leaf)) {
       const std::size_t w = vertex_of_[other];
       if (w == kNoVertex || w < v) continue;  // occupied, or the pair is done from the other side
-      const Vec2 b = leaves[other].box.centre();
+      const Vec2 b = tree_->box(other).centre();
       if (!face && !field.segment_free(a, b)) continue;
       const double len = (b - a).norm();
       boost::add_edge(v, w, len, graph_);
@@ -102,12 +102,11 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
 }
 
 Vec2 QuadtreeGraph::position(GraphVertex v) const {
-  if (v < free_.size()) return tree_->leaves()[free_[v]].box.centre();
+  if (v < free_.size()) return tree_->box(free_[v]).centre();
   return v == start_vertex() ? ends_[0] : ends_[1];
 }
 
 std::size_t QuadtreeGraph::attach(const PlanningProblem& problem) {
-  const auto& leaves = tree_->leaves();
   const GraphVertex sv = start_vertex(), gv = goal_vertex();
   detach();
   ends_ = {problem.start, problem.goal};
@@ -135,7 +134,7 @@ std::size_t QuadtreeGraph::attach(const PlanningProblem& problem) {
             if (!seen.insert(other).second) continue;
             next.push_back(other);
             const std::size_t w = vertex_of_[other];
-            if (w != kNoVertex && field_->segment_free(point, leaves[other].box.centre())) joins.push_back(w);
+            if (w != kNoVertex && field_->segment_free(point, tree_->box(other).centre())) joins.push_back(w);
           }
         }
         ring = std::move(next);
@@ -266,10 +265,9 @@ std::vector<std::pair<GraphVertex, GraphVertex>> QuadtreeGraph::edges_blocked_by
 
 std::vector<std::pair<Vec2, Vec2>> QuadtreeGraph::edges() const {
   std::vector<std::pair<Vec2, Vec2>> out;
-  const auto& leaves = tree_->leaves();
   for (auto [it, end] = boost::edges(graph_); it != end; ++it) {
     const GraphVertex a = boost::source(*it, graph_), b = boost::target(*it, graph_);
-    if (a < b && b < free_.size()) out.emplace_back(leaves[free_[a]].box.centre(), leaves[free_[b]].box.centre());
+    if (a < b && b < free_.size()) out.emplace_back(position(a), position(b));
   }
   return out;
 }
