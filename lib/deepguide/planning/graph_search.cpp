@@ -20,7 +20,8 @@ template <class Base>
 class StopAtTarget : public Base {
  public:
   StopAtTarget(GraphVertex target, std::size_t& expanded) : target_(target), expanded_(&expanded) {}
-  void examine_vertex(GraphVertex v, const PlanningGraph&) const {
+  template <class Graph>
+  void examine_vertex(GraphVertex v, const Graph&) const {
     ++*expanded_;
     if (v == target_) throw TargetReached{};
   }
@@ -30,7 +31,8 @@ class StopAtTarget : public Base {
   std::size_t* expanded_;
 };
 
-struct Heuristic : public boost::astar_heuristic<PlanningGraph, double> {
+template <class Graph>
+struct Heuristic : public boost::astar_heuristic<Graph, double> {
   const std::function<double(GraphVertex)>* h;
   double operator()(GraphVertex v) const { return (*h)(v); }
 };
@@ -39,30 +41,48 @@ struct Heuristic : public boost::astar_heuristic<PlanningGraph, double> {
 
 namespace {
 
-template <class WeightMap>
-void run_search(const PlanningGraph& graph, GraphVertex source, GraphVertex target, SearchAlgorithm algorithm,
+// The one search, for stored and implicit graphs alike.
+template <class Graph, class WeightMap>
+void run_search(const Graph& graph, GraphVertex source, GraphVertex target, SearchAlgorithm algorithm,
                 const std::function<double(GraphVertex)>& heuristic, WeightMap weight, std::vector<GraphVertex>& pred,
                 std::vector<double>& dist, std::size_t& expanded) {
   try {
     if (algorithm == SearchAlgorithm::astar) {
       std::vector<double> rank(dist.size(), std::numeric_limits<double>::infinity());
-      Heuristic h;
+      Heuristic<Graph> h;
       h.h = &heuristic;
       boost::astar_search(graph, source, h,
-                          boost::predecessor_map(pred.data())
+                          boost::vertex_index_map(boost::typed_identity_property_map<GraphVertex>())
+                              .predecessor_map(pred.data())
                               .distance_map(dist.data())
                               .rank_map(rank.data())
                               .weight_map(weight)
                               .visitor(StopAtTarget<boost::default_astar_visitor>(target, expanded)));
     } else {
       boost::dijkstra_shortest_paths(graph, source,
-                                     boost::predecessor_map(pred.data())
+                                     boost::vertex_index_map(boost::typed_identity_property_map<GraphVertex>())
+                                         .predecessor_map(pred.data())
                                          .distance_map(dist.data())
                                          .weight_map(weight)
                                          .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, expanded)));
     }
   } catch (const TargetReached&) {
   }
+}
+
+// The path from the predecessors, when the target was reached.
+SearchResult finish(GraphVertex source, GraphVertex target, const std::vector<GraphVertex>& pred,
+                    const std::vector<double>& dist, SearchResult& result) {
+  // Boost initialises distances to numeric_limits::max() as its infinity.
+  if (!(dist[target] < std::numeric_limits<double>::max())) return result;
+  result.found = true;
+  result.cost = dist[target];
+  for (GraphVertex v = target;; v = pred[v]) {
+    result.path.push_back(v);
+    if (v == source || pred[v] == v) break;
+  }
+  std::reverse(result.path.begin(), result.path.end());
+  return result;
 }
 
 }  // namespace
@@ -94,16 +114,19 @@ SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, Graph
     run_search(graph, source, target, algorithm, heuristic, boost::make_function_property_map<Edge, double>(weight),
                pred, dist, result.expanded);
   }
-  // Boost initialises distances to numeric_limits::max() as its infinity.
-  if (!(dist[target] < std::numeric_limits<double>::max())) return result;
-  result.found = true;
-  result.cost = dist[target];
-  for (GraphVertex v = target;; v = pred[v]) {
-    result.path.push_back(v);
-    if (v == source || pred[v] == v) break;
-  }
-  std::reverse(result.path.begin(), result.path.end());
-  return result;
+  return finish(source, target, pred, dist, result);
+}
+
+SearchResult shortest_path(const ImplicitGraph& graph, GraphVertex source, GraphVertex target,
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic) {
+  const std::size_t n = graph.vertex_count;
+  std::vector<GraphVertex> pred(n);
+  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  SearchResult result;
+  const auto weight = [](const ImplicitEdge& e) { return e.cost; };
+  run_search(graph, source, target, algorithm, heuristic, boost::make_function_property_map<ImplicitEdge, double>(weight),
+             pred, dist, result.expanded);
+  return finish(source, target, pred, dist, result);
 }
 
 }  // namespace deepguide

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/planning/implicit_graph.hpp"
 
 namespace deepguide {
 
@@ -43,5 +44,9 @@ using EdgeCostFn = std::function<double(GraphVertex from, GraphVertex to, double
 SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
                            SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
                            const EdgeCostFn& edge_cost = {});
+/// The same search over a graph found on demand (implicit_graph.hpp); its
+/// edges carry their costs.
+SearchResult shortest_path(const ImplicitGraph& graph, GraphVertex source, GraphVertex target,
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic);
 
 }  // namespace deepguide

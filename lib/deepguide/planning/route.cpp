@@ -1,12 +1,17 @@
 #include "deepguide/planning/route.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace deepguide {
 
 double Route::length() const {
+  const bool in_depth = depth_m.size() == points.size();
   double sum = 0.0;
-  for (std::size_t i = 1; i < points.size(); ++i) sum += (points[i] - points[i - 1]).norm();
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const double dz = in_depth ? depth_m[i] - depth_m[i - 1] : 0.0;
+    sum += std::hypot((points[i] - points[i - 1]).norm(), dz);
+  }
   return sum;
 }
 

@@ -11,8 +11,12 @@ namespace deepguide {
 
 struct Route {
   std::vector<Vec2> points;  ///< waypoints from start to goal, local frame (m)
+  /// Routes in depth (the octree graph): each waypoint's depth (m, positive
+  /// down); empty for routes at one operating depth.
+  std::vector<double> depth_m = {};
+  /// Along the legs: in 3-D when the route has depths.
   double length() const;
-  /// The point `s` metres along the route from its start (clamped to its ends).
+  /// The point `s` metres along the route's horizontal track (clamped to its ends).
   Vec2 point_at(double s) const;
 };
 

@@ -83,4 +83,51 @@ RouteCheck check_route(const std::vector<Vec2>& polyline, const ObstacleField& f
   return check;
 }
 
+std::string DepthRouteCheck::describe() const {
+  if (!safe) return "leg " + std::to_string(first_bad_segment) + " " + problem;
+  std::string s = std::to_string(segments) + " legs in the band, steepest " + fixed(steepest_deg, 1) + " deg";
+  if (std::isfinite(min_floor_gap_m)) s += ", at least " + fixed(min_floor_gap_m, 2) + " m above the sea floor";
+  return s;
+}
+
+DepthRouteCheck check_route_in_depth(const Route& route, const WaterVolume& volume, double max_dive_deg) {
+  if (route.points.empty() || route.depth_m.size() != route.points.size()) {
+    throw InputError("route check in depth: expected a route with one depth per waypoint, got " +
+                     std::to_string(route.points.size()) + " waypoints and " + std::to_string(route.depth_m.size()) +
+                     " depths");
+  }
+  std::vector<Vec3> p;
+  for (std::size_t i = 0; i < route.points.size(); ++i) {
+    p.emplace_back(route.points[i].x(), route.points[i].y(), route.depth_m[i]);
+    if (!p.back().allFinite()) throw InputError("route check in depth: waypoint " + std::to_string(i) + " is not finite");
+  }
+  DepthRouteCheck check;
+  check.segments = p.size() - 1;
+  const double slope = std::tan(max_dive_deg * M_PI / 180.0);
+  for (std::size_t i = 0; i < std::max<std::size_t>(check.segments, 1); ++i) {
+    const Vec3& a = p[i];
+    const Vec3& b = p[std::min(i + 1, p.size() - 1)];
+    const double run = (b - a).head<2>().norm(), rise = std::abs(b.z() - a.z());
+    check.steepest_deg = std::max(check.steepest_deg, std::atan2(rise, run) * 180.0 / M_PI);
+    if (volume.floor() != nullptr) {
+      check.min_floor_gap_m = std::min(check.min_floor_gap_m, volume.floor()->lowest_gap(a, b).gap_m);
+    }
+    if (!check.safe) continue;
+    std::string problem;
+    if (rise > slope * run * (1.0 + 1e-9)) {
+      problem = "is " + fixed(std::atan2(rise, run) * 180.0 / M_PI, 2) + " deg steep (the dive angle is " +
+                general(max_dive_deg) + " deg)";
+    } else if (const WaterVolume::Verdict v = volume.check_segment(a, b); v.blocked) {
+      problem = v.reason + " at (" + fixed(v.where.x(), 2) + ", " + fixed(v.where.y(), 2) + ", depth " +
+                fixed(v.where.z(), 2) + ")";
+    }
+    if (!problem.empty()) {
+      check.safe = false;
+      check.first_bad_segment = i;
+      check.problem = problem;
+    }
+  }
+  return check;
+}
+
 }  // namespace deepguide

@@ -10,11 +10,14 @@
 // zone; it is not a second margin.
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "deepguide/geometry/ellipse.hpp"
+#include "deepguide/planning/route.hpp"
 #include "deepguide/world/obstacle_field.hpp"
+#include "deepguide/world/water_volume.hpp"
 
 namespace deepguide {
 
@@ -38,5 +41,25 @@ struct RouteCheck {
 /// with NaN/inf coordinates (naming its index), std::invalid_argument for a
 /// tolerance that is not finite and >= 0.
 RouteCheck check_route(const std::vector<Vec2>& polyline, const ObstacleField& field, double tolerance = 1e-6);
+
+/// The checker for routes in depth (the octree graph's): every leg against
+/// the water volume (the band, the sea floor exactly, each obstacle's zone and
+/// top: world/water_volume.hpp) and against the dive angle. It shares the
+/// volume's geometry with the planner, not the planner's cells.
+struct DepthRouteCheck {
+  bool safe = true;
+  std::size_t segments = 0;
+  std::size_t first_bad_segment = 0;  ///< the first leg that fails (when !safe)
+  std::string problem;                ///< why, one line ("" when safe)
+  double steepest_deg = 0.0;          ///< the steepest leg's angle from horizontal
+  /// Smallest floor depth minus the route's depth over the route (+inf without a floor).
+  double min_floor_gap_m = std::numeric_limits<double>::infinity();
+  std::string describe() const;       ///< "leg 3 comes within 0.42 m of the sea floor ...", or a summary
+};
+
+/// Checks a route whose waypoints carry depth_m. Throws InputError for a
+/// route without depths (or a different count), non-finite points or an
+/// empty route.
+DepthRouteCheck check_route_in_depth(const Route& route, const WaterVolume& volume, double max_dive_deg);
 
 }  // namespace deepguide

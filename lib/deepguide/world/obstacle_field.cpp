@@ -375,6 +375,13 @@ bool ObstacleField::segment_free(const Vec2& a, const Vec2& b, std::size_t skip_
   return true;
 }
 
+std::vector<std::size_t> ObstacleField::near(const Vec2& lo, const Vec2& hi, double within) const {
+  const BgBox query(to_bg(lo - Vec2::Constant(within)), to_bg(hi + Vec2::Constant(within)));
+  std::vector<std::size_t> out;
+  for (auto it = tree_.qbegin(bgi::intersects(query)); it != tree_.qend(); ++it) out.push_back(it->second);
+  return out;
+}
+
 std::string ObstacleField::obstacle_name(std::size_t obstacle) const {
   const std::size_t n_ellipses = obstacles_.ellipses.size();
   if (obstacle < n_ellipses) {

@@ -103,6 +103,11 @@ class ObstacleField {
   /// distance would only confirm the touch (and cost most of the test).
   bool segment_free(const Vec2& a, const Vec2& b, std::size_t skip_a = kNone, std::size_t skip_b = kNone) const;
 
+  /// The obstacles whose bounding box comes within `within` of the box
+  /// [lo, hi]: every obstacle closer than that to a point of the box is among
+  /// them (the 3-D volume asks which cylinders a cell or a leg could meet).
+  std::vector<std::size_t> near(const Vec2& lo, const Vec2& hi, double within) const;
+
   /// Exact signed distance to one obstacle (no R-tree): for brute-force checks.
   double distance_to(std::size_t obstacle, const Vec2& p) const;
   SegmentDistance segment_distance_to(std::size_t obstacle, const Vec2& a, const Vec2& b) const;

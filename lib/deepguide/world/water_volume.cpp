@@ -1,0 +1,185 @@
+#include "deepguide/world/water_volume.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <utility>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace {
+
+// Depths within a nanometre of a limit count as on it: the ends of an
+// obstacle's zone along a leg are found to about 1e-16 of its length, and
+// legs between cell centres meet the limits exactly.
+constexpr double kRounding = 1e-9;
+
+std::string num(double v, const char* format = "%.2f") {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// Parameters t of the line a + t d where it is closer than r to the segment
+// [e0, e1]: the capsule around the segment is convex, so one interval (the
+// union of the two end discs' and the rectangle's); none if it misses.
+std::optional<std::pair<double, double>> capsule_interval(const Vec2& a, const Vec2& d, const Vec2& e0, const Vec2& e1,
+                                                          double r) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const auto take = [&](double t0, double t1) {
+    if (t0 < t1) {
+      lo = std::min(lo, t0);
+      hi = std::max(hi, t1);
+    }
+  };
+  const double dd = d.squaredNorm();
+  for (const Vec2& c : {e0, e1}) {  // |a + t d - c| < r
+    const Vec2 w = a - c;
+    const double B = w.dot(d), C = w.squaredNorm() - r * r;
+    const double disc = B * B - dd * C;
+    if (disc > 0.0) take((-B - std::sqrt(disc)) / dd, (-B + std::sqrt(disc)) / dd);
+  }
+  const Vec2 edge = e1 - e0;
+  const double len = edge.norm();
+  if (len > 0.0) {  // 0 <= along <= len and |across| < r, clipped like Liang-Barsky
+    const Vec2 u = edge / len, n(-u.y(), u.x());
+    double t0 = -std::numeric_limits<double>::infinity(), t1 = -t0;
+    bool empty = false;
+    const auto slab = [&](double p0, double dp, double lo_v, double hi_v) {
+      if (dp == 0.0) {
+        // Running along the capsule's flat side at exactly r is outside it (open).
+        if (p0 < lo_v || p0 > hi_v || (hi_v == r && std::abs(p0) == r)) empty = true;
+        return;
+      }
+      double ta = (lo_v - p0) / dp, tb = (hi_v - p0) / dp;
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+    };
+    slab((a - e0).dot(u), d.dot(u), 0.0, len);
+    slab((a - e0).dot(n), d.dot(n), -r, r);
+    if (!empty) take(t0, t1);
+  }
+  if (!(lo < hi)) return std::nullopt;
+  return std::pair{lo, hi};
+}
+
+}  // namespace
+
+WaterVolume::WaterVolume(const ObstacleField& field, const SeaFloor* floor, const VolumeOptions& options)
+    : field_(&field), floor_(floor), options_(options) {
+  const double top = options.min_depth_m, bottom = options.max_depth_m;
+  if (!(bottom > 0.0) || !(top >= 0.0) || std::isnan(bottom) || !std::isfinite(top)) {
+    throw InputError("depth band: expected a band below the surface (top >= 0 m, bottom > 0 m, depths positive "
+                     "down), got " + num(top, "%g") + " .. " + num(bottom, "%g") + " m");
+  }
+  if (!(top < bottom)) {
+    throw InputError("depth band: expected its top (" + num(top, "%g") + " m) above its bottom (" +
+                     num(bottom, "%g") + " m)");
+  }
+  const double c = options.vertical_clearance_m;
+  if (!(c >= 0.0) || !std::isfinite(c)) {
+    throw InputError("vertical clearance: expected a finite value >= 0 m, got " + num(c, "%g"));
+  }
+  const ObstacleSet& set = field.obstacles();
+  const auto resolve = [&](const std::optional<double>& top_depth, const std::optional<double>& height,
+                           std::pair<Vec2, Vec2> box) {
+    if (top_depth) return *top_depth - c;
+    if (height && floor != nullptr) return floor->depth_range(box.first, box.second).first - *height - c;
+    return -std::numeric_limits<double>::infinity();  // the whole water column
+  };
+  for (const EllipticCylinder& e : set.ellipses) {
+    const double r = e.footprint.a;
+    zone_top_.push_back(resolve(e.top_depth_m, e.height_m,
+                                {e.footprint.center - Vec2::Constant(r), e.footprint.center + Vec2::Constant(r)}));
+  }
+  for (const PolygonObstacle& p : set.polygons) {
+    ObstacleSet one;
+    one.polygons.push_back(p);
+    zone_top_.push_back(resolve(p.top_depth_m, p.height_m, footprint_box(one)));
+  }
+}
+
+WaterVolume::Verdict WaterVolume::check_point(const Vec3& p) const {
+  return check_segment(p, p);
+}
+
+WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) const {
+  const double c = options_.vertical_clearance_m;
+  // The band: z is linear, so the ends decide.
+  for (const Vec3& p : {a, b}) {
+    if (p.z() < options_.min_depth_m) {
+      return {true, "rises above the depth band's top " + num(options_.min_depth_m, "%g") + " m", p};
+    }
+    if (p.z() > options_.max_depth_m) {
+      return {true, "sinks below the depth band's bottom " + num(options_.max_depth_m, "%g") + " m", p};
+    }
+  }
+  if (floor_ != nullptr) {
+    const SeaFloor::Gap gap = floor_->lowest_gap(a, b);
+    if (gap.gap_m < c - kRounding) {
+      return {true, "comes within " + num(gap.gap_m) + " m of the sea floor (clearance " + num(c, "%g") + " m)",
+              gap.where};
+    }
+  }
+  const double margin = field_->margin();
+  const Vec2 a2 = a.head<2>(), b2 = b.head<2>(), d = b2 - a2;
+  const double deepest_end = std::max(a.z(), b.z());
+  for (std::size_t i : field_->near(a2.cwiseMin(b2), a2.cwiseMax(b2), margin)) {
+    const double top = zone_top_[i];
+    if (deepest_end <= top) continue;  // the whole leg passes over this obstacle's zone
+    const auto inside = [&](double t) { return field_->distance_to(i, a2 + t * d) < margin; };
+    // The first and last parameters within the zone (see the header).
+    double first = 0.0, last = 1.0;
+    const bool in_a = inside(0.0), in_b = inside(1.0);
+    if (a2 == b2) {
+      if (!in_a) continue;
+    } else if (i < field_->obstacles().ellipses.size()) {
+      const SegmentDistance nearest = field_->segment_distance_to(i, a2, b2);
+      if (nearest.distance >= margin) continue;
+      const double mid = std::clamp((nearest.point_on_segment - a2).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      // Bisection, keeping the bracket's outer end: the zone is never underestimated.
+      const auto edge = [&](double in, double out) {
+        for (int k = 0; k < 60; ++k) {
+          const double m = 0.5 * (in + out);
+          (inside(m) ? in : out) = m;
+        }
+        return out;
+      };
+      if (!in_a) first = edge(mid, 0.0);
+      if (!in_b) last = edge(mid, 1.0);
+    } else {
+      const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      const auto ring = [&](const auto& points) {
+        for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+          if (const auto iv = capsule_interval(a2, d, to_eigen(points[k]), to_eigen(points[k + 1]), margin)) {
+            if (iv->second <= 0.0 || iv->first >= 1.0) continue;
+            lo = std::min(lo, iv->first);
+            hi = std::max(hi, iv->second);
+          }
+        }
+      };
+      ring(poly.outer());
+      for (const auto& inner : poly.inners()) ring(inner);
+      if (!in_a && !in_b && !(lo < hi)) continue;
+      first = in_a ? 0.0 : std::clamp(lo, 0.0, 1.0);
+      last = in_b ? 1.0 : std::clamp(hi, 0.0, 1.0);
+    }
+    // The deepest point of the leg within the zone.
+    const double t = b.z() >= a.z() ? last : first;
+    const Vec3 p = a + t * (b - a);
+    if (p.z() > top + kRounding) {
+      const std::string name = field_->obstacle_name(i);
+      if (std::isinf(top)) return {true, "enters the safety zone of obstacle '" + name + "'", p};
+      return {true, "passes over obstacle '" + name + "' " + num(p.z() - top) + " m too deep (its top less " +
+                        num(c, "%g") + " m clearance is at depth " + num(top) + " m)",
+              p};
+    }
+  }
+  return {};
+}
+
+}  // namespace deepguide

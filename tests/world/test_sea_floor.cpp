@@ -1,0 +1,163 @@
+// The sea floor for planning in depth (world/sea_floor.hpp): bilinear depth
+// against hand values, the pyramid's range against dense sampling, the exact
+// lowest gap along a segment, the raster reader against the sample chart's
+// own cells, and bad input.
+#include <gtest/gtest.h>
+
+#include <gdal_priv.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/local_frame.hpp"
+#include "deepguide/world/sea_floor.hpp"
+
+using namespace deepguide;
+
+namespace {
+
+// A bumpy floor on 40 x 30 nodes 5 m apart: 60 m deep, waves of +-15 m.
+SeaFloor bumpy() {
+  std::vector<double> d;
+  for (int j = 0; j < 30; ++j) {
+    for (int i = 0; i < 40; ++i) d.push_back(60.0 + 15.0 * std::sin(0.7 * i) * std::cos(0.45 * j) + 0.3 * ((i * 7 + j * 3) % 5));
+  }
+  return SeaFloor({100.0, 200.0}, 5.0, 40, 30, d);
+}
+
+}  // namespace
+
+TEST(SeaFloor, BilinearDepthMatchesHandValues) {
+  // Nodes 10 m apart: 10 20 / 30 60 (row j = 0 first).
+  const SeaFloor floor({0.0, 0.0}, 10.0, 2, 2, {10.0, 20.0, 30.0, 60.0});
+  EXPECT_DOUBLE_EQ(floor.depth_at({0.0, 0.0}), 10.0);
+  EXPECT_DOUBLE_EQ(floor.depth_at({10.0, 10.0}), 60.0);
+  EXPECT_DOUBLE_EQ(floor.depth_at({5.0, 5.0}), 30.0);       // the mean of the four
+  EXPECT_DOUBLE_EQ(floor.depth_at({2.5, 0.0}), 12.5);
+  EXPECT_DOUBLE_EQ(floor.depth_at({10.0, 5.0}), 40.0);
+  EXPECT_DOUBLE_EQ(floor.depth_at({-0.1, 5.0}), 0.0);       // outside: no water to dive in
+  EXPECT_DOUBLE_EQ(floor.max_depth(), 60.0);
+  EXPECT_DOUBLE_EQ(floor.min_depth(), 10.0);
+  const auto [lo, hi] = floor.depth_range({1.0, 1.0}, {9.0, 9.0});
+  EXPECT_DOUBLE_EQ(lo, 10.0);
+  EXPECT_DOUBLE_EQ(hi, 60.0);
+  // No data is depth 0.
+  const SeaFloor holes({0.0, 0.0}, 10.0, 2, 2, {10.0, std::nan(""), 30.0, 60.0});
+  EXPECT_DOUBLE_EQ(holes.depth_at({10.0, 0.0}), 0.0);
+  EXPECT_DOUBLE_EQ(holes.min_depth(), 0.0);
+}
+
+TEST(SeaFloor, RangeHoldsEverySampledDepth) {
+  const SeaFloor floor = bumpy();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 a(90.0 + 220.0 * u(rng), 190.0 + 160.0 * u(rng));
+    const Vec2 b = a + Vec2(1.0 + 120.0 * u(rng) * u(rng), 1.0 + 90.0 * u(rng) * u(rng));
+    const auto [lo, hi] = floor.depth_range(a, b);
+    double seen_lo = std::numeric_limits<double>::infinity(), seen_hi = -seen_lo;
+    for (int s = 0; s <= 40; ++s) {
+      for (int t = 0; t <= 40; ++t) {
+        const double d = floor.depth_at(a + Vec2((b - a).x() * s / 40.0, (b - a).y() * t / 40.0));
+        seen_lo = std::min(seen_lo, d);
+        seen_hi = std::max(seen_hi, d);
+      }
+    }
+    ASSERT_LE(lo, seen_lo) << k;
+    ASSERT_GE(hi, seen_hi) << k;
+  }
+  // Inside one grid cell the range is its four corners.
+  const auto [lo, hi] = floor.depth_range({111.0, 211.0}, {114.0, 214.0});
+  double corners_lo = 1e9, corners_hi = -1e9;
+  for (double x : {110.0, 115.0}) {
+    for (double y : {210.0, 215.0}) {
+      corners_lo = std::min(corners_lo, floor.depth_at({x, y}));
+      corners_hi = std::max(corners_hi, floor.depth_at({x, y}));
+    }
+  }
+  EXPECT_DOUBLE_EQ(lo, corners_lo);
+  EXPECT_DOUBLE_EQ(hi, corners_hi);
+}
+
+TEST(SeaFloor, LowestGapIsTheExactMinimumAlongTheSegment) {
+  // A tilted plane: depth 100 + 0.1 x, a level leg at 50 m: the gap is least at x = 0.
+  const SeaFloor plane({0.0, 0.0}, 10.0, 21, 3, [] {
+    std::vector<double> d;
+    for (int j = 0; j < 3; ++j) {
+      for (int i = 0; i < 21; ++i) d.push_back(100.0 + i);
+    }
+    return d;
+  }());
+  const SeaFloor::Gap g = plane.lowest_gap({0.0, 10.0, 50.0}, {200.0, 10.0, 50.0});
+  EXPECT_NEAR(g.gap_m, 50.0, 1e-12);
+  EXPECT_NEAR(g.where.x(), 0.0, 1e-12);
+  // Diving at 1 in 5 down the same slope of 1 in 10: least at the far end, 100 + 20 - 90 = 30.
+  EXPECT_NEAR(plane.lowest_gap({0.0, 10.0, 50.0}, {200.0, 10.0, 90.0}).gap_m, 30.0, 1e-12);
+
+  // A bumpy floor against 20 000 samples: never above the sampled minimum, and
+  // close to it (samples 1.2 cm apart on slopes up to 2.5 miss at most 3 cm).
+  const SeaFloor floor = bumpy();
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 100; ++k) {
+    const Vec3 a(100.0 + 195.0 * u(rng), 200.0 + 145.0 * u(rng), 30.0 * u(rng));
+    const Vec3 b(100.0 + 195.0 * u(rng), 200.0 + 145.0 * u(rng), 30.0 * u(rng));
+    double sampled = std::numeric_limits<double>::infinity();
+    for (int s = 0; s <= 20000; ++s) {
+      const Vec3 p = a + (s / 20000.0) * (b - a);
+      sampled = std::min(sampled, floor.depth_at(p.head<2>()) - p.z());
+    }
+    const SeaFloor::Gap g = floor.lowest_gap(a, b);
+    ASSERT_LE(g.gap_m, sampled + 1e-9) << k;
+    ASSERT_GE(g.gap_m, sampled - 0.03) << k;
+    ASSERT_NEAR(floor.depth_at(g.where.head<2>()) - g.where.z(), g.gap_m, 1e-9);
+  }
+}
+
+TEST(SeaFloor, FromRasterMatchesTheChartsOwnCells) {
+  // The sample chart is in the frame's own CRS (UTM 32N) with 5 m cells:
+  // nodes on its cell centres read its cells exactly (depth = -elevation).
+  const std::string path = std::string(DEEPGUIDE_SOURCE_DIR) + "/charts/sample_chart.tif";
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
+  const Vec2 lo(580402.5, 6034002.5), hi(580802.5, 6034302.5);
+  const SeaFloor floor = SeaFloor::from_raster(path, frame, lo, hi, 5.0);
+  EXPECT_EQ(floor.nx(), 81u);
+  EXPECT_EQ(floor.ny(), 61u);
+  GDALAllRegister();
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+  ASSERT_TRUE(ds);
+  double gt[6];
+  ds->GetGeoTransform(gt);
+  for (int k = 0; k < 50; ++k) {
+    const Vec2 p = lo + Vec2(5.0 * ((k * 37) % 81), 5.0 * ((k * 11) % 61));
+    const int col = static_cast<int>((p.x() - gt[0]) / gt[1]), row = static_cast<int>((p.y() - gt[3]) / gt[5]);
+    float v = 0;
+    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, col, row, 1, 1, &v, 1, 1, GDT_Float32, 0, 0, nullptr), CE_None);
+    ASSERT_NEAR(floor.depth_at(p), -static_cast<double>(v), 1e-4) << p.transpose();
+  }
+  EXPECT_GT(floor.max_depth(), 5.0);
+}
+
+TEST(SeaFloor, BadInputIsRefusedWithAClearError) {
+  EXPECT_THROW(SeaFloor({0.0, 0.0}, 0.0, 2, 2, {1, 2, 3, 4}), InputError);
+  EXPECT_THROW(SeaFloor({0.0, 0.0}, 1.0, 1, 4, {1, 2, 3, 4}), InputError);
+  EXPECT_THROW(SeaFloor({0.0, 0.0}, 1.0, 2, 2, {1, 2, 3}), InputError);
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
+  try {
+    SeaFloor::from_raster("/nonexistent/floor.tif", frame, {0.0, 0.0}, {10.0, 10.0}, 1.0);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/floor.tif"), std::string::npos) << e.what();
+  }
+  // An area the chart does not reach.
+  const std::string path = std::string(DEEPGUIDE_SOURCE_DIR) + "/charts/sample_chart.tif";
+  try {
+    SeaFloor::from_raster(path, frame, {100000.0, 100000.0}, {100100.0, 100100.0}, 5.0);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not reach"), std::string::npos) << e.what();
+  }
+}
