@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "plan_depth.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
@@ -49,6 +50,12 @@ struct PlanOptions {
   double min_cell = QuadtreeOptions{}.min_cell_m;
   bool smooth = false;
   std::string replan_events;
+  // --graph octree (plan_depth.cpp)
+  double from_depth = std::nan("");
+  double to_depth = std::nan("");
+  std::string depth_band;
+  double max_dive = std::nan("");
+  std::string render_profile;
 };
 
 // ROUTE.geojson -> ROUTE_repair_K.geojson
@@ -127,8 +134,8 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--vertical-clearance", o->vertical_clearance, "Vertical clearance above obstacle tops (m)")
       ->capture_default_str();
   cmd->add_option("--graph", o->graph,
-                  "visibility (reduced polygon graph), visibility-full (the seed's), tangent (exact, curved), or "
-                  "quadtree (free cells' centres, the seed's Fig. 7)")
+                  "visibility (reduced polygon graph), visibility-full (the seed's), tangent (exact, curved), "
+                  "quadtree (free cells' centres, the seed's Fig. 7), or octree (a route in depth over the sea floor)")
       ->capture_default_str();
   cmd->add_option("--search", o->search, "astar or dijkstra")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the summary as JSON");
@@ -149,18 +156,46 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--waypoint-grid", o->waypoint_grid,
                   "Open-water vertices SPACING_M apart around start and goal, so time and energy routes can bend "
                   "where the current changes (visibility graphs)");
-  cmd->add_option("--min-cell", o->min_cell, "Quadtree: the smallest cell side (m)")->capture_default_str();
-  cmd->add_flag("--smooth", o->smooth, "Quadtree: shortcut the cell-centre route where the straight line is free");
+  cmd->add_option("--min-cell", o->min_cell,
+                  "Quadtree: the smallest cell side (m); octree: the smallest cell's height (its width follows the "
+                  "dive angle)")
+      ->capture_default_str();
+  cmd->add_flag("--smooth", o->smooth,
+                "Quadtree, octree: shortcut the cell-centre route where the straight line is free (and flyable)");
+  cmd->add_option("--from-depth", o->from_depth, "Octree: the start's depth (m); default --depth");
+  cmd->add_option("--to-depth", o->to_depth, "Octree: the goal's depth (m); default --depth");
+  cmd->add_option("--depth-band", o->depth_band,
+                  "Octree: TOP,BOTTOM depths (m) the route keeps within; default 2 m below the surface down to the "
+                  "sea floor");
+  cmd->add_option("--max-dive", o->max_dive,
+                  "Octree: the steepest dive or climb (deg); default the vehicle's vertical speed at cruise");
+  cmd->add_option("--render-profile", o->render_profile,
+                  "Octree: draw the route's depth profile with the sea floor, obstacles and cells (.png or .svg)");
   cmd->add_option("--replan-events", o->replan_events,
                   "Quadtree: replay sonar detections (an obstacle file with detected_at_m) with D* Lite and write "
                   "each repaired route (ROUTE_repair_K.geojson)");
   cmd->add_option("--depart", o->depart,
                   "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
   cmd->callback([o] {
+    const bool in_depth = o->graph == "octree";
+    if (!in_depth && (!std::isnan(o->from_depth) || !std::isnan(o->to_depth) || !o->depth_band.empty() ||
+                      !std::isnan(o->max_dive) || !o->render_profile.empty())) {
+      throw InputError("--from-depth, --to-depth, --depth-band, --max-dive and --render-profile: expected "
+                       "--graph octree");
+    }
+    if (in_depth && (o->cost != "length" || !o->current_file.empty() || !o->current_const.empty() ||
+                     o->waypoint_grid != 0.0 || o->escape || !o->replan_events.empty() || !o->depart.empty() ||
+                     o->render_graph)) {
+      throw InputError("--graph octree: plans by length; --cost, --current, --waypoint-grid, --escape, "
+                       "--replan-events, --depart and --render-graph are for the 2-D graphs");
+    }
+    for (const std::string& f : {o->render, o->render_profile}) {
+      if (!f.empty()) image_format_for(f);  // before the work, not after
+    }
     PlannerOptions options;
     options.margin = o->margin;
     options.tolerance = o->tolerance;
-    options.graph = parse_graph_kind(o->graph);
+    options.graph = in_depth ? GraphKind::quadtree : parse_graph_kind(o->graph);
     options.search = parse_search(o->search);
     options.quadtree.min_cell_m = o->min_cell;
     options.quadtree.smooth = o->smooth;
@@ -169,10 +204,9 @@ void register_plan(CLI::App& app) {
       throw InputError("--replan-events: expected --graph quadtree with --cost length, and neither --smooth nor "
                        "--escape (D* Lite repairs the cell route by length from a start outside every zone)");
     }
-    if (o->smooth && options.graph != GraphKind::quadtree) {
+    if (o->smooth && options.graph != GraphKind::quadtree && !in_depth) {
       throw InputError("--smooth: expected --graph quadtree (the other graphs' routes are taut already)");
     }
-    if (!o->render.empty()) image_format_for(o->render);  // before the work, not after
     if (o->obstacles.empty() && o->charts.empty()) {
       throw CLI::ValidationError("plan", "give --obstacles FILE... or --chart FILE... (or both)");
     }
@@ -194,6 +228,32 @@ void register_plan(CLI::App& app) {
     const LocalFrame& frame = *frame_in_use;
     const PlanningProblem problem{parse_position(o->from, "--from", frame, !o->frame.crs.empty()),
                                   parse_position(o->to, "--to", frame, !o->frame.crs.empty()), o->escape};
+    if (in_depth) {
+      DepthCommand c;
+      c.frame = &frame;
+      c.obstacles = std::move(obstacles);
+      c.charts = o->charts;
+      c.src_crs = o->frame.src_crs;
+      c.start = problem.start;
+      c.goal = problem.goal;
+      c.depth = o->depth;
+      c.from_depth = o->from_depth;
+      c.to_depth = o->to_depth;
+      c.depth_band = o->depth_band;
+      c.max_dive = o->max_dive;
+      c.vehicle = o->vehicle;
+      c.min_cell = o->min_cell;
+      c.smooth = o->smooth;
+      c.margin = o->margin;
+      c.vertical_clearance = o->vertical_clearance;
+      c.search = o->search;
+      c.output = o->output;
+      c.render = o->render;
+      c.render_profile = o->render_profile;
+      c.json = o->json;
+      run_plan_in_depth(c);
+      return;
+    }
     std::size_t passed_over = 0;
     if (!std::isnan(o->depth)) passed_over = remove_passable(obstacles, o->depth, o->vertical_clearance);
     ChartObstacles charted;

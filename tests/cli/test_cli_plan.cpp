@@ -404,3 +404,62 @@ TEST(CliPlanQuadtree, BadOptionsAndAWalledInVehicle) {
   EXPECT_NE(walled.err.find("after report 1"), std::string::npos) << walled.err;
   EXPECT_NE(walled.out.find("no route"), std::string::npos) << walled.out;
 }
+
+TEST(CliPlanOctree, ARouteInDepthOverTheSampleChart) {
+  // Out of the harbour to the north-east over the sample chart's sea floor and
+  // hazards: the route climbs over the shoal and passes over wreck-1.
+  ScratchDir dir;
+  const std::string chart = "'" + deepguide::test::source_file("charts/sample_chart.tif") + "' '" +
+                            deepguide::test::source_file("charts/sample_chart_hazards.gpkg") + "'";
+  const std::string route = dir.file("r.geojson"), profile = dir.file("p.png");
+  const auto r = run_cli("plan --chart " + chart + " --graph octree --depth 10 --from 10.2446,54.4413 --to "
+                         "10.2626,54.4606 --min-cell 1 --smooth -o '" + route + "' --render-profile '" + profile +
+                         "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("graph"), "octree");
+  EXPECT_TRUE(j.at("sea_floor").get<bool>());
+  EXPECT_GE(j.at("min_floor_gap_m").get<double>(), 2.0 - 1e-9);
+  // The dive angle is the vehicle's: asin(0.5 m/s / 4 kn) = 14.07 deg.
+  EXPECT_NEAR(j.at("max_dive_deg").get<double>(), 14.07, 0.01);
+  EXPECT_LE(j.at("steepest_deg").get<double>(), j.at("max_dive_deg").get<double>() + 1e-6);
+  EXPECT_GT(j.at("free_cells").get<int>(), 1000);
+  EXPECT_TRUE(std::filesystem::exists(profile));
+  // Every waypoint carries its depth, and the floor under it lies deeper by the clearance.
+  std::ifstream in(route);
+  const auto geo = nlohmann::json::parse(in);
+  int waypoints = 0;
+  for (const auto& f : geo.at("features")) {
+    if (f.at("geometry").at("type") != "Point") continue;
+    ++waypoints;
+    const auto& p = f.at("properties");
+    EXPECT_GE(p.at("depth_m").get<double>(), 2.0 - 1e-9);
+    EXPECT_LE(p.at("depth_m").get<double>(), p.at("floor_depth_m").get<double>() - 2.0 + 1e-9);
+  }
+  EXPECT_EQ(waypoints, j.at("waypoints").get<int>());
+}
+
+TEST(CliPlanOctree, BadInputIsOneLineAndExitOne) {
+  const std::string chart = "'" + deepguide::test::source_file("charts/sample_chart.tif") + "'";
+  const std::string base = "plan --chart " + chart + " --graph octree --from 10.2446,54.4413 --to 10.2626,54.4606";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {" --depth 10 --min-cell 0", {"--min-cell", "> 0"}},
+      {" --depth 10 --depth-band -5,-1", {"depth band", "surface"}},
+      {" --depth 10 --depth-band 5", {"--depth-band", "TOP,BOTTOM"}},
+      {" --depth 40", {"the start", "sea floor"}},  // deeper than the floor at the harbour
+      {" --from-depth 10 --to-depth 1", {"the goal", "band"}},
+      {"", {"--depth"}},
+      {" --depth 10 --max-dive 95", {"--max-dive"}},
+      {" --depth 10 --cost energy", {"--graph octree", "--cost"}},
+      {" --depth 10 --render-profile p.txt", {"p.txt"}},
+  };
+  for (const auto& [args, words] : cases) {
+    const auto r = run_cli(base + args);
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    for (const std::string& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << ": " << r.err;
+  }
+  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --depth-band 5,50");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--graph octree"), std::string::npos) << r.err;
+}

@@ -58,15 +58,19 @@ CellState classify(const WaterVolume& volume, const Vec3& lo, const Vec3& hi, co
 
 }  // namespace
 
-OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options)
-    : volume_(&volume), options_(options) {
-  const auto t0 = std::chrono::steady_clock::now();
+void validate(const OctreeOptions& options) {
   if (!(options.min_cell_m > 0.0) || !std::isfinite(options.min_cell_m)) {
     throw InputError("--min-cell: expected a cell size > 0 m, got " + num(options.min_cell_m));
   }
   if (!(options.max_dive_deg > 0.0 && options.max_dive_deg < 90.0)) {
     throw InputError("--max-dive: expected an angle between 0 and 90 degrees, got " + num(options.max_dive_deg));
   }
+}
+
+OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options)
+    : volume_(&volume), options_(options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  validate(options);
   const Vec2 extent = options.area_max - options.area_min;
   if (!options.area_min.allFinite() || !options.area_max.allFinite() || !(extent.minCoeff() > 0.0)) {
     throw InputError("octree: expected a work area with a positive, finite extent");
@@ -162,15 +166,18 @@ PlanResult OctreeGraph::solve(const Vec3& start, const Vec3& goal, SearchAlgorit
   const auto t0 = std::chrono::steady_clock::now();
   for (const auto& [p, name] : {std::pair{start, "the start"}, std::pair{goal, "the goal"}}) {
     if (!p.allFinite()) throw InputError(std::string(name) + ": expected finite coordinates and depth");
-    if (!tree_->locate(p) || (p.head<2>().array() > options_.area_max.array()).any()) {
+    if ((p.head<2>().array() < options_.area_min.array()).any() ||
+        (p.head<2>().array() > options_.area_max.array()).any()) {
+      throw InputError(std::string(name) + " " + where(p) + " lies outside the octree's work area");
+    }
+    if (const WaterVolume::Verdict v = volume_->check_point(p); v.blocked) {
+      const std::string message = std::string(name) + " " + where(p) + " " + v.reason;
+      if (v.reason.find("obstacle") != std::string::npos) throw NoRouteError(message);
+      throw InputError(message);
+    }
+    if (!tree_->locate(p)) {
       throw InputError(std::string(name) + " " + where(p) + " lies outside the octree's volume");
     }
-    const WaterVolume::Verdict v = volume_->check_point(p);
-    if (!v.blocked) continue;
-    const bool in_zone = v.reason.find("obstacle") != std::string::npos;
-    const std::string message = std::string(name) + " " + where(p) + " " + v.reason;
-    if (in_zone) throw NoRouteError(message);
-    throw InputError(message);
   }
   const std::size_t n = free_.size();
   const std::size_t sv = n, gv = n + 1;

@@ -52,6 +52,11 @@ struct OctreeOptions {
   std::size_t max_cells = 60'000'000;
 };
 
+/// Throws InputError for a minimum cell that is not finite and > 0 or a dive
+/// angle outside (0, 90) degrees (the constructor checks the same; callers
+/// check first before costly work such as reading a chart).
+void validate(const OctreeOptions& options);
+
 class OctreeGraph {
  public:
   /// Decomposes the volume between the band's top and its bottom (or the
