@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   std::mt19937 rng(20021);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<double> build, repair, scratch, rebuild, ratio, rebuild_ratio, leaves, expanded_repair, expanded_scratch;
-  int events = 0;
+  int events = 0, at_goal = 0;
   for (int sc = 0; sc < scenarios; ++sc) {
     ObstacleSet set;
     for (int i = 0; i < 60; ++i) {
@@ -97,6 +97,12 @@ int main(int argc, char** argv) {
       (void)rebuilt.solve({r.vehicle, problem.goal}, SearchAlgorithm::astar);
       const double rebuild_ms = ms_since(t2);
       if (!r.found || !s.found) return;
+      // A route of one straight leg is sailed whole before the vehicle can
+      // act (it acts at vertices): nothing is left to repair.
+      if (at == goal) {
+        ++at_goal;
+        return;
+      }
       ++events;
       repair.push_back(r.repair_ms);
       scratch.push_back(scratch_ms);
@@ -109,15 +115,21 @@ int main(int argc, char** argv) {
     });
   }
   std::printf("2000 m x 2000 m, 60 random ellipses, margin 5 m, quadtree with 2 m minimum cells; one 25 m rock "
-              "reported on the route 40 %% along when the vehicle has sailed 30 %%. %d events. Medians.\n\n",
-              events);
+              "reported on the route 40 %% along when the vehicle has sailed 30 %%. %d events (%d more left out: "
+              "a straight route, sailed whole before the report). Medians; the total is all events' A* time over "
+              "all their repair time.\n\n",
+              events, at_goal);
+  double total_repair = 0.0, total_scratch = 0.0;
+  for (double v : repair) total_repair += v;
+  for (double v : scratch) total_scratch += v;
   std::sort(ratio.begin(), ratio.end());
   const auto at = [&](double q) { return ratio.empty() ? NAN : ratio[static_cast<std::size_t>(q * (ratio.size() - 1))]; };
   std::printf("| quadtree leaves | build ms | D* Lite repair ms | A* from scratch ms | A* / repair: median (p10, min) | "
-              "rebuild + A* ms | rebuild / repair | vertices processed: repair / from scratch |\n"
-              "|---:|---:|---:|---:|---|---:|---:|---|\n");
-  std::printf("| %.0f | %.0f | %.3f | %.2f | %.1f× (%.1f×, %.1f×) | %.0f | %.0f× | %.0f / %.0f |\n", median(leaves),
-              median(build), median(repair), median(scratch), at(0.5), at(0.1), at(0.0), median(rebuild),
-              median(rebuild_ratio), median(expanded_repair), median(expanded_scratch));
+              "A* / repair: total | rebuild + A* ms | rebuild / repair | vertices processed: repair / from scratch |\n"
+              "|---:|---:|---:|---:|---|---:|---:|---:|---|\n");
+  std::printf("| %.0f | %.0f | %.3f | %.2f | %.1f× (%.1f×, %.1f×) | %.1f× | %.0f | %.0f× | %.0f / %.0f |\n",
+              median(leaves), median(build), median(repair), median(scratch), at(0.5), at(0.1), at(0.0),
+              total_scratch / total_repair, median(rebuild), median(rebuild_ratio), median(expanded_repair),
+              median(expanded_scratch));
   return 0;
 }

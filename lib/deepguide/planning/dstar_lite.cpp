@@ -1,6 +1,7 @@
 #include "deepguide/planning/dstar_lite.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 
 namespace deepguide {
@@ -23,9 +24,24 @@ DStarLite::DStarLite(PlanningGraph& graph, GraphVertex start, GraphVertex goal, 
   queued_key_.assign(n, Key{kInf, kInf});
   in_queue_.assign(n, false);
   rhs_[goal_] = 0.0;
-  queued_key_[goal_] = key(goal_);
-  queue_.emplace(queued_key_[goal_], goal_);
-  in_queue_[goal_] = true;
+  push(goal_);
+}
+
+void DStarLite::push(GraphVertex u) {
+  queued_key_[u] = key(u);
+  in_queue_[u] = true;
+  heap_.push_back({queued_key_[u], u});
+  std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+}
+
+bool DStarLite::clean_top() {
+  while (!heap_.empty()) {
+    const Entry& top = heap_.front();
+    if (in_queue_[top.vertex] && top.key == queued_key_[top.vertex]) return true;
+    std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+    heap_.pop_back();
+  }
+  return false;
 }
 
 DStarLite::Key DStarLite::key(GraphVertex s) const {
@@ -47,30 +63,26 @@ double DStarLite::best_successor_rhs(GraphVertex u) const {
 }
 
 void DStarLite::update_vertex(GraphVertex u) {
-  if (in_queue_[u]) {
-    queue_.erase({queued_key_[u], u});
-    in_queue_[u] = false;
+  if (g_[u] == rhs_[u]) {
+    in_queue_[u] = false;  // its entry, if any, is stale now
+    return;
   }
-  if (g_[u] != rhs_[u]) {
-    queued_key_[u] = key(u);
-    queue_.emplace(queued_key_[u], u);
-    in_queue_[u] = true;
-  }
+  if (in_queue_[u] && queued_key_[u] == key(u)) return;  // queued with this key already
+  push(u);
 }
 
 bool DStarLite::compute() {
-  while (!queue_.empty() && (queue_.begin()->first < key(start_) || rhs_[start_] > g_[start_])) {
-    const auto [k_old, u] = *queue_.begin();
+  while (clean_top() && (heap_.front().key < key(start_) || rhs_[start_] > g_[start_])) {
+    const auto [k_old, u] = heap_.front();
     ++expanded_;
+    std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+    heap_.pop_back();
+    in_queue_[u] = false;
     const Key k_new = key(u);
-    if (k_old < k_new) {  // stale: k_m grew since u was queued
-      queue_.erase(queue_.begin());
-      queued_key_[u] = k_new;
-      queue_.emplace(k_new, u);
+    if (k_old < k_new) {  // out of date: k_m grew since u was queued
+      push(u);
       continue;
     }
-    queue_.erase(queue_.begin());
-    in_queue_[u] = false;
     if (g_[u] > rhs_[u]) {  // overconsistent: settle
       g_[u] = rhs_[u];
       for (auto [it, end] = boost::in_edges(u, *graph_); it != end; ++it) {

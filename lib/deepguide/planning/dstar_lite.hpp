@@ -24,7 +24,6 @@
 // better way exists (the shuttling pitfall of D* variants).
 
 #include <functional>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -70,7 +69,15 @@ class DStarLite {
 
  private:
   using Key = std::pair<double, double>;
+  struct Entry {
+    Key key;
+    GraphVertex vertex;
+    bool operator>(const Entry& other) const { return key > other.key || (key == other.key && vertex > other.vertex); }
+  };
   Key key(GraphVertex s) const;
+  void push(GraphVertex u);
+  /// Drops stale entries from the top of the heap; false when it is empty.
+  bool clean_top();
   void update_vertex(GraphVertex u);
   double edge_cost(GraphVertex u, GraphVertex v) const;
   double best_successor_rhs(GraphVertex u) const;
@@ -80,8 +87,11 @@ class DStarLite {
   Heuristic h_;
   double k_m_ = 0.0;
   std::vector<double> g_, rhs_;
-  std::set<std::pair<Key, GraphVertex>> queue_;  // ordered by key, then vertex
-  std::vector<Key> queued_key_;                   // the key a vertex is queued with
+  // The queue: a binary min-heap with lazy deletion. A vertex's live entry is
+  // the one with its queued_key_ while in_queue_; others are stale and are
+  // dropped when they surface (cheaper than a balanced tree's erase).
+  std::vector<Entry> heap_;
+  std::vector<Key> queued_key_;  // the key a vertex is queued with
   std::vector<bool> in_queue_;
   std::size_t expanded_ = 0;
 };

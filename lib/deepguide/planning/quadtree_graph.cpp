@@ -77,6 +77,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
     if (leaves[i].state != CellState::free) continue;
     vertex_of_[i] = free_.size();
     free_.push_back(i);
+    centres_.push_back(tree_->box(i).centre());
   }
   if (free_.empty()) {
     throw InputError("quadtree: no free cell in the work area (every cell lies within " + num(margin) +
@@ -85,7 +86,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   graph_ = PlanningGraph(free_.size() + 2);  // + start and goal
   for (std::size_t v = 0; v < free_.size(); ++v) {
     const std::size_t leaf = free_[v];
-    const Vec2 a = tree_->box(leaf).centre();
+    const Vec2 a = centres_[v];
     for (const auto& [other, face] : tree_->neighbours(leaf)) {
       const std::size_t w = vertex_of_[other];
       if (w == kNoVertex || w < v) continue;  // occupied, or the pair is done from the other side
@@ -102,7 +103,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
 }
 
 Vec2 QuadtreeGraph::position(GraphVertex v) const {
-  if (v < free_.size()) return tree_->box(free_[v]).centre();
+  if (v < free_.size()) return centres_[v];
   return v == start_vertex() ? ends_[0] : ends_[1];
 }
 
