@@ -4,6 +4,7 @@
 // cells, and bad detections are refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -92,32 +93,78 @@ TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
 }
 
 TEST(DStarLite, TheVehicleNeverShuttlesBetweenTwoCells) {
-  // A wall across the way with two equal gaps, north and south of the
-  // straight line; each report blocks the gap the vehicle is heading for
-  // only partly, so the best way flips from side to side.
+  // A wall across the way with six gaps, in pairs mirrored about the straight
+  // line (40, 120 and 200 m off it). Each report plugs the gap the current
+  // route heads for, so the best way keeps flipping from one side of the
+  // line to the other while the vehicle is still short of the wall: the
+  // situation in which D* variants dither. The vehicle may turn back only
+  // where a report reached it; between reports it never steps back onto the
+  // cell it came from, and it never goes back and forth between two cells.
+  const double gaps[] = {312, 392, 472, 552, 632, 712};  // centres, 40 m wide
   ObstacleSet set;
-  set.polygons.push_back(box(290, 0, 310, 190, "wall-south"));
-  set.polygons.push_back(box(290, 230, 310, 370, "wall-middle"));
-  set.polygons.push_back(box(290, 410, 310, 600, "wall-north"));
-  const ObstacleField field(set, 5.0);
-  QuadtreeGraph graph(field, area(0, 0, 600, 600, 4.0));
-  const PlanningProblem problem{{20.0, 300.0}, {580.0, 300.0}};
-  std::vector<Detection> detections;
-  const double ys[] = {210, 390, 214, 386, 206, 394};
-  for (int k = 0; k < 6; ++k) {
-    Detection d;
-    d.along_m = 20.0 + 25.0 * k;
-    d.obstacles.ellipses.push_back(disc(330.0, ys[k], 2.0, "buoy" + std::to_string(k)));
-    detections.push_back(d);
+  double from = 0.0;
+  for (double c : gaps) {
+    set.polygons.push_back(box(590, from, 610, c - 20.0, "wall" + std::to_string(set.polygons.size())));
+    from = c + 20.0;
   }
-  const Replay replay = replay_detections(graph, problem, detections, 5.0);
-  ASSERT_EQ(replay.repairs.size(), 6u);
-  for (const Repair& r : replay.repairs) ASSERT_TRUE(r.found);
+  set.polygons.push_back(box(590, from, 610, 1024, "wall-end"));
+  const ObstacleField field(set, 5.0);
+  QuadtreeGraph graph(field, area(0, 0, 1024, 1024, 2.0));
+  const PlanningProblem problem{{540.0, 510.0}, {900.0, 510.0}};
+  // The gap a route passes: the one nearest where it crosses x = 600.
+  const auto gap_of = [&](const std::vector<Vec2>& route) {
+    for (std::size_t i = 0; i + 1 < route.size(); ++i) {
+      const Vec2 a = route[i], b = route[i + 1];
+      if ((a.x() - 600.0) * (b.x() - 600.0) > 0.0 || a.x() == b.x()) continue;
+      const double y = a.y() + (600.0 - a.x()) / (b.x() - a.x()) * (b.y() - a.y());
+      return static_cast<int>(std::min_element(std::begin(gaps), std::end(gaps), [y](double p, double q) {
+                                return std::abs(p - y) < std::abs(q - y);
+                              }) - std::begin(gaps));
+    }
+    return -1;
+  };
+  std::vector<Detection> detections;
+  Replay replay = replay_detections(graph, problem, detections, 5.0);
+  int in_use = gap_of(replay.initial_route);
+  ASSERT_GE(in_use, 0);
+  int flips = 0;  // the route changes side of the straight line
+  for (int k = 0; k < 5; ++k) {
+    Detection d;
+    d.along_m = 5.0 + 15.0 * k;
+    const double c = gaps[in_use];
+    d.obstacles.polygons.push_back(box(590, c - 20.0, 610, c + 20.0, "plug" + std::to_string(k)));
+    detections.push_back(d);
+    replay = replay_detections(graph, problem, detections, 5.0);
+    ASSERT_EQ(replay.repairs.size(), detections.size());
+    ASSERT_TRUE(replay.repairs.back().found);
+    const int now = gap_of(replay.repairs.back().route);
+    ASSERT_GE(now, 0);
+    flips += (gaps[now] < 510.0) != (gaps[in_use] < 510.0);
+    in_use = now;
+  }
+  EXPECT_GE(flips, 3) << "the reports should make the best way flip sides";
   EXPECT_TRUE(replay.reached_goal);
+  // Where each report reached the vehicle: the track index at its distance sailed.
   const auto& t = replay.track_vertices;
+  std::vector<double> sailed{0.0};
+  for (std::size_t i = 1; i < replay.track.size(); ++i) sailed.push_back(sailed.back() + (replay.track[i] - replay.track[i - 1]).norm());
+  std::vector<bool> report_at(t.size(), false);
+  for (const Repair& r : replay.repairs) {
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (std::abs(sailed[i] - r.along_m) < 1e-9 && (replay.track[i] - r.vehicle).norm() < 1e-9) report_at[i] = true;
+    }
+  }
+  int turns = 0;
+  for (std::size_t i = 0; i + 2 < t.size(); ++i) {
+    if (t[i] != t[i + 2]) continue;
+    ++turns;
+    EXPECT_TRUE(report_at[i + 1]) << "turned back at track step " << i + 1 << " without a report";
+  }
   for (std::size_t i = 0; i + 3 < t.size(); ++i) {
     EXPECT_FALSE(t[i] == t[i + 2] && t[i + 1] == t[i + 3]) << "shuttles between two cells at step " << i;
   }
+  EXPECT_GE(turns, 1) << "the reports should turn the vehicle back";
+  EXPECT_LE(turns, static_cast<int>(replay.repairs.size()));
 }
 
 TEST(DStarLite, DetectionsNeedADistanceAlongTheRoute) {

@@ -31,6 +31,8 @@ std::string where(const Vec3& p) {
 // The cell test of the header; `bottom` is the volume's deepest allowed depth.
 CellState classify(const WaterVolume& volume, const Vec3& lo, const Vec3& hi, const Vec2& area_max, double bottom) {
   if (lo.x() >= area_max.x() || lo.y() >= area_max.y() || lo.z() >= bottom) return CellState::occupied;
+  // Straddling the area's far side with the centre outside: split, so every vertex lies in the area.
+  if (0.5 * (lo.x() + hi.x()) > area_max.x() || 0.5 * (lo.y() + hi.y()) > area_max.y()) return CellState::mixed;
   const VolumeOptions& band = volume.options();
   if (hi.z() < band.min_depth_m) return CellState::occupied;
   bool mixed = lo.z() < band.min_depth_m || hi.z() > bottom;

@@ -13,7 +13,8 @@
 // steeper than theta are left out, so every leg of a route can be flown.
 //
 // Classification (conservative, as the quadtree's): a cell is occupied when it
-// lies wholly outside the area or the band, or wholly deeper than the floor's
+// lies wholly outside the area or the band (one straddling the area's edge
+// with its centre outside is split, so every vertex lies in the area), or wholly deeper than the floor's
 // deepest point over its footprint less the clearance, or wholly inside one
 // obstacle's zone (footprint distance + half diagonal < margin, and its top
 // face deeper than the zone's top); free when it lies in the band, above the

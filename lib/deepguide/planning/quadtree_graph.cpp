@@ -59,10 +59,13 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
                        std::to_string(options.max_cells) + " cells; give a larger cell or a smaller area");
     }
     // The root square reaches past the area on its far sides: cells wholly
-    // out of the area are occupied, so routes keep to the cells that meet it
-    // (splitting the cells that straddle its edge would line it with a band
-    // of minimum cells for no use).
+    // out of the area are occupied, and a cell that straddles its edge with
+    // its centre outside is split (a mixed cell of the minimum size is then
+    // occupied), so every vertex lies in the area. Straddling cells with
+    // their centre inside stay whole: lining the edge with a band of minimum
+    // cells would serve nothing.
     if ((box.min.array() >= options.area_max.array()).any()) return CellState::occupied;
+    if ((box.centre().array() > options.area_max.array()).any()) return CellState::mixed;
     const double d = field.clearance(box.centre());
     const double r = 0.5 * (box.max - box.min).norm();
     if (d - r >= margin) return CellState::free;

@@ -18,8 +18,9 @@
 // their own cell is occupied by the conservative rule, the free cells they
 // see among the nearest rings of neighbours; and each other when the straight
 // line is free. Cells wholly outside the work area count as occupied: the
-// root square reaches past the area's far sides, and routes keep to the cells
-// that meet the area (at most one cell beyond its edge).
+// root square reaches past the area's far sides, and a cell straddling the
+// edge is split until its centre lies in the area, so every vertex does
+// (a route reaches at most half a cell beyond the edge).
 //
 // `smooth` (plan --smooth) shortcuts the route afterwards: from each anchor
 // it jumps to the farthest later waypoint it sees (segment_free), so the
