@@ -139,10 +139,11 @@ void run_plan_in_depth(const DepthCommand& c) {
     return;
   }
   std::printf("length           %.2f m in depth, %zu waypoints\n", route.length(), route.points.size());
-  std::printf("depth            %.1f m to %.1f m; band %.1f to %s m; steepest leg %.1f deg (dive %.1f deg)\n",
-              route.depth_m.front(), route.depth_m.back(), options.volume.min_depth_m,
-              std::isfinite(options.volume.max_depth_m) ? std::to_string(options.volume.max_depth_m).c_str() : "the floor",
-              plan.check.steepest_deg, options.octree.max_dive_deg);
+  char bottom[32] = "the floor";
+  if (std::isfinite(options.volume.max_depth_m)) std::snprintf(bottom, sizeof bottom, "%.1f m", options.volume.max_depth_m);
+  std::printf("depth            %.1f m to %.1f m; band %.1f m to %s; steepest leg %.1f deg (dive %.1f deg)\n",
+              route.depth_m.front(), route.depth_m.back(), options.volume.min_depth_m, bottom, plan.check.steepest_deg,
+              options.octree.max_dive_deg);
   if (std::isfinite(plan.check.min_floor_gap_m)) {
     std::printf("sea floor        at least %.2f m below the route (clearance %.2f m)\n", plan.check.min_floor_gap_m,
                 c.vertical_clearance);

@@ -36,6 +36,12 @@ for b in "$DEEPGUIDE_ROOT"/build/bench/bench_*; do
     bench_identification) (cd "$DEEPGUIDE_ROOT" && "$b") ;;  # the sample identify scenarios in 0..1 m/s currents
     bench_cost_planning) (cd "$DEEPGUIDE_ROOT" && "$b") ;;  # 100 random current fields, then HYCOM from ../shared
     bench_replanning) "$b" ;;  # D* Lite repair against A* from scratch, 2 km quadtree at 2 m
+    bench_octree)  # one configuration per process: its peak RSS is the row's
+      "$b" --header
+      for args in "--min-cell 1 --dive 45" "--min-cell 1 --dive 30" "--min-cell 1 --dive 14" "--min-cell 2 --dive 45"; do
+        read -r -a octree_args <<<"$args"
+        "$b" "${octree_args[@]}"
+      done ;;
     bench_no_go) "$b" ;;  # writes a 20000 x 20000 GeoTIFF in the temp folder (~1 GiB), then deletes it
     *) "$b" --benchmark_min_time=0.2 "$@" ;;
   esac

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the quadtree and replanning figures and the Gulf Stream time
+# Regenerates the quadtree, replanning and octree figures and the Gulf Stream time
 # route (docs/PLANNING.md; the latter when ../shared has the HYCOM sample),
 # and the reactive level's and the identification's figures
 # (docs/SIMULATION.md, docs/IDENTIFICATION.md) from every scenario in
@@ -46,6 +46,12 @@ mkdir -p docs/images
   --graph quadtree --min-cell 4 --render docs/images/quadtree_cells.png --render-graph >/dev/null
 "$DEEPGUIDE_CLI" plan --obstacles data/sample_obstacles.geojson --from 10.2405,54.4470 --to 10.2640,54.4560 \
   --graph quadtree --replan-events data/replan_events.csv --render docs/images/replanning_replay.png >/dev/null
+
+# A route in depth over the sample chart: its depth profile with the sea
+# floor, the hazards' tops and the octree's cells (docs/PLANNING.md).
+"$DEEPGUIDE_CLI" plan --chart charts/sample_chart.tif charts/sample_chart_hazards.gpkg --graph octree --depth 10 \
+  --from 10.2446,54.4413 --to 10.2626,54.4606 --min-cell 1 --smooth \
+  --render-profile docs/images/octree_depth_profile.png >/dev/null
 
 # The time route through the real HYCOM Gulf Stream sample (docs/PLANNING.md),
 # when ../shared holds it (it is never copied into the project).
