@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/string_pulling.hpp"
 
 namespace deepguide {
 namespace {
@@ -230,19 +231,10 @@ PlanResult OctreeGraph::solve(const Vec3& start, const Vec3& goal, SearchAlgorit
   std::vector<Vec3> points;
   for (GraphVertex v : found.path) points.push_back(position(v));
   if (options_.smooth && points.size() > 2) {
-    // Greedy string pulling, as the quadtree's, keeping every leg flyable.
-    std::vector<Vec3> pulled{points.front()};
-    std::size_t anchor = 0;
-    while (anchor + 1 < points.size()) {
-      std::size_t next = points.size() - 1;
-      while (next > anchor + 1 &&
-             !(flyable(points[anchor], points[next]) && volume_->segment_free(points[anchor], points[next]))) {
-        --next;
-      }
-      pulled.push_back(points[next]);
-      anchor = next;
-    }
-    points = std::move(pulled);
+    // Keeping every leg flyable.
+    points = pull_string(points, [this](const Vec3& a, const Vec3& b) {
+      return flyable(a, b) && volume_->segment_free(a, b);
+    });
   }
   for (const Vec3& p : points) {
     result.route.points.push_back(p.head<2>());

@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/string_pulling.hpp"
 
 namespace deepguide {
 namespace {
@@ -197,15 +198,8 @@ PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm 
   std::vector<Vec2> points;
   for (GraphVertex v : found.path) points.push_back(position(v));
   if (options_.smooth && points.size() > 2) {
-    // Greedy string pulling: from each anchor, the farthest later waypoint it sees.
-    std::vector<Vec2> pulled{points.front()};
-    std::size_t anchor = 0;
-    while (anchor + 1 < points.size()) {
-      std::size_t next = points.size() - 1;
-      while (next > anchor + 1 && !field_->segment_free(points[anchor], points[next])) --next;
-      pulled.push_back(points[next]);
-      anchor = next;
-    }
+    const std::vector<Vec2> pulled =
+        pull_string(points, [this](const Vec2& a, const Vec2& b) { return field_->segment_free(a, b); });
     // Shorter is not always cheaper in a current: keep the pulled route only if it costs no more.
     const double pulled_cost = cost != nullptr ? price_route(*cost, pulled).cost : Route{pulled}.length();
     if (pulled_cost <= result.cost) {
