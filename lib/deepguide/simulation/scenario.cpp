@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
 #include "deepguide/world/current_field.hpp"
@@ -21,30 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
-std::string line_of(const YAML::Node& node) {
-  const YAML::Mark m = node.Mark();
-  return m.line >= 0 ? "line " + std::to_string(m.line + 1) : std::string();
-}
-
-// A numeric key's range: lo < v (or lo <= v when lo_closed) and v <= hi, in the file's unit.
-struct Range {
-  double lo, hi;
-  bool lo_closed;
-  const char* what;  // "a depth in metres"
-
-  bool holds(double v) const { return std::isfinite(v) && (lo_closed ? v >= lo : v > lo) && v <= hi; }
-  std::string text() const {
-    return what + std::string(lo_closed ? " >= " : " > ") + number(lo) + " and <= " + number(hi);
-  }
-};
-
 constexpr Range kCoordinate{-1e8, 1e8, true, "a coordinate in metres"};
 constexpr Range kLon{-180.0, 180.0, true, "a longitude in degrees"};
 constexpr Range kLat{-90.0, 90.0, true, "a latitude in degrees"};
@@ -52,89 +29,6 @@ constexpr Range kAngle{-360.0, 360.0, true, "an angle in degrees"};
 constexpr Range kAxis{0.0, 1e6, false, "a semi-axis in metres"};
 constexpr Range kSigma{0.0, 1e4, true, "a standard deviation"};
 constexpr Range kDuration{0.0, kMaxSimulationTime_s, false, "a time in seconds"};
-
-// One YAML mapping of known keys: unknown and duplicate keys are refused up
-// front, values are read by key with their expectation.
-class Mapping {
- public:
-  Mapping(const YAML::Node& node, std::string source, std::string prefix, std::initializer_list<const char*> known,
-          const std::string& expected)
-      : node_(node), source_(std::move(source)), prefix_(std::move(prefix)) {
-    if (!node.IsMap()) {
-      const std::string where = prefix_.empty() ? std::string() : prefix_.substr(0, prefix_.size() - 1);
-      throw input_error({source_, line_of(node), where}, expected, node.IsNull() ? "nothing" : "a scalar or list");
-    }
-    for (const auto& kv : node) {
-      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-      const InputLocation at{source_, line_of(kv.first), printable(prefix_ + key)};
-      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) == known.end()) {
-        std::string list;
-        for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-        throw input_error(at, "one of the known keys (" + list + ")", "an unknown key");
-      }
-      for (const auto& [k, first] : entries_)
-        if (k == key) throw input_error(at, "each key once", "a duplicate (first at " + line_of(first) + ")");
-      entries_.emplace_back(key, kv.first);
-      values_.push_back(kv.second);
-    }
-  }
-
-  bool has(const char* key) const { return index(key) >= 0; }
-  /// The value, or an undefined node when absent.
-  YAML::Node value(const char* key) const { return index(key) >= 0 ? values_[index(key)] : YAML::Node(); }
-  InputLocation where(const char* key) const {
-    const int i = index(key);
-    return {source_, i >= 0 ? line_of(entries_[i].second) : line_of(node_), prefix_ + key};
-  }
-  std::string full(const char* key) const { return prefix_ + key; }
-  const std::string& source() const { return source_; }
-
-  double number(const char* key, const Range& r) const {
-    const YAML::Node v = value(key);
-    if (!v.IsDefined()) throw input_error(where(key), r.text(), "nothing");
-    const std::string expected = r.what + std::string(" (a number)");
-    if (!v.IsScalar()) throw input_error(where(key), expected, v.IsNull() ? "nothing" : "a list or mapping");
-    double x = 0.0;
-    try {
-      x = v.as<double>();
-    } catch (const YAML::Exception&) {
-      throw input_error(where(key), expected, "'" + printable(v.Scalar()) + "'");
-    }
-    if (!r.holds(x)) throw input_error(where(key), r.text(), printable(v.Scalar()));
-    return x;
-  }
-  double number_or(const char* key, const Range& r, double fallback) const {
-    return has(key) ? number(key, r) : fallback;
-  }
-  std::string text(const char* key, const char* expected) const {
-    const YAML::Node v = value(key);
-    if (!v.IsScalar() || v.Scalar().empty()) {
-      throw input_error(where(key), expected,
-                        v.IsNull()     ? "nothing"
-                        : v.IsScalar() ? "an empty text"
-                                       : "a list or mapping");
-    }
-    return v.Scalar();
-  }
-
- private:
-  int index(const char* key) const {
-    for (std::size_t i = 0; i < entries_.size(); ++i)
-      if (entries_[i].first == key) return static_cast<int>(i);
-    return -1;
-  }
-  YAML::Node node_;
-  std::string source_, prefix_;
-  std::vector<std::pair<std::string, YAML::Node>> entries_;  // key text, key node (for its line)
-  std::vector<YAML::Node> values_;
-};
-
-// A path in the file, relative to the file's folder.
-std::string path_in(const Mapping& m, const char* key, const std::string& base_dir) {
-  const std::string p = m.text(key, "a file path");
-  const fs::path path(p);
-  return path.is_absolute() || base_dir.empty() ? p : (fs::path(base_dir) / path).string();
-}
 
 bool node_uses_lonlat(const YAML::Node& node) {
   return node.IsMap() && (node["lon"].IsDefined() || node["lat"].IsDefined());
@@ -190,8 +84,8 @@ void read_obstacles(const Mapping& root, const std::optional<LocalFrame>& frame,
     c.footprint.a = m.number("semi_major_m", kAxis);
     c.footprint.b = m.number_or("semi_minor_m", kAxis, c.footprint.a);
     if (c.footprint.b > c.footprint.a) {
-      throw input_error(m.where("semi_minor_m"), "semi_minor_m <= semi_major_m (" + number(c.footprint.a) + ")",
-                        number(c.footprint.b));
+      throw input_error(m.where("semi_minor_m"), "semi_minor_m <= semi_major_m (" + yaml_number(c.footprint.a) + ")",
+                        yaml_number(c.footprint.b));
     }
     c.footprint.theta = to_math(m.number_or("orientation_deg", kAngle, 0.0), c.footprint.center, frame);
     sc.obstacles.push_back(std::move(c));
@@ -239,7 +133,7 @@ void read_reactive(const Mapping& root, Scenario& sc) {
       m.number_or("potential_stall_fraction", {0.0, 1.0, false, "a fraction below 1"}, r.potential_stall_fraction);
   if (r.potential_stall_fraction >= 1.0) {
     throw input_error(m.where("potential_stall_fraction"), "a fraction > 0 and < 1",
-                      number(r.potential_stall_fraction));
+                      yaml_number(r.potential_stall_fraction));
   }
 }
 
@@ -373,7 +267,7 @@ void read_current(const Mapping& root, const std::string& base_dir, Scenario& sc
     const InputLocation at = root.where("current");
     const CurrentField f = parse_constant_current(root.text("current", "a current SPEED_MPS,DIR_DEG"), at.describe());
     if (f.constant_velocity.norm() > 20.0)
-      throw input_error(at, "a current of at most 20 m/s", number(f.constant_velocity.norm()));
+      throw input_error(at, "a current of at most 20 m/s", yaml_number(f.constant_velocity.norm()));
     if (!sc.frame) {
       sc.current = f.constant_velocity;  // true north is +y
     } else {
@@ -393,7 +287,7 @@ void read_current(const Mapping& root, const std::string& base_dir, Scenario& sc
   options.depth_m = sc.depth_m;
   options.assumed_crs = sc.frame->id();
   auto field =
-      std::make_shared<const CurrentField>(load_current_field(path_in(root, "current_file", base_dir), options));
+      std::make_shared<const CurrentField>(load_current_field(root.path("current_file", base_dir), options));
   sc.current_time_offset_s = field->times_s.empty() ? 0.0 : field->times_s.front();
   const auto [lo, hi] = work_box(sc);
   check_current_coverage(*field, *sc.frame, lo, hi, sc.current_time_offset_s, sc.current_time_offset_s);
@@ -412,7 +306,7 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
   Scenario sc;
   sc.source = source;
   sc.name = root.has("name") ? root.text("name", "a scenario name (text)") : fs::path(source).stem().string();
-  if (root.has("vehicle")) sc.vehicle = read_vehicle_file(path_in(root, "vehicle", base_dir));
+  if (root.has("vehicle")) sc.vehicle = read_vehicle_file(root.path("vehicle", base_dir));
 
   // The frame: crs, else the obstacle file's, else the start's UTM zone when lon/lat are used.
   if (root.has("crs")) {
@@ -422,7 +316,7 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
   ObstacleSet from_file;
   if (root.has("obstacles_file")) {
     LoadedObstacles loaded =
-        load_obstacles({path_in(root, "obstacles_file", base_dir)}, {sc.frame ? sc.frame->id() : std::string(), ""});
+        load_obstacles({root.path("obstacles_file", base_dir)}, {sc.frame ? sc.frame->id() : std::string(), ""});
     if (!loaded.obstacles.polygons.empty()) {
       throw input_error(root.where("obstacles_file"),
                         "elliptic-cylinder (Point) obstacles only: the sonar reports no polygons",
@@ -502,23 +396,23 @@ void validate_identify(const Scenario& sc, const Fail& fail, const Within& withi
   within([&] { validate(id.around); });
   // At most half the longest run: the approach needs time too.
   if (!(id.hold_time_s > 0.0 && id.hold_time_s <= 0.5 * kMaxSimulationTime_s))
-    fail("identify.hold_time_s", "a time > 0 and <= " + number(0.5 * kMaxSimulationTime_s) + " s",
-         number(id.hold_time_s));
+    fail("identify.hold_time_s", "a time > 0 and <= " + yaml_number(0.5 * kMaxSimulationTime_s) + " s",
+         yaml_number(id.hold_time_s));
   if (id.mode == IdentifyMode::align && !std::isnan(sc.max_time_s) && !(sc.max_time_s > id.hold_time_s)) {
-    fail("max_time_s", "a time longer than identify.hold_time_s (" + number(id.hold_time_s) + " s)",
-         number(sc.max_time_s));
+    fail("max_time_s", "a time longer than identify.hold_time_s (" + yaml_number(id.hold_time_s) + " s)",
+         yaml_number(sc.max_time_s));
   }
   if (!(id.position_tolerance_m > 0.0) || !std::isfinite(id.position_tolerance_m))
-    fail("identify.position_tolerance_m", "a distance > 0 m", number(id.position_tolerance_m));
+    fail("identify.position_tolerance_m", "a distance > 0 m", yaml_number(id.position_tolerance_m));
   const double vmax = sc.vehicle.max_speed_mps;
   const auto speed_ok = [&](const char* field, double v) {
-    if (!(v <= vmax)) fail(field, "a speed <= the vehicle's max speed " + number(vmax) + " m/s", number(v));
+    if (!(v <= vmax)) fail(field, "a speed <= the vehicle's max speed " + yaml_number(vmax) + " m/s", yaml_number(v));
   };
   speed_ok("identify.align.speed_mps", id.align.speed_mps);
   speed_ok("identify.align.max_speed_mps", id.align.max_speed_mps);
   speed_ok("identify.around.speed_mps", id.around.speed_mps);
   if (security_ellipse(e, id.align.standoff_m).contains(sc.start) && id.mode == IdentifyMode::align) {
-    fail("start", "a start outside the " + object + "'s safety ellipse (standoff " + number(id.align.standoff_m) +
+    fail("start", "a start outside the " + object + "'s safety ellipse (standoff " + yaml_number(id.align.standoff_m) +
                       " m)", "inside it");
   }
   if (e.contains(sc.start)) fail("start", "a start outside the " + object, "inside it");
@@ -556,28 +450,28 @@ void validate(const Scenario& sc) {
     }
   };
   // Range 0 (no sonar) is the scenario's addition to the sonar's ranges.
-  if (!(sc.sonar.range_m >= 0.0)) fail("sonar.range_m", "a range >= 0 m (0 = no sonar)", number(sc.sonar.range_m));
+  if (!(sc.sonar.range_m >= 0.0)) fail("sonar.range_m", "a range >= 0 m (0 = no sonar)", yaml_number(sc.sonar.range_m));
   SonarParams sonar = sc.sonar;
   if (sonar.range_m == 0.0) sonar.range_m = 1.0;
   within([&] { validate(sonar); });
   within([&] { validate(sc.reactive); });
   const ReactiveParams& r = sc.reactive;
-  if (!(r.arrival_radius_m > 0.0)) fail("reactive.arrival_radius_m", "a radius > 0 m", number(r.arrival_radius_m));
+  if (!(r.arrival_radius_m > 0.0)) fail("reactive.arrival_radius_m", "a radius > 0 m", yaml_number(r.arrival_radius_m));
   if (!(r.speed_mps <= sc.vehicle.max_speed_mps))
-    fail("reactive.speed_mps", "a speed <= the vehicle's max speed " + number(sc.vehicle.max_speed_mps) + " m/s",
-         number(r.speed_mps));
+    fail("reactive.speed_mps", "a speed <= the vehicle's max speed " + yaml_number(sc.vehicle.max_speed_mps) + " m/s",
+         yaml_number(r.speed_mps));
   if (!sc.start.allFinite()) fail("start", "a finite position", "NaN or infinity");
   if (!sc.target.allFinite()) fail("target", "a finite position", "NaN or infinity");
   if (sc.start_heading && !std::isfinite(*sc.start_heading)) fail("start_heading_deg", "a finite heading", "NaN");
   if (!(sc.depth_m >= 0.0 && sc.depth_m <= sc.vehicle.max_depth_m))
-    fail("depth_m", "a depth >= 0 and <= the vehicle's max depth", number(sc.depth_m));
+    fail("depth_m", "a depth >= 0 and <= the vehicle's max depth", yaml_number(sc.depth_m));
   if (!sc.current.allFinite() || sc.current.norm() > 20.0)
-    fail("current", "a finite current of at most 20 m/s", number(sc.current.norm()));
+    fail("current", "a finite current of at most 20 m/s", yaml_number(sc.current.norm()));
   for (const EllipticCylinder& o : sc.obstacles) {
     const Ellipse& e = o.footprint;
     if (!e.center.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6)) {
       fail("obstacle '" + printable(o.id) + "'", "a finite ellipse with 0 < semi-minor <= semi-major <= 1e6 m",
-           "a = " + number(e.a) + ", b = " + number(e.b));
+           "a = " + yaml_number(e.a) + ", b = " + yaml_number(e.b));
     }
   }
   for (const EllipticCylinder& o : sc.obstacles) {
@@ -588,19 +482,19 @@ void validate(const Scenario& sc) {
            "inside obstacle '" + printable(o.id) + "'");
   }
   if (!(sc.contacts.gate_m >= 0.0) || !std::isfinite(sc.contacts.gate_m))
-    fail("contacts.gate_m", "a gate >= 0 m", number(sc.contacts.gate_m));
-  if (!(sc.contacts.memory_s > 0.0)) fail("contacts.memory_s", "a time > 0 s", number(sc.contacts.memory_s));
+    fail("contacts.gate_m", "a gate >= 0 m", yaml_number(sc.contacts.gate_m));
+  if (!(sc.contacts.memory_s > 0.0)) fail("contacts.memory_s", "a time > 0 s", yaml_number(sc.contacts.memory_s));
   if (!(sc.energy.hotel_power_w >= 0.0) || !std::isfinite(sc.energy.hotel_power_w) ||
       !(sc.energy.propulsion_k_w_per_mps3 >= 0.0) || !std::isfinite(sc.energy.propulsion_k_w_per_mps3))
     fail("energy", "finite hotel_power_w and propulsion_k_w_per_mps3 >= 0", "a negative or non-finite value");
   if (!std::isnan(sc.max_time_s) && !(sc.max_time_s > 0.0 && sc.max_time_s <= kMaxSimulationTime_s))
-    fail("max_time_s", "a time > 0 and <= " + number(kMaxSimulationTime_s) + " s", number(sc.max_time_s));
+    fail("max_time_s", "a time > 0 and <= " + yaml_number(kMaxSimulationTime_s) + " s", yaml_number(sc.max_time_s));
   if (!(sc.stall_time_s > 0.0) || !std::isfinite(sc.stall_time_s))
-    fail("stall_time_s", "a time > 0 s", number(sc.stall_time_s));
+    fail("stall_time_s", "a time > 0 s", yaml_number(sc.stall_time_s));
   if (!(sc.no_progress_s > 0.0) || !std::isfinite(sc.no_progress_s))
-    fail("no_progress_s", "a time > 0 s", number(sc.no_progress_s));
+    fail("no_progress_s", "a time > 0 s", yaml_number(sc.no_progress_s));
   if (!(sc.reversal_dead_band >= 0.0) || !std::isfinite(sc.reversal_dead_band))
-    fail("reversal_dead_band_deg_s", "a turning rate >= 0", number(rad_to_deg(sc.reversal_dead_band)));
+    fail("reversal_dead_band_deg_s", "a turning rate >= 0", yaml_number(rad_to_deg(sc.reversal_dead_band)));
   if (sc.identify) validate_identify(sc, fail, within);
 }
 
