@@ -47,8 +47,12 @@ void run_plan_in_depth(const DepthCommand& c) {
   if (std::isnan(c.max_dive)) {
     // The vehicle's steepest steady dive: its vertical speed at cruise.
     const VehicleParams vehicle = c.vehicle.empty() ? VehicleParams{} : read_vehicle_file(c.vehicle);
-    options.octree.max_dive_deg =
-        std::asin(std::min(1.0, vehicle.max_vertical_speed_mps / vehicle.cruise_speed_mps)) * 180.0 / M_PI;
+    if (!(vehicle.max_vertical_speed_mps < vehicle.cruise_speed_mps)) {
+      throw InputError((c.vehicle.empty() ? std::string("the vehicle") : c.vehicle) +
+                       ": max_vertical_speed_mps is not below the cruise speed, so it gives no dive angle; give "
+                       "--max-dive");
+    }
+    options.octree.max_dive_deg = std::asin(vehicle.max_vertical_speed_mps / vehicle.cruise_speed_mps) * 180.0 / M_PI;
   } else {
     options.octree.max_dive_deg = c.max_dive;
   }

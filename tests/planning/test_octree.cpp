@@ -214,6 +214,21 @@ TEST(Octree, AStarAndDijkstraAgree) {
   EXPECT_EQ(compared, 20);
 }
 
+TEST(Octree, PointsOnTheVolumesFarSidesLieInACell) {
+  // An extent of exactly 2^k cells: the root must still hold its far faces.
+  const ObstacleField field(ObstacleSet{}, 5.0);
+  const WaterVolume volume(field, nullptr, {2.0, 2.0, 66.0});
+  OctreeOptions o;
+  o.min_cell_m = 1.0;
+  o.max_dive_deg = 60.0;
+  o.area_min = {0.0, 0.0};
+  o.area_max = {64.0, 64.0};
+  const OctreeGraph graph(volume, o);
+  const PlanResult a = graph.solve({64.0, 10.0, 10.0}, {10.0, 64.0, 66.0});
+  ASSERT_TRUE(a.found) << a.message;
+  EXPECT_TRUE(check_route_in_depth(a.route, volume, 60.0).safe);
+}
+
 TEST(Octree, BadInputIsRefusedWithAClearError) {
   const ObstacleSet set = rocks();
   const ObstacleField field(set, 5.0);
@@ -249,6 +264,10 @@ TEST(Octree, BadInputIsRefusedWithAClearError) {
   EXPECT_NE(in_floor.find("sea floor"), std::string::npos) << in_floor;
   EXPECT_NE(message([&] { graph.solve({50.0, 50.0, 20.0}, {350.0, 350.0, 1.0}); }).find("the goal"), std::string::npos);
   EXPECT_NE(message([&] { graph.solve({-50.0, 50.0, 20.0}, {350.0, 350.0, 20.0}); }).find("outside"), std::string::npos);
+  // The checker needs a dive angle it can use.
+  Route r{{{10.0, 10.0}, {20.0, 10.0}}, {20.0, 21.0}};
+  EXPECT_THROW(check_route_in_depth(r, volume, std::nan("")), InputError);
+  EXPECT_THROW(check_route_in_depth(r, volume, 120.0), InputError);
   // In the tower's zone: no route, not bad input.
   EXPECT_THROW(graph.solve({300.0, 150.0, 20.0}, {50.0, 50.0, 20.0}), NoRouteError);
 }

@@ -1,10 +1,11 @@
 // The sea floor for planning in depth (world/sea_floor.hpp): bilinear depth
 // against hand values, the pyramid's range against dense sampling, the exact
-// lowest gap along a segment, the raster reader against the sample chart's
-// own cells, and bad input.
+// lowest gap along a segment, the raster reader never deeper than the chart
+// (the sample chart, and a pinnacle narrower than a node spacing), and bad input.
 #include <gtest/gtest.h>
 
 #include <gdal_priv.h>
+#include <ogr_spatialref.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/sea_floor.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -117,28 +119,80 @@ TEST(SeaFloor, LowestGapIsTheExactMinimumAlongTheSegment) {
   }
 }
 
-TEST(SeaFloor, FromRasterMatchesTheChartsOwnCells) {
-  // The sample chart is in the frame's own CRS (UTM 32N) with 5 m cells:
-  // nodes on its cell centres read its cells exactly (depth = -elevation).
+TEST(SeaFloor, FromRasterIsNeverDeeperThanTheChart) {
+  // The sample chart (UTM 32N, 5 m cells, elevation) at 8 m nodes, the CLI's
+  // default: at every chart cell centre in the area the floor is no deeper
+  // than the chart, and no shallower than the shallowest chart cell within
+  // three node spacings and a chart cell (how far the conservative rule
+  // reaches: a node's neighbours, their cells, the cells they touch).
   const std::string path = std::string(DEEPGUIDE_SOURCE_DIR) + "/charts/sample_chart.tif";
   const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
-  const Vec2 lo(580402.5, 6034002.5), hi(580802.5, 6034302.5);
-  const SeaFloor floor = SeaFloor::from_raster(path, frame, lo, hi, 5.0);
-  EXPECT_EQ(floor.nx(), 81u);
-  EXPECT_EQ(floor.ny(), 61u);
+  const Vec2 lo(580400.0, 6033400.0), hi(581000.0, 6033900.0);
+  const double spacing = 8.0;
+  const SeaFloor floor = SeaFloor::from_raster(path, frame, lo, hi, spacing);
   GDALAllRegister();
   GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(ds);
   double gt[6];
   ds->GetGeoTransform(gt);
-  for (int k = 0; k < 50; ++k) {
-    const Vec2 p = lo + Vec2(5.0 * ((k * 37) % 81), 5.0 * ((k * 11) % 61));
-    const int col = static_cast<int>((p.x() - gt[0]) / gt[1]), row = static_cast<int>((p.y() - gt[3]) / gt[5]);
-    float v = 0;
-    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, col, row, 1, 1, &v, 1, 1, GDT_Float32, 0, 0, nullptr), CE_None);
-    ASSERT_NEAR(floor.depth_at(p), -static_cast<double>(v), 1e-4) << p.transpose();
+  const int c0 = static_cast<int>((lo.x() - gt[0]) / gt[1]) - 4, r0 = static_cast<int>((hi.y() - gt[3]) / gt[5]) - 4;
+  const int cols = static_cast<int>((hi.x() - lo.x()) / gt[1]) + 8, rows = static_cast<int>((hi.y() - lo.y()) / -gt[5]) + 8;
+  std::vector<float> chart(static_cast<std::size_t>(cols * rows));
+  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, c0, r0, cols, rows, chart.data(), cols, rows, GDT_Float32, 0, 0,
+                                           nullptr),
+            CE_None);
+  const auto centre = [&](int c, int r) { return Vec2(gt[0] + (c0 + c + 0.5) * gt[1], gt[3] + (r0 + r + 0.5) * gt[5]); };
+  int checked = 0;
+  double widest = 0.0;
+  for (int r = 4; r < rows - 4; ++r) {
+    for (int c = 4; c < cols - 4; ++c) {
+      const Vec2 p = centre(c, r);
+      if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
+      const double chart_depth = -chart[static_cast<std::size_t>(r * cols + c)];
+      ASSERT_LE(floor.depth_at(p), chart_depth + 1e-4) << p.transpose();
+      double shallowest = chart_depth;
+      const int reach = static_cast<int>(std::ceil((3.0 * spacing + 5.0) / gt[1]));  // in chart cells
+      for (int rr = std::max(0, r - reach); rr <= std::min(rows - 1, r + reach); ++rr) {
+        for (int cc = std::max(0, c - reach); cc <= std::min(cols - 1, c + reach); ++cc) {
+          shallowest = std::min(shallowest, -static_cast<double>(chart[static_cast<std::size_t>(rr * cols + cc)]));
+        }
+      }
+      ASSERT_GE(floor.depth_at(p), shallowest - 1e-4) << p.transpose();
+      widest = std::max(widest, chart_depth - floor.depth_at(p));
+      ++checked;
+    }
   }
-  EXPECT_GT(floor.max_depth(), 5.0);
+  EXPECT_GT(checked, 10000);
+  EXPECT_GT(widest, 0.0);  // the rule does make the floor shallower somewhere
+}
+
+TEST(SeaFloor, APinnacleNarrowerThanANodeSpacingStays) {
+  // A 1 m GeoTIFF 50 m deep with a 3 m x 3 m pinnacle up to 5 m, read at 4 m
+  // nodes: a level leg at 20 m over the pinnacle must run into the floor.
+  deepguide::test::ScratchDir dir;
+  const std::string path = dir.file("pinnacle.tif");
+  GDALAllRegister();
+  {
+    GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
+    GDALDatasetUniquePtr ds(gtiff->Create(path.c_str(), 200, 200, 1, GDT_Float32, nullptr));
+    double gt[6] = {500000.0, 1.0, 0.0, 6000200.0, 0.0, -1.0};
+    ds->SetGeoTransform(gt);
+    OGRSpatialReference srs;
+    srs.importFromEPSG(32632);
+    ds->SetSpatialRef(&srs);
+    std::vector<float> v(200 * 200, -50.0f);
+    for (int r = 98; r <= 100; ++r) {
+      for (int c = 101; c <= 103; ++c) v[static_cast<std::size_t>(r * 200 + c)] = -5.0f;
+    }
+    ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, 200, 200, v.data(), 200, 200, GDT_Float32, 0, 0, nullptr),
+              CE_None);
+  }
+  const SeaFloor floor = SeaFloor::from_raster(path, LocalFrame::from_user_crs("EPSG:32632"), {500010.0, 6000010.0},
+                                               {500190.0, 6000190.0}, 4.0);
+  EXPECT_LE(floor.min_depth(), 5.0 + 1e-9);
+  EXPECT_LE(floor.depth_at({500102.5, 6000100.5}), 5.0 + 1e-9);
+  EXPECT_LT(floor.lowest_gap({500020.0, 6000100.5, 20.0}, {500180.0, 6000100.5, 20.0}).gap_m, 0.0);
+  EXPECT_NEAR(floor.depth_at({500030.0, 6000030.0}), 50.0, 1e-9);  // far from it, the chart's depth
 }
 
 TEST(SeaFloor, BadInputIsRefusedWithAClearError) {

@@ -85,6 +85,35 @@ TEST(WaterVolume, LegsOverAnObstacleAreJudgedAtTheirDeepestPointInItsZone) {
   }
 }
 
+TEST(WaterVolume, AZeroMarginStillBlocksLegsThroughAPolygon) {
+  ObstacleSet set;
+  set.polygons.push_back(box(-10.0, -10.0, 10.0, 10.0, "rock"));
+  set.polygons.back().top_depth_m = 20.0;
+  const ObstacleField field(set, 0.0);
+  const WaterVolume volume(field, nullptr, {2.0, 5.0, 200.0});
+  EXPECT_FALSE(volume.segment_free({-60.0, 0.0, 30.0}, {60.0, 0.0, 30.0}));  // straight through at 30 m
+  EXPECT_FALSE(volume.segment_free({0.0, 0.0, 12.0}, {20.0, 0.0, 30.0}));   // at x = 10 it is 21 m deep
+  EXPECT_TRUE(volume.segment_free({-60.0, 0.0, 18.0}, {60.0, 0.0, 18.0}));
+  EXPECT_TRUE(volume.segment_free({-60.0, 10.5, 30.0}, {60.0, 10.5, 30.0}));  // beside it
+}
+
+TEST(WaterVolume, ANonFiniteTopIsRefusedAndNonFiniteLegsAreBlocked) {
+  ObstacleSet set;
+  set.ellipses.push_back(disc(0.0, 0.0, 10.0, "rock"));
+  set.ellipses.back().top_depth_m = std::nan("");
+  const ObstacleField field(set, 5.0);
+  try {
+    WaterVolume volume(field, nullptr, {2.0, 5.0, 200.0});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'rock'"), std::string::npos) << e.what();
+  }
+  const ObstacleField empty(ObstacleSet{}, 5.0);
+  const WaterVolume volume(empty, nullptr, {2.0, 5.0, 200.0});
+  EXPECT_FALSE(volume.is_free({std::nan(""), 0.0, 10.0}));
+  EXPECT_FALSE(volume.segment_free({0.0, 0.0, 10.0}, {INFINITY, 0.0, 10.0}));
+}
+
 TEST(WaterVolume, LegsAgainstTheSeaFloorAndTheBand) {
   const ObstacleField field(ObstacleSet{}, 5.0);
   // Floor 100 m deep, rising to 40 m at x = 0 (a ridge along y).

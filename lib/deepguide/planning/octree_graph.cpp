@@ -91,11 +91,13 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
   slope_ = std::tan(options.max_dive_deg * M_PI / 180.0);
   const double height = options.min_cell_m, width = height / std::min(1.0, slope_);
   const double need = std::max(extent.maxCoeff() / width, (bottom - band.min_depth_m) / height);
-  if (!(need <= std::ldexp(1.0, CellTree<3>::kMaxLevels))) {
+  if (!(need < std::ldexp(1.0, CellTree<3>::kMaxLevels))) {
     throw InputError("--min-cell: " + num(options.min_cell_m) + " m cells over this volume need more than " +
                      std::to_string(CellTree<3>::kMaxLevels) + " levels; give a larger cell");
   }
-  const int depth = std::max(0, static_cast<int>(std::ceil(std::log2(need))));
+  // Strictly more than the extent: cells are half-open, and a point on the
+  // area's far side must still lie in a cell.
+  const int depth = std::max(0, static_cast<int>(std::floor(std::log2(need))) + 1);
   const Vec3 root(std::ldexp(width, depth), std::ldexp(width, depth), std::ldexp(height, depth));
   const Vec3 origin(options.area_min.x(), options.area_min.y(), band.min_depth_m);
   std::size_t cells = 0;

@@ -46,11 +46,13 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   // The root: a square of min_cell * 2^depth over the area (compared in
   // doubles first: a tiny cell over a wide area overflows an int).
   const double need = extent.maxCoeff() / options.min_cell_m;
-  if (!(need <= std::ldexp(1.0, kMaxDepth))) {
+  if (!(need < std::ldexp(1.0, kMaxDepth))) {
     throw InputError("--min-cell: " + num(options.min_cell_m) + " m over a " + num(extent.maxCoeff()) +
                      " m area needs more than " + std::to_string(kMaxDepth) + " levels; give a larger cell");
   }
-  const int depth = std::max(0, static_cast<int>(std::ceil(std::log2(need))));
+  // Strictly more than the extent: cells are half-open, and a point on the
+  // area's far side must still lie in a cell.
+  const int depth = std::max(0, static_cast<int>(std::floor(std::log2(need))) + 1);
   const double root = std::ldexp(options.min_cell_m, depth);
   std::size_t cells = 0;
   const double margin = field.margin();

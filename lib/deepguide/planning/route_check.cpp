@@ -101,6 +101,9 @@ DepthRouteCheck check_route_in_depth(const Route& route, const WaterVolume& volu
     p.emplace_back(route.points[i].x(), route.points[i].y(), route.depth_m[i]);
     if (!p.back().allFinite()) throw InputError("route check in depth: waypoint " + std::to_string(i) + " is not finite");
   }
+  if (!(max_dive_deg > 0.0 && max_dive_deg < 90.0)) {
+    throw InputError("route check in depth: expected a dive angle between 0 and 90 degrees");
+  }
   DepthRouteCheck check;
   check.segments = p.size() - 1;
   const double slope = std::tan(max_dive_deg * M_PI / 180.0);

@@ -58,8 +58,8 @@ struct DepthRouteCheck {
 };
 
 /// Checks a route whose waypoints carry depth_m. Throws InputError for a
-/// route without depths (or a different count), non-finite points or an
-/// empty route.
+/// route without depths (or a different count), non-finite points, an
+/// empty route, or a dive angle outside (0, 90) degrees.
 DepthRouteCheck check_route_in_depth(const Route& route, const WaterVolume& volume, double max_dive_deg);
 
 }  // namespace deepguide

@@ -34,7 +34,7 @@ SeaFloor::SeaFloor(const Vec2& origin, double spacing, std::size_t nx, std::size
   if (!(spacing > 0.0) || !std::isfinite(spacing)) {
     throw InputError("sea floor: expected a node spacing > 0 m, got " + num(spacing));
   }
-  if (nx < 2 || ny < 2 || depth_.size() != nx * ny || !origin.allFinite()) {
+  if (nx < 2 || ny < 2 || nx > depth_.size() / ny || depth_.size() != nx * ny || !origin.allFinite()) {
     throw InputError("sea floor: expected a grid of at least 2 x 2 nodes with one depth each, got " +
                      std::to_string(nx) + " x " + std::to_string(ny) + " nodes and " +
                      std::to_string(depth_.size()) + " depths");
@@ -106,6 +106,7 @@ std::pair<double, double> SeaFloor::depth_range(const Vec2& lo, const Vec2& hi) 
 }
 
 SeaFloor::Gap SeaFloor::lowest_gap(const Vec3& a, const Vec3& b) const {
+  if (!a.allFinite() || !b.allFinite()) return {-std::numeric_limits<double>::infinity(), a.allFinite() ? b : a};
   // Pieces between the grid lines the segment crosses: inside one grid cell
   // the bilinear floor along the segment is a quadratic in t, and so is the gap.
   std::vector<double> cuts{0.0, 1.0};
@@ -169,7 +170,7 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
                                    "-te", exact(area_min.x() - h), exact(area_min.y() - h),
                                    exact(area_min.x() + (nxd - 0.5) * spacing),
                                    exact(area_min.y() + (nyd - 0.5) * spacing),
-                                   "-ts", std::to_string(nx), std::to_string(ny), "-r", "bilinear", "-ot", "Float64",
+                                   "-ts", std::to_string(nx), std::to_string(ny), "-r", raster.to_depth < 0.0 ? "max" : "min", "-ot", "Float64",
                                    "-dstnodata", "nan"};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
@@ -205,19 +206,35 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
                                           nullptr) != CE_None) {
     throw InputError(path + ": sea floor: reading the warped raster failed: " + gdal::QuietErrors::last_message());
   }
-  std::vector<double> depths(nx * ny);
+  // Each node first holds the shallowest chart value in its own cell (the
+  // warp's max of elevations, min of depths), then the shallowest of its 3 x 3
+  // neighbourhood: a bilinear patch mixes its four corners, so each corner
+  // must be no deeper than the chart anywhere in the patches around it.
+  // The floor is then never deeper than the chart (a pinnacle narrower than
+  // a node spacing stays), at the price of shoals a node spacing wider.
+  std::vector<double> cell(nx * ny);
   std::size_t valid = 0;
   for (std::size_t r = 0; r < ny; ++r) {
     for (std::size_t i = 0; i < nx; ++i) {
       const double v = rows[r * nx + i];
       const bool ok = std::isfinite(v) && !raster.is_nodata(v);
       valid += ok;
-      depths[(ny - 1 - r) * nx + i] = ok ? v * raster.to_depth : std::numeric_limits<double>::quiet_NaN();
+      cell[(ny - 1 - r) * nx + i] = ok ? v * raster.to_depth : 0.0;  // no data: depth 0
     }
   }
   if (valid == 0) {
     throw InputError(path + ": sea floor: expected a raster that covers the work area, got one that does not "
                      "reach it (or has no data there)");
+  }
+  std::vector<double> depths(nx * ny);
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      double d = cell[j * nx + i];
+      for (std::size_t jj = j > 0 ? j - 1 : 0; jj <= std::min(j + 1, ny - 1); ++jj) {
+        for (std::size_t ii = i > 0 ? i - 1 : 0; ii <= std::min(i + 1, nx - 1); ++ii) d = std::min(d, cell[jj * nx + ii]);
+      }
+      depths[j * nx + i] = d;
+    }
   }
   return SeaFloor(area_min, spacing, nx, ny, std::move(depths));
 }

@@ -38,7 +38,10 @@ class SeaFloor {
 
   /// Samples a bathymetry raster (bathymetry.hpp: any GDAL raster, its sign
   /// convention) at nodes `spacing` apart over [area_min, area_max] in the
-  /// frame: GDAL warps it into the frame's CRS with bilinear resampling.
+  /// frame, never deeper than the chart: GDAL warps it into the frame's CRS
+  /// taking each node's shallowest cell value, and each node then takes the
+  /// shallowest of its 3 x 3 neighbours (so no bilinear patch dips below the
+  /// chart's shallowest point in it); no data is depth 0.
   /// Throws InputError as inspect_bathymetry does, and for an area the raster
   /// does not reach at all.
   static SeaFloor from_raster(const std::string& path, const LocalFrame& frame, const Vec2& area_min,

@@ -86,6 +86,10 @@ WaterVolume::WaterVolume(const ObstacleField& field, const SeaFloor* floor, cons
   const ObstacleSet& set = field.obstacles();
   const auto resolve = [&](const std::optional<double>& top_depth, const std::optional<double>& height,
                            std::pair<Vec2, Vec2> box) {
+    if ((top_depth && !std::isfinite(*top_depth)) || (height && !std::isfinite(*height))) {
+      throw InputError("obstacle '" + field.obstacle_name(zone_top_.size()) +
+                       "': expected a finite top_depth_m or height_m");
+    }
     if (top_depth) return *top_depth - c;
     if (height && floor != nullptr) return floor->depth_range(box.first, box.second).first - *height - c;
     return -std::numeric_limits<double>::infinity();  // the whole water column
@@ -107,6 +111,7 @@ WaterVolume::Verdict WaterVolume::check_point(const Vec3& p) const {
 }
 
 WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) const {
+  if (!a.allFinite() || !b.allFinite()) return {true, "has a point that is not finite", a.allFinite() ? b : a};
   const double c = options_.vertical_clearance_m;
   // The band: z is linear, so the ends decide.
   for (const Vec3& p : {a, b}) {
@@ -152,10 +157,13 @@ WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) co
       if (!in_b) last = edge(mid, 1.0);
     } else {
       const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
+      // A zero margin leaves the capsules without inside (the zone is the
+      // polygon itself): a micrometre keeps them, erring on the safe side.
+      const double radius = std::max(margin, 1e-6);
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       const auto ring = [&](const auto& points) {
         for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-          if (const auto iv = capsule_interval(a2, d, to_eigen(points[k]), to_eigen(points[k + 1]), margin)) {
+          if (const auto iv = capsule_interval(a2, d, to_eigen(points[k]), to_eigen(points[k + 1]), radius)) {
             if (iv->second <= 0.0 || iv->first >= 1.0) continue;
             lo = std::min(lo, iv->first);
             hi = std::max(hi, iv->second);
