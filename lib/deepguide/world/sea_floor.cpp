@@ -105,21 +105,60 @@ std::pair<double, double> SeaFloor::depth_range(const Vec2& lo, const Vec2& hi) 
   return {mn, mx};
 }
 
-SeaFloor::Gap SeaFloor::lowest_gap(const Vec3& a, const Vec3& b) const {
-  if (!a.allFinite() || !b.allFinite()) return {-std::numeric_limits<double>::infinity(), a.allFinite() ? b : a};
-  // Pieces between the grid lines the segment crosses: inside one grid cell
-  // the bilinear floor along the segment is a quadratic in t, and so is the gap.
-  std::vector<double> cuts{0.0, 1.0};
+std::vector<double> SeaFloor::cuts(const Vec3& a, const Vec3& b) const {
+  std::vector<double> out{0.0, 1.0};
   for (int axis = 0; axis < 2; ++axis) {
     const double o = origin_[axis], d = b[axis] - a[axis];
     if (d == 0.0) continue;
     const double g0 = (a[axis] - o) / spacing_, g1 = (b[axis] - o) / spacing_;
     for (double g = std::ceil(std::min(g0, g1)); g <= std::max(g0, g1); g += 1.0) {
       const double t = (o + g * spacing_ - a[axis]) / d;
-      if (t > 0.0 && t < 1.0) cuts.push_back(t);
+      if (t > 0.0 && t < 1.0) out.push_back(t);
     }
   }
-  std::sort(cuts.begin(), cuts.end());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::optional<double> SeaFloor::first_below(const Vec3& a, const Vec3& b, double clearance) const {
+  if (!a.allFinite() || !b.allFinite()) return 0.0;
+  const auto excess = [&](double t) {
+    const Vec3 p = a + t * (b - a);
+    return depth_at(p.head<2>()) - p.z() - clearance;
+  };
+  if (excess(0.0) < 0.0) return 0.0;
+  const std::vector<double> pieces = cuts(a, b);
+  for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+    const double t0 = pieces[k], t1 = pieces[k + 1];
+    if (!(t1 > t0)) continue;
+    // The piece's least excess (a quadratic, as in lowest_gap); from t0 to it
+    // the excess falls monotonically, so bisection finds the first crossing.
+    const double e0 = excess(t0), em = excess(0.5 * (t0 + t1)), e1 = excess(t1);
+    const double B = -3.0 * e0 + 4.0 * em - e1, C = 2.0 * e0 - 4.0 * em + 2.0 * e1;
+    double low_t = t1, low = e1;
+    if (C > 0.0) {
+      const double sv = -B / (2.0 * C);
+      if (sv > 0.0 && sv < 1.0 && excess(t0 + sv * (t1 - t0)) < low) {
+        low_t = t0 + sv * (t1 - t0);
+        low = excess(low_t);
+      }
+    }
+    if (!(low < 0.0)) continue;
+    double ok = t0, bad = low_t;
+    for (int i = 0; i < 60; ++i) {
+      const double m = 0.5 * (ok + bad);
+      (excess(m) < 0.0 ? bad : ok) = m;
+    }
+    return bad;
+  }
+  return std::nullopt;
+}
+
+SeaFloor::Gap SeaFloor::lowest_gap(const Vec3& a, const Vec3& b) const {
+  if (!a.allFinite() || !b.allFinite()) return {-std::numeric_limits<double>::infinity(), a.allFinite() ? b : a};
+  // Pieces between the grid lines the segment crosses: inside one grid cell
+  // the bilinear floor along the segment is a quadratic in t, and so is the gap.
+  const std::vector<double> cuts = this->cuts(a, b);
   const auto gap = [&](double t) {
     const Vec3 p = a + t * (b - a);
     return depth_at(p.head<2>()) - p.z();
@@ -147,8 +186,17 @@ SeaFloor::Gap SeaFloor::lowest_gap(const Vec3& a, const Vec3& b) const {
 
 SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame, const Vec2& area_min,
                                const Vec2& area_max, double spacing, const BathymetryOptions& options) {
-  if (!(spacing > 0.0) || !std::isfinite(spacing)) {
-    throw InputError(path + ": sea floor node spacing: expected > 0 m, got " + num(spacing));
+  if (!(spacing >= 0.0) || !std::isfinite(spacing)) {
+    throw InputError(path + ": sea floor node spacing: expected > 0 m (or 0: the raster's own), got " + num(spacing));
+  }
+  gdal::ensure_registered();
+  gdal::QuietErrors quiet;
+  detail::OpenedBathymetry raster = detail::open_bathymetry(path, options);
+  if (spacing == 0.0) {
+    // The raster's own cell, in metres (a degree of latitude is 111.32 km).
+    spacing = std::min(std::abs(raster.geotransform[1]), std::abs(raster.geotransform[5]));
+    if (raster.srs->IsGeographic()) spacing *= 111320.0;
+    if (!(spacing > 0.0)) throw InputError(path + ": sea floor: expected a raster with a cell size, got none");
   }
   const Vec2 extent = area_max - area_min;
   if (!area_min.allFinite() || !area_max.allFinite() || !(extent.minCoeff() > 0.0)) {
@@ -160,9 +208,6 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
                      "give a larger spacing");
   }
   const auto nx = static_cast<std::size_t>(nxd), ny = static_cast<std::size_t>(nyd);
-  gdal::ensure_registered();
-  gdal::QuietErrors quiet;
-  detail::OpenedBathymetry raster = detail::open_bathymetry(path, options);
   // Warped so that pixel centres fall on the nodes: node (i, j) is the centre
   // of column i, row ny - 1 - j (rows run north to south).
   const double h = 0.5 * spacing;

@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,7 +42,8 @@ class SeaFloor {
   /// frame, never deeper than the chart: GDAL warps it into the frame's CRS
   /// taking each node's shallowest cell value, and each node then takes the
   /// shallowest of its 3 x 3 neighbours (so no bilinear patch dips below the
-  /// chart's shallowest point in it); no data is depth 0.
+  /// chart's shallowest point in it); no data is depth 0. A spacing of 0
+  /// takes the raster's own cell size.
   /// Throws InputError as inspect_bathymetry does, and for an area the raster
   /// does not reach at all.
   static SeaFloor from_raster(const std::string& path, const LocalFrame& frame, const Vec2& area_min,
@@ -59,6 +61,9 @@ class SeaFloor {
     Vec3 where;
   };
   Gap lowest_gap(const Vec3& a, const Vec3& b) const;
+  /// The first parameter t in [0, 1] where floor - z along [a, b] drops below
+  /// `clearance` (where the danger begins), or none.
+  std::optional<double> first_below(const Vec3& a, const Vec3& b, double clearance) const;
 
   const Vec2& origin() const { return origin_; }
   double spacing() const { return spacing_; }
@@ -70,6 +75,8 @@ class SeaFloor {
 
  private:
   double node(std::ptrdiff_t i, std::ptrdiff_t j) const;
+  /// The segment's parameters where it crosses grid lines, with 0 and 1, sorted.
+  std::vector<double> cuts(const Vec3& a, const Vec3& b) const;
   Vec2 origin_;
   double spacing_;
   std::size_t nx_, ny_;

@@ -110,6 +110,68 @@ WaterVolume::Verdict WaterVolume::check_point(const Vec3& p) const {
   return check_segment(p, p);
 }
 
+std::optional<std::pair<double, double>> WaterVolume::zone_span(std::size_t i, const Vec2& a2, const Vec2& b2) const {
+  const double margin = field_->margin();
+  const Vec2 d = b2 - a2;
+  const auto inside = [&](double t) { return field_->distance_to(i, a2 + t * d) < margin; };
+  double first = 0.0, last = 1.0;
+  const bool in_a = inside(0.0), in_b = inside(1.0);
+  if (a2 == b2) {
+    if (!in_a) return std::nullopt;
+  } else if (i < field_->obstacles().ellipses.size()) {
+    const SegmentDistance nearest = field_->segment_distance_to(i, a2, b2);
+    if (nearest.distance >= margin) return std::nullopt;
+    const double mid = std::clamp((nearest.point_on_segment - a2).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    // Bisection, keeping the bracket's outer end: the zone is never underestimated.
+    const auto edge = [&](double in, double out) {
+      for (int k = 0; k < 60; ++k) {
+        const double m = 0.5 * (in + out);
+        (inside(m) ? in : out) = m;
+      }
+      return out;
+    };
+    if (!in_a) first = edge(mid, 0.0);
+    if (!in_b) last = edge(mid, 1.0);
+  } else {
+    const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
+    // A zero margin leaves the capsules without inside (the zone is the
+    // polygon itself): a micrometre keeps them, erring on the safe side.
+    const double radius = std::max(margin, 1e-6);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    const auto ring = [&](const auto& points) {
+      for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        if (const auto iv = capsule_interval(a2, d, to_eigen(points[k]), to_eigen(points[k + 1]), radius)) {
+          if (iv->second <= 0.0 || iv->first >= 1.0) continue;
+          lo = std::min(lo, iv->first);
+          hi = std::max(hi, iv->second);
+        }
+      }
+    };
+    ring(poly.outer());
+    for (const auto& inner : poly.inners()) ring(inner);
+    if (!in_a && !in_b && !(lo < hi)) return std::nullopt;
+    first = in_a ? 0.0 : std::clamp(lo, 0.0, 1.0);
+    last = in_b ? 1.0 : std::clamp(hi, 0.0, 1.0);
+  }
+  return std::pair{first, last};
+}
+
+std::optional<double> WaterVolume::first_in_zone(std::size_t obstacle, const Vec3& a, const Vec3& b) const {
+  const double top = zone_top_[obstacle];
+  if (std::max(a.z(), b.z()) <= top + kRounding) return std::nullopt;
+  const std::optional<std::pair<double, double>> span = zone_span(obstacle, a.head<2>(), b.head<2>());
+  if (!span) return std::nullopt;
+  auto [first, last] = *span;
+  // Where the leg is deeper than the zone's top: t > t_top when diving, t < t_top when climbing.
+  if (a.z() != b.z() && !std::isinf(top)) {
+    const double t_top = (top - a.z()) / (b.z() - a.z());
+    if (b.z() > a.z()) first = std::max(first, t_top);
+    else last = std::min(last, t_top);
+  }
+  if (first > last) return std::nullopt;
+  return first;
+}
+
 WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) const {
   if (!a.allFinite() || !b.allFinite()) return {true, "has a point that is not finite", a.allFinite() ? b : a};
   const double c = options_.vertical_clearance_m;
@@ -130,52 +192,14 @@ WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) co
     }
   }
   const double margin = field_->margin();
-  const Vec2 a2 = a.head<2>(), b2 = b.head<2>(), d = b2 - a2;
+  const Vec2 a2 = a.head<2>(), b2 = b.head<2>();
   const double deepest_end = std::max(a.z(), b.z());
   for (std::size_t i : field_->near(a2.cwiseMin(b2), a2.cwiseMax(b2), margin)) {
     const double top = zone_top_[i];
     if (deepest_end <= top) continue;  // the whole leg passes over this obstacle's zone
-    const auto inside = [&](double t) { return field_->distance_to(i, a2 + t * d) < margin; };
-    // The first and last parameters within the zone (see the header).
-    double first = 0.0, last = 1.0;
-    const bool in_a = inside(0.0), in_b = inside(1.0);
-    if (a2 == b2) {
-      if (!in_a) continue;
-    } else if (i < field_->obstacles().ellipses.size()) {
-      const SegmentDistance nearest = field_->segment_distance_to(i, a2, b2);
-      if (nearest.distance >= margin) continue;
-      const double mid = std::clamp((nearest.point_on_segment - a2).dot(d) / d.squaredNorm(), 0.0, 1.0);
-      // Bisection, keeping the bracket's outer end: the zone is never underestimated.
-      const auto edge = [&](double in, double out) {
-        for (int k = 0; k < 60; ++k) {
-          const double m = 0.5 * (in + out);
-          (inside(m) ? in : out) = m;
-        }
-        return out;
-      };
-      if (!in_a) first = edge(mid, 0.0);
-      if (!in_b) last = edge(mid, 1.0);
-    } else {
-      const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
-      // A zero margin leaves the capsules without inside (the zone is the
-      // polygon itself): a micrometre keeps them, erring on the safe side.
-      const double radius = std::max(margin, 1e-6);
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      const auto ring = [&](const auto& points) {
-        for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-          if (const auto iv = capsule_interval(a2, d, to_eigen(points[k]), to_eigen(points[k + 1]), radius)) {
-            if (iv->second <= 0.0 || iv->first >= 1.0) continue;
-            lo = std::min(lo, iv->first);
-            hi = std::max(hi, iv->second);
-          }
-        }
-      };
-      ring(poly.outer());
-      for (const auto& inner : poly.inners()) ring(inner);
-      if (!in_a && !in_b && !(lo < hi)) continue;
-      first = in_a ? 0.0 : std::clamp(lo, 0.0, 1.0);
-      last = in_b ? 1.0 : std::clamp(hi, 0.0, 1.0);
-    }
+    const std::optional<std::pair<double, double>> span = zone_span(i, a2, b2);
+    if (!span) continue;
+    const auto [first, last] = *span;
     // The deepest point of the leg within the zone.
     const double t = b.z() >= a.z() ? last : first;
     const Vec3 p = a + t * (b - a);

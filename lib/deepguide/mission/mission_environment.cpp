@@ -1,0 +1,104 @@
+#include "deepguide/mission/mission_environment.hpp"
+
+#include <cstdio>
+#include <limits>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/chart_obstacles.hpp"
+#include "deepguide/world/obstacle_field.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/water_volume.hpp"
+
+namespace deepguide {
+
+MissionEnvironment load_environment(const Mission& mission) {
+  MissionEnvironment env;
+  if (!mission.obstacles.empty()) {
+    env.obstacles = load_obstacles(mission.obstacles, {mission.frame.id(), ""}).obstacles;
+  }
+  // The box around everything the mission visits.
+  Vec2 lo = mission.start, hi = mission.start;
+  const auto grow = [&](const Vec2& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  };
+  for (const ComplexManoeuvre& c : mission.manoeuvres) {
+    if (const auto* t = std::get_if<TrackSpec>(&c.spec)) {
+      for (const Vec2& w : t->waypoints) grow(w);
+    } else if (const auto* g = std::get_if<GotoSpec>(&c.spec)) {
+      grow(g->position);
+    } else if (const auto* s = std::get_if<SurveySpec>(&c.spec)) {
+      for (const BgPoint& p : s->area.outer()) grow(to_eigen(p));
+    }
+  }
+  std::vector<std::string> vectors;
+  std::string raster;
+  for (const std::string& path : mission.charts) {
+    if (chart_kind(path) != ChartKind::raster) {
+      vectors.push_back(path);
+    } else if (raster.empty()) {
+      raster = path;
+    } else {
+      throw InputError(mission.source + ": environment.charts: expected one bathymetry raster, got a second: " + path);
+    }
+  }
+  if (!vectors.empty()) {
+    ChartObstacleOptions options;  // no depth: every hazard stays, with its top
+    options.clearance_m = mission.vertical_clearance_m;
+    const ChartObstacles charted = chart_obstacles(vectors, mission.frame, options);
+    env.obstacles.ellipses.insert(env.obstacles.ellipses.end(), charted.obstacles.ellipses.begin(),
+                                  charted.obstacles.ellipses.end());
+    env.obstacles.polygons.insert(env.obstacles.polygons.end(), charted.obstacles.polygons.begin(),
+                                  charted.obstacles.polygons.end());
+  }
+  // The objects to identify, with the path round them.
+  for (const ComplexManoeuvre& c : mission.manoeuvres) {
+    const auto* id = std::get_if<IdentifyTask>(&c.spec);
+    if (id == nullptr) continue;
+    for (const EllipticCylinder& e : env.obstacles.ellipses) {
+      if (e.id != id->object) continue;
+      grow(e.footprint.center - Vec2::Constant(e.footprint.a + id->distance_m));
+      grow(e.footprint.center + Vec2::Constant(e.footprint.a + id->distance_m));
+    }
+  }
+  if (!raster.empty()) {
+    const Vec2 pad = Vec2::Constant(200.0);
+    env.floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0));
+  }
+  return env;
+}
+
+void check_positions(const Mission& mission, const MissionEnvironment& env) {
+  const ObstacleField field(env.obstacles, 0.0);
+  const WaterVolume volume(field, nullptr, {0.0, 0.0, std::numeric_limits<double>::infinity()});
+  for (const ComplexManoeuvre& c : mission.manoeuvres) {
+    std::vector<Vec2> points;
+    if (const auto* t = std::get_if<TrackSpec>(&c.spec)) points = t->waypoints;
+    if (const auto* g = std::get_if<GotoSpec>(&c.spec)) points = {g->position};
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Vec2& p = points[k];
+      const std::string where = mission.source + ": " + c.line + ": " + c.type + " '" + c.name + "': " +
+                                (c.type == "track" ? "waypoint " + std::to_string(k + 1) : std::string("position"));
+      char at[96];
+      std::snprintf(at, sizeof at, " (%.1f, %.1f)", p.x(), p.y());
+      if (env.floor && env.floor->depth_at(p) <= 0.0) {
+        throw InputError(where + at + ": expected a position at sea, got one on land (or where the chart has no data)");
+      }
+      if (env.floor && env.floor->depth_at(p) < c.depth_m) {
+        char why[160];
+        std::snprintf(why, sizeof why, ": expected water deeper than the manoeuvre's %.1f m, got %.1f m", c.depth_m,
+                      env.floor->depth_at(p));
+        throw InputError(where + at + why);
+      }
+      for (std::size_t i : field.near(p, p, 0.0)) {
+        if (field.distance_to(i, p) < 0.0 && c.depth_m > volume.zone_top(i)) {
+          throw InputError(where + at + ": expected a position outside every obstacle, got one inside '" +
+                           field.obstacle_name(i) + "'");
+        }
+      }
+    }
+  }
+}
+
+}  // namespace deepguide

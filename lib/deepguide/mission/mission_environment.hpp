@@ -1,0 +1,31 @@
+#pragma once
+// What a mission sails in, read from its environment section into its frame:
+// obstacles (obstacle files, and the hazards of vector charts with their
+// tops: nothing is dropped for being deep, the depth rules decide) and the
+// sea floor of its one bathymetry raster, over the box around everything the
+// mission visits (200 m wider), at the raster's own resolution.
+
+#include <memory>
+
+#include "deepguide/mission/basic_manoeuvres.hpp"
+#include "deepguide/mission/mission.hpp"
+#include "deepguide/world/obstacle.hpp"
+#include "deepguide/world/sea_floor.hpp"
+
+namespace deepguide {
+
+struct MissionEnvironment {
+  ObstacleSet obstacles;
+  std::shared_ptr<const SeaFloor> floor;  ///< null without a bathymetry raster
+};
+
+/// Throws InputError (naming the file) for an unreadable file or more than one raster.
+MissionEnvironment load_environment(const Mission& mission);
+
+/// Refuses positions nobody can sail to: a track waypoint or goto position
+/// on land (the floor at or above the surface) or inside an obstacle's
+/// footprint below its top, at the manoeuvre's depth. Throws InputError
+/// naming the file, the manoeuvre's line and name, the waypoint and why.
+void check_positions(const Mission& mission, const MissionEnvironment& environment);
+
+}  // namespace deepguide

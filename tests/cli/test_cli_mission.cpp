@@ -1,0 +1,57 @@
+// deepguide mission check, end to end on the sample mission and on bad files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+using deepguide::test::run_cli;
+using deepguide::test::ScratchDir;
+
+TEST(CliMission, CheckListsTheSampleMissionsConflicts) {
+  const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
+  const auto r = run_cli("mission check '" + mission + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("manoeuvres").get<int>(), 5);
+  EXPECT_TRUE(j.at("sea_floor").get<bool>());
+  const auto& conflicts = j.at("conflicts");
+  ASSERT_GE(conflicts.size(), 2u);
+  // In order along the mission, and the survey at 20 m meets wreck-1 (top 18.6 m).
+  double last = -1.0;
+  bool wreck = false;
+  for (const auto& c : conflicts) {
+    EXPECT_GE(c.at("along_m").get<double>(), last);
+    last = c.at("along_m").get<double>();
+    wreck = wreck || (c.at("with") == "wreck-1" && c.at("manoeuvre") == "deep water box");
+  }
+  EXPECT_TRUE(wreck) << r.out;
+  const auto text = run_cli("mission check '" + mission + "'");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("conflicts"), std::string::npos) << text.out;
+}
+
+TEST(CliMission, BadMissionsAreOneLineAndExitOne) {
+  ScratchDir dir;
+  const std::string header = "crs: EPSG:32632\nstart: {x: 580700, y: 6033450, depth_m: 0}\n";
+  const std::string chart = deepguide::test::source_file("charts/sample_chart.tif");
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {header + "manoeuvres:\n  - hover: {depth_m: 5}\n", {"line 4", "hover"}},
+      {header + "manoeuvres:\n  - track: {waypoints: [{x: 1, y: 2}\n", {"line", "column"}},
+      {header + "manoeuvres:\n  - survey: {line_spacing_m: 50, area: [{x: 0, y: 0}, {x: 100, y: 100}, "
+                "{x: 100, y: 0}, {x: 0, y: 100}]}\n",
+       {"area", "simple polygon"}},
+      // (580000, 6033300) is on the sample chart's land.
+      {header + "environment: {charts: ['" + chart + "']}\nmanoeuvres:\n  - track: {depth_m: 5, waypoints: "
+                "[{x: 580000, y: 6033300}]}\n",
+       {"waypoint", "on land"}},
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const std::string path = dir.write("bad" + std::to_string(k) + ".yaml", cases[k].first);
+    const auto r = run_cli("mission check '" + path + "'");
+    EXPECT_EQ(r.exit_code, 1) << k << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const std::string& w : cases[k].second) EXPECT_NE(r.err.find(w), std::string::npos) << k << ": " << r.err;
+  }
+}
