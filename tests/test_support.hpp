@@ -17,6 +17,17 @@
 
 namespace deepguide::test {
 
+/// Under AddressSanitizer and UndefinedBehaviorSanitizer (scripts/test.sh
+/// --sanitize) the heaviest randomized tests run a fifth of their cases: the
+/// sanitizers look for memory and UB faults, which a fifth finds as well, and
+/// the Release run keeps the full counts the acceptance figures rest on.
+#ifdef DEEPGUIDE_SANITIZED
+inline constexpr int kCaseDivisor = 5;
+#else
+inline constexpr int kCaseDivisor = 1;
+#endif
+inline constexpr int cases(int n) { return n / kCaseDivisor; }
+
 /// A fresh folder under the system temp dir, removed at the end of the test.
 class ScratchDir {
  public:

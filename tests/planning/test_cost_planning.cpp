@@ -249,7 +249,7 @@ TEST(CostPlanning, AStarEqualsDijkstraOn500RandomCases) {
   std::mt19937 rng(2026);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int compared = 0;
-  for (int scenario = 0; scenario < 500; ++scenario) {
+  for (int scenario = 0; scenario < test::cases(500); ++scenario) {
     ObstacleSet set;
     for (int i = 0; i < 8; ++i) {
       EllipticCylinder c;
@@ -305,7 +305,7 @@ TEST(CostPlanning, AStarEqualsDijkstraOn500RandomCases) {
       EXPECT_NEAR(one.outcome.result.cost, d.result.cost, 1e-9 * d.result.cost) << "scenario " << scenario;
     }
   }
-  EXPECT_GE(compared, 480);
+  EXPECT_GE(compared, test::cases(480));
 }
 
 TEST(CostPlanning, TheTideChoosesTheSideAndTheEtasHold) {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "test_support.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
@@ -214,7 +215,7 @@ TEST(TangentGraph, RandomEllipsesAreBracketedByPolygonGraphs) {
   std::uniform_real_distribution<double> pos(-150.0, 150.0), ang(-kPi, kPi), u01(0.0, 1.0);
   int compared = 0;
   double worst_gap = 0.0;
-  for (int scenario = 0; scenario < 120; ++scenario) {
+  for (int scenario = 0; scenario < test::cases(120); ++scenario) {
     ObstacleSet set;
     const double margin = 8.0 * u01(rng);
     const int n = 1 + scenario % 5;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
@@ -85,7 +86,7 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
   std::uniform_int_distribution<int> count(1, 6);
   int disjoint_cases = 0, merged_cases = 0, no_route = 0;
   double worst_excess = 0.0, worst_exact_gap = 0.0;
-  for (int scenario = 0; scenario < 1000; ++scenario) {
+  for (int scenario = 0; scenario < test::cases(1000); ++scenario) {
     ObstacleSet set;
     const int n = count(rng);
     for (int i = 0; i < n; ++i) {
@@ -161,6 +162,6 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
   std::printf("[ planner ] %d disjoint, %d with merged zones, %d without route; worst excess over the lower bound: "
               "polygon graphs %.3g %%, tangent graph %.3g %%\n",
               disjoint_cases, merged_cases, no_route, 100.0 * worst_excess, 100.0 * worst_exact_gap);
-  EXPECT_GT(disjoint_cases, 300);
-  EXPECT_GT(merged_cases, 50);
+  EXPECT_GT(disjoint_cases, test::cases(300));
+  EXPECT_GT(merged_cases, test::cases(50));
 }
