@@ -260,3 +260,60 @@ TEST(CollisionObservation, WaypointsOnLandOrInsideAnObstacleAreRefused) {
     EXPECT_NE(std::string(e.what()).find("on land"), std::string::npos) << e.what();
   }
 }
+
+TEST(CollisionObservation, ALaterPassByTheSameRockIsAConflictOfItsOwn) {
+  // Out 3 km east past a rock and back along the same line: two conflicts.
+  ScratchDir dir;
+  const std::string path = dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
+                                               "  - track: {depth_m: 8, waypoints: [{x: 3000, y: 0}, {x: 3000, y: 60}, "
+                                               "{x: 0, y: 60}]}\n");
+  const Mission m = read_mission(path);
+  const MissionPlan plan = expand_mission(m, {});
+  ObstacleSet set;
+  set.ellipses.push_back(test::disc(100.0, 30.0, 26.0, "rock"));  // 4 m from each leg, inside the 5.6 m corridor
+  const std::vector<Conflict> c = observe_collisions(plan, set, nullptr, ObservationOptions{});
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_LT(c[0].along_m, 200.0);
+  EXPECT_GT(c[1].along_m, 5800.0);
+  EXPECT_EQ(c[0].obstacle, 0u);
+}
+
+TEST(Mission, EdgeCasesTheReviewFound) {
+  ScratchDir dir;
+  // A tiny line spacing is refused at once (it once made lines until memory ran out).
+  const std::string tiny = dir.write(
+      "t.yaml", kHeader + "manoeuvres:\n  - survey: {line_spacing_m: 1e-300, area: [{x: 500000, y: 6000000}, "
+                          "{x: 500500, y: 6000000}, {x: 500500, y: 6000300}]}\n");
+  EXPECT_THROW(expand_mission(read_mission(tiny), {}), InputError);
+  // A name with a line break stays one line in messages.
+  const std::string named = dir.write(
+      "n.yaml", kHeader + "manoeuvres:\n  - identify: {name: \"two\\nlines\", object: nowhere}\n");
+  try {
+    expand_mission(read_mission(named), {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+  }
+  // A gps_update with nothing under it takes the defaults; turn_radius_m 0 means the vehicle's.
+  const std::string bare = dir.write(
+      "b.yaml", kHeader + "manoeuvres:\n  - gps_update:\n  - survey: {turn_radius_m: 0, line_spacing_m: 100, area: "
+                          "[{x: 500000, y: 6000000}, {x: 500500, y: 6000000}, {x: 500500, y: 6000300}]}\n");
+  const Mission m = read_mission(bare);
+  EXPECT_DOUBLE_EQ(std::get<GpsUpdateSpec>(m.manoeuvres[0].spec).hold_s, 60.0);
+  EXPECT_NO_THROW(expand_mission(m, {}));
+  // A current that is not SPEED,DIR and a current file that is not there.
+  EXPECT_NE(error_of(dir.write("c.yaml", kHeader + "environment: {current: banana}\nmanoeuvres:\n  - gps_update:\n"))
+                .find("current"),
+            std::string::npos);
+  EXPECT_NE(error_of(dir.write("f.yaml", kHeader + "environment: {current_file: nope.nc}\nmanoeuvres:\n  - gps_update:\n"))
+                .find("existing file"),
+            std::string::npos);
+  // A missing vehicle file names the mission and the key too.
+  const std::string v = error_of(dir.write("v.yaml", kHeader + "vehicle: nope.yaml\nmanoeuvres:\n  - gps_update:\n"));
+  EXPECT_NE(v.find("v.yaml"), std::string::npos) << v;
+  EXPECT_NE(v.find("'vehicle'"), std::string::npos) << v;
+  // Waypoints given as a mapping say so.
+  EXPECT_NE(error_of(dir.write("w.yaml", kHeader + "manoeuvres:\n  - track: {waypoints: {x: 1, y: 2}}\n"))
+                .find("a mapping"),
+            std::string::npos);
+}

@@ -251,5 +251,5 @@ TEST(TangentGraph, RandomEllipsesAreBracketedByPolygonGraphs) {
   }
   std::printf("[ tangent ] %d ellipse scenarios, exact length at most %.3g above the inscribed lower bound\n", compared,
               worst_gap);
-  EXPECT_GT(compared, 60);
+  EXPECT_GT(compared, test::cases(60));
 }

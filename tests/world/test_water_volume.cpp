@@ -149,3 +149,33 @@ TEST(WaterVolume, ABandAboveTheSurfaceIsRefused) {
   }
   EXPECT_THROW(WaterVolume(field, nullptr, {-1.0, 2.0, 20.0}), InputError);
 }
+
+TEST(WaterVolume, TheFirstPointInAZoneSkipsAConcaveOutlinesNotch) {
+  // A U open to the north: arms x 300..400 and 800..900 up to y = 50, the
+  // bottom bar y -50..-20. Along y = 0 the zone (margin 5) is x 295..405 and
+  // 795..905. Diving 0 -> 20 m over x 0 .. 1000, with the top at 14 m less 2 m
+  // clearance, the leg is below 12 m from x = 600 on: in the notch, outside
+  // the zone; the danger begins at the right arm, x = 795.
+  ObstacleSet set;
+  PolygonObstacle u;
+  u.id = "u";
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {300, -50}, {300, 50}, {400, 50}, {400, -20}, {800, -20}, {800, 50}, {900, 50}, {900, -50}, {300, -50}}) {
+    u.footprint.outer().push_back(to_bg({x, y}));
+  }
+  boost::geometry::correct(u.footprint);
+  u.top_depth_m = 14.0;
+  set.polygons.push_back(u);
+  const ObstacleField field(set, 5.0);
+  const WaterVolume volume(field, nullptr, {2.0, 0.0, 200.0});
+  const auto t = volume.first_in_zone(0, {0.0, 0.0, 0.0}, {1000.0, 0.0, 20.0});
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(1000.0 * *t, 795.0, 1e-6);
+  // Top at 10 m: below 8 m from x = 400, inside the left arm's zone: there.
+  set.polygons[0].top_depth_m = 10.0;
+  const ObstacleField field2(set, 5.0);
+  const WaterVolume volume2(field2, nullptr, {2.0, 0.0, 200.0});
+  EXPECT_NEAR(1000.0 * *volume2.first_in_zone(0, {0.0, 0.0, 0.0}, {1000.0, 0.0, 20.0}), 400.0, 1e-6);
+  // Climbing out over the same U: the first point is the left arm's zone edge.
+  EXPECT_NEAR(1000.0 * *volume2.first_in_zone(0, {0.0, 0.0, 20.0}, {1000.0, 0.0, 0.0}), 295.0, 1e-6);
+}

@@ -20,6 +20,17 @@ std::string fixed(double v, int digits = 1) {
   return buf;
 }
 
+std::string general(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// "FILE: line N: TYPE 'NAME'", the name made printable (one line).
+std::string place(const Mission& mission, const ComplexManoeuvre& c) {
+  return mission.source + ": " + c.line + ": " + c.type + " '" + printable(c.name) + "'";
+}
+
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Appends basic manoeuvres, keeping the position, depth and distance along.
@@ -128,6 +139,10 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
   bg::centroid(s.area, centroid);
   const Vec2 centre(centroid.get<0>(), centroid.get<1>());
   const double a = mission.frame.heading_to_local(s.heading_deg, centre);
+  if (!std::isfinite(a)) {
+    throw InputError(place(mission, c) + ": area: expected an area inside the frame " + mission.frame.id() +
+                     ", got one where it has no north");
+  }
   const Vec2 u(std::cos(a), std::sin(a)), n(-u.y(), u.x());
   double n_lo = 1e300, n_hi = -1e300, u_lo = 1e300, u_hi = -1e300;
   for (const BgPoint& p : s.area.outer()) {
@@ -136,6 +151,16 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
     n_hi = std::max(n_hi, q.dot(n));
     u_lo = std::min(u_lo, q.dot(u));
     u_hi = std::max(u_hi, q.dot(u));
+  }
+  // Checked before the lines are made: a tiny spacing would make no end of them.
+  const double width = n_hi - n_lo;
+  if (width > s.line_spacing_m && s.line_spacing_m < 2.0 * radius - 1e-9) {
+    throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) +
+                     " is under twice the turn radius (2 x " + fixed(radius) + " m): widen the spacing");
+  }
+  if (width / s.line_spacing_m > 1e5) {
+    throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) + " makes more than 100000 "
+                     "lines across the area: widen the spacing");
   }
   // Each line's span inside the area.
   struct Span {
@@ -156,13 +181,12 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
     if (hi > lo) lines.push_back({o, lo, hi});
   }
   if (lines.empty()) {
-    throw InputError(mission.source + ": " + c.line + ": survey '" + c.name + "': expected an area wider than its "
-                     "line spacing across the heading, got none of its lines inside it");
+    throw InputError(place(mission, c) + ": expected an area wider than its line spacing across the heading, got "
+                     "none of its lines inside it");
   }
   if (lines.size() > 1 && s.line_spacing_m < 2.0 * radius - 1e-9) {
-    throw InputError(mission.source + ": " + c.line + ": survey '" + c.name + "': line_spacing_m " +
-                     fixed(s.line_spacing_m) + " is under twice the turn radius (2 x " + fixed(radius) +
-                     " m): widen the spacing");
+    throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) +
+                     " is under twice the turn radius (2 x " + fixed(radius) + " m): widen the spacing");
   }
   // Start from the line and the end nearest the vehicle.
   const auto at = [&](const Span& l, double along) { return Vec2(l.offset * n + along * u); };
@@ -225,15 +249,15 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
     const ComplexManoeuvre& c = mission.manoeuvres[i];
     b.begin(i, c.depth_m, c.speed_mps);
     const double radius = turn_radius(mission.vehicle, c.speed_mps);
-    const std::string name = c.type + " '" + c.name + "'";
+    const std::string name = c.type + " '" + printable(c.name) + "'";
     if (const auto* t = std::get_if<TrackSpec>(&c.spec)) {
       track(b, t->waypoints, radius, name);
     } else if (const auto* g = std::get_if<GotoSpec>(&c.spec)) {
       b.line(g->position);
     } else if (const auto* s = std::get_if<SurveySpec>(&c.spec)) {
       if (s->turn_radius_m > 0.0 && s->turn_radius_m < radius - 1e-9) {
-        throw InputError(mission.source + ": " + c.line + ": survey '" + c.name + "': turn_radius_m " +
-                         fixed(s->turn_radius_m) + " is below the vehicle's " + fixed(radius) + " m at " +
+        throw InputError(place(mission, c) + ": turn_radius_m " + general(s->turn_radius_m) + " is below the vehicle's " +
+                         fixed(radius) + " m at " +
                          fixed(c.speed_mps, 2) + " m/s");
       }
       survey(b, mission, c, *s, std::max(radius, s->turn_radius_m));
@@ -243,8 +267,8 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
     } else if (const auto* id = std::get_if<IdentifyTask>(&c.spec)) {
       const Ellipse* object = find_object(obstacles, id->object);
       if (object == nullptr) {
-        throw InputError(mission.source + ": " + c.line + ": identify '" + c.name + "': object: expected the id of "
-                         "one of the mission's elliptic-cylinder obstacles, got '" + printable(id->object) + "'");
+        throw InputError(place(mission, c) + ": object: expected the id of one of the mission's elliptic-cylinder "
+                         "obstacles, got '" + printable(id->object) + "'");
       }
       const OffsetProjection nearest = project_to_offset(*object, id->distance_m, b.at());
       b.line(nearest.point);

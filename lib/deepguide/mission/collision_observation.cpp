@@ -20,7 +20,6 @@ std::vector<Conflict> observe_collisions(const MissionPlan& plan, const Obstacle
   const std::vector<TrackPoint> track = plan_polyline(plan, kChordTolerance);
   std::vector<Conflict> out;
   std::set<std::pair<std::size_t, std::size_t>> seen;  // (basic, obstacle); obstacle npos = the floor
-  constexpr std::size_t kFloor = static_cast<std::size_t>(-1);
   for (std::size_t k = 0; k + 1 < track.size(); ++k) {
     const TrackPoint& p = track[k];
     const TrackPoint& q = track[k + 1];
@@ -29,10 +28,10 @@ std::vector<Conflict> observe_collisions(const MissionPlan& plan, const Obstacle
     const auto report = [&](std::size_t obstacle, double t, const std::string& with) {
       if (!seen.insert({basic, obstacle}).second) return;
       const Vec3 at = a + t * (b - a);
-      out.push_back({basic, basic, with, p.along_m + t * (q.along_m - p.along_m), at.head<2>(), at.z()});
+      out.push_back({basic, basic, obstacle, with, p.along_m + t * (q.along_m - p.along_m), at.head<2>(), at.z()});
     };
     if (floor != nullptr) {
-      if (const auto t = floor->first_below(a, b, options.vertical_clearance_m)) report(kFloor, *t, "the sea floor");
+      if (const auto t = floor->first_below(a, b, options.vertical_clearance_m)) report(kSeaFloor, *t, "the sea floor");
     }
     const Vec2 lo = p.xy.cwiseMin(q.xy), hi = p.xy.cwiseMax(q.xy);
     for (std::size_t i : field.near(lo, hi, field.margin())) {
@@ -40,12 +39,15 @@ std::vector<Conflict> observe_collisions(const MissionPlan& plan, const Obstacle
     }
   }
   std::stable_sort(out.begin(), out.end(), [](const Conflict& x, const Conflict& y) { return x.along_m < y.along_m; });
-  // One conflict for a run of consecutive manoeuvres endangered by the same obstacle.
+  // One conflict for a run of consecutive manoeuvres endangered by the same
+  // obstacle from the very start of each next one (the header).
   std::vector<Conflict> merged;
   for (const Conflict& c : out) {
-    const auto same = std::find_if(merged.rbegin(), merged.rend(), [&](const Conflict& m) { return m.with == c.with; });
-    if (same != merged.rend() && c.basic <= same->last_basic + 1) {
-      same->last_basic = std::max(same->last_basic, c.basic);
+    const auto same = std::find_if(merged.rbegin(), merged.rend(),
+                                   [&](const Conflict& m) { return m.obstacle == c.obstacle; });
+    if (same != merged.rend() && c.basic == same->last_basic + 1 &&
+        c.along_m <= plan.basics[c.basic].start_m + 1e-6) {
+      same->last_basic = c.basic;
       continue;
     }
     merged.push_back(c);

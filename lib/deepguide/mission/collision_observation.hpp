@@ -10,8 +10,10 @@
 // the floor (land included: the floor there is above the surface). Arcs are
 // checked as chords no more than 0.1 m inside them, the corridor widened by
 // that much. Each (manoeuvre, obstacle) pair is found once, at its first
-// point; consecutive basic manoeuvres endangered by the same obstacle (a
-// survey turn, the lap round an object) make one conflict.
+// point; a run of consecutive basic manoeuvres endangered by the same
+// obstacle without a break (each next one from its very start: a survey
+// turn, the lap round an object) makes one conflict, and a later pass by the
+// same obstacle is a conflict of its own.
 
 #include <cstddef>
 #include <string>
@@ -26,11 +28,15 @@ namespace deepguide {
 struct Conflict {
   std::size_t basic = 0;       ///< the (first) basic manoeuvre endangered
   std::size_t last_basic = 0;  ///< the last of the consecutive ones endangered by the same obstacle
+  /// The obstacle (ellipses first, then polygons, as ObstacleField counts), or kSeaFloor.
+  std::size_t obstacle = 0;
   std::string with;            ///< the obstacle's name, or "the sea floor"
   double along_m = 0.0;        ///< where along the mission the danger begins
   Vec2 where{0.0, 0.0};
   double depth_m = 0.0;
 };
+
+inline constexpr std::size_t kSeaFloor = static_cast<std::size_t>(-1);
 
 struct ObservationOptions {
   double margin_m = 5.0;

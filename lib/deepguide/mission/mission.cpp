@@ -8,6 +8,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
+#include "deepguide/world/current_field.hpp"
 
 namespace deepguide {
 namespace {
@@ -48,8 +49,10 @@ struct Reader {
     const YAML::Node list = m.value(key);
     if (!list.IsSequence() || list.size() < at_least) {
       throw input_error(m.where(key), "a list of at least " + std::to_string(at_least) + " positions",
-                        list.IsDefined() && list.IsSequence() ? std::to_string(list.size()) + " position(s)"
-                                                              : "nothing");
+                        list.IsSequence() ? std::to_string(list.size()) + " position(s)"
+                        : list.IsMap()    ? "a mapping"
+                        : list.IsScalar() ? "'" + printable(list.Scalar()) + "'"
+                                          : "nothing");
     }
     std::vector<Vec2> out;
     for (std::size_t i = 0; i < list.size(); ++i) out.push_back(position(list[i], m.full(key) + "[" + std::to_string(i) + "]"));
@@ -95,7 +98,8 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
   else throw input_error({r.source, c.line, where}, "a manoeuvre type (" + std::string(kTypes) + ")", "'" + printable(c.type) + "'");
 
   // Mapping takes an initializer list; the key sets differ per type, so check them here.
-  const YAML::Node body = kv.second;
+  // A manoeuvre with nothing under it (`- gps_update:`) takes every default.
+  const YAML::Node body = kv.second.IsNull() ? YAML::Node(YAML::NodeType::Map) : kv.second;
   if (!body.IsMap()) throw input_error({r.source, line_of(body), where + "." + c.type}, "a mapping of " + c.type + " keys");
   for (const auto& field : body) {
     const std::string key = field.first.IsScalar() ? field.first.Scalar() : "?";
@@ -147,7 +151,7 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
     }
     s.line_spacing_m = m.number("line_spacing_m", kDistance);
     s.heading_deg = m.number_or("heading_deg", kHeading, 0.0);
-    s.turn_radius_m = m.number_or("turn_radius_m", kDistance, 0.0);
+    s.turn_radius_m = m.number_or("turn_radius_m", {0.0, 1e6, true, "a radius in metres (0: the vehicle's)"}, 0.0);
     c.spec = s;
   }
   return c;
@@ -160,7 +164,13 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
   Mission mission;
   mission.source = source;
   mission.name = root.has("name") ? root.text("name", "a mission name (text)") : fs::path(source).stem().string();
-  if (root.has("vehicle")) mission.vehicle = read_vehicle_file(root.path("vehicle", base_dir));
+  if (root.has("vehicle")) {
+    try {
+      mission.vehicle = read_vehicle_file(root.path("vehicle", base_dir));
+    } catch (const InputError& e) {
+      throw InputError(root.where("vehicle").describe() + ": " + e.what());
+    }
+  }
   Reader r{source, base_dir, std::nullopt};
 
   // The frame: crs, else the UTM zone of the start (which must then be lon/lat).
@@ -201,8 +211,17 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
     mission.charts = files("charts");
     mission.obstacles = files("obstacles");
     if (e.has("current") && e.has("current_file")) throw input_error(e.where("current_file"), "either current or current_file", "both");
-    if (e.has("current")) mission.current = e.text("current", "a current SPEED_MPS,DIR_DEG");
-    if (e.has("current_file")) mission.current_file = e.path("current_file", base_dir);
+    if (e.has("current")) {
+      mission.current = e.text("current", "a current SPEED_MPS,DIR_DEG");
+      parse_constant_current(mission.current, e.where("current").describe());  // refused here, not later
+    }
+    if (e.has("current_file")) {
+      mission.current_file = e.path("current_file", base_dir);
+      std::error_code ec;
+      if (!fs::is_regular_file(mission.current_file, ec)) {
+        throw input_error(e.where("current_file"), "an existing file", "'" + printable(mission.current_file) + "'");
+      }
+    }
   }
   if (root.has("safety")) {
     const Mapping s(root.value("safety"), source, "safety.", {"margin_m", "vertical_clearance_m"},

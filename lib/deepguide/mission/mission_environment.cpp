@@ -17,21 +17,6 @@ MissionEnvironment load_environment(const Mission& mission) {
   if (!mission.obstacles.empty()) {
     env.obstacles = load_obstacles(mission.obstacles, {mission.frame.id(), ""}).obstacles;
   }
-  // The box around everything the mission visits.
-  Vec2 lo = mission.start, hi = mission.start;
-  const auto grow = [&](const Vec2& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  };
-  for (const ComplexManoeuvre& c : mission.manoeuvres) {
-    if (const auto* t = std::get_if<TrackSpec>(&c.spec)) {
-      for (const Vec2& w : t->waypoints) grow(w);
-    } else if (const auto* g = std::get_if<GotoSpec>(&c.spec)) {
-      grow(g->position);
-    } else if (const auto* s = std::get_if<SurveySpec>(&c.spec)) {
-      for (const BgPoint& p : s->area.outer()) grow(to_eigen(p));
-    }
-  }
   std::vector<std::string> vectors;
   std::string raster;
   for (const std::string& path : mission.charts) {
@@ -52,17 +37,14 @@ MissionEnvironment load_environment(const Mission& mission) {
     env.obstacles.polygons.insert(env.obstacles.polygons.end(), charted.obstacles.polygons.begin(),
                                   charted.obstacles.polygons.end());
   }
-  // The objects to identify, with the path round them.
-  for (const ComplexManoeuvre& c : mission.manoeuvres) {
-    const auto* id = std::get_if<IdentifyTask>(&c.spec);
-    if (id == nullptr) continue;
-    for (const EllipticCylinder& e : env.obstacles.ellipses) {
-      if (e.id != id->object) continue;
-      grow(e.footprint.center - Vec2::Constant(e.footprint.a + id->distance_m));
-      grow(e.footprint.center + Vec2::Constant(e.footprint.a + id->distance_m));
-    }
-  }
   if (!raster.empty()) {
+    // The box around everything the plan visits (survey turns reach past
+    // the area, laps round an object), 200 m wider.
+    Vec2 lo = mission.start, hi = mission.start;
+    for (const TrackPoint& p : plan_polyline(expand_mission(mission, env.obstacles))) {
+      lo = lo.cwiseMin(p.xy);
+      hi = hi.cwiseMax(p.xy);
+    }
     const Vec2 pad = Vec2::Constant(200.0);
     env.floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0));
   }
@@ -78,7 +60,7 @@ void check_positions(const Mission& mission, const MissionEnvironment& env) {
     if (const auto* g = std::get_if<GotoSpec>(&c.spec)) points = {g->position};
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Vec2& p = points[k];
-      const std::string where = mission.source + ": " + c.line + ": " + c.type + " '" + c.name + "': " +
+      const std::string where = mission.source + ": " + c.line + ": " + c.type + " '" + printable(c.name) + "': " +
                                 (c.type == "track" ? "waypoint " + std::to_string(k + 1) : std::string("position"));
       char at[96];
       std::snprintf(at, sizeof at, " (%.1f, %.1f)", p.x(), p.y());

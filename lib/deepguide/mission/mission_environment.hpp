@@ -3,7 +3,8 @@
 // obstacles (obstacle files, and the hazards of vector charts with their
 // tops: nothing is dropped for being deep, the depth rules decide) and the
 // sea floor of its one bathymetry raster, over the box around everything the
-// mission visits (200 m wider), at the raster's own resolution.
+// plan visits (expanded into basic manoeuvres: survey turns and laps reach
+// past the waypoints), 200 m wider, at the raster's own resolution.
 
 #include <memory>
 

@@ -110,6 +110,26 @@ WaterVolume::Verdict WaterVolume::check_point(const Vec3& p) const {
   return check_segment(p, p);
 }
 
+std::vector<std::pair<double, double>> WaterVolume::capsule_intervals(std::size_t i, const Vec2& a2,
+                                                                       const Vec2& b2) const {
+  const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
+  // A zero margin leaves the capsules without inside (the zone is the
+  // polygon itself): a micrometre keeps them, erring on the safe side.
+  const double radius = std::max(field_->margin(), 1e-6);
+  std::vector<std::pair<double, double>> out;
+  const auto ring = [&](const auto& points) {
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+      if (const auto iv = capsule_interval(a2, b2 - a2, to_eigen(points[k]), to_eigen(points[k + 1]), radius)) {
+        if (iv->second <= 0.0 || iv->first >= 1.0) continue;
+        out.push_back(*iv);
+      }
+    }
+  };
+  ring(poly.outer());
+  for (const auto& inner : poly.inners()) ring(inner);
+  return out;
+}
+
 std::optional<std::pair<double, double>> WaterVolume::zone_span(std::size_t i, const Vec2& a2, const Vec2& b2) const {
   const double margin = field_->margin();
   const Vec2 d = b2 - a2;
@@ -133,22 +153,11 @@ std::optional<std::pair<double, double>> WaterVolume::zone_span(std::size_t i, c
     if (!in_a) first = edge(mid, 0.0);
     if (!in_b) last = edge(mid, 1.0);
   } else {
-    const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
-    // A zero margin leaves the capsules without inside (the zone is the
-    // polygon itself): a micrometre keeps them, erring on the safe side.
-    const double radius = std::max(margin, 1e-6);
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    const auto ring = [&](const auto& points) {
-      for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-        if (const auto iv = capsule_interval(a2, d, to_eigen(points[k]), to_eigen(points[k + 1]), radius)) {
-          if (iv->second <= 0.0 || iv->first >= 1.0) continue;
-          lo = std::min(lo, iv->first);
-          hi = std::max(hi, iv->second);
-        }
-      }
-    };
-    ring(poly.outer());
-    for (const auto& inner : poly.inners()) ring(inner);
+    for (const auto& [t0, t1] : capsule_intervals(i, a2, b2)) {
+      lo = std::min(lo, t0);
+      hi = std::max(hi, t1);
+    }
     if (!in_a && !in_b && !(lo < hi)) return std::nullopt;
     first = in_a ? 0.0 : std::clamp(lo, 0.0, 1.0);
     last = in_b ? 1.0 : std::clamp(hi, 0.0, 1.0);
@@ -165,8 +174,21 @@ std::optional<double> WaterVolume::first_in_zone(std::size_t obstacle, const Vec
   // Where the leg is deeper than the zone's top: t > t_top when diving, t < t_top when climbing.
   if (a.z() != b.z() && !std::isinf(top)) {
     const double t_top = (top - a.z()) / (b.z() - a.z());
-    if (b.z() > a.z()) first = std::max(first, t_top);
-    else last = std::min(last, t_top);
+    if (b.z() < a.z()) {
+      last = std::min(last, t_top);
+    } else if (t_top > first) {
+      // Diving into a polygon's zone: its span along the leg may have gaps (a
+      // concave outline), so the first point below the top is t_top itself
+      // when that lies in the zone, else the next capsule entry after it.
+      first = t_top;
+      if (obstacle >= field_->obstacles().ellipses.size() &&
+          !(field_->distance_to(obstacle, a.head<2>() + t_top * (b - a).head<2>()) < field_->margin())) {
+        first = std::numeric_limits<double>::infinity();
+        for (const auto& [t0, t1] : capsule_intervals(obstacle, a.head<2>(), b.head<2>())) {
+          if (t1 > t_top) first = std::min(first, std::max(t0, t_top));
+        }
+      }
+    }
   }
   if (first > last) return std::nullopt;
   return first;

@@ -69,14 +69,16 @@ class WaterVolume {
 
   /// The first parameter t in [0, 1] where the leg a -> b is inside obstacle
   /// i's zone below its top (collision observation: where the danger
-  /// begins), or none. For a polygon the zone along the leg is taken from the
-  /// first capsule entry to the last exit, so t may come a little early.
+  /// begins), or none.
   std::optional<double> first_in_zone(std::size_t obstacle, const Vec3& a, const Vec3& b) const;
 
  private:
   // The first and last parameters of the leg's horizontal track within
   // obstacle i's zone (the header), or none when it stays out.
   std::optional<std::pair<double, double>> zone_span(std::size_t i, const Vec2& a2, const Vec2& b2) const;
+  // For polygon obstacle i: the parameters where the leg is within the margin
+  // of each edge (its capsule), clipped to those that meet [0, 1].
+  std::vector<std::pair<double, double>> capsule_intervals(std::size_t i, const Vec2& a2, const Vec2& b2) const;
 
   const ObstacleField* field_;
   const SeaFloor* floor_;
