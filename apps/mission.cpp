@@ -1,6 +1,8 @@
-// deepguide mission check MISSION.yaml [--json]: the mission's complex
-// manoeuvres as basic ones, and what endangers them (docs/MISSIONS.md).
+// deepguide mission check|plan MISSION.yaml [--json]: the mission's complex
+// manoeuvres as basic ones, what endangers them, and the plan with every
+// conflict evaded or identified (docs/MISSIONS.md).
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -9,7 +11,10 @@
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/mission/collision_observation.hpp"
+#include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/mission/plan_check.hpp"
+#include "deepguide/mission/plan_splice.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -28,10 +33,121 @@ const char* kind_name(BasicManoeuvre::Kind kind) {
   return "?";
 }
 
+// The mission read, its environment loaded, its positions checked, expanded.
+struct Loaded {
+  Mission mission;
+  MissionEnvironment env;
+  MissionPlan plan;
+};
+
+Loaded load(const std::string& path) {
+  Loaded l{read_mission(path), {}, {}};
+  l.env = load_environment(l.mission);
+  check_positions(l.mission, l.env);
+  l.plan = expand_mission(l.mission, l.env.obstacles);
+  return l;
+}
+
+double plan_time(const MissionPlan& plan) {
+  double t = 0.0;
+  for (const BasicManoeuvre& b : plan.basics) t += b.hold_s + (b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0);
+  return t;
+}
+
+std::string clock(double seconds) {
+  char buf[32];
+  const long s = static_cast<long>(seconds + 0.5);
+  std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return buf;
+}
+
+const char* reaction_name(ControlRules::Reaction r) {
+  return r == ControlRules::Reaction::identify ? "identify" : "evade";
+}
+
+void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPlanCheck& verdict, bool json) {
+  const Mission& m = l.mission;
+  const auto lonlat = [&](const Vec2& p) { return m.frame.to_lonlat(p); };
+  if (json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Resolution& r : planned.resolutions) {
+      const Vec2 ll = lonlat(r.conflict.where);
+      nlohmann::json j = {{"with", r.conflict.with},       {"reaction", reaction_name(r.reaction)},
+                          {"resolved", r.resolved},         {"time_s", r.time_s},
+                          {"lon", ll.x()},                  {"lat", ll.y()},
+                          {"depth_m", r.conflict.depth_m}};
+      if (r.resolved) {
+        j["depart_m"] = r.depart_m;
+        j["rendezvous_m"] = r.rendezvous_m;
+        j["evasion_depth_m"] = r.depth_m;
+        j["added_m"] = r.added_m;
+      } else {
+        j["problem"] = r.problem;
+      }
+      list.push_back(j);
+    }
+    nlohmann::json j = {{"mission", m.name},
+                        {"crs", m.frame.id()},
+                        {"basic_manoeuvres", planned.plan.basics.size()},
+                        {"length_m", planned.plan.length_m},
+                        {"time_s", plan_time(planned.plan)},
+                        {"original_length_m", l.plan.length_m},
+                        {"resolutions", list},
+                        {"remaining_conflicts", planned.remaining.size()},
+                        {"check", {{"safe", verdict.safe}, {"legs", verdict.legs}, {"problem", verdict.problem}}}};
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("mission          %s (%s)\n", m.name.c_str(), m.frame.id().c_str());
+  std::printf("plan             %zu basic manoeuvres, %.0f m, %s (before: %zu, %.0f m, %s)\n",
+              planned.plan.basics.size(), planned.plan.length_m, clock(plan_time(planned.plan)).c_str(),
+              l.plan.basics.size(), l.plan.length_m, clock(plan_time(l.plan)).c_str());
+  if (planned.resolutions.empty()) {
+    std::printf("conflicts        none: nothing to evade\n");
+  } else {
+    std::printf("%8s  %-24s %-9s %-9s %9s %9s %8s  %s\n", "time", "with", "reaction", "result", "leave m", "rejoin m",
+                "added m", "lon, lat / why");
+  }
+  for (const Resolution& r : planned.resolutions) {
+    const Vec2 ll = lonlat(r.conflict.where);
+    if (r.resolved) {
+      std::printf("%8s  %-24s %-9s %-9s %9.0f %9.0f %8.0f  %.5f, %.5f (at %.1f m)\n", clock(r.time_s).c_str(),
+                  r.conflict.with.substr(0, 24).c_str(), reaction_name(r.reaction), "resolved", r.depart_m,
+                  r.rendezvous_m, r.added_m, ll.x(), ll.y(), r.depth_m);
+    } else {
+      std::printf("%8s  %-24s %-9s %-9s %9s %9s %8s  %.5f, %.5f: %s\n", clock(r.time_s).c_str(),
+                  r.conflict.with.substr(0, 24).c_str(), reaction_name(r.reaction), "UNSOLVED", "-", "-", "-", ll.x(),
+                  ll.y(), r.problem.c_str());
+    }
+  }
+  std::printf("check            %s: %zu legs against every obstacle's zone and top and the sea floor",
+              verdict.safe ? "safe" : "UNSAFE", verdict.legs);
+  if (std::isfinite(verdict.min_floor_gap_m)) std::printf("; least water under the vehicle %.1f m", verdict.min_floor_gap_m);
+  std::printf("\n");
+}
+
+// Exit 3, loudly, for a conflict mission control could not resolve: the
+// first one's time, place and why (every one is in the printed table).
+void throw_if_unresolved(const std::string& file, const Loaded& l, const PlannedMission& planned) {
+  std::size_t unsolved = 0;
+  const Resolution* first = nullptr;
+  for (const Resolution& r : planned.resolutions) {
+    if (r.resolved) continue;
+    if (unsolved++ == 0) first = &r;
+  }
+  if (first == nullptr) return;
+  const Vec2 ll = l.mission.frame.to_lonlat(first->conflict.where);
+  char where[160];
+  std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f, %.1f m deep: ", clock(first->time_s).c_str(),
+                ll.x(), ll.y(), first->conflict.depth_m);
+  throw NoRouteError(file + ": " + std::to_string(unsolved) + " conflict(s) could not be resolved; the first, with " +
+                     first->conflict.with + where + first->problem);
+}
+
 }  // namespace
 
 void register_mission(CLI::App& app) {
-  CLI::App* mission = app.add_subcommand("mission", "Mission plans: check (basic manoeuvres and conflicts)");
+  CLI::App* mission = app.add_subcommand("mission", "Mission plans: check (basic manoeuvres and conflicts), plan (conflicts evaded or identified)");
   mission->require_subcommand(1);
   auto o = std::make_shared<MissionOptions>();
   CLI::App* check = mission->add_subcommand(
@@ -39,16 +155,19 @@ void register_mission(CLI::App& app) {
   check->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   check->add_flag("--json", o->json, "Print the result as JSON");
   check->callback([o] {
-    const Mission m = read_mission(o->mission);
-    const MissionEnvironment env = load_environment(m);
-    check_positions(m, env);
-    const MissionPlan plan = expand_mission(m, env.obstacles);
-    ObservationOptions observe;
-    observe.margin_m = m.margin_m;
-    observe.vertical_clearance_m = m.vertical_clearance_m;
+    const Loaded l = load(o->mission);
+    const Mission& m = l.mission;
+    const MissionEnvironment& env = l.env;
+    const MissionPlan& plan = l.plan;
+    const ObservationOptions observe = observation_options(m);
     const std::vector<Conflict> conflicts = observe_collisions(plan, env.obstacles, env.floor.get(), observe);
-    double time_s = 0.0;
-    for (const BasicManoeuvre& b : plan.basics) time_s += b.hold_s + (b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0);
+    const double time_s = plan_time(plan);
+    // Whether mission control can resolve each: what it cannot is reported here already.
+    const PlannedMission planned = plan_mission(m, env, plan);
+    std::vector<const Resolution*> unavoidable;
+    for (const Resolution& r : planned.resolutions) {
+      if (!r.resolved) unavoidable.push_back(&r);
+    }
     const auto lonlat = [&](const Vec2& p) { return m.frame.to_lonlat(p); };
     if (o->json) {
       nlohmann::json j = {{"mission", m.name},           {"file", o->mission},
@@ -65,12 +184,21 @@ void register_mission(CLI::App& app) {
                         {"basics", c.last_basic - c.basic + 1},
                         {"kind", kind_name(plan.basics[c.basic].kind)},
                         {"with", c.with},
+                        {"time_s", position_at(plan, c.along_m).time_s},
                         {"depth_m", c.depth_m},
                         {"lon", ll.x()},
                         {"lat", ll.y()}});
       }
       j["conflicts"] = list;
+      nlohmann::json cannot = nlohmann::json::array();
+      for (const Resolution* r : unavoidable) {
+        const Vec2 ll = lonlat(r->conflict.where);
+        cannot.push_back({{"with", r->conflict.with}, {"time_s", r->time_s}, {"lon", ll.x()}, {"lat", ll.y()},
+                          {"depth_m", r->conflict.depth_m}, {"problem", r->problem}});
+      }
+      j["unavoidable"] = cannot;
       std::cout << j.dump(2) << "\n";
+      throw_if_unresolved(o->mission, l, planned);
       return;
     }
     std::printf("mission          %s (%s, %s)\n", m.name.c_str(), o->mission.c_str(), m.frame.id().c_str());
@@ -97,15 +225,42 @@ void register_mission(CLI::App& app) {
     }
     std::printf("conflicts        %zu (corridor %.1f m = margin + half the width; %.1f m over tops and the floor)\n",
                 conflicts.size(), m.margin_m + observe.half_width_m, m.vertical_clearance_m);
-    std::printf("%9s  %-28s %-10s %-24s %7s  %s\n", "along m", "manoeuvre", "basic", "with", "depth m", "lon, lat");
+    std::printf("%9s %8s  %-28s %-10s %-24s %7s  %s\n", "along m", "time", "manoeuvre", "basic", "with", "depth m",
+                "lon, lat");
     for (const Conflict& c : conflicts) {
       const Vec2 ll = lonlat(c.where);
       const BasicManoeuvre& b = plan.basics[c.basic];
       const std::string basics = c.last_basic > c.basic ? std::to_string(c.last_basic - c.basic + 1) + " basics"
                                                         : std::string(kind_name(b.kind));
-      std::printf("%9.0f  %-28s %-10s %-24s %7.1f  %.5f, %.5f\n", c.along_m,
+      std::printf("%9.0f %8s  %-28s %-10s %-24s %7.1f  %.5f, %.5f\n", c.along_m,
+                  clock(position_at(plan, c.along_m).time_s).c_str(),
                   m.manoeuvres[b.source].name.substr(0, 28).c_str(), basics.c_str(), c.with.substr(0, 24).c_str(),
                   c.depth_m, ll.x(), ll.y());
+    }
+    for (const Resolution* r : unavoidable) {
+      const Vec2 ll = lonlat(r->conflict.where);
+      std::printf("UNAVOIDABLE      %s into the mission, %s at %.5f, %.5f, %.1f m deep: %s\n", clock(r->time_s).c_str(),
+                  r->conflict.with.c_str(), ll.x(), ll.y(), r->conflict.depth_m, r->problem.c_str());
+    }
+    throw_if_unresolved(o->mission, l, planned);
+  });
+
+  CLI::App* plan = mission->add_subcommand(
+      "plan", "Read a mission and resolve every conflict by its rules (evade, or identify), then check the whole plan");
+  plan->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
+  plan->add_flag("--json", o->json, "Print the result as JSON");
+  plan->callback([o] {
+    const Loaded l = load(o->mission);
+    const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
+    const MissionPlanCheck verdict = check_mission_plan(planned.plan, l.env, observation_options(l.mission));
+    print_plan(l, planned, verdict, o->json);
+    throw_if_unresolved(o->mission, l, planned);
+    if (!verdict.safe) {
+      const Vec2 ll = l.mission.frame.to_lonlat(verdict.where.head<2>());
+      char where[160];
+      std::snprintf(where, sizeof where, " %.0f m along, %.5f, %.5f, %.1f m deep: ", verdict.along_m, ll.x(), ll.y(),
+                    verdict.where.z());
+      throw NoRouteError(o->mission + ": the planned mission fails the plan checker" + where + verdict.problem);
     }
   });
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "deepguide/world/local_frame.hpp"
 #include "test_support.hpp"
 
 using deepguide::test::run_cli;
@@ -54,4 +55,48 @@ TEST(CliMission, BadMissionsAreOneLineAndExitOne) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     for (const std::string& w : cases[k].second) EXPECT_NE(r.err.find(w), std::string::npos) << k << ": " << r.err;
   }
+}
+
+TEST(CliMission, PlanResolvesEveryConflictOfTheSampleAndTheCheckerPasses) {
+  const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
+  const auto r = run_cli("mission plan '" + mission + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& resolutions = j.at("resolutions");
+  ASSERT_GE(resolutions.size(), 2u);
+  for (const auto& res : resolutions) EXPECT_TRUE(res.at("resolved").get<bool>()) << res.dump();
+  EXPECT_EQ(j.at("remaining_conflicts").get<int>(), 0);
+  EXPECT_TRUE(j.at("check").at("safe").get<bool>());
+  EXPECT_GT(j.at("length_m").get<double>(), j.at("original_length_m").get<double>());
+  const auto text = run_cli("mission plan '" + mission + "'");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("resolved"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("check            safe"), std::string::npos) << text.out;
+}
+
+TEST(CliMission, AConflictThatCannotBeResolvedExitsThreeWithTimeAndPlace) {
+  // The track ends 5 m from a rock: nothing past it to rejoin.
+  ScratchDir dir;
+  const deepguide::LocalFrame frame = deepguide::LocalFrame::from_user_crs("EPSG:32632");
+  const Eigen::Vector2d rock = frame.to_lonlat({500405.0, 6000000.0});
+  const std::string obstacles = dir.write(
+      "rock.geojson", "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\", \"properties\": "
+                      "{\"id\": \"rock\", \"semi_major_m\": 3, \"semi_minor_m\": 3, \"orientation_deg\": 0}, "
+                      "\"geometry\": {\"type\": \"Point\", \"coordinates\": [" +
+                          nlohmann::json(rock.x()).dump() + ", " + nlohmann::json(rock.y()).dump() + "]}}]}\n");
+  const std::string path = dir.write(
+      "m.yaml", "crs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\nenvironment: {obstacles: ['" +
+                    obstacles + "']}\nmanoeuvres:\n  - track: {depth_m: 5, waypoints: [{x: 500400, y: 6000000}]}\n");
+  const auto r = run_cli("mission plan '" + path + "'");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const char* w : {"could not be resolved", "rock", "into the mission", "mission's end"}) {
+    EXPECT_NE(r.err.find(w), std::string::npos) << w << ": " << r.err;
+  }
+  EXPECT_NE(r.out.find("UNSOLVED"), std::string::npos) << r.out;
+  // check says so too, as loudly.
+  const auto c = run_cli("mission check '" + path + "'");
+  EXPECT_EQ(c.exit_code, 3) << c.err;
+  EXPECT_NE(c.out.find("UNAVOIDABLE"), std::string::npos) << c.out;
+  EXPECT_NE(c.err.find("could not be resolved"), std::string::npos) << c.err;
 }

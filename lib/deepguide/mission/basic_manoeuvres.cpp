@@ -270,20 +270,24 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
         throw InputError(place(mission, c) + ": object: expected the id of one of the mission's elliptic-cylinder "
                          "obstacles, got '" + printable(id->object) + "'");
       }
-      const OffsetProjection nearest = project_to_offset(*object, id->distance_m, b.at());
-      b.line(nearest.point);
       if (id->mode == IdentifyTask::Mode::align) {
+        b.line(project_to_offset(*object, id->distance_m, b.at()).point);
         b.point(c.depth_m, 60.0);
       } else {
         check_offset_path_fits(*object, id->distance_m, radius, name);
-        constexpr int kSteps = 72;
-        for (int k = 1; k <= kSteps; ++k) {
-          b.line(offset_point(*object, id->distance_m, nearest.t + 2.0 * M_PI * k / kSteps));
-        }
+        for (const Vec2& p : identification_lap(*object, id->distance_m, b.at())) b.line(p);
       }
     }
   }
   return std::move(b.plan);
+}
+
+std::vector<Vec2> identification_lap(const Ellipse& object, double distance_m, const Vec2& from) {
+  constexpr int kSteps = 72;
+  const OffsetProjection nearest = project_to_offset(object, distance_m, from);
+  std::vector<Vec2> out{nearest.point};
+  for (int k = 1; k <= kSteps; ++k) out.push_back(offset_point(object, distance_m, nearest.t + 2.0 * M_PI * k / kSteps));
+  return out;
 }
 
 std::vector<TrackPoint> plan_polyline(const MissionPlan& plan, double tolerance_m) {

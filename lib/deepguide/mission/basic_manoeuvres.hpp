@@ -50,6 +50,10 @@ struct BasicManoeuvre {
   std::size_t source = 0; ///< index of the complex manoeuvre it comes from
   double start_m = 0.0;   ///< distance along the mission (horizontal track) where it begins
   double length_m = 0.0;  ///< horizontal length (0 for points)
+  /// Why it is there: the mission's own, or put in by mission control
+  /// (mission/mission_control.hpp) to evade or to identify an obstacle.
+  enum class Role { mission, evasion, identification };
+  Role role = Role::mission;
 
   /// The point s metres along it (clamped).
   Vec2 point_at(double s) const;
@@ -70,6 +74,11 @@ double turn_radius(const VehicleParams& vehicle, double speed_mps);
 /// spacing is under twice the turn radius or whose area holds no line, or a
 /// turn radius below the vehicle's.
 MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles);
+
+/// The lap round an object at `distance_m` from its outline, as identify
+/// around sails it: the point of the path nearest `from`, then 72 points one
+/// lap on (the last is the first again).
+std::vector<Vec2> identification_lap(const Ellipse& object, double distance_m, const Vec2& from);
 
 /// The plan as a polyline of the horizontal track (arcs as chords no more
 /// than `tolerance_m` off), with the depth at each point.

@@ -159,7 +159,7 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
 
 Mission parse(const YAML::Node& doc, const std::string& source, const std::string& base_dir) {
   const Mapping root(doc, source, "",
-                     {"name", "vehicle", "crs", "environment", "safety", "start", "manoeuvres"},
+                     {"name", "vehicle", "crs", "environment", "safety", "control", "start", "manoeuvres"},
                      "a YAML mapping of mission keys (see data/missions/sample_mission.yaml)");
   Mission mission;
   mission.source = source;
@@ -229,6 +229,28 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
     mission.margin_m = s.number_or("margin_m", {0.0, 1e4, true, "a margin in metres"}, mission.margin_m);
     mission.vertical_clearance_m =
         s.number_or("vertical_clearance_m", {0.0, 1e4, true, "a clearance in metres"}, mission.vertical_clearance_m);
+  }
+  if (root.has("control")) {
+    const Mapping c(root.value("control"), source, "control.", {"identify", "identify_distance_m", "unknown_objects"},
+                    "a mapping of control keys (identify, identify_distance_m, unknown_objects)");
+    if (c.has("identify")) {
+      const YAML::Node ids = c.value("identify");
+      if (!ids.IsSequence()) throw input_error(c.where("identify"), "a list of obstacle ids");
+      for (const auto& id : ids) {
+        if (!id.IsScalar() || id.Scalar().empty()) throw input_error({source, line_of(id), c.full("identify")}, "an obstacle id");
+        mission.control.identify.push_back(id.Scalar());
+      }
+    }
+    // The lap must stay out of the corridor observation watches (margin + half the vehicle's width).
+    const double corridor = mission.margin_m + 0.5;
+    mission.control.identify_distance_m =
+        c.number_or("identify_distance_m", {corridor, 1e4, false, "a distance in metres beyond margin_m + 0.5"},
+                    std::max(mission.control.identify_distance_m, corridor + 5.0));
+    if (c.has("unknown_objects")) {
+      const std::string what = c.text("unknown_objects", "evade or identify");
+      if (what != "evade" && what != "identify") throw input_error(c.where("unknown_objects"), "evade or identify", "'" + printable(what) + "'");
+      mission.control.unknown_objects = what == "evade" ? ControlRules::Reaction::evade : ControlRules::Reaction::identify;
+    }
   }
   const YAML::Node list = root.value("manoeuvres");
   if (!list.IsSequence() || list.size() == 0) {

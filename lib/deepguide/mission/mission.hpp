@@ -64,6 +64,18 @@ struct ComplexManoeuvre {
   std::variant<TrackSpec, SurveySpec, GpsUpdateSpec, IdentifyTask, GotoSpec> spec;
 };
 
+/// Mission control's rules: what to do where an obstacle endangers the plan
+/// (mission/mission_control.hpp). Known obstacles named in `identify` are
+/// gone around at `identify_distance_m`; every other one is evaded. An object
+/// the sonar finds that no chart or store knew is handled as `unknown_objects`
+/// says (simulate).
+struct ControlRules {
+  enum class Reaction { evade, identify };
+  std::vector<std::string> identify;   ///< obstacle ids
+  double identify_distance_m = 25.0;   ///< from the outline; at least the corridor (margin + half width)
+  Reaction unknown_objects = Reaction::evade;
+};
+
 struct Mission {
   std::string name;
   std::string source;             ///< the file
@@ -75,6 +87,7 @@ struct Mission {
   std::string current_file;            ///< a current field, or empty
   double margin_m = 5.0;
   double vertical_clearance_m = 2.0;
+  ControlRules control;
   Vec2 start{0.0, 0.0};
   double start_depth_m = 0.0;
   std::vector<ComplexManoeuvre> manoeuvres;

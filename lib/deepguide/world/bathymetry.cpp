@@ -29,8 +29,10 @@ std::string item(GDALMajorObject& o, const std::string& key) {
 GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOptions& options) {
   gdal::ensure_registered();
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing bathymetry raster, found none");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": expected a bathymetry raster file, got a folder");
+  // GDAL's virtual files (/vsimem/, /vsizip/ ...) are not on the file system.
+  const bool virtual_file = path.rfind("/vsi", 0) == 0;
+  if (!virtual_file && !fs::exists(path, ec)) throw InputError(path + ": expected an existing bathymetry raster, found none");
+  if (!virtual_file && fs::is_directory(path, ec)) throw InputError(path + ": expected a bathymetry raster file, got a folder");
   std::vector<const char*> oo;
   for (const auto& o : options.open_options) oo.push_back(o.c_str());
   oo.push_back(nullptr);

@@ -12,9 +12,11 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
@@ -401,6 +403,60 @@ NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const N
     result.polygons.push_back(std::move(o));
   }
   return result;
+}
+
+NoGoArea compute_no_go(const SeaFloor& floor, const LocalFrame& frame, const NoGoOptions& options) {
+  const std::size_t w = floor.nx() - 1, h = floor.ny() - 1;
+  if (w > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+      h > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw InputError("sea floor: expected a grid GDAL can hold, got " + std::to_string(floor.nx()) + " x " +
+                     std::to_string(floor.ny()) + " nodes");
+  }
+  // Row 0 is the northern edge, as in a north-up raster.
+  std::vector<float> cells(w * h);
+  const auto node = [&](std::size_t i, std::size_t j) { return floor.node_depth(i, j); };
+  for (std::size_t j = 0; j < h; ++j) {
+    for (std::size_t i = 0; i < w; ++i) {
+      const double d = std::min(std::min(node(i, j), node(i + 1, j)), std::min(node(i, j + 1), node(i + 1, j + 1)));
+      // A float holds a depth to 6e-8 relative (under a micrometre at 10 m);
+      // where it rounds deeper it is taken one step shallower, to stay on the no-go side.
+      float f = static_cast<float>(d);
+      if (static_cast<double>(f) > d) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+      cells[(h - 1 - j) * w + i] = f;
+    }
+  }
+
+  gdal::ensure_registered();
+  static std::atomic<unsigned long> serial{0};
+  const std::string path = "/vsimem/deepguide_sea_floor_" + std::to_string(::getpid()) + "_" +
+                           std::to_string(serial++) + ".tif";
+  {
+    GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+        path.c_str(), static_cast<int>(w), static_cast<int>(h), 1, GDT_Float32, nullptr));
+    if (!ds) throw InputError("sea floor: expected room for an in-memory copy of " + std::to_string(w * h) + " cells");
+    double transform[6] = {floor.origin().x(), floor.spacing(), 0.0,
+                           floor.origin().y() + floor.spacing() * static_cast<double>(h), 0.0, -floor.spacing()};
+    ds->SetGeoTransform(transform);
+    ds->SetProjection(frame.wkt().c_str());
+    GDALRasterBand& band = *ds->GetRasterBand(1);
+    band.SetDescription("depth");
+    if (band.RasterIO(GF_Write, 0, 0, static_cast<int>(w), static_cast<int>(h), cells.data(), static_cast<int>(w),
+                      static_cast<int>(h), GDT_Float32, 0, 0, nullptr) != CE_None) {
+      VSIUnlink(path.c_str());
+      throw InputError("sea floor: could not write its in-memory copy");
+    }
+  }
+  NoGoOptions o = options;
+  o.bathymetry = {};
+  o.bathymetry.sense = VerticalSense::depth;
+  try {
+    NoGoArea area = compute_no_go(path, frame, o);
+    VSIUnlink(path.c_str());
+    return area;
+  } catch (...) {
+    VSIUnlink(path.c_str());
+    throw;
+  }
 }
 
 }  // namespace deepguide

@@ -47,6 +47,7 @@
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
+#include "deepguide/world/sea_floor.hpp"
 
 namespace deepguide {
 
@@ -86,5 +87,14 @@ LocalFrame raster_local_frame(const std::string& path, const BathymetryOptions& 
 /// in `frame`. Throws InputError (one line naming the file and the option)
 /// for an unreadable raster, a raster without CRS, or bad options.
 NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const NoGoOptions& options);
+
+/// The no-go polygons of a sea floor already in the frame (what the 3-D
+/// checkers see, so a route planned around them passes those checkers): each
+/// grid cell between four nodes takes the shallowest of them (a bilinear
+/// patch is never shallower than its shallowest corner), and the cells go
+/// through the same mask, polygonize and simplify as a raster file's (an
+/// in-memory GeoTIFF in the frame's CRS; options.bathymetry is ignored).
+/// Outside the grid there are no polygons. Throws InputError for bad options.
+NoGoArea compute_no_go(const SeaFloor& floor, const LocalFrame& frame, const NoGoOptions& options);
 
 }  // namespace deepguide

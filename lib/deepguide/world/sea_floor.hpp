@@ -65,6 +65,10 @@ class SeaFloor {
   /// `clearance` (where the danger begins), or none.
   std::optional<double> first_below(const Vec3& a, const Vec3& b, double clearance) const;
 
+  /// Node (i, j)'s depth (0 for no data and outside the grid).
+  double node_depth(std::size_t i, std::size_t j) const {
+    return node(static_cast<std::ptrdiff_t>(i), static_cast<std::ptrdiff_t>(j));
+  }
   const Vec2& origin() const { return origin_; }
   double spacing() const { return spacing_; }
   std::size_t nx() const { return nx_; }

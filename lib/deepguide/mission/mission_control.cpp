@@ -1,0 +1,285 @@
+#include "deepguide/mission/mission_control.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/mission/goal_point.hpp"
+#include "deepguide/mission/plan_splice.hpp"
+#include "deepguide/planning/single_query.hpp"
+#include "deepguide/world/no_go.hpp"
+#include "deepguide/world/obstacle_field.hpp"
+#include "deepguide/world/water_volume.hpp"
+
+namespace deepguide {
+namespace {
+
+constexpr double kExtraZone = 0.2;      // m beyond the corridor: the header
+constexpr double kStep = 2.0;           // m: pieces of the danger scan, steps of the goal-point search
+constexpr double kNoGoTolerance = 2.0;  // m: how far no-go polygons may reach outside the shallow cells
+constexpr int kAttempts = 4;
+
+std::string at_text(const Vec2& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.1f, %.1f)", p.x(), p.y());
+  return buf;
+}
+
+std::string metres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f m", v);
+  return buf;
+}
+
+// What planning the evasions of one mission shares.
+class Evasions {
+ public:
+  Evasions(const Mission& mission, const MissionEnvironment& env)
+      : mission_(mission),
+        env_(env),
+        observe_(observation_options(mission)),
+        zone_margin_(observe_.margin_m + observe_.half_width_m + kExtraZone),
+        field_(env.obstacles, zone_margin_),
+        volume_(field_, env.floor.get(), {observe_.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()}) {}
+
+  const ObservationOptions& observe() const { return observe_; }
+  const WaterVolume& volume() const { return volume_; }
+  double zone_margin() const { return zone_margin_; }
+
+  // What a vehicle at `depth` must go around: obstacles whose top it does not
+  // clear, and the sea floor's no-go polygons there.
+  const ObstacleSet& obstacles_at(double depth) {
+    auto found = at_depth_.find(depth);
+    if (found != at_depth_.end()) return found->second;
+    ObstacleSet out;
+    const std::size_t ellipses = env_.obstacles.ellipses.size();
+    for (std::size_t i = 0; i < env_.obstacles.size(); ++i) {
+      if (!(volume_.zone_top(i) < depth)) continue;
+      if (i < ellipses) out.ellipses.push_back(env_.obstacles.ellipses[i]);
+      else out.polygons.push_back(env_.obstacles.polygons[i - ellipses]);
+    }
+    if (env_.floor) {
+      NoGoOptions o;
+      o.operating_depth_m = depth;
+      o.vertical_clearance_m = observe_.vertical_clearance_m;
+      o.simplify_tolerance_m = kNoGoTolerance;
+      NoGoArea area = compute_no_go(*env_.floor, mission_.frame, o);
+      out.polygons.insert(out.polygons.end(), area.polygons.begin(), area.polygons.end());
+    }
+    return at_depth_.emplace(depth, std::move(out)).first->second;
+  }
+
+  std::vector<Vec2> route(double depth, const Vec2& from, const Vec2& to, std::string& problem) {
+    if ((to - from).norm() < 1e-6) return {from, to};
+    PlannerOptions options;
+    options.margin = zone_margin_;
+    options.graph = GraphKind::visibility;
+    try {
+      const SingleQueryPlan plan = plan_single_query(obstacles_at(depth), {from, to, false}, options);
+      if (!plan.outcome.result.found) {
+        problem = "no safe route at " + metres(depth) + " from " + at_text(from) + " to " + at_text(to) +
+                  (plan.outcome.result.message.empty() ? "" : ": " + plan.outcome.result.message);
+        return {};
+      }
+      if (!plan.outcome.check.safe) {
+        problem = "the route at " + metres(depth) + " fails the route checker: " + plan.outcome.check.describe();
+        return {};
+      }
+      return plan.outcome.result.route.points;
+    } catch (const NoRouteError& e) {
+      problem = "no safe route at " + metres(depth) + ": " + e.what();
+    } catch (const InputError& e) {
+      problem = "no safe route at " + metres(depth) + ": " + e.what();
+    }
+    return {};
+  }
+
+  bool free_at(double depth, const Vec2& p) {
+    auto found = fields_.find(depth);
+    if (found == fields_.end()) found = fields_.emplace(depth, ObstacleField(obstacles_at(depth), zone_margin_)).first;
+    return found->second.is_free(p);
+  }
+
+ private:
+  const Mission& mission_;
+  const MissionEnvironment& env_;
+  ObservationOptions observe_;
+  double zone_margin_;
+  ObstacleField field_;
+  WaterVolume volume_;
+  std::map<double, ObstacleSet> at_depth_;
+  std::map<double, ObstacleField> fields_;
+};
+
+double deepest_between(const TrackDanger& danger, const MissionPlan& plan, double from_m, double to_m) {
+  double d = std::max(position_at(plan, from_m).depth_m, position_at(plan, to_m).depth_m);
+  for (const TrackPoint& p : danger.points) {
+    if (p.along_m >= from_m && p.along_m <= to_m) d = std::max(d, p.depth_m);
+  }
+  return d;
+}
+
+// Lines through `points` at `depth`, the first from the departure's depth,
+// the last to the rendezvous's; `lap` marks which legs go round the object.
+std::vector<BasicManoeuvre> evasion_lines(const std::vector<Vec2>& points, const std::vector<char>& lap,
+                                          const PlanPosition& from, const PlanPosition& to, double depth,
+                                          std::size_t source) {
+  std::vector<BasicManoeuvre> out;
+  std::size_t legs = 0;
+  for (std::size_t k = 1; k < points.size(); ++k) legs += (points[k] - points[k - 1]).norm() > 1e-9 ? 1 : 0;
+  double depth_now = from.depth_m;
+  std::size_t leg = 0;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    if ((points[k] - points[k - 1]).norm() <= 1e-9) continue;
+    ++leg;
+    BasicManoeuvre b;
+    b.kind = BasicManoeuvre::Kind::line;
+    b.from = points[k - 1];
+    b.to = points[k];
+    b.from_depth_m = depth_now;
+    b.depth_m = leg == legs ? to.depth_m : depth;
+    b.speed_mps = from.speed_mps;
+    b.source = source;
+    b.length_m = (b.to - b.from).norm();
+    b.role = lap[k] ? BasicManoeuvre::Role::identification : BasicManoeuvre::Role::evasion;
+    depth_now = b.depth_m;
+    out.push_back(b);
+  }
+  return out;
+}
+
+}  // namespace
+
+ObservationOptions observation_options(const Mission& mission) {
+  ObservationOptions o;
+  o.margin_m = mission.margin_m;
+  o.vertical_clearance_m = mission.vertical_clearance_m;
+  return o;
+}
+
+ControlRules::Reaction choose_reaction(const ControlRules& rules, const ObstacleSet& obstacles, std::size_t obstacle) {
+  if (obstacle >= obstacles.ellipses.size()) return ControlRules::Reaction::evade;
+  const std::string& id = obstacles.ellipses[obstacle].id;
+  return std::find(rules.identify.begin(), rules.identify.end(), id) != rules.identify.end()
+             ? ControlRules::Reaction::identify
+             : ControlRules::Reaction::evade;
+}
+
+PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial) {
+  Evasions evasions(mission, env);
+  PlannedMission out;
+  out.plan = initial;
+  double not_before = 0.0;  // the end of the last evasion
+  double skip = -1.0;       // conflicts up to here are dealt with
+  for (int guard = 0; guard < 10000; ++guard) {
+    const std::vector<Conflict> conflicts =
+        observe_collisions(out.plan, env.obstacles, env.floor.get(), evasions.observe());
+    const auto next = std::find_if(conflicts.begin(), conflicts.end(), [&](const Conflict& c) {
+      return c.along_m > skip && c.along_m >= not_before;
+    });
+    if (next == conflicts.end()) break;
+    Resolution r;
+    r.conflict = *next;
+    r.reaction = next->obstacle == kSeaFloor ? ControlRules::Reaction::evade
+                                             : choose_reaction(mission.control, env.obstacles, next->obstacle);
+    r.time_s = position_at(out.plan, next->along_m).time_s;
+    skip = next->along_m;
+    const PlanPosition at_conflict = position_at(out.plan, next->along_m);
+    const double lead = 2.0 * turn_radius(mission.vehicle, at_conflict.speed_mps) + evasions.zone_margin();
+    const TrackDanger danger = track_danger(out.plan, evasions.volume(), kStep);
+    std::string why;
+    const std::optional<EvasionStretch> stretch = goal_points(danger, next->along_m, lead, not_before, &why);
+    if (!stretch) {
+      r.problem = why;
+      out.resolutions.push_back(r);
+      continue;
+    }
+    // The evasion's depth, and departure and rendezvous free at it.
+    double depart = stretch->depart_m, rendezvous = stretch->rendezvous_m, depth = 0.0;
+    bool free_ends = false;
+    for (int attempt = 0; attempt < kAttempts && !free_ends; ++attempt) {
+      depth = deepest_between(danger, out.plan, depart, rendezvous);
+      bool moved = false;
+      while (!evasions.free_at(depth, position_at(out.plan, depart).xy) && depart > not_before) {
+        depart = std::max(not_before, depart - kStep);
+        moved = true;
+      }
+      while (!evasions.free_at(depth, position_at(out.plan, rendezvous).xy) && rendezvous < out.plan.length_m) {
+        rendezvous = std::min(out.plan.length_m, rendezvous + kStep);
+        moved = true;
+      }
+      free_ends = !moved || (evasions.free_at(depth, position_at(out.plan, depart).xy) &&
+                             evasions.free_at(depth, position_at(out.plan, rendezvous).xy) &&
+                             deepest_between(danger, out.plan, depart, rendezvous) <= depth);
+    }
+    const PlanPosition from = position_at(out.plan, depart), to = position_at(out.plan, rendezvous);
+    if (!evasions.free_at(depth, from.xy) || !evasions.free_at(depth, to.xy)) {
+      r.problem = "no free water at " + metres(depth) + " on the route before or after it to leave from or rejoin at";
+      out.resolutions.push_back(r);
+      continue;
+    }
+    if (holds_within(out.plan, depart, rendezvous)) {
+      r.problem = "evading it would skip a hold (a GPS fix or an alignment) between " + at_text(from.xy) + " and " +
+                  at_text(to.xy);
+      out.resolutions.push_back(r);
+      continue;
+    }
+    std::vector<Vec2> points;
+    std::vector<char> lap{0};
+    if (r.reaction == ControlRules::Reaction::identify) {
+      const Ellipse& object = env.obstacles.ellipses[next->obstacle].footprint;
+      const std::vector<Vec2> round = identification_lap(object, mission.control.identify_distance_m, from.xy);
+      const std::vector<Vec2> in = evasions.route(depth, from.xy, round.front(), r.problem);
+      const std::vector<Vec2> on = in.empty() ? in : evasions.route(depth, round.back(), to.xy, r.problem);
+      if (!in.empty() && !on.empty()) {
+        points = in;
+        lap.resize(points.size(), 0);
+        for (std::size_t k = 1; k < round.size(); ++k) {
+          points.push_back(round[k]);
+          lap.push_back(1);
+        }
+        for (std::size_t k = 1; k < on.size(); ++k) {
+          points.push_back(on[k]);
+          lap.push_back(0);
+        }
+      }
+    } else {
+      points = evasions.route(depth, from.xy, to.xy, r.problem);
+      lap.resize(points.size(), 0);
+    }
+    if (points.size() < 2) {
+      out.resolutions.push_back(r);
+      continue;
+    }
+    std::vector<BasicManoeuvre> lines =
+        evasion_lines(points, lap, from, to, depth, out.plan.basics[from.basic].source);
+    double length = 0.0;
+    for (const BasicManoeuvre& b : lines) length += b.length_m;
+    MissionPlan spliced = splice_plan(out.plan, depart, rendezvous, std::move(lines));
+    const double rejoin = depart + length;
+    // The evasion must leave nothing between departure and rendezvous.
+    const std::vector<Conflict> after = observe_collisions(spliced, env.obstacles, env.floor.get(), evasions.observe());
+    const auto still = std::find_if(after.begin(), after.end(), [&](const Conflict& c) {
+      return c.along_m >= depart - 1e-6 && c.along_m <= rejoin + 1e-6;
+    });
+    if (still != after.end()) {
+      r.problem = "the evasive route still meets " + still->with + " at " + at_text(still->where);
+      out.resolutions.push_back(r);
+      continue;
+    }
+    r.resolved = true;
+    r.depart_m = depart;
+    r.rendezvous_m = rejoin;
+    r.depth_m = depth;
+    r.added_m = length - (rendezvous - depart);
+    out.resolutions.push_back(r);
+    out.plan = std::move(spliced);
+    not_before = rejoin;
+  }
+  out.remaining = observe_collisions(out.plan, env.obstacles, env.floor.get(), evasions.observe());
+  return out;
+}
+
+}  // namespace deepguide
