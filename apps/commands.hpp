@@ -25,6 +25,7 @@ void register_obstacles_convert(CLI::App& obstacles);
 void register_obstacles_import(CLI::App& obstacles);
 void register_plan(CLI::App& app);
 void register_mission(CLI::App& app);
+void register_render_mission(CLI::App& render);
 void register_check_route(CLI::App& check);
 void register_render_route(CLI::App& render);
 void register_chart_synth(CLI::App& chart);

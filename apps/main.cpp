@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   app::register_render_chart(*render);
   app::register_render_reactive(*render);
   app::register_render_identification(*render);
+  app::register_render_mission(*render);
 
   try {
     app.parse(argc, argv);

@@ -15,6 +15,8 @@
 #include "deepguide/mission/mission_environment.hpp"
 #include "deepguide/mission/plan_check.hpp"
 #include "deepguide/mission/plan_splice.hpp"
+#include "deepguide/render/mission_figure.hpp"
+#include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 
 namespace deepguide::app {
 namespace {
@@ -262,6 +264,48 @@ void register_mission(CLI::App& app) {
                     verdict.where.z());
       throw NoRouteError(o->mission + ": the planned mission fails the plan checker" + where + verdict.problem);
     }
+  });
+}
+
+void register_render_mission(CLI::App& render) {
+  struct Options {
+    std::string mission, output, title;
+    int width = 1200;
+    bool as_written = false;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = render.add_subcommand(
+      "mission", "Draw a mission over its chart: the plan with its evasions and identification laps, the plan as "
+                 "written, and where conflicts began");
+  cmd->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
+  cmd->add_option("-o,--output", o->output, "Image to write: .png or .svg")->required();
+  cmd->add_option("--width", o->width, "Image width in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(kMinImageWidth, kMaxImageWidth));
+  cmd->add_option("--title", o->title, "Title line (default: the mission's name, length and time)");
+  cmd->add_flag("--as-written", o->as_written, "Draw the plan as written, without mission control's changes");
+  cmd->callback([o] {
+    const Loaded l = load(o->mission);
+    const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
+    MissionFigure f;
+    f.charts = l.mission.charts;
+    f.obstacles = l.mission.obstacles;
+    f.crs = l.mission.frame.id();
+    f.plan = o->as_written ? &l.plan : &planned.plan;
+    f.written = o->as_written ? nullptr : &l.plan;
+    for (const Resolution& r : planned.resolutions) {
+      f.conflicts.push_back(r.conflict.where);
+      if (!r.resolved) f.unresolved.push_back(r.conflict.where);
+    }
+    f.width_px = o->width;
+    const MissionPlan& shown = *f.plan;
+    char title[256];
+    std::snprintf(title, sizeof title, "%s: %.2f km, %s; %zu conflict(s), %zu resolved", l.mission.name.c_str(),
+                  shown.length_m / 1000.0, clock(plan_time(shown)).c_str(), planned.resolutions.size(),
+                  planned.resolutions.size() - f.unresolved.size());
+    f.title = o->title.empty() ? std::string(title) : o->title;
+    render_mission(f, o->output);
+    std::printf("wrote %s\n", o->output.c_str());
   });
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the quadtree, replanning and octree figures and the Gulf Stream time
+# Regenerates the sample mission's figure (docs/images/sample_mission.png), the quadtree, replanning and octree figures and the Gulf Stream time
 # route (docs/PLANNING.md; the latter when ../shared has the HYCOM sample),
 # and the reactive level's and the identification's figures
 # (docs/SIMULATION.md, docs/IDENTIFICATION.md) from every scenario in
@@ -20,6 +20,8 @@ if [ -z "${DEEPGUIDE_CLI:-}" ]; then
 fi
 cd "$DEEPGUIDE_ROOT"
 mkdir -p docs/figures
+# The README's figure: the sample mission, planned (docs/MISSIONS.md).
+"$DEEPGUIDE_CLI" render mission data/missions/sample_mission.yaml -o docs/images/sample_mission.png
 shopt -s nullglob
 scenarios=(data/scenarios/*.yaml)
 if [ ${#scenarios[@]} -eq 0 ]; then

@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
 # Sets up, builds (Release) and runs deepguide's main job on the bundled sample
-# chart (charts/, made by `deepguide chart synth`): its summary, and a route
-# out of the harbour through the dredged channel at 10 m operating depth; then
-# a route through the sample obstacles, checked. Results go to out/.
+# chart (charts/, made by `deepguide chart synth`): the sample mission
+# (data/missions/sample_mission.yaml) checked, planned with every conflict
+# resolved, and drawn; then the chart's summary and a route out of the harbour
+# through the dredged channel at 10 m operating depth; then a route through
+# the sample obstacles, checked. Results go to out/.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 deepguide_setup "$DEEPGUIDE_ROOT/build"
 cd "$DEEPGUIDE_ROOT"
 mkdir -p out
+MISSION=data/missions/sample_mission.yaml
+./build/apps/deepguide mission plan "$MISSION"
+./build/apps/deepguide render mission "$MISSION" -o out/sample_mission.png
+echo
 CHART="charts/sample_chart.tif charts/sample_chart_hazards.gpkg"
 # shellcheck disable=SC2086  # two file names
 ./build/apps/deepguide chart info $CHART --depth 10

@@ -61,7 +61,7 @@ TEST(Mission, TheSampleMissionReads) {
   EXPECT_EQ(m.name, "Kiel Bight sample survey");
   EXPECT_EQ(m.frame.id(), "EPSG:32632");
   EXPECT_EQ(m.charts.size(), 2u);
-  EXPECT_EQ(m.obstacles.size(), 1u);
+  EXPECT_EQ(m.obstacles.size(), 2u);
   ASSERT_EQ(m.manoeuvres.size(), 5u);
   EXPECT_EQ(m.manoeuvres[0].type, "track");
   EXPECT_EQ(m.manoeuvres[1].type, "survey");

@@ -270,6 +270,7 @@ struct Painter {
     draw(scene.obstacles, style.obstacle);
     labels(scene.hazards, style.hazard);
     labels(scene.obstacles, style.obstacle);
+    if (scene.options.overlay) scene.options.overlay(canvas, layout.view, u);
     canvas.unclip();
     canvas.stroke_rect(layout.map, Stroke{style.frame, 1.0 * u, {}});
   }
@@ -338,6 +339,15 @@ struct Painter {
                    e.outline);
       canvas.text({ex + 28.0 * u, ey + 12.0 * u}, e.label, size, style.text);
       ex += 28.0 * u + canvas.text_width(e.label, size) + 18.0 * u;
+    }
+    double lx = kLegendX * u;
+    const double ly = ey + 24.0 * u;
+    for (const ChartRenderOptions::LegendLine& line : scene.options.overlay_legend) {
+      Stroke stroke{line.color, line.width_px * u, {}};
+      if (line.dashed) stroke.dash = {6.0 * u, 4.0 * u};
+      canvas.stroke_polyline({{lx, ly + 7.0 * u}, {lx + 22.0 * u, ly + 7.0 * u}}, stroke);
+      canvas.text({lx + 28.0 * u, ly + 12.0 * u}, line.label, size, style.text);
+      lx += 28.0 * u + canvas.text_width(line.label, size) + 18.0 * u;
     }
   }
 
@@ -449,14 +459,17 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
 
   ChartLayout l;
   l.frame_id = frame.id();
-  l.extent = scene.rasters.empty() ? content.padded(0.05 * std::max(content.width(), content.height())) : content;
+  l.extent = !options.extent.empty() ? options.extent
+             : scene.rasters.empty()  ? content.padded(0.05 * std::max(content.width(), content.height()))
+                                      : content;
   l.width = options.width_px;
   l.unit = options.width_px / 1200.0;
   const double u = l.unit;
   l.map = {kSide * u, kTitleBand * u, options.width_px - 2.0 * kSide * u, 0.0};
   const double aspect = std::clamp(l.extent.height() / std::max(l.extent.width(), 1e-9), 0.45, 1.5);
   l.map.height = std::round(l.map.width * aspect);
-  l.footer = {0.0, l.map.y + l.map.height, static_cast<double>(options.width_px), kFooter * u};
+  const double footer = kFooter + (options.overlay_legend.empty() ? 0.0 : 26.0);  // a row for the overlay's legend
+  l.footer = {0.0, l.map.y + l.map.height, static_cast<double>(options.width_px), footer * u};
   l.height = static_cast<int>(std::ceil(l.footer.y + l.footer.height));
   l.view = ViewTransform(l.extent, l.map);
   l.true_north_deg = 90.0 - frame.true_north_angle(l.extent.center()) * 180.0 / kPi;

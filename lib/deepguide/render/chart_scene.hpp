@@ -21,6 +21,7 @@
 // - Layout as the route chart's: title band | map | footer (scale bar, legend,
 //   north arrow); sizes scale with width_px / 1200.
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -54,6 +55,20 @@ struct ChartRenderOptions {
   std::string title;         ///< empty = the files' names and the depth
   int width_px = 1200;
   ChartStyle style;
+  /// The part of the local frame to show; empty = everything the charts hold.
+  WorldBox extent;
+  /// Drawn on the map after the chart, clipped to it (a mission, routes,
+  /// tracks: render/mission_figure.hpp); `unit` = width_px / 1200.
+  std::function<void(Canvas&, const ViewTransform&, double unit)> overlay;
+  /// The overlay's legend: a line in a colour (dashed or not) and its label,
+  /// one row under the chart's own entries.
+  struct LegendLine {
+    Rgba color;
+    double width_px = 2.0;
+    bool dashed = false;
+    std::string label;
+  };
+  std::vector<LegendLine> overlay_legend;
 };
 
 /// Where everything went, for callers and tests.

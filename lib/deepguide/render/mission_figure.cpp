@@ -1,0 +1,114 @@
+#include "deepguide/render/mission_figure.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace {
+
+// The plan's track split where the role changes: one polyline per run.
+struct Run {
+  BasicManoeuvre::Role role;
+  std::vector<Vec2> points;
+};
+
+std::vector<Run> runs_of(const MissionPlan& plan) {
+  std::vector<Run> out;
+  const std::vector<TrackPoint> track = plan_polyline(plan, 0.5);
+  for (std::size_t k = 1; k < track.size(); ++k) {
+    const BasicManoeuvre::Role role = plan.basics[track[k].basic].role;
+    if (out.empty() || out.back().role != role) out.push_back({role, {track[k - 1].xy}});
+    out.back().points.push_back(track[k].xy);
+  }
+  return out;
+}
+
+}  // namespace
+
+ChartLayout render_mission(const MissionFigure& f, const std::string& path, const MissionStyle& style) {
+  if (f.plan == nullptr || f.plan->basics.empty()) throw InputError(path + ": expected a mission plan to draw");
+  const std::vector<Run> runs = runs_of(*f.plan);
+  const std::vector<Run> written = f.written != nullptr ? runs_of(*f.written) : std::vector<Run>{};
+  WorldBox box;
+  for (const auto* set : {&runs, &written}) {
+    for (const Run& r : *set) {
+      for (const Vec2& p : r.points) box.extend(p);
+    }
+  }
+  for (const Vec2& p : f.track) box.extend(p);
+  const double pad = std::max(150.0, 0.1 * std::max(box.width(), box.height()));
+
+  ChartRenderOptions o;
+  o.charts = f.charts;
+  o.obstacles = f.obstacles;
+  if (o.charts.empty()) std::swap(o.charts, o.obstacles);  // obstacle files alone draw as a chart of hazards
+  if (o.charts.empty()) throw InputError(path + ": expected a mission with charts or obstacle files to draw it over");
+  o.local_crs = f.crs;
+  o.title = f.title;
+  o.width_px = f.width_px;
+  o.extent = box.padded(pad);
+  const auto colour = [&](BasicManoeuvre::Role role) {
+    switch (role) {
+      case BasicManoeuvre::Role::evasion: return style.evasion;
+      case BasicManoeuvre::Role::identification: return style.identification;
+      case BasicManoeuvre::Role::mission: break;
+    }
+    return style.mission;
+  };
+  o.overlay = [&](Canvas& canvas, const ViewTransform& view, double u) {
+    const auto px = [&](const std::vector<Vec2>& pts) {
+      std::vector<Vec2> out;
+      out.reserve(pts.size());
+      for (const Vec2& p : pts) out.push_back(view.to_pixel(p));
+      return out;
+    };
+    for (const Run& r : written) canvas.stroke_polyline(px(r.points), Stroke{style.written, 1.4 * u, {5.0 * u, 4.0 * u}});
+    if (f.detected != nullptr) {
+      for (const EllipticCylinder& c : f.detected->ellipses) {
+        std::vector<Vec2> ring;
+        for (int k = 0; k < 48; ++k) ring.push_back(c.footprint.point_at(2.0 * std::numbers::pi * k / 48));
+        canvas.shape(px(ring), Rgba{style.conflict.r, style.conflict.g, style.conflict.b, 0.35},
+                     Stroke{style.conflict, 1.4 * u, {}});
+      }
+    }
+    for (const Run& r : runs) {
+      const Rgba c = colour(r.role);
+      canvas.stroke_polyline(px(r.points), Stroke{style.casing, 4.8 * u, {}});
+      canvas.stroke_polyline(px(r.points), Stroke{c, 2.4 * u, {}});
+    }
+    if (!f.track.empty()) {
+      canvas.stroke_polyline(px(f.track), Stroke{style.casing, 3.8 * u, {}});
+      canvas.stroke_polyline(px(f.track), Stroke{style.track, 1.8 * u, {}});
+    }
+    for (const Vec2& p : f.conflicts) {
+      canvas.circle(view.to_pixel(p), 7.0 * u, std::nullopt, Stroke{style.casing, 4.4 * u, {}});
+      canvas.circle(view.to_pixel(p), 7.0 * u, std::nullopt, Stroke{style.conflict, 2.2 * u, {}});
+    }
+    for (const Vec2& p : f.unresolved) {
+      const Vec2 c = view.to_pixel(p);
+      const double s = 8.0 * u;
+      const Stroke cross{style.conflict, 3.0 * u, {}};
+      canvas.stroke_polyline({c + Vec2(-s, -s), c + Vec2(s, s)}, cross);
+      canvas.stroke_polyline({c + Vec2(-s, s), c + Vec2(s, -s)}, cross);
+    }
+    const Vec2 start = f.plan->basics.front().from, end = f.plan->basics.back().to;
+    canvas.circle(view.to_pixel(start), 6.0 * u, style.start, Stroke{Rgba{1.0, 1.0, 1.0, 1.0}, 1.5 * u, {}});
+    canvas.circle(view.to_pixel(end), 6.0 * u, style.end, Stroke{Rgba{1.0, 1.0, 1.0, 1.0}, 1.5 * u, {}});
+  };
+  o.overlay_legend.push_back({style.mission, 2.4, false, "mission"});
+  bool evades = false, identifies = false;
+  for (const Run& r : runs) {
+    evades = evades || r.role == BasicManoeuvre::Role::evasion;
+    identifies = identifies || r.role == BasicManoeuvre::Role::identification;
+  }
+  if (evades) o.overlay_legend.push_back({style.evasion, 2.4, false, "evasion"});
+  if (identifies) o.overlay_legend.push_back({style.identification, 2.4, false, "identification lap"});
+  if (!written.empty()) o.overlay_legend.push_back({style.written, 1.4, true, "as written"});
+  if (!f.conflicts.empty()) o.overlay_legend.push_back({style.conflict, 2.2, false, "conflict (ring), unresolved (cross)"});
+  if (!f.track.empty()) o.overlay_legend.push_back({style.track, 1.8, false, "track sailed"});
+  return render_chart(o, path);
+}
+
+}  // namespace deepguide
