@@ -14,6 +14,7 @@
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
 #include "deepguide/mission/plan_check.hpp"
+#include "deepguide/mission/plan_export.hpp"
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/render/mission_figure.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
@@ -149,7 +150,7 @@ void throw_if_unresolved(const std::string& file, const Loaded& l, const Planned
 }  // namespace
 
 void register_mission(CLI::App& app) {
-  CLI::App* mission = app.add_subcommand("mission", "Mission plans: check (basic manoeuvres and conflicts), plan (conflicts evaded or identified)");
+  CLI::App* mission = app.add_subcommand("mission", "Mission plans: check (basic manoeuvres and conflicts), plan (conflicts evaded or identified), export (the plan for the vehicle or ground station)");
   mission->require_subcommand(1);
   auto o = std::make_shared<MissionOptions>();
   CLI::App* check = mission->add_subcommand(
@@ -264,6 +265,43 @@ void register_mission(CLI::App& app) {
                     verdict.where.z());
       throw NoRouteError(o->mission + ": the planned mission fails the plan checker" + where + verdict.problem);
     }
+  });
+
+  struct ExportCli {
+    std::string output, format;
+    bool overwrite = false, as_written = false;
+    double tolerance = 0.5;
+  };
+  auto e = std::make_shared<ExportCli>();
+  CLI::App* exp = mission->add_subcommand(
+      "export", "Plan a mission (every conflict resolved and checked) and write it for the vehicle or ground station");
+  exp->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
+  exp->add_option("-o,--output", e->output, "File to write; its extension picks the format unless --format is given")
+      ->required();
+  exp->add_option("--format", e->format, "yaml (basic manoeuvres), geojson, gpx, kml, csv, plan (QGroundControl), "
+                                         "moos (pHelmIvP .bhv), rtz (IEC 61174)");
+  exp->add_flag("--overwrite", e->overwrite, "Replace the output file if it exists");
+  exp->add_flag("--as-written", e->as_written, "Export the plan as written, without mission control's changes");
+  exp->add_option("--arc-tolerance", e->tolerance, "How far waypoints along arcs may cut inside them (m)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 100.0));
+  exp->callback([o, e] {
+    const ExportFormat format = e->format.empty() ? export_format_for(e->output) : parse_export_format(e->format);
+    const Loaded l = load(o->mission);
+    const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
+    if (!e->as_written) {
+      throw_if_unresolved(o->mission, l, planned);
+      const MissionPlanCheck verdict = check_mission_plan(planned.plan, l.env, observation_options(l.mission));
+      if (!verdict.safe) throw NoRouteError(o->mission + ": the planned mission fails the plan checker: " + verdict.problem);
+    } else if (!planned.resolutions.empty()) {
+      std::fprintf(stderr, "warning: exporting the plan as written with %zu conflict(s) unresolved\n",
+                   planned.resolutions.size());
+    }
+    const MissionPlan& plan = e->as_written ? l.plan : planned.plan;
+    export_plan(l.mission, plan, e->output, format, {e->tolerance, e->overwrite});
+    const std::size_t waypoints = export_waypoints(l.mission, plan, e->tolerance).size();
+    std::printf("wrote %s (%s): %zu basic manoeuvres, %zu waypoints, %.0f m\n", e->output.c_str(),
+                to_string(format).c_str(), plan.basics.size(), waypoints, plan.length_m);
   });
 }
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "deepguide/world/local_frame.hpp"
@@ -94,9 +95,33 @@ TEST(CliMission, AConflictThatCannotBeResolvedExitsThreeWithTimeAndPlace) {
     EXPECT_NE(r.err.find(w), std::string::npos) << w << ": " << r.err;
   }
   EXPECT_NE(r.out.find("UNSOLVED"), std::string::npos) << r.out;
+  // export writes nothing for it.
+  const auto e = run_cli("mission export '" + path + "' -o '" + dir.file("m.plan") + "'");
+  EXPECT_EQ(e.exit_code, 3) << e.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.plan")));
   // check says so too, as loudly.
   const auto c = run_cli("mission check '" + path + "'");
   EXPECT_EQ(c.exit_code, 3) << c.err;
   EXPECT_NE(c.out.find("UNAVOIDABLE"), std::string::npos) << c.out;
   EXPECT_NE(c.err.find("could not be resolved"), std::string::npos) << c.err;
+}
+
+TEST(CliMission, ExportWritesEachFormatOnceAndRefusesToReplaceWithoutOverwrite) {
+  ScratchDir dir;
+  const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
+  for (const char* name : {"p.yaml", "p.geojson", "p.gpx", "p.kml", "p.csv", "p.plan", "p.bhv", "p.rtz"}) {
+    const auto r = run_cli("mission export '" + mission + "' -o '" + dir.file(name) + "'");
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_NE(r.out.find("wrote"), std::string::npos) << r.out;
+  }
+  const auto again = run_cli("mission export '" + mission + "' -o '" + dir.file("p.gpx") + "'");
+  EXPECT_EQ(again.exit_code, 1) << again.err;
+  EXPECT_EQ(std::count(again.err.begin(), again.err.end(), '\n'), 1) << again.err;
+  EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+  EXPECT_EQ(run_cli("mission export '" + mission + "' -o '" + dir.file("p.gpx") + "' --overwrite").exit_code, 0);
+  const auto format = run_cli("mission export '" + mission + "' -o '" + dir.file("p.xml") + "' --format gpx");
+  EXPECT_EQ(format.exit_code, 0) << format.err;
+  const auto unknown = run_cli("mission export '" + mission + "' -o '" + dir.file("p.xml") + "'");
+  EXPECT_EQ(unknown.exit_code, 1) << unknown.err;
+  EXPECT_NE(unknown.err.find("extension"), std::string::npos) << unknown.err;
 }

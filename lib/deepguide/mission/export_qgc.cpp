@@ -1,0 +1,78 @@
+// QGroundControl's plan file (https://docs.qgroundcontrol.com, "Plan File
+// Format"): fileType "Plan", version 1, and a mission of SimpleItems, version 2.
+// Each waypoint is MAV_CMD_NAV_WAYPOINT (16) in MAV_FRAME_GLOBAL_RELATIVE_ALT
+// (3): params [hold s, acceptance radius m, pass radius m, yaw (null: keep),
+// lat, lon, altitude], the altitude being minus the depth, as ArduSub reads a
+// depth. Before the first waypoint and wherever the speed changes,
+// MAV_CMD_DO_CHANGE_SPEED (178): params [speed type 1 (ground speed), m/s,
+// throttle -1 (no change), 0, 0, 0, 0]. The vehicle type is MAV_TYPE_SUBMARINE
+// (12), the firmware ArduPilot (3); the planned home is the start at the surface.
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/mission/export_writers.hpp"
+
+namespace deepguide::detail {
+namespace {
+
+constexpr int kNavWaypoint = 16;
+constexpr int kChangeSpeed = 178;
+constexpr int kFrameGlobalRelativeAlt = 3;
+constexpr int kFrameMission = 2;
+constexpr int kSubmarine = 12;
+constexpr int kArduPilot = 3;
+constexpr double kAcceptanceRadius_m = 2.0;
+
+nlohmann::json item(int id, int command, int frame, const nlohmann::json& params, double altitude) {
+  return {{"AMSLAltAboveTerrain", nullptr},
+          {"Altitude", altitude},
+          {"AltitudeMode", 1},
+          {"autoContinue", true},
+          {"command", command},
+          {"doJumpId", id},
+          {"frame", frame},
+          {"params", params},
+          {"type", "SimpleItem"}};
+}
+
+}  // namespace
+
+void write_plan_qgc(const std::string& path, const ExportInput& in) {
+  nlohmann::json items = nlohmann::json::array();
+  int id = 1;
+  double speed = -1.0;
+  double cruise = 0.0;
+  for (const ExportWaypoint& w : in.waypoints) {
+    if (std::abs(w.speed_mps - speed) > 1e-9) {
+      speed = w.speed_mps;
+      cruise = std::max(cruise, speed);
+      items.push_back(item(id++, kChangeSpeed, kFrameMission, {1, speed, -1, 0, 0, 0, 0}, 0.0));
+    }
+    items.push_back(item(id++, kNavWaypoint, kFrameGlobalRelativeAlt,
+                         {w.hold_s, kAcceptanceRadius_m, 0, nullptr, w.lonlat.y(), w.lonlat.x(), 0.0 - w.depth_m},
+                         0.0 - w.depth_m));
+  }
+  const ExportWaypoint& start = in.waypoints.front();
+  const nlohmann::json plan = {
+      {"fileType", "Plan"},
+      {"version", 1},
+      {"groundStation", "QGroundControl"},
+      {"geoFence", {{"circles", nlohmann::json::array()}, {"polygons", nlohmann::json::array()}, {"version", 2}}},
+      {"rallyPoints", {{"points", nlohmann::json::array()}, {"version", 2}}},
+      {"mission",
+       {{"version", 2},
+        {"firmwareType", kArduPilot},
+        {"vehicleType", kSubmarine},
+        {"cruiseSpeed", cruise},
+        {"hoverSpeed", cruise},
+        {"plannedHomePosition", {start.lonlat.y(), start.lonlat.x(), 0.0}},
+        {"items", items}}}};
+  std::ofstream out(path, std::ios::binary);
+  out << plan.dump(4) << "\n";
+  out.close();
+  if (!out) throw InputError(in.destination + ": could not write the plan file");
+}
+
+}  // namespace deepguide::detail

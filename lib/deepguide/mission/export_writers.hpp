@@ -1,0 +1,25 @@
+#pragma once
+// Library-internal: one writer per export format (mission/plan_export.hpp
+// picks one, and makes the write atomic). Each writes `path` whole or throws.
+
+#include <string>
+#include <vector>
+
+#include "deepguide/mission/plan_export.hpp"
+
+namespace deepguide::detail {
+
+struct ExportInput {
+  std::string destination;  ///< the file the user named (messages; writers write the path they are given)
+  const Mission& mission;
+  const MissionPlan& plan;
+  const std::vector<ExportWaypoint>& waypoints;
+};
+
+void write_plan_yaml(const std::string& path, const ExportInput& in);
+void write_plan_ogr(const std::string& path, ExportFormat format, const ExportInput& in);  ///< geojson, gpx, kml, csv
+void write_plan_qgc(const std::string& path, const ExportInput& in);
+void write_plan_moos(const std::string& path, const ExportInput& in);
+void write_plan_rtz(const std::string& path, const ExportInput& in);
+
+}  // namespace deepguide::detail
