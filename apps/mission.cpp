@@ -79,6 +79,7 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
                           {"resolved", r.resolved},         {"time_s", r.time_s},
                           {"lon", ll.x()},                  {"lat", ll.y()},
                           {"depth_m", r.conflict.depth_m}};
+      if (!r.note.empty()) j["note"] = r.note;
       if (r.resolved) {
         j["depart_m"] = r.depart_m;
         j["rendezvous_m"] = r.rendezvous_m;
@@ -114,14 +115,19 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
   for (const Resolution& r : planned.resolutions) {
     const Vec2 ll = lonlat(r.conflict.where);
     if (r.resolved) {
-      std::printf("%8s  %-24s %-9s %-9s %9.0f %9.0f %8.0f  %.5f, %.5f (at %.1f m)\n", clock(r.time_s).c_str(),
+      std::printf("%8s  %-24s %-9s %-9s %9.0f %9.0f %8.0f  %.5f, %.5f (at %.1f m)%s%s\n", clock(r.time_s).c_str(),
                   r.conflict.with.substr(0, 24).c_str(), reaction_name(r.reaction), "resolved", r.depart_m,
-                  r.rendezvous_m, r.added_m, ll.x(), ll.y(), r.depth_m);
+                  r.rendezvous_m, r.added_m, ll.x(), ll.y(), r.depth_m, r.note.empty() ? "" : "; ", r.note.c_str());
     } else {
       std::printf("%8s  %-24s %-9s %-9s %9s %9s %8s  %.5f, %.5f: %s\n", clock(r.time_s).c_str(),
                   r.conflict.with.substr(0, 24).c_str(), reaction_name(r.reaction), "UNSOLVED", "-", "-", "-", ll.x(),
                   ll.y(), r.problem.c_str());
     }
+  }
+  for (const Conflict& c : planned.remaining) {
+    const Vec2 ll = lonlat(c.where);
+    std::printf("REMAINING        %s into the mission, %s at %.5f, %.5f, %.1f m deep\n",
+                clock(position_at(planned.plan, c.along_m).time_s).c_str(), c.with.c_str(), ll.x(), ll.y(), c.depth_m);
   }
   std::printf("check            %s: %zu legs against every obstacle's zone and top and the sea floor",
               verdict.safe ? "safe" : "UNSAFE", verdict.legs);
@@ -137,6 +143,16 @@ void throw_if_unresolved(const std::string& file, const Loaded& l, const Planned
   for (const Resolution& r : planned.resolutions) {
     if (r.resolved) continue;
     if (unsolved++ == 0) first = &r;
+  }
+  if (first == nullptr && !planned.remaining.empty()) {
+    // Every conflict was dealt with, yet observation still finds one: never let that pass quietly.
+    const Conflict& c = planned.remaining.front();
+    const Vec2 ll = l.mission.frame.to_lonlat(c.where);
+    char where[160];
+    std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f, %.1f m deep",
+                  clock(position_at(planned.plan, c.along_m).time_s).c_str(), ll.x(), ll.y(), c.depth_m);
+    throw NoRouteError(file + ": " + std::to_string(planned.remaining.size()) +
+                       " conflict(s) remain in the planned mission; the first, with " + c.with + where);
   }
   if (first == nullptr) return;
   const Vec2 ll = l.mission.frame.to_lonlat(first->conflict.where);

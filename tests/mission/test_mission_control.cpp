@@ -148,7 +148,7 @@ TEST(GoalPoints, LeadBeforeAndPastTheDangerRunsJoinedWithinTheLead) {
   const ObstacleField field(end, 5.7);
   const WaterVolume volume(field, nullptr, {2.0, 0.0, std::numeric_limits<double>::infinity()});
   std::string why;
-  EXPECT_FALSE(goal_points(track_danger(plan, volume, 2.0), 1000.0 - 10.7, 50.0, 0.0, &why));
+  EXPECT_FALSE(goal_points(track_danger(plan, volume, 2.0), 1010.0 - 10.7, 50.0, 0.0, &why));
   EXPECT_NE(why.find("mission's end"), std::string::npos) << why;
 }
 
@@ -285,4 +285,95 @@ TEST(MissionControl, ControlRulesAreCheckedWhenRead) {
   EXPECT_NE(error("control: {identify_distance_m: 3}\n").find("identify_distance_m"), std::string::npos);
   EXPECT_NE(error("control: {identify: rock}\n").find("list of obstacle ids"), std::string::npos);
   EXPECT_NE(error("control: {evade: all}\n").find("line 3"), std::string::npos);
+}
+
+TEST(GoalPoints, NeverBeforeTheLastEvasionAndNeverAGuess) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
+  const MissionPlan plan = expand_mission(m, {});
+  ObstacleSet set;
+  set.ellipses.push_back(test::disc(500.0, 0.0, 20.0, "rock"));
+  const ObstacleField field(set, 5.7);
+  const WaterVolume volume(field, nullptr, {2.0, 0.0, std::numeric_limits<double>::infinity()});
+  const TrackDanger danger = track_danger(plan, volume, 2.0);
+  const auto s = goal_points(danger, 474.3, 50.0, 450.0);
+  ASSERT_TRUE(s);
+  EXPECT_NEAR(s->depart_m, 450.0, 1e-9);
+  // Where the scan sees no danger it does not invent a stretch.
+  std::string why;
+  EXPECT_FALSE(goal_points(danger, 100.0, 50.0, 0.0, &why));
+  EXPECT_NE(why.find("finds nothing"), std::string::npos) << why;
+}
+
+TEST(NoGo, TheSeaFloorsRowsAreNotFlipped) {
+  // 12 m everywhere but the northern row of nodes (y = 100) at 9 m: at 8 m
+  // (10 m needed) only the northern row of cells, y in [50, 100], is no-go.
+  std::vector<double> depths;
+  for (int j = 0; j < 5; ++j) {
+    for (int i = 0; i < 11; ++i) depths.push_back(j == 4 ? 9.0 : 12.0);
+  }
+  const SeaFloor floor({0.0, -100.0}, 50.0, 11, 5, depths);
+  NoGoOptions o;
+  o.operating_depth_m = 8.0;
+  o.simplify_tolerance_m = 0.0;
+  const NoGoArea area = compute_no_go(floor, LocalFrame::from_user_crs("EPSG:32632"), o);
+  ASSERT_EQ(area.polygons.size(), 1u);
+  EXPECT_NEAR(area.area_m2, 500.0 * 50.0, 1e-6);
+  EXPECT_TRUE(boost::geometry::within(to_bg(Vec2(250.0, 75.0)), area.polygons[0].footprint));
+  EXPECT_FALSE(boost::geometry::within(to_bg(Vec2(250.0, 25.0)), area.polygons[0].footprint));
+}
+
+TEST(MissionControl, AnObjectToIdentifyWhoseDangerJoinsAnEvasionIsSaidSo) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "control: {identify: [wreck]}\n"
+                                      "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
+  MissionEnvironment env;
+  // Zones of radius 15.7 m, 38.6 m apart: closer than the lead (2 x 23.6 + 5.7 m), one stretch.
+  env.obstacles.ellipses.push_back(test::disc(450.0, 0.0, 10.0, "rock"));
+  env.obstacles.ellipses.push_back(test::disc(520.0, 0.0, 10.0, "wreck"));
+  const PlannedMission planned = plan_mission(m, env, expand_mission(m, env.obstacles));
+  ASSERT_EQ(planned.resolutions.size(), 2u);
+  EXPECT_EQ(planned.resolutions[0].conflict.with, "rock");
+  EXPECT_TRUE(planned.resolutions[0].resolved);
+  EXPECT_EQ(planned.resolutions[1].conflict.with, "wreck");
+  EXPECT_TRUE(planned.resolutions[1].resolved);
+  EXPECT_NE(planned.resolutions[1].note.find("to identify, but evaded with rock"), std::string::npos)
+      << planned.resolutions[1].note;
+  EXPECT_TRUE(planned.remaining.empty());
+  EXPECT_TRUE(check_mission_plan(planned.plan, env, observation_options(m)).safe);
+}
+
+TEST(MissionControl, AShoalIsEvadedAroundTheSeaFloorsNoGoCells) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
+  // 12 m deep, 6 m at the node (500, 0): the cells round it, x in [450, 550]
+  // and y in [-50, 50], are too shallow for 8 m + 2 m.
+  std::vector<double> depths;
+  for (int j = 0; j < 9; ++j) {
+    for (int i = 0; i < 21; ++i) depths.push_back(i == 10 && j == 4 ? 6.0 : 12.0);
+  }
+  MissionEnvironment env;
+  env.floor = std::make_shared<const SeaFloor>(Vec2(0.0, -200.0), 50.0, 21, 9, depths);
+  const MissionPlan written = expand_mission(m, env.obstacles);
+  ASSERT_EQ(observe_collisions(written, {}, env.floor.get(), observation_options(m)).size(), 1u);
+  EXPECT_FALSE(check_mission_plan(written, env, observation_options(m)).safe);
+  const PlannedMission planned = plan_mission(m, env, written);
+  ASSERT_EQ(planned.resolutions.size(), 1u);
+  ASSERT_TRUE(planned.resolutions[0].resolved) << planned.resolutions[0].problem;
+  EXPECT_EQ(planned.resolutions[0].conflict.with, "the sea floor");
+  EXPECT_TRUE(planned.remaining.empty());
+  const MissionPlanCheck verdict = check_mission_plan(planned.plan, env, observation_options(m));
+  EXPECT_TRUE(verdict.safe) << verdict.problem;
+  EXPECT_GE(verdict.min_floor_gap_m, 2.0 - 1e-6);
+  // Abeam of the shoal the evasion is outside the no-go box and its zone.
+  int abeam = 0;
+  const std::vector<TrackPoint> track = plan_polyline(planned.plan);
+  for (std::size_t k = 1; k < track.size(); ++k) {
+    const Vec2 a = track[k - 1].xy, b = track[k].xy;
+    if ((a.x() - 500.0) * (b.x() - 500.0) > 0.0 || a.x() == b.x()) continue;
+    ++abeam;
+    const double y = a.y() + (b.y() - a.y()) * (500.0 - a.x()) / (b.x() - a.x());
+    EXPECT_GE(std::abs(y), 50.0 + 5.7 - 1e-6) << a.transpose() << " -> " << b.transpose();
+  }
+  EXPECT_EQ(abeam, 1);
 }

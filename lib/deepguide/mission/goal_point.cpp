@@ -46,11 +46,20 @@ std::optional<EvasionStretch> goal_points(const TrackDanger& danger, double dang
                                           double not_before_m, std::string* why) {
   const std::vector<TrackPoint>& pts = danger.points;
   const std::size_t pieces = danger.endangered.size();
-  if (pieces == 0) return std::nullopt;
+  if (pieces == 0) {
+    if (why != nullptr) *why = "the plan has no track to leave and rejoin";
+    return std::nullopt;
+  }
   // The piece where the danger begins: the first endangered one reaching danger_m.
   std::size_t first = 0;
   while (first + 1 < pieces && pts[first + 1].along_m <= danger_m) ++first;
-  while (first + 1 < pieces && !danger.endangered[first]) ++first;
+  const double step = pts[first + 1].along_m - pts[first].along_m;
+  while (first + 1 < pieces && !danger.endangered[first] && pts[first].along_m <= danger_m + step) ++first;
+  if (!danger.endangered[first] || pts[first].along_m > danger_m + step) {
+    // The scan's zone is wider than observation's corridor, so this means the two disagree: say so, do not guess.
+    if (why != nullptr) *why = "the danger scan finds nothing where observation found the conflict";
+    return std::nullopt;
+  }
   std::size_t last = first;
   // Forward: the run, and the runs that follow it within the lead.
   for (std::size_t k = first + 1; k < pieces; ++k) {

@@ -241,11 +241,12 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
         mission.control.identify.push_back(id.Scalar());
       }
     }
-    // The lap must stay out of the corridor observation watches (margin + half the vehicle's width).
-    const double corridor = mission.margin_m + 0.5;
+    // The lap must stay out of the planner's zone (margin + half the vehicle's
+    // width + 0.2 m, mission_control.hpp) with room for its chords' sag: 1.5 m past the margin.
+    const double least = mission.margin_m + 1.5;
     mission.control.identify_distance_m =
-        c.number_or("identify_distance_m", {corridor, 1e4, false, "a distance in metres beyond margin_m + 0.5"},
-                    std::max(mission.control.identify_distance_m, corridor + 5.0));
+        c.number_or("identify_distance_m", {least, 1e4, true, "a distance in metres of at least margin_m + 1.5"},
+                    std::max(mission.control.identify_distance_m, least + 5.0));
     if (c.has("unknown_objects")) {
       const std::string what = c.text("unknown_objects", "evade or identify");
       if (what != "evade" && what != "identify") throw input_error(c.where("unknown_objects"), "evade or identify", "'" + printable(what) + "'");

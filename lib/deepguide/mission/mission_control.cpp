@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/mission/goal_point.hpp"
@@ -36,6 +38,8 @@ std::string metres(double v) {
 // What planning the evasions of one mission shares.
 class Evasions {
  public:
+  Evasions(const Evasions&) = delete;  // volume_ points into field_
+  Evasions& operator=(const Evasions&) = delete;
   Evasions(const Mission& mission, const MissionEnvironment& env)
       : mission_(mission),
         env_(env),
@@ -167,97 +171,88 @@ ControlRules::Reaction choose_reaction(const ControlRules& rules, const Obstacle
              : ControlRules::Reaction::evade;
 }
 
-PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial) {
-  Evasions evasions(mission, env);
-  PlannedMission out;
-  out.plan = initial;
-  double not_before = 0.0;  // the end of the last evasion
-  double skip = -1.0;       // conflicts up to here are dealt with
-  for (int guard = 0; guard < 10000; ++guard) {
-    const std::vector<Conflict> conflicts =
-        observe_collisions(out.plan, env.obstacles, env.floor.get(), evasions.observe());
-    const auto next = std::find_if(conflicts.begin(), conflicts.end(), [&](const Conflict& c) {
-      return c.along_m > skip && c.along_m >= not_before;
-    });
-    if (next == conflicts.end()) break;
-    Resolution r;
-    r.conflict = *next;
-    r.reaction = next->obstacle == kSeaFloor ? ControlRules::Reaction::evade
-                                             : choose_reaction(mission.control, env.obstacles, next->obstacle);
-    r.time_s = position_at(out.plan, next->along_m).time_s;
-    skip = next->along_m;
-    const PlanPosition at_conflict = position_at(out.plan, next->along_m);
-    const double lead = 2.0 * turn_radius(mission.vehicle, at_conflict.speed_mps) + evasions.zone_margin();
-    const TrackDanger danger = track_danger(out.plan, evasions.volume(), kStep);
-    std::string why;
-    const std::optional<EvasionStretch> stretch = goal_points(danger, next->along_m, lead, not_before, &why);
-    if (!stretch) {
-      r.problem = why;
-      out.resolutions.push_back(r);
-      continue;
-    }
-    // The evasion's depth, and departure and rendezvous free at it.
-    double depart = stretch->depart_m, rendezvous = stretch->rendezvous_m, depth = 0.0;
-    bool free_ends = false;
-    for (int attempt = 0; attempt < kAttempts && !free_ends; ++attempt) {
-      depth = deepest_between(danger, out.plan, depart, rendezvous);
-      bool moved = false;
-      while (!evasions.free_at(depth, position_at(out.plan, depart).xy) && depart > not_before) {
+namespace {
+
+// One attempt at resolving `next` on `plan` (the header's steps 1 to 4);
+// fills r and returns the new plan, or none with r.problem set.
+std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironment& env, Evasions& evasions,
+                                   const MissionPlan& plan, const Conflict& next, double not_before, Resolution& r) {
+  const PlanPosition at_conflict = position_at(plan, next.along_m);
+  const double speed = std::max(at_conflict.speed_mps, 1e-3);
+  const double lead = 2.0 * turn_radius(mission.vehicle, speed) + evasions.zone_margin();
+  // The vehicle climbs at most this much per metre ahead; the last leg must leave it room.
+  const double climb_per_m = mission.vehicle.max_vertical_speed_mps / speed;
+  const TrackDanger danger = track_danger(plan, evasions.volume(), kStep);
+  std::string why;
+  const std::optional<EvasionStretch> stretch = goal_points(danger, next.along_m, lead, not_before, &why);
+  if (!stretch) {
+    r.problem = why;
+    return std::nullopt;
+  }
+  double depart = stretch->depart_m, rendezvous = stretch->rendezvous_m;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    // The evasion's depth, and departure and rendezvous free at it (moving
+    // them may reach deeper water: then again).
+    double depth = deepest_between(danger, plan, depart, rendezvous);
+    for (int settle = 0; settle < kAttempts; ++settle) {
+      while (!evasions.free_at(depth, position_at(plan, depart).xy) && depart > not_before) {
         depart = std::max(not_before, depart - kStep);
-        moved = true;
       }
-      while (!evasions.free_at(depth, position_at(out.plan, rendezvous).xy) && rendezvous < out.plan.length_m) {
-        rendezvous = std::min(out.plan.length_m, rendezvous + kStep);
-        moved = true;
+      while (!evasions.free_at(depth, position_at(plan, rendezvous).xy) && rendezvous < plan.length_m) {
+        rendezvous = std::min(plan.length_m, rendezvous + kStep);
       }
-      free_ends = !moved || (evasions.free_at(depth, position_at(out.plan, depart).xy) &&
-                             evasions.free_at(depth, position_at(out.plan, rendezvous).xy) &&
-                             deepest_between(danger, out.plan, depart, rendezvous) <= depth);
+      const double deeper = deepest_between(danger, plan, depart, rendezvous);
+      if (deeper <= depth) break;
+      depth = deeper;
     }
-    const PlanPosition from = position_at(out.plan, depart), to = position_at(out.plan, rendezvous);
-    if (!evasions.free_at(depth, from.xy) || !evasions.free_at(depth, to.xy)) {
+    const PlanPosition from = position_at(plan, depart), to = position_at(plan, rendezvous);
+    if (deepest_between(danger, plan, depart, rendezvous) > depth || !evasions.free_at(depth, from.xy) ||
+        !evasions.free_at(depth, to.xy)) {
       r.problem = "no free water at " + metres(depth) + " on the route before or after it to leave from or rejoin at";
-      out.resolutions.push_back(r);
-      continue;
+      return std::nullopt;
     }
-    if (holds_within(out.plan, depart, rendezvous)) {
+    if (holds_within(plan, depart, rendezvous)) {
       r.problem = "evading it would skip a hold (a GPS fix or an alignment) between " + at_text(from.xy) + " and " +
                   at_text(to.xy);
-      out.resolutions.push_back(r);
-      continue;
+      return std::nullopt;
     }
     std::vector<Vec2> points;
     std::vector<char> lap{0};
     if (r.reaction == ControlRules::Reaction::identify) {
-      const Ellipse& object = env.obstacles.ellipses[next->obstacle].footprint;
+      const Ellipse& object = env.obstacles.ellipses[next.obstacle].footprint;
       const std::vector<Vec2> round = identification_lap(object, mission.control.identify_distance_m, from.xy);
       const std::vector<Vec2> in = evasions.route(depth, from.xy, round.front(), r.problem);
       const std::vector<Vec2> on = in.empty() ? in : evasions.route(depth, round.back(), to.xy, r.problem);
-      if (!in.empty() && !on.empty()) {
-        points = in;
-        lap.resize(points.size(), 0);
-        for (std::size_t k = 1; k < round.size(); ++k) {
-          points.push_back(round[k]);
-          lap.push_back(1);
-        }
-        for (std::size_t k = 1; k < on.size(); ++k) {
-          points.push_back(on[k]);
-          lap.push_back(0);
-        }
+      if (in.empty() || on.empty()) return std::nullopt;
+      points = in;
+      lap.resize(points.size(), 0);
+      for (std::size_t k = 1; k < round.size(); ++k) {
+        points.push_back(round[k]);
+        lap.push_back(1);
+      }
+      for (std::size_t k = 1; k < on.size(); ++k) {
+        points.push_back(on[k]);
+        lap.push_back(0);
       }
     } else {
       points = evasions.route(depth, from.xy, to.xy, r.problem);
       lap.resize(points.size(), 0);
     }
-    if (points.size() < 2) {
-      out.resolutions.push_back(r);
+    std::vector<BasicManoeuvre> lines = evasion_lines(points, lap, from, to, depth, plan.basics[from.basic].source);
+    if (lines.empty()) {
+      if (r.problem.empty()) r.problem = "the evasion has no length (departure and rendezvous coincide)";
+      return std::nullopt;
+    }
+    // Climbing back to the rendezvous's depth on the last line must suit the vehicle.
+    const BasicManoeuvre& last = lines.back();
+    const double climb = last.from_depth_m - last.depth_m;
+    if (climb > climb_per_m * last.length_m + 1e-9 && rendezvous < plan.length_m && attempt + 1 < kAttempts) {
+      rendezvous = std::min(plan.length_m, rendezvous + climb / climb_per_m - last.length_m + kStep);
       continue;
     }
-    std::vector<BasicManoeuvre> lines =
-        evasion_lines(points, lap, from, to, depth, out.plan.basics[from.basic].source);
     double length = 0.0;
     for (const BasicManoeuvre& b : lines) length += b.length_m;
-    MissionPlan spliced = splice_plan(out.plan, depart, rendezvous, std::move(lines));
+    MissionPlan spliced = splice_plan(plan, depart, rendezvous, std::move(lines));
     const double rejoin = depart + length;
     // The evasion must leave nothing between departure and rendezvous.
     const std::vector<Conflict> after = observe_collisions(spliced, env.obstacles, env.floor.get(), evasions.observe());
@@ -266,17 +261,75 @@ PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& en
     });
     if (still != after.end()) {
       r.problem = "the evasive route still meets " + still->with + " at " + at_text(still->where);
-      out.resolutions.push_back(r);
-      continue;
+      return std::nullopt;
     }
     r.resolved = true;
     r.depart_m = depart;
     r.rendezvous_m = rejoin;
     r.depth_m = depth;
     r.added_m = length - (rendezvous - depart);
+    r.problem.clear();
+    return spliced;
+  }
+  if (r.problem.empty()) r.problem = "no evasion found that lets the vehicle climb back to the route in time";
+  return std::nullopt;
+}
+
+}  // namespace
+
+PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial) {
+  Evasions evasions(mission, env);
+  PlannedMission out;
+  out.plan = initial;
+  double not_before = 0.0;  // the end of the last evasion
+  // Conflicts found unresolvable, by obstacle and where they begin: the plan
+  // before not_before no longer changes, so these stay valid.
+  std::set<std::pair<std::size_t, double>> given_up;
+  for (;;) {
+    const std::vector<Conflict> conflicts =
+        observe_collisions(out.plan, env.obstacles, env.floor.get(), evasions.observe());
+    const auto next = std::find_if(conflicts.begin(), conflicts.end(), [&](const Conflict& c) {
+      return c.along_m >= not_before && !given_up.count({c.obstacle, c.along_m});
+    });
+    if (next == conflicts.end()) break;
+    Resolution r;
+    r.conflict = *next;
+    r.reaction = next->obstacle == kSeaFloor ? ControlRules::Reaction::evade
+                                             : choose_reaction(mission.control, env.obstacles, next->obstacle);
+    r.time_s = position_at(out.plan, next->along_m).time_s;
+    std::optional<MissionPlan> resolved;
+    try {
+      resolved = resolve(mission, env, evasions, out.plan, *next, not_before, r);
+    } catch (const InputError& e) {  // e.g. the sea floor's no-go polygons at that depth
+      r.problem = e.what();
+    }
+    if (!resolved) {
+      given_up.insert({next->obstacle, next->along_m});
+      out.resolutions.push_back(r);
+      continue;
+    }
+    // Conflicts the same stretch took care of (their dangers joined this one's) are said so.
+    const double rendezvous_before = r.rendezvous_m - r.added_m;  // in the plan before the splice
+    for (const Conflict& c : conflicts) {
+      if (&c == &*next || c.along_m < r.depart_m || c.along_m > rendezvous_before) continue;
+      if (given_up.count({c.obstacle, c.along_m})) continue;
+      Resolution with = r;
+      with.conflict = c;
+      with.time_s = position_at(out.plan, c.along_m).time_s;
+      with.added_m = 0.0;
+      const bool wanted = c.obstacle != kSeaFloor &&
+                          choose_reaction(mission.control, env.obstacles, c.obstacle) == ControlRules::Reaction::identify;
+      with.note = std::string(wanted && r.reaction != ControlRules::Reaction::identify ? "to identify, but " : "") +
+                  (r.reaction == ControlRules::Reaction::identify ? "passed" : "evaded") + " with " + next->with +
+                  " (their dangers join)";
+      with.reaction = r.reaction;
+      out.resolutions.push_back(with);
+    }
     out.resolutions.push_back(r);
-    out.plan = std::move(spliced);
-    not_before = rejoin;
+    std::stable_sort(out.resolutions.begin(), out.resolutions.end(),
+                     [](const Resolution& a, const Resolution& b) { return a.time_s < b.time_s; });
+    out.plan = std::move(*resolved);
+    not_before = r.rendezvous_m;
   }
   out.remaining = observe_collisions(out.plan, env.obstacles, env.floor.get(), evasions.observe());
   return out;

@@ -427,12 +427,15 @@ NoGoArea compute_no_go(const SeaFloor& floor, const LocalFrame& frame, const NoG
   }
 
   gdal::ensure_registered();
+  gdal::QuietErrors quiet;
+  GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
+  if (gtiff == nullptr) throw InputError("sea floor: expected GDAL's GTiff driver");
   static std::atomic<unsigned long> serial{0};
   const std::string path = "/vsimem/deepguide_sea_floor_" + std::to_string(::getpid()) + "_" +
                            std::to_string(serial++) + ".tif";
   {
-    GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-        path.c_str(), static_cast<int>(w), static_cast<int>(h), 1, GDT_Float32, nullptr));
+    GDALDatasetUniquePtr ds(
+        gtiff->Create(path.c_str(), static_cast<int>(w), static_cast<int>(h), 1, GDT_Float32, nullptr));
     if (!ds) throw InputError("sea floor: expected room for an in-memory copy of " + std::to_string(w * h) + " cells");
     double transform[6] = {floor.origin().x(), floor.spacing(), 0.0,
                            floor.origin().y() + floor.spacing() * static_cast<double>(h), 0.0, -floor.spacing()};
