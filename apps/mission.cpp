@@ -18,6 +18,8 @@
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/render/mission_figure.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
+#include "deepguide/simulation/mission_run.hpp"
+#include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -165,8 +167,10 @@ void throw_if_unresolved(const std::string& file, const Loaded& l, const Planned
 
 }  // namespace
 
+void register_mission_simulate(CLI::App& mission);
+
 void register_mission(CLI::App& app) {
-  CLI::App* mission = app.add_subcommand("mission", "Mission plans: check (basic manoeuvres and conflicts), plan (conflicts evaded or identified), export (the plan for the vehicle or ground station)");
+  CLI::App* mission = app.add_subcommand("mission", "Mission plans: check (basic manoeuvres and conflicts), plan (conflicts evaded or identified), export (the plan for the vehicle or ground station), simulate (the two-level guidance)");
   mission->require_subcommand(1);
   auto o = std::make_shared<MissionOptions>();
   CLI::App* check = mission->add_subcommand(
@@ -318,6 +322,90 @@ void register_mission(CLI::App& app) {
     const std::size_t waypoints = export_waypoints(l.mission, plan, e->tolerance).size();
     std::printf("wrote %s (%s): %zu basic manoeuvres, %zu waypoints, %.0f m\n", e->output.c_str(),
                 to_string(format).c_str(), plan.basics.size(), waypoints, plan.length_m);
+  });
+  register_mission_simulate(*mission);
+}
+
+void register_mission_simulate(CLI::App& mission) {
+  struct Options {
+    std::string mission, render;
+    std::vector<std::string> unknown;
+    std::uint64_t seed = 1;
+    double delay = 5.0;
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = mission.add_subcommand(
+      "simulate", "Sail the planned mission in simulation: the plan level follows it, the sonar finds objects nobody "
+                  "knew, the reactive level evades them while the route is repaired (the seed's Fig. 4)");
+  cmd->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
+  cmd->add_option("--unknown", o->unknown, "Obstacle files of objects nobody knew (the simulation's truth only)");
+  cmd->add_option("--seed", o->seed, "The sonar's noise")->capture_default_str();
+  cmd->add_option("--planning-delay", o->delay, "Seconds the evasion planner takes on the vehicle")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 600.0));
+  cmd->add_option("--render", o->render, "Also draw the mission and the track sailed (.png or .svg)");
+  cmd->add_flag("--json", o->json, "Print the result as JSON");
+  cmd->callback([o] {
+    const Loaded l = load(o->mission);
+    const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
+    throw_if_unresolved(o->mission, l, planned);
+    ObstacleSet unknown;
+    if (!o->unknown.empty()) unknown = load_obstacles(o->unknown, {l.mission.frame.id(), ""}).obstacles;
+    MissionRunOptions options;
+    options.seed = o->seed;
+    options.planning_delay_s = o->delay;
+    const MissionRun run = run_mission(l.mission, l.env, planned.plan, unknown, options);
+    const auto lonlat = [&](const Vec2& p) { return l.mission.frame.to_lonlat(p); };
+    if (o->json) {
+      nlohmann::json events = nlohmann::json::array();
+      for (const MissionEvent& e : run.events) {
+        const Vec2 ll = lonlat(e.where);
+        events.push_back({{"time_s", e.time_s}, {"lon", ll.x()}, {"lat", ll.y()}, {"what", e.what}, {"alarm", e.alarm}});
+      }
+      const nlohmann::json j = {{"mission", l.mission.name},   {"completed", run.completed},
+                                {"collided", run.collided},    {"time_s", run.time_s},
+                                {"length_m", run.length_m},    {"min_clearance_m", run.min_clearance_m},
+                                {"replans", run.replans},      {"detected", run.detected.size()},
+                                {"events", events}};
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::printf("mission          %s: %s in %s, %.0f m sailed; %zu unknown object(s) found, %zu replan(s)\n",
+                  l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock(run.time_s).c_str(),
+                  run.length_m, run.detected.size(), run.replans);
+      if (std::isfinite(run.min_clearance_m)) {
+        std::printf("clearance        %.1f m at least to the footprints of obstacles the vehicle was not above\n", run.min_clearance_m);
+      }
+      for (const MissionEvent& e : run.events) {
+        const Vec2 ll = lonlat(e.where);
+        std::printf("%8s  %.5f, %.5f  %s%s\n", clock(e.time_s).c_str(), ll.x(), ll.y(), e.alarm ? "ALARM: " : "",
+                    e.what.c_str());
+      }
+    }
+    if (!o->render.empty()) {
+      MissionFigure f;
+      f.charts = l.mission.charts;
+      f.obstacles = l.mission.obstacles;
+      f.crs = l.mission.frame.id();
+      f.plan = &run.plan;
+      f.written = &l.plan;
+      for (const Resolution& r : planned.resolutions) f.conflicts.push_back(r.conflict.where);
+      for (const MissionSample& p : run.track) f.track.push_back(p.position);
+      f.detected = &run.detected;
+      char title[256];
+      std::snprintf(title, sizeof title, "%s, simulated: %s in %s, %zu unknown object(s), %zu replan(s)",
+                    l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock(run.time_s).c_str(),
+                    run.detected.size(), run.replans);
+      f.title = title;
+      render_mission(f, o->render);
+    }
+    for (const MissionEvent& e : run.events) {
+      if (!e.alarm) continue;
+      const Vec2 ll = lonlat(e.where);
+      char where[128];
+      std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f: ", clock(e.time_s).c_str(), ll.x(), ll.y());
+      throw NoRouteError(o->mission + ": simulation" + where + e.what);
+    }
   });
 }
 

@@ -12,10 +12,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/mission/export_writers.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/plan_export.hpp"
 #include "test_support.hpp"
@@ -25,7 +27,7 @@ using deepguide::test::ScratchDir;
 
 namespace {
 
-constexpr double kDeg = 1e-6;  // degrees
+constexpr double kDeg = 1e-7;  // degrees (1 cm in latitude; the acceptance asks 1e-6)
 constexpr double kCm = 0.01;   // metres
 
 struct Sample {
@@ -51,14 +53,16 @@ std::string exported(ScratchDir& dir, const std::string& name) {
   return path;
 }
 
-// Lon, lat, depth of each point read back, against the waypoints.
-void expect_waypoints(const std::vector<Eigen::Vector3d>& got, const char* format) {
+// Lon, lat, depth of each point read back, against the waypoints (depths
+// as `depth_of` says the format carries them; default: on arrival).
+void expect_waypoints(const std::vector<Eigen::Vector3d>& got, const char* format,
+                      const std::function<double(std::size_t)>& depth_of = {}) {
   const std::vector<ExportWaypoint>& want = sample().waypoints;
   ASSERT_EQ(got.size(), want.size()) << format;
   for (std::size_t i = 0; i < want.size(); ++i) {
     ASSERT_NEAR(got[i].x(), want[i].lonlat.x(), kDeg) << format << " " << i;
     ASSERT_NEAR(got[i].y(), want[i].lonlat.y(), kDeg) << format << " " << i;
-    ASSERT_NEAR(got[i].z(), want[i].depth_m, kCm) << format << " " << i;
+    ASSERT_NEAR(got[i].z(), depth_of ? depth_of(i) : want[i].depth_m, kCm) << format << " " << i;
   }
 }
 
@@ -135,6 +139,12 @@ TEST(PlanExport, QGroundControlPlanFollowsItsFormat) {
   const auto& mission = j.at("mission");
   EXPECT_EQ(mission.at("version"), 2);
   EXPECT_EQ(mission.at("vehicleType"), 12);  // MAV_TYPE_SUBMARINE
+  EXPECT_EQ(mission.at("firmwareType"), 3);  // ArduPilot
+  EXPECT_EQ(j.at("groundStation"), "QGroundControl");
+  EXPECT_EQ(j.at("geoFence").at("version"), 2);
+  EXPECT_EQ(j.at("rallyPoints").at("version"), 2);
+  ASSERT_EQ(mission.at("plannedHomePosition").size(), 3u);
+  EXPECT_NEAR(mission.at("plannedHomePosition")[0].get<double>(), sample().waypoints.front().lonlat.y(), kDeg);
   std::vector<Eigen::Vector3d> got;
   double speed = -1.0;
   std::size_t k = 0;
@@ -151,6 +161,8 @@ TEST(PlanExport, QGroundControlPlanFollowsItsFormat) {
     ASSERT_LT(k, sample().waypoints.size());
     EXPECT_NEAR(speed, sample().waypoints[k].speed_mps, 1e-9) << k;
     EXPECT_NEAR(p[0].get<double>(), sample().waypoints[k].hold_s, 1e-9) << k;
+    // ArduSub reads an altitude of 0 as "keep the depth": the surface is 1 cm deep.
+    EXPECT_LT(p[6].get<double>(), 0.0) << k;
     got.emplace_back(p[5].get<double>(), p[4].get<double>(), -p[6].get<double>());
     ++k;
   }
@@ -203,6 +215,7 @@ TEST(PlanExport, MoosBehavioursReadBackInLocalCoordinates) {
   std::string line;
   double lat0 = NAN, lon0 = NAN;
   std::vector<Eigen::Vector3d> local;  // x, y, depth
+  std::vector<int> conditions, endflags;
   std::size_t leg_start = 0;
   while (std::getline(in, line)) {
     const auto value = [&](const char* key) -> std::optional<std::string> {
@@ -226,16 +239,36 @@ TEST(PlanExport, MoosBehavioursReadBackInLocalCoordinates) {
     if (auto v = value("  depth     ")) {
       for (std::size_t i = leg_start; i < local.size(); ++i) local[i].z() = std::stod(*v);
     }
+    // Legs run in order: leg N's endflag starts leg N + 1.
+    const auto last_value = [&](const char* key) -> std::optional<int> {
+      if (line.find(key) == std::string::npos) return std::nullopt;
+      return std::stoi(line.substr(line.rfind('=') + 1));
+    };
+    if (auto v = last_value("condition = DG_LEG")) conditions.push_back(*v);
+    if (auto v = last_value("endflag   = DG_LEG")) endflags.push_back(*v);
   }
+  ASSERT_FALSE(endflags.empty());
+  for (std::size_t i = 0; i < endflags.size(); ++i) EXPECT_EQ(endflags[i], static_cast<int>(i) + 2) << i;
   ASSERT_TRUE(std::isfinite(lat0) && std::isfinite(lon0));
-  const LocalFrame utm = LocalFrame::utm_for(lon0, lat0);
+  // Kiel lies in zone 32 by either rule; MOOSGeodesy's exceptions are tested below.
+  const LocalFrame utm = LocalFrame::from_user_crs("EPSG:32632");
   const Vec2 origin = utm.from_lonlat(lon0, lat0);
   std::vector<Eigen::Vector3d> got{{lon0, lat0, sample().waypoints.front().depth_m}};  // the start is the origin
   for (const Eigen::Vector3d& p : local) {
     const Vec2 ll = utm.to_lonlat(origin + p.head<2>());
     got.emplace_back(ll.x(), ll.y(), p.z());
   }
-  expect_waypoints(got, "moos");
+  // A leg holds the shallower depth of its ends (the vehicle dives late and
+  // climbs early); a point (a hold, a dive in place) its own.
+  const auto& w = sample().waypoints;
+  expect_waypoints(got, "moos", [&](std::size_t i) {
+    if (i == 0 || w[i].hold_s > 0.0 || (w[i].xy - w[i - 1].xy).norm() < 1e-6) return w[i].depth_m;
+    return std::min(w[i].depth_m, w[i - 1].depth_m);
+  });
+  // MOOSGeodesy's zones: Norway's 32V at 60 N 5 E (31 by the plain rule), Svalbard's 33X at 78 N 15 E.
+  EXPECT_EQ(detail::moos_local_utm(5.0, 60.0).id(), "EPSG:32632");
+  EXPECT_EQ(detail::moos_local_utm(15.0, 78.0).id(), "EPSG:32633");
+  EXPECT_EQ(detail::moos_local_utm(10.2, 54.4).id(), "EPSG:32632");
 }
 
 TEST(PlanExport, OurYamlReadsBackAsTheBasicManoeuvres) {
@@ -283,11 +316,23 @@ TEST(PlanExport, WritesAreAtomicAndNeverReplaceWithoutOverwrite) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "precious");
   export_plan(s.mission, s.plan, path, ExportFormat::gpx, {0.5, true});
   EXPECT_GT(std::filesystem::file_size(path), 1000u);
-  // A failed write leaves nothing behind: csv needs a .csv name.
-  EXPECT_THROW(export_plan(s.mission, s.plan, dir.file("plan.txt"), ExportFormat::csv), InputError);
+  // A failed write leaves nothing behind, and an old file as it was: csv needs a .csv name.
+  const std::string old_file = dir.write("plan.txt", "old");
+  EXPECT_THROW(export_plan(s.mission, s.plan, old_file, ExportFormat::csv, {0.5, true}), InputError);
+  std::ifstream old_kept(old_file);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(old_kept), {}), "old");
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
-  EXPECT_EQ(files, 1u);
+  EXPECT_EQ(files, 2u);
+  export_plan(s.mission, s.plan, dir.file("UPPER.CSV"), ExportFormat::csv);  // the extension in any case
+  // Errors name the user's file, never the temporary one.
+  try {
+    export_plan(s.mission, s.plan, "/proc/plan.geojson", ExportFormat::geojson);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find(".tmp"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+  }
   EXPECT_THROW(export_plan(s.mission, s.plan, dir.file("no/such/folder/plan.gpx"), ExportFormat::gpx), InputError);
   EXPECT_THROW(parse_export_format("shapefile"), InputError);
   EXPECT_THROW(export_format_for("plan.docx"), InputError);

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+
 #include <atomic>
 #include <string>
 #include <system_error>
@@ -36,8 +38,19 @@ AtomicOutput::~AtomicOutput() {
   }
 }
 
-void AtomicOutput::commit() {
+void AtomicOutput::commit(bool replace) {
   std::error_code ec;
+  if (!replace) {
+    if (::link(temp_.c_str(), destination_.c_str()) == 0) {
+      fs::remove(temp_, ec);
+      committed_ = true;
+      return;
+    }
+    if (errno == EEXIST) {
+      throw InputError(destination_.string() + ": expected a new file, got one that exists (give --overwrite to replace it)");
+    }
+    // A file system without hard links: the plain rename (checked for existence before writing).
+  }
   fs::rename(temp_, destination_, ec);
   if (ec) {
     throw InputError(destination_.string() + ": could not write the file (" + ec.message() + ")");

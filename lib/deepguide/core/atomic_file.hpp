@@ -19,8 +19,11 @@ class AtomicOutput {
   const std::filesystem::path& temp_path() const { return temp_; }
   const std::filesystem::path& destination() const { return destination_; }
 
-  /// Renames the temporary file onto the destination.
-  void commit();
+  /// Renames the temporary file onto the destination. With replace false an
+  /// existing destination is never replaced, even one that appeared while
+  /// writing (a hard link, which fails on an existing name, then the
+  /// temporary name removed): InputError saying so.
+  void commit(bool replace = true);
 
  private:
   std::filesystem::path destination_;

@@ -3,6 +3,7 @@
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -104,7 +105,9 @@ void write_kml(const std::string& path, const ExportInput& in) {
 
 void write_csv(const std::string& path, const ExportInput& in) {
   // GDAL's CSV driver makes a folder of files for any other name.
-  if (std::filesystem::path(path).extension() != ".csv") {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".csv") {
     throw InputError(in.destination + ": expected a .csv file name for the csv format");
   }
   GDALDatasetUniquePtr ds = create(path, "CSV", in);

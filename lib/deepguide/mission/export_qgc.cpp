@@ -3,10 +3,12 @@
 // Each waypoint is MAV_CMD_NAV_WAYPOINT (16) in MAV_FRAME_GLOBAL_RELATIVE_ALT
 // (3): params [hold s, acceptance radius m, pass radius m, yaw (null: keep),
 // lat, lon, altitude], the altitude being minus the depth, as ArduSub reads a
-// depth. Before the first waypoint and wherever the speed changes,
+// depth. ArduSub takes an altitude of exactly 0 as "keep the current
+// altitude", so a point at the surface (a GPS fix) is written 1 cm deep. Before the first waypoint and wherever the speed changes,
 // MAV_CMD_DO_CHANGE_SPEED (178): params [speed type 1 (ground speed), m/s,
 // throttle -1 (no change), 0, 0, 0, 0]. The vehicle type is MAV_TYPE_SUBMARINE
 // (12), the firmware ArduPilot (3); the planned home is the start at the surface.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -24,6 +26,9 @@ constexpr int kFrameMission = 2;
 constexpr int kSubmarine = 12;
 constexpr int kArduPilot = 3;
 constexpr double kAcceptanceRadius_m = 2.0;
+constexpr double kSurface_m = 0.01;  // the header: 0 would mean "stay at the current depth"
+
+double altitude(double depth_m) { return -std::max(depth_m, kSurface_m); }
 
 nlohmann::json item(int id, int command, int frame, const nlohmann::json& params, double altitude) {
   return {{"AMSLAltAboveTerrain", nullptr},
@@ -51,8 +56,8 @@ void write_plan_qgc(const std::string& path, const ExportInput& in) {
       items.push_back(item(id++, kChangeSpeed, kFrameMission, {1, speed, -1, 0, 0, 0, 0}, 0.0));
     }
     items.push_back(item(id++, kNavWaypoint, kFrameGlobalRelativeAlt,
-                         {w.hold_s, kAcceptanceRadius_m, 0, nullptr, w.lonlat.y(), w.lonlat.x(), 0.0 - w.depth_m},
-                         0.0 - w.depth_m));
+                         {w.hold_s, kAcceptanceRadius_m, 0, nullptr, w.lonlat.y(), w.lonlat.x(), altitude(w.depth_m)},
+                         altitude(w.depth_m)));
   }
   const ExportWaypoint& start = in.waypoints.front();
   const nlohmann::json plan = {

@@ -10,6 +10,7 @@
 // Positions have 9 decimals (0.1 mm); RTZ has no depth, so it goes in the
 // extension, which chart systems that do not know it skip.
 #include <libxml/tree.h>
+#include <libxml/xmlerror.h>
 #include <libxml/xmlsave.h>
 
 #include <cstdio>
@@ -29,6 +30,8 @@ std::string num(double v, int digits) {
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
   return buf;
 }
+
+void quiet(void*, const char*, ...) {}
 
 void set(xmlNodePtr node, const char* name, const std::string& value) { xmlNewProp(node, x(name), x(value.c_str())); }
 
@@ -64,9 +67,10 @@ void write_plan_rtz(const std::string& path, const ExportInput& in) {
     xmlNewChild(ext, ns, x("depth_m"), x(num(w.depth_m, 3).c_str()));
     xmlNewChild(ext, ns, x("hold_s"), x(num(w.hold_s, 1).c_str()));
   }
-  if (xmlSaveFormatFileEnc(path.c_str(), doc.get(), "UTF-8", 1) < 0) {
-    throw InputError(in.destination + ": could not write the RTZ file");
-  }
+  xmlSetGenericErrorFunc(nullptr, quiet);  // the failure is our one-line error, not libxml2's lines on stderr
+  const int written = xmlSaveFormatFileEnc(path.c_str(), doc.get(), "UTF-8", 1);
+  xmlSetGenericErrorFunc(nullptr, nullptr);
+  if (written < 0) throw InputError(in.destination + ": could not write the RTZ file");
 }
 
 }  // namespace deepguide::detail

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "deepguide/mission/plan_export.hpp"
+#include "deepguide/world/local_frame.hpp"
 
 namespace deepguide::detail {
 
@@ -21,5 +22,9 @@ void write_plan_ogr(const std::string& path, ExportFormat format, const ExportIn
 void write_plan_qgc(const std::string& path, const ExportInput& in);
 void write_plan_moos(const std::string& path, const ExportInput& in);
 void write_plan_rtz(const std::string& path, const ExportInput& in);
+
+/// The frame MOOSGeodesy's LatLong2LocalUTM works in for an origin: its UTM
+/// zone as the classic LLtoUTM picks it (Norway's 32V and Svalbard's zones included).
+LocalFrame moos_local_utm(double lon_deg, double lat_deg);
 
 }  // namespace deepguide::detail

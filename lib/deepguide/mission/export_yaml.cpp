@@ -69,6 +69,7 @@ void write_plan_yaml(const std::string& path, const ExportInput& in) {
       emit_xy(e, "centre", b.centre);
       e << YAML::Key << "radius_m" << YAML::Value << num(b.radius_m);
       e << YAML::Key << "turn" << YAML::Value << (b.turn > 0 ? "left" : "right");
+      e << YAML::Key << "length_m" << YAML::Value << num(b.length_m);  // a sweep near 0 or 2 pi is not recomputed
     }
     e << YAML::Key << "from_depth_m" << YAML::Value << num(b.from_depth_m);
     e << YAML::Key << "depth_m" << YAML::Value << num(b.depth_m);
@@ -112,8 +113,8 @@ MissionPlan read_plan_yaml(const std::string& path) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string prefix = "basic_manoeuvres[" + std::to_string(i) + "].";
     const Mapping m(list[i], path, prefix,
-                    {"kind", "from", "to", "centre", "radius_m", "turn", "from_depth_m", "depth_m", "speed_mps", "hold_s",
-                     "role", "manoeuvre"},
+                    {"kind", "from", "to", "centre", "radius_m", "turn", "length_m", "from_depth_m", "depth_m", "speed_mps",
+                     "hold_s", "role", "manoeuvre"},
                     "a basic manoeuvre mapping");
     BasicManoeuvre b;
     const std::string kind = m.text("kind", "line, arc or point");
@@ -132,11 +133,13 @@ MissionPlan read_plan_yaml(const std::string& path) {
       const std::string turn = m.text("turn", "left or right");
       if (turn != "left" && turn != "right") throw input_error(m.where("turn"), "left or right", "'" + printable(turn) + "'");
       b.turn = turn == "left" ? 1 : -1;
-      const Vec2 a = b.from - b.centre, c = b.to - b.centre;
-      double sweep = std::atan2(a.x() * c.y() - a.y() * c.x(), a.dot(c));
-      if (b.turn > 0 && sweep < 0.0) sweep += 2.0 * M_PI;
-      if (b.turn < 0 && sweep > 0.0) sweep -= 2.0 * M_PI;
-      b.length_m = std::abs(sweep) * b.radius_m;
+      b.length_m = m.number("length_m", {0.0, 2.0 * M_PI * b.radius_m + 1e-3, true, "the arc's length in metres"});
+      for (const Vec2& end : {b.from, b.to}) {
+        if (std::abs((end - b.centre).norm() - b.radius_m) > 1e-3) {
+          throw input_error(m.where("radius_m"), "the distance from centre to from and to (within 1 mm)",
+                            yaml_number(b.radius_m));
+        }
+      }
     } else if (b.kind == BasicManoeuvre::Kind::line) {
       b.length_m = (b.to - b.from).norm();
     } else {

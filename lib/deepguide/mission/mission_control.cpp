@@ -277,11 +277,12 @@ std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironm
 
 }  // namespace
 
-PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial) {
+PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial,
+                            double from_m) {
   Evasions evasions(mission, env);
   PlannedMission out;
   out.plan = initial;
-  double not_before = 0.0;  // the end of the last evasion
+  double not_before = std::max(0.0, from_m);  // the end of the last evasion
   // Conflicts found unresolvable, by obstacle and where they begin: the plan
   // before not_before no longer changes, so these stay valid.
   std::set<std::pair<std::size_t, double>> given_up;
@@ -332,6 +333,7 @@ PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& en
     not_before = r.rendezvous_m;
   }
   out.remaining = observe_collisions(out.plan, env.obstacles, env.floor.get(), evasions.observe());
+  std::erase_if(out.remaining, [&](const Conflict& c) { return c.along_m < from_m; });
   return out;
 }
 

@@ -63,7 +63,10 @@ ObservationOptions observation_options(const Mission& mission);
 /// conflict, or an object that is not an elliptic cylinder, is evaded).
 ControlRules::Reaction choose_reaction(const ControlRules& rules, const ObstacleSet& obstacles, std::size_t obstacle);
 
-/// Resolves the conflicts of `initial` (the header).
-PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& environment, const MissionPlan& initial);
+/// Resolves the conflicts of `initial` (the header) that begin `from_m` or
+/// more along it (a vehicle under way replans only what lies ahead of it;
+/// evasions leave from there at the earliest).
+PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& environment, const MissionPlan& initial,
+                            double from_m = 0.0);
 
 }  // namespace deepguide

@@ -1,7 +1,9 @@
 #include "deepguide/mission/plan_export.hpp"
 
 #include <cctype>
+#include <algorithm>
 #include <filesystem>
+#include <regex>
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
@@ -102,17 +104,25 @@ void export_plan(const Mission& mission, const MissionPlan& plan, const std::str
   AtomicOutput out(path);
   const detail::ExportInput in{path, mission, plan, waypoints};
   const std::string temp = out.temp_path().string();
-  switch (format) {
-    case ExportFormat::yaml: detail::write_plan_yaml(temp, in); break;
-    case ExportFormat::geojson:
-    case ExportFormat::gpx:
-    case ExportFormat::kml:
-    case ExportFormat::csv: detail::write_plan_ogr(temp, format, in); break;
-    case ExportFormat::qgc_plan: detail::write_plan_qgc(temp, in); break;
-    case ExportFormat::moos: detail::write_plan_moos(temp, in); break;
-    case ExportFormat::rtz: detail::write_plan_rtz(temp, in); break;
+  try {
+    switch (format) {
+      case ExportFormat::yaml: detail::write_plan_yaml(temp, in); break;
+      case ExportFormat::geojson:
+      case ExportFormat::gpx:
+      case ExportFormat::kml:
+      case ExportFormat::csv: detail::write_plan_ogr(temp, format, in); break;
+      case ExportFormat::qgc_plan: detail::write_plan_qgc(temp, in); break;
+      case ExportFormat::moos: detail::write_plan_moos(temp, in); break;
+      case ExportFormat::rtz: detail::write_plan_rtz(temp, in); break;
+    }
+  } catch (const InputError& e) {
+    // Name the user's file, not the temporary ones (GDAL's messages quote them), on one line.
+    static const std::regex temporary(R"([^ :'"]*\.tmp[0-9]+-[0-9]+[^ :'"]*)");
+    std::string what = std::regex_replace(e.what(), temporary, path);
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    throw InputError(what);
   }
-  out.commit();
+  out.commit(options.overwrite);
 }
 
 }  // namespace deepguide

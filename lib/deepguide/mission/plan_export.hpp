@@ -11,18 +11,21 @@
 //             mission's CRS), read back by read_plan_yaml
 //   geojson   the route line and one point per waypoint (planning/route_io.hpp)
 //   gpx       a GPX 1.1 route (rte/rtept), elevation = -depth
-//   kml       the route as a LineString (altitude = -depth, absolute) and the waypoints
+//   kml       the route as a LineString (altitude = -depth; GDAL writes no
+//             altitudeMode, so viewers draw it clamped to the ground) and the waypoints
 //   csv       one row per waypoint: lon, lat, x, y, depth, speed, hold, along, time, role
 //   plan      QGroundControl's plan file: MAV_CMD_NAV_WAYPOINT (16) items in
 //             MAV_FRAME_GLOBAL_RELATIVE_ALT (3) with depth as negative
-//             altitude (as ArduSub reads them), hold in param 1; speed changes
+//             altitude (as ArduSub reads them; the surface as 1 cm deep, since
+//             ArduSub reads 0 as "keep the depth"), hold in param 1; speed changes
 //             as MAV_CMD_DO_CHANGE_SPEED (178); vehicle type submarine
 //   moos      a pHelmIvP behaviour file: per leg of one depth and speed a
 //             BHV_Waypoint (`points = x,y : ...` in local coordinates: metres
 //             east and north of the origin in its UTM zone, as MOOSGeodesy's
 //             LatLong2LocalUTM) and a BHV_ConstantDepth, holds as
 //             BHV_StationKeep, legs chained by DG_LEG; the origin (the start)
-//             is in the header for the .moos file's LatOrigin/LongOrigin
+//             is in the header for the .moos file's LatOrigin/LongOrigin; a
+//             leg holds the shallower depth of its two ends
 //   rtz       IEC 61174 RTZ 1.0: waypoints with lat/lon and their legs'
 //             speed (knots); depth and hold in a deepguide extension
 // Writes are atomic (a temporary file beside the destination, then a rename)

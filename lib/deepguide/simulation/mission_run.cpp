@@ -1,0 +1,298 @@
+#include "deepguide/simulation/mission_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/mission/plan_splice.hpp"
+#include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/simulation/contacts.hpp"
+#include "deepguide/simulation/plant.hpp"
+#include "deepguide/world/current_field.hpp"
+#include "deepguide/world/water_volume.hpp"
+
+namespace deepguide {
+namespace {
+
+constexpr double kArrival_m = 5.0;
+constexpr double kKnownSlack_m = 10.0;  // a contact this near a known footprint is that obstacle
+constexpr double kSameContact_m = 10.0;
+
+std::string at_text(const Vec2& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.1f, %.1f)", p.x(), p.y());
+  return buf;
+}
+
+// The vehicle's place on the plan: its projection onto the plan's track,
+// searched from a little behind the last place to `window` ahead of it.
+class Cursor {
+ public:
+  explicit Cursor(const MissionPlan& plan) { reset(plan, 0.0); }
+  void reset(const MissionPlan& plan, double along) {
+    track_ = plan_polyline(plan, 0.25);
+    along_ = along;
+  }
+  double along() const { return along_; }
+  void locate(const Vec2& p, double window) {
+    double best = std::numeric_limits<double>::infinity(), at = along_;
+    for (std::size_t k = 0; k + 1 < track_.size(); ++k) {
+      const TrackPoint &a = track_[k], &b = track_[k + 1];
+      if (b.along_m < along_ - 20.0 || a.along_m > along_ + window) continue;
+      const Vec2 d = b.xy - a.xy;
+      const double len2 = d.squaredNorm();
+      const double t = len2 > 0.0 ? std::clamp((p - a.xy).dot(d) / len2, 0.0, 1.0) : 0.0;
+      const double dist = (a.xy + t * d - p).norm();
+      if (dist < best) {
+        best = dist;
+        at = a.along_m + t * (b.along_m - a.along_m);
+      }
+    }
+    along_ = std::max(along_, at);  // the vehicle moves on along the plan, never back
+  }
+
+ private:
+  std::vector<TrackPoint> track_;
+  double along_ = 0.0;
+};
+
+Vec2 local_current(const Mission& mission) {
+  if (!mission.current_file.empty()) {
+    throw InputError(mission.source + ": environment.current_file: the mission simulation takes a constant current "
+                                      "(current: SPEED_MPS,DIR_DEG) for now");
+  }
+  if (mission.current.empty()) return Vec2::Zero();
+  const CurrentField c = parse_constant_current(mission.current, mission.source + ": environment.current");
+  const double speed = c.constant_velocity.norm();
+  if (speed == 0.0) return Vec2::Zero();
+  const double dir_deg = std::atan2(c.constant_velocity.x(), c.constant_velocity.y()) * 180.0 / M_PI;
+  const double a = mission.frame.heading_to_local(dir_deg, mission.start);
+  return speed * Vec2(std::cos(a), std::sin(a));
+}
+
+}  // namespace
+
+MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial,
+                       const ObstacleSet& unknown, const MissionRunOptions& options) {
+  MissionRun run;
+  run.plan = initial;
+  if (initial.basics.empty()) return run;
+  // The world: what is known plus what nobody knew.
+  ObstacleSet truth = env.obstacles;
+  truth.ellipses.insert(truth.ellipses.end(), unknown.ellipses.begin(), unknown.ellipses.end());
+  truth.polygons.insert(truth.polygons.end(), unknown.polygons.begin(), unknown.polygons.end());
+  const ObstacleField truth_field(truth, 0.0);
+  const WaterVolume truth_volume(truth_field, env.floor.get(), {0.0, 0.0, std::numeric_limits<double>::infinity()});
+
+  Scenario sc;
+  sc.name = mission.name;
+  sc.source = mission.source;
+  sc.vehicle = mission.vehicle;
+  sc.sonar.seed = options.seed;
+  sc.obstacles = truth.ellipses;
+  sc.current = local_current(mission);
+  sc.depth_m = mission.start_depth_m;
+  sc.reactive.margin_m = mission.margin_m + 0.5;
+  double plan_time = 0.0;
+  for (const BasicManoeuvre& b : initial.basics) plan_time += b.hold_s + (b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0);
+  const double max_time = options.max_time_s > 0.0 ? options.max_time_s : 2.0 * plan_time + 600.0;
+
+  const BasicManoeuvre& first = initial.basics.front();
+  const Vec2 first_to = position_at(initial, std::min(initial.length_m, 10.0)).xy;
+  Plant plant(sc, mission.start, std::atan2((first_to - mission.start).y(), (first_to - mission.start).x()),
+              first.speed_mps);
+  Sonar sonar(sc.sonar);
+  ContactMemory contacts(sc.contacts, sc.sonar);
+  ReactiveMemory memory;
+  Cursor cursor(run.plan);
+  const ObservationOptions observe = observation_options(mission);
+
+  bool reactive = false;
+  double reactive_until = 0.0;
+  double pending_at = 0.0;  // when the planner's evasion is ready
+  Vec2 reactive_target{0.0, 0.0};
+  std::optional<PlannedMission> pending;   // the evasion planned, spliced in when the planner is done
+  std::vector<Vec2> handled;               // centres of unknown contacts already reacted to
+  std::vector<char> held(run.plan.basics.size(), 0);
+  double held_s = 0.0;                     // time spent holding (the plant's clock stops meanwhile)
+  bool inside = false;
+  double next_sample = 0.0;
+  run.min_clearance_m = std::numeric_limits<double>::infinity();
+  Vec2 last = mission.start;
+
+  const auto event = [&](double t, const Vec2& where, std::string what, bool alarm = false) {
+    run.events.push_back({t, where, std::move(what), alarm});
+  };
+
+  for (std::size_t k = 0;; ++k) {
+    plant.at_step(k);
+    const VehicleState& s = plant.state();
+    const double t = s.time_s + held_s;
+    const Vec2 pos = s.position;
+    run.length_m += (pos - last).norm();
+    last = pos;
+    if (!reactive) cursor.locate(pos, 150.0);
+    const PlanPosition here = position_at(run.plan, cursor.along());
+
+    // Truth: clearance and collisions.
+    for (std::size_t i : truth_field.near(pos, pos, 100.0)) {
+      if (truth_volume.zone_top(i) < here.depth_m) run.min_clearance_m = std::min(run.min_clearance_m, truth_field.distance_to(i, pos));
+    }
+    const WaterVolume::Verdict v = truth_volume.check_point({pos.x(), pos.y(), here.depth_m});
+    if (v.blocked && !inside) {
+      run.collided = true;
+      event(t, pos, "COLLISION: the vehicle " + v.reason, true);
+    }
+    inside = v.blocked;
+    if (t >= next_sample) {
+      run.track.push_back({t, pos, here.depth_m, s.heading, cursor.along(), reactive});
+      next_sample = t + options.sample_every_s;
+    }
+    if (!reactive && cursor.along() >= run.plan.length_m - kArrival_m) {
+      run.completed = true;
+      event(t, pos, "reached the end of the plan");
+      break;
+    }
+    if (t >= max_time) {
+      event(t, pos, "time out: the plan's end was not reached", true);
+      break;
+    }
+
+    // Holds: wait at the point (the clock runs on, the vehicle stays).
+    for (std::size_t i = 0; !reactive && i < run.plan.basics.size(); ++i) {
+      const BasicManoeuvre& b = run.plan.basics[i];
+      if (b.start_m > cursor.along()) break;
+      if (b.kind != BasicManoeuvre::Kind::point || held[i]) continue;
+      held[i] = 1;
+      if (b.hold_s > 0.0) {
+        char what[96];
+        std::snprintf(what, sizeof what, "hold %.0f s at %.1f m depth", b.hold_s, b.depth_m);
+        event(t, pos, what);
+        held_s += b.hold_s;
+      }
+    }
+
+    // The sonar, and what it finds that nobody knew.
+    if (sonar.update(t, pos, s.heading, sc.obstacles)) {
+      contacts.update(sonar.detections(), t);
+      for (const Ellipse& c : contacts.ellipses()) {
+        const bool known = std::any_of(env.obstacles.ellipses.begin(), env.obstacles.ellipses.end(), [&](const EllipticCylinder& e) {
+          return (e.footprint.center - c.center).norm() <= e.footprint.a + kKnownSlack_m;
+        });
+        const bool seen = std::any_of(handled.begin(), handled.end(), [&](const Vec2& p) { return (p - c.center).norm() <= kSameContact_m; });
+        if (known || seen || reactive) continue;
+        ObstacleSet contact;
+        EllipticCylinder object;
+        object.id = "unknown-" + std::to_string(handled.size() + 1);
+        object.footprint = c;
+        contact.ellipses.push_back(object);
+        const std::vector<Conflict> ahead = observe_collisions(run.plan, contact, nullptr, observe);
+        const auto danger = std::find_if(ahead.begin(), ahead.end(), [&](const Conflict& x) { return x.along_m > cursor.along(); });
+        if (danger == ahead.end()) continue;
+        handled.push_back(c.center);
+        run.detected.ellipses.push_back(object);
+        char what[200];
+        std::snprintf(what, sizeof what, "%s at %s is on no chart and endangers the plan %.0f m ahead", object.id.c_str(),
+                      at_text(c.center).c_str(), danger->along_m - cursor.along());
+        event(t, pos, what);
+        // Mission control plans the evasion with the contact among the known obstacles.
+        MissionEnvironment seen_env = env;
+        seen_env.obstacles.ellipses.insert(seen_env.obstacles.ellipses.end(), run.detected.ellipses.begin(),
+                                           run.detected.ellipses.end());
+        const double speed = std::max(here.speed_mps, 0.1);
+        const double lead = 2.0 * turn_radius(mission.vehicle, speed) + mission.margin_m + 0.7;
+        reactive_target = position_at(run.plan, std::min(run.plan.length_m, danger->along_m + 2.0 * lead)).xy;
+        PlannedMission planned =
+            plan_mission(mission, seen_env, run.plan, cursor.along() + speed * options.planning_delay_s + lead);
+        const bool ok = std::all_of(planned.resolutions.begin(), planned.resolutions.end(),
+                                    [](const Resolution& r) { return r.resolved; }) && planned.remaining.empty();
+        pending_at = t + options.planning_delay_s;
+        // Danger in view ahead (within the sonar's range and the lead) needs the
+        // reactive level now; danger farther along the plan can wait for the planner.
+        const bool imminent = danger->along_m - cursor.along() <= sc.sonar.range_m + lead;
+        if (ok) {
+          pending = std::move(planned);
+          if (!imminent) {
+            event(t, pos, object.id + " lies farther along the plan: the planner repairs it while the plan level keeps control");
+            break;
+          }
+        } else {
+          pending.reset();
+          std::string why = "no evasion could be planned";
+          for (const Resolution& r : planned.resolutions) {
+            if (!r.resolved) why += ": " + r.conflict.with + ": " + r.problem;
+          }
+          event(t, pos, why + "; the reactive level keeps control to the rendezvous " + at_text(reactive_target), true);
+        }
+        event(t, pos, "the reactive level takes over until the evasion is planned");
+        reactive = true;
+        reactive_until = t + options.planning_delay_s;
+        memory = {};
+        break;
+      }
+    }
+
+    // Guidance: the reactive level, or the plan.
+    AutopilotSetpoint set;
+    set.depth_m = here.depth_m;
+    if (pending && t >= pending_at) {
+      {
+        run.plan = pending->plan;
+        held.assign(run.plan.basics.size(), 0);
+        for (std::size_t i = 0; i < run.plan.basics.size(); ++i) {
+          held[i] = run.plan.basics[i].start_m < cursor.along() - 1e-6 ? 1 : 0;
+        }
+        double added = 0.0;
+        for (const Resolution& r : pending->resolutions) added += r.added_m;
+        cursor.reset(run.plan, cursor.along());
+        cursor.locate(pos, 400.0);
+        ++run.replans;
+        char what[128];
+        std::snprintf(what, sizeof what, "evasion planned and spliced in (%+.0f m)%s", added,
+                      reactive ? ": the plan level again" : "");
+        event(t, pos, what);
+        pending.reset();
+        reactive = false;
+      }
+    } else if (reactive) {
+      if (t >= reactive_until && (pos - reactive_target).norm() <= 2.0 * kArrival_m) {
+        cursor.reset(run.plan, cursor.along());
+        cursor.locate(pos, 1e9);
+        event(t, pos, "at the rendezvous: the plan level again");
+        reactive = false;
+      }
+    }
+    if (reactive) {
+      ReactiveParams params = sc.reactive;
+      params.speed_mps = std::max(here.speed_mps, 0.1);
+      const double cog = s.ground_velocity.squaredNorm() > 0.0 ? std::atan2(s.ground_velocity.y(), s.ground_velocity.x())
+                                                               : s.heading;
+      const ReactiveCommand cmd =
+          reactive_command(ReactiveMethod::geometric, params, memory,
+                           {t, pos, cog, s.speed_mps, reactive_target, contacts.ellipses()});
+      if (cmd.status == ReactiveStatus::target_in_zone) {
+        // The rendezvous lies inside an object's zone: no way on. Stop short and say so.
+        event(t, pos, "the rendezvous " + at_text(reactive_target) +
+                          " lies inside an object's security zone: the vehicle stops short, the mission cannot go on",
+              true);
+        break;
+      }
+      set.course = cmd.course;
+      set.speed_mps = cmd.speed_mps;
+    } else {
+      const double lookahead =
+          options.lookahead_m > 0.0 ? options.lookahead_m : 1.0 * turn_radius(mission.vehicle, std::max(here.speed_mps, 0.1));
+      const Vec2 aim = position_at(run.plan, std::min(run.plan.length_m, cursor.along() + lookahead)).xy;
+      set.course = (aim - pos).norm() > 1e-6 ? std::atan2((aim - pos).y(), (aim - pos).x()) : s.heading;
+      set.speed_mps = std::max(here.speed_mps, 0.1);
+    }
+    plant.steer(set);
+    plant.advance();
+  }
+  run.time_s = run.track.empty() ? 0.0 : run.events.back().time_s;
+  return run;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,83 @@
+#pragma once
+// The two-level guidance of a whole mission in simulation (the seed's Fig. 4).
+//
+// Plan level: the vehicle follows the planned mission, its basic manoeuvres
+// as one track, by line-of-sight guidance: the course points at the track
+// `lookahead_m` ahead of the vehicle's own place on it (its projection,
+// searched forward from the last one), at the manoeuvre's speed and depth.
+// A hold (GPS fix, alignment) is sailed by waiting at its point: the clock
+// runs on, the vehicle stays.
+//
+// Reactive level: the forward-looking sonar scans all the while
+// (world/sonar.hpp) and its contacts are remembered (contacts.hpp). A contact
+// no known obstacle explains (its centre farther than the known footprint's
+// semi-major axis + 10 m from every known centre) that endangers the
+// remaining plan (collision observation on what lies ahead, the contact as a
+// column-filling cylinder) is handed to mission control, which plans the
+// evasion (mission_control.hpp, the contact added to the known obstacles)
+// for `planning_delay_s`, the planner's time on the vehicle. Where the danger
+// is in view ahead (within the sonar's range plus the lead) the reactive
+// level has control meanwhile: the geometric construction (reactive/)
+// steers towards the rendezvous past it; danger farther along waits for the
+// planner. Then the new plan is spliced in and the plan level follows it
+// from the vehicle's place on it. When no evasion can be planned the
+// reactive level keeps control to the rendezvous, and the run says so loudly.
+//
+// The run ends when the vehicle reaches the plan's end (within 5 m), or at
+// max_time_s. A collision (the vehicle inside an obstacle below its top, or
+// under the sea floor) does not stop it; each is an event with time and
+// place. The depth loop is not simulated: the vehicle is at the plan's depth
+// for its place on the track.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "deepguide/mission/mission_control.hpp"
+
+namespace deepguide {
+
+struct MissionRunOptions {
+  double lookahead_m = 0.0;       ///< 0: the turn radius at the manoeuvre's speed (2R cut corners 3 m deeper into zones)
+  double planning_delay_s = 5.0;  ///< the evasion planner's time on the vehicle
+  double max_time_s = 0.0;        ///< 0: twice the plan's time + 600 s
+  std::uint64_t seed = 1;         ///< the sonar's noise
+  double sample_every_s = 1.0;    ///< track samples kept (every step is simulated)
+};
+
+struct MissionSample {
+  double time_s = 0.0;
+  Vec2 position{0.0, 0.0};
+  double depth_m = 0.0;
+  double heading = 0.0;  ///< math rad
+  double along_m = 0.0;  ///< the vehicle's place on the plan of the time
+  bool reactive = false; ///< the reactive level had control
+};
+
+struct MissionEvent {
+  double time_s = 0.0;
+  Vec2 where{0.0, 0.0};
+  std::string what;  ///< one line
+  bool alarm = false;  ///< a collision, or an evasion that could not be planned
+};
+
+struct MissionRun {
+  bool completed = false;
+  bool collided = false;
+  double time_s = 0.0;
+  double length_m = 0.0;          ///< over ground
+  double min_clearance_m = 0.0;   ///< to the footprints of true obstacles the vehicle is not above (within 100 m; +inf if none)
+  std::vector<MissionSample> track;
+  std::vector<MissionEvent> events;
+  MissionPlan plan;               ///< the plan at the end (with the evasions planned on the way)
+  ObstacleSet detected;           ///< unknown objects the sonar found, as their contacts' estimates
+  std::size_t replans = 0;
+};
+
+/// Runs the mission `plan` (planned: its known conflicts resolved) in the
+/// world of `environment` plus `unknown` (the objects nobody knew). Throws
+/// InputError for a mission whose current is a field (not simulated yet).
+MissionRun run_mission(const Mission& mission, const MissionEnvironment& environment, const MissionPlan& plan,
+                       const ObstacleSet& unknown, const MissionRunOptions& options = {});
+
+}  // namespace deepguide

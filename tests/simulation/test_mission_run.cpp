@@ -1,0 +1,104 @@
+// The two-level guidance of a mission in simulation (simulation/mission_run.hpp):
+// a clear track is sailed in its planned time and length; a hold adds its
+// time; an object nobody knew is found by the sonar, the reactive level takes
+// over while the evasion is planned, and the vehicle passes it without
+// touching it; an object that leaves no way on raises an alarm; the same seed
+// gives the same run.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "deepguide/simulation/mission_run.hpp"
+#include "planning/obstacle_builders.hpp"
+#include "test_support.hpp"
+
+using namespace deepguide;
+using deepguide::test::ScratchDir;
+
+namespace {
+
+Mission mission_from(ScratchDir& dir, const std::string& manoeuvres) {
+  return read_mission(dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n" + manoeuvres));
+}
+
+bool has_event(const MissionRun& run, const std::string& text) {
+  for (const MissionEvent& e : run.events) {
+    if (e.what.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(MissionRun, AClearTrackIsSailedInItsTimeAndAHoldAddsItsOwn) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 1000, y: 0}]}\n");
+  const MissionPlan plan = expand_mission(m, {});
+  const MissionRun run = run_mission(m, {}, plan, {});
+  ASSERT_TRUE(run.completed);
+  EXPECT_FALSE(run.collided);
+  EXPECT_EQ(run.replans, 0u);
+  // 995 m (it ends 5 m short of the end) at 2 m/s, from the plan's speed at the start.
+  EXPECT_NEAR(run.length_m, 995.0, 5.0);
+  EXPECT_NEAR(run.time_s, 995.0 / 2.0, 10.0);
+  for (const MissionSample& s : run.track) EXPECT_LT(std::abs(s.position.y()), 0.5) << s.time_s;
+
+  const Mission fix = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 500, y: 0}]}\n"
+                                        "  - gps_update: {hold_s: 100}\n"
+                                        "  - goto: {speed_mps: 2, position: {x: 1000, y: 0}}\n");
+  const MissionRun held = run_mission(fix, {}, expand_mission(fix, {}), {});
+  ASSERT_TRUE(held.completed);
+  EXPECT_NEAR(held.time_s, run.time_s + 100.0, 2.0);
+  EXPECT_TRUE(has_event(held, "hold 100 s"));
+}
+
+TEST(MissionRun, AnObjectNobodyKnewIsFoundAndPassedWhileTheRouteIsRepaired) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 1000, y: 0}]}\n");
+  const MissionPlan plan = expand_mission(m, {});
+  ObstacleSet unknown;
+  unknown.ellipses.push_back(test::disc(500.0, 0.0, 6.0, "container"));
+  const MissionRun run = run_mission(m, {}, plan, unknown);
+  ASSERT_TRUE(run.completed);
+  EXPECT_FALSE(run.collided);
+  EXPECT_EQ(run.detected.size(), 1u);
+  EXPECT_EQ(run.replans, 1u);
+  EXPECT_TRUE(has_event(run, "on no chart"));
+  EXPECT_TRUE(has_event(run, "the reactive level takes over"));
+  EXPECT_TRUE(has_event(run, "spliced in"));
+  // Found within the sonar's 120 m range, before the zone.
+  EXPECT_GT(run.events.front().where.x(), 500.0 - 130.0);
+  EXPECT_LT(run.events.front().where.x(), 500.0 - 6.0 - 5.5);
+  // It keeps clear of the object's footprint by most of the margin.
+  EXPECT_GT(run.min_clearance_m, 3.0);
+  bool abeam = false;
+  for (const MissionSample& s : run.track) {
+    if (std::abs(s.position.x() - 500.0) < 3.0) {
+      abeam = true;
+      EXPECT_GT(std::abs(s.position.y()), 6.0 + 3.0) << s.time_s;
+    }
+  }
+  EXPECT_TRUE(abeam);
+  bool reactive = false;
+  for (const MissionSample& s : run.track) reactive = reactive || s.reactive;
+  EXPECT_TRUE(reactive);
+  // The same seed, the same run.
+  const MissionRun again = run_mission(m, {}, plan, unknown);
+  EXPECT_DOUBLE_EQ(again.time_s, run.time_s);
+  EXPECT_DOUBLE_EQ(again.length_m, run.length_m);
+}
+
+TEST(MissionRun, AnObjectThatLeavesNoWayOnRaisesTheAlarm) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 600, y: 0}]}\n");
+  ObstacleSet unknown;
+  unknown.ellipses.push_back(test::disc(610.0, 0.0, 30.0, "over the end"));
+  MissionRunOptions options;
+  options.max_time_s = 900.0;
+  const MissionRun run = run_mission(m, {}, expand_mission(m, {}), unknown, options);
+  EXPECT_FALSE(run.completed);
+  bool alarm = false;
+  for (const MissionEvent& e : run.events) alarm = alarm || e.alarm;
+  EXPECT_TRUE(alarm);
+  EXPECT_TRUE(has_event(run, "no evasion could be planned"));
+}
