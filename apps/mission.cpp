@@ -332,6 +332,7 @@ void register_mission_simulate(CLI::App& mission) {
     std::vector<std::string> unknown;
     std::uint64_t seed = 1;
     double delay = 5.0;
+    double zoom = 0.0;
     bool json = false;
   };
   auto o = std::make_shared<Options>();
@@ -345,6 +346,8 @@ void register_mission_simulate(CLI::App& mission) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 600.0));
   cmd->add_option("--render", o->render, "Also draw the mission and the track sailed (.png or .svg)");
+  cmd->add_option("--zoom", o->zoom, "With --render: show only this many metres around the first object found")
+      ->check(CLI::Range(10.0, 1e5));
   cmd->add_flag("--json", o->json, "Print the result as JSON");
   cmd->callback([o] {
     const Loaded l = load(o->mission);
@@ -392,6 +395,11 @@ void register_mission_simulate(CLI::App& mission) {
       for (const Resolution& r : planned.resolutions) f.conflicts.push_back(r.conflict.where);
       for (const MissionSample& p : run.track) f.track.push_back(p.position);
       f.detected = &run.detected;
+      if (o->zoom > 0.0 && !run.detected.ellipses.empty()) {
+        const Vec2 c = run.detected.ellipses.front().footprint.center;
+        f.extent.extend(c - Vec2::Constant(o->zoom));
+        f.extent.extend(c + Vec2::Constant(o->zoom));
+      }
       char title[256];
       std::snprintf(title, sizeof title, "%s, simulated: %s in %s, %zu unknown object(s), %zu replan(s)",
                     l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock(run.time_s).c_str(),

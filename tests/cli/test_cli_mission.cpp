@@ -125,3 +125,23 @@ TEST(CliMission, ExportWritesEachFormatOnceAndRefusesToReplaceWithoutOverwrite) 
   EXPECT_EQ(unknown.exit_code, 1) << unknown.err;
   EXPECT_NE(unknown.err.find("extension"), std::string::npos) << unknown.err;
 }
+
+TEST(CliMission, SimulateSailsTheSampleAndFindsTheObjectNobodyKnew) {
+  ScratchDir dir;
+  const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
+  const std::string unknown = deepguide::test::source_file("data/missions/sample_unknown.geojson");
+  const auto r = run_cli("mission simulate '" + mission + "' --unknown '" + unknown + "' --json --render '" +
+                         dir.file("sim.png") + "' --zoom 120");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j.at("completed").get<bool>());
+  EXPECT_FALSE(j.at("collided").get<bool>());
+  EXPECT_EQ(j.at("detected").get<int>(), 1);
+  EXPECT_GE(j.at("replans").get<int>(), 1);
+  EXPECT_GT(j.at("min_clearance_m").get<double>(), 3.0);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("sim.png")));
+  const auto text = run_cli("mission simulate '" + mission + "'");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("hold 120 s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("reached the end"), std::string::npos) << text.out;
+}

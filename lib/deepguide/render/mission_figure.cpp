@@ -48,7 +48,7 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
   o.local_crs = f.crs;
   o.title = f.title;
   o.width_px = f.width_px;
-  o.extent = box.padded(pad);
+  o.extent = f.extent.empty() ? box.padded(pad) : f.extent;
   const auto colour = [&](BasicManoeuvre::Role role) {
     switch (role) {
       case BasicManoeuvre::Role::evasion: return style.evasion;

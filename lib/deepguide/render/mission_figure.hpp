@@ -29,6 +29,7 @@ struct MissionFigure {
   const ObstacleSet* detected = nullptr;  ///< optional: objects the sonar found that nobody knew
   std::string title;
   int width_px = 1200;
+  WorldBox extent;  ///< the part to show (local frame); empty: the plans and the track, padded
 };
 
 // Light lines in a dark casing: they read on the deep blue and on the pale
