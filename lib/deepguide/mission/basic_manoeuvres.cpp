@@ -7,24 +7,13 @@
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/identification/offset_path.hpp"
 
 namespace deepguide {
 namespace {
 
 namespace bg = boost::geometry;
-
-std::string fixed(double v, int digits = 1) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string general(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // "FILE: line N: TYPE 'NAME'", the name made printable (one line).
 std::string place(const Mission& mission, const ComplexManoeuvre& c) {
@@ -118,7 +107,7 @@ void track(Builder& b, const std::vector<Vec2>& waypoints, double radius, const 
     if (turn_angle < 1e-6 || tangent > in_room || tangent > out_room) {
       if (turn_angle >= 1e-6) {
         b.plan.warnings.push_back(name + ": the turn at waypoint " + std::to_string(i) + " (" +
-                                  fixed(turn_angle * 180.0 / M_PI) + " deg) leaves no room for a " + fixed(radius) +
+                                  fixed(turn_angle * 180.0 / M_PI, 1) + " deg) leaves no room for a " + fixed(radius, 1) +
                                   " m turn: it stays a corner");
       }
       b.line(pts[i]);
@@ -156,7 +145,7 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
   const double width = n_hi - n_lo;
   if (width > s.line_spacing_m && s.line_spacing_m < 2.0 * radius - 1e-9) {
     throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) +
-                     " is under twice the turn radius (2 x " + fixed(radius) + " m): widen the spacing");
+                     " is under twice the turn radius (2 x " + fixed(radius, 1) + " m): widen the spacing");
   }
   if (width / s.line_spacing_m > 1e5) {
     throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) + " makes more than 100000 "
@@ -186,7 +175,7 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
   }
   if (lines.size() > 1 && s.line_spacing_m < 2.0 * radius - 1e-9) {
     throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) +
-                     " is under twice the turn radius (2 x " + fixed(radius) + " m): widen the spacing");
+                     " is under twice the turn radius (2 x " + fixed(radius, 1) + " m): widen the spacing");
   }
   // Start from the line and the end nearest the vehicle.
   const auto at = [&](const Span& l, double along) { return Vec2(l.offset * n + along * u); };
@@ -257,7 +246,7 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
     } else if (const auto* s = std::get_if<SurveySpec>(&c.spec)) {
       if (s->turn_radius_m > 0.0 && s->turn_radius_m < radius - 1e-9) {
         throw InputError(place(mission, c) + ": turn_radius_m " + general(s->turn_radius_m) + " is below the vehicle's " +
-                         fixed(radius) + " m at " +
+                         fixed(radius, 1) + " m at " +
                          fixed(c.speed_mps, 2) + " m/s");
       }
       survey(b, mission, c, *s, std::max(radius, s->turn_radius_m));

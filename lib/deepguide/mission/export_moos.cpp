@@ -16,17 +16,12 @@
 #include <fstream>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/mission/export_writers.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace deepguide::detail {
 namespace {
-
-std::string num(double v, int digits) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 // The mission's name on one comment line.
 std::string comment_text(const std::string& s) {
@@ -65,14 +60,14 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
   const Vec2 origin = utm.from_lonlat(origin_ll);
   const auto local = [&](const ExportWaypoint& w) {
     const Vec2 p = utm.from_lonlat(w.lonlat) - origin;
-    return num(p.x(), 3) + "," + num(p.y(), 3);
+    return fixed(p.x(), 3) + "," + fixed(p.y(), 3);
   };
   std::ofstream out(path, std::ios::binary);
   out << "// deepguide mission plan for pHelmIvP: " << comment_text(in.mission.name) << "\n"
       << "// In the .moos file's global section (local x, y are metres east and north of it, UTM zone "
       << utm.id() << "):\n"
-      << "//   LatOrigin  = " << num(origin_ll.y(), 9) << "\n"
-      << "//   LongOrigin = " << num(origin_ll.x(), 9) << "\n"
+      << "//   LatOrigin  = " << fixed(origin_ll.y(), 9) << "\n"
+      << "//   LongOrigin = " << fixed(origin_ll.x(), 9) << "\n"
       << "// Legs of one depth and speed run in order while DEPLOY = true; DG_LEG says which.\n\n"
       << "initialize DEPLOY = false\ninitialize DG_LEG = 1\n";
   int leg = 0;
@@ -83,7 +78,7 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
   };
   const auto depth = [&](double d) {
     header("BHV_ConstantDepth", "dg_depth_" + std::to_string(leg));
-    out << "  depth     = " << num(d, 3) << "\n}\n";
+    out << "  depth     = " << fixed(d, 3) << "\n}\n";
   };
   while (i < wps.size()) {
     ++leg;
@@ -92,7 +87,7 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
       header("BHV_StationKeep", "dg_hold_" + std::to_string(leg));
       const double change = std::abs(wps[i].depth_m - wps[i - 1].depth_m) / vertical;
       out << "  endflag   = DG_LEG = " << leg + 1 << "\n  station_pt = " << local(wps[i])
-          << "\n  duration  = " << num(wps[i].hold_s + change, 1) << "\n  duration_idle_decay = false\n}\n";
+          << "\n  duration  = " << fixed(wps[i].hold_s + change, 1) << "\n  duration_idle_decay = false\n}\n";
       depth(wps[i].depth_m);
       ++i;
       continue;
@@ -105,7 +100,7 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
       ++j;
     }
     header("BHV_Waypoint", "dg_leg_" + std::to_string(leg));
-    out << "  endflag   = DG_LEG = " << leg + 1 << "\n  speed     = " << num(wps[i].speed_mps, 3)
+    out << "  endflag   = DG_LEG = " << leg + 1 << "\n  speed     = " << fixed(wps[i].speed_mps, 3)
         << "\n  capture_radius = 3\n  slip_radius    = 8\n  points    = " << points << "\n}\n";
     depth(leg_depth(i));
     i = j;

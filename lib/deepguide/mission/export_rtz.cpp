@@ -17,6 +17,7 @@
 #include <memory>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/mission/export_writers.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 
@@ -24,12 +25,6 @@ namespace deepguide::detail {
 namespace {
 
 const xmlChar* x(const char* s) { return reinterpret_cast<const xmlChar*>(s); }
-
-std::string num(double v, int digits) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 void quiet(void*, const char*, ...) {}
 
@@ -54,18 +49,18 @@ void write_plan_rtz(const std::string& path, const ExportInput& in) {
     set(wp, "id", std::to_string(i + 1));
     set(wp, "name", std::to_string(i + 1));
     xmlNodePtr pos = xmlNewChild(wp, ns, x("position"), nullptr);
-    set(pos, "lat", num(w.lonlat.y(), 9));
-    set(pos, "lon", num(w.lonlat.x(), 9));
+    set(pos, "lat", fixed(w.lonlat.y(), 9));
+    set(pos, "lon", fixed(w.lonlat.x(), 9));
     if (i > 0) {
       xmlNodePtr leg = xmlNewChild(wp, ns, x("leg"), nullptr);
-      set(leg, "speedMax", num(w.speed_mps / kMetresPerSecondPerKnot, 3));
+      set(leg, "speedMax", fixed(w.speed_mps / kMetresPerSecondPerKnot, 3));
     }
     xmlNodePtr ext = xmlNewChild(xmlNewChild(wp, ns, x("extensions"), nullptr), ns, x("extension"), nullptr);
     set(ext, "manufacturer", "deepguide");
     set(ext, "name", "underwater");
     set(ext, "version", "1.0");
-    xmlNewChild(ext, ns, x("depth_m"), x(num(w.depth_m, 3).c_str()));
-    xmlNewChild(ext, ns, x("hold_s"), x(num(w.hold_s, 1).c_str()));
+    xmlNewChild(ext, ns, x("depth_m"), x(fixed(w.depth_m, 3).c_str()));
+    xmlNewChild(ext, ns, x("hold_s"), x(fixed(w.hold_s, 1).c_str()));
   }
   xmlSetGenericErrorFunc(nullptr, quiet);  // the failure is our one-line error, not libxml2's lines on stderr
   const int written = xmlSaveFormatFileEnc(path.c_str(), doc.get(), "UTF-8", 1);

@@ -15,17 +15,12 @@
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/mission/export_writers.hpp"
 
 namespace deepguide {
 namespace {
-
-std::string num(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
-}
 
 const char* kind_name(BasicManoeuvre::Kind kind) {
   switch (kind) {
@@ -37,8 +32,8 @@ const char* kind_name(BasicManoeuvre::Kind kind) {
 }
 
 void emit_xy(YAML::Emitter& e, const char* key, const Vec2& p) {
-  e << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "x" << YAML::Value << num(p.x())
-    << YAML::Key << "y" << YAML::Value << num(p.y()) << YAML::EndMap;
+  e << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "x" << YAML::Value << fixed(p.x(), 4)
+    << YAML::Key << "y" << YAML::Value << fixed(p.y(), 4) << YAML::EndMap;
 }
 
 constexpr Range kAny{-1e12, 1e12, true, "a number"};
@@ -58,7 +53,7 @@ void write_plan_yaml(const std::string& path, const ExportInput& in) {
   e << YAML::BeginMap;
   e << YAML::Key << "name" << YAML::Value << in.mission.name;
   e << YAML::Key << "crs" << YAML::Value << in.mission.frame.id();
-  e << YAML::Key << "length_m" << YAML::Value << num(in.plan.length_m);
+  e << YAML::Key << "length_m" << YAML::Value << fixed(in.plan.length_m, 4);
   e << YAML::Key << "basic_manoeuvres" << YAML::Value << YAML::BeginSeq;
   for (const BasicManoeuvre& b : in.plan.basics) {
     e << YAML::Flow << YAML::BeginMap;
@@ -67,14 +62,14 @@ void write_plan_yaml(const std::string& path, const ExportInput& in) {
     emit_xy(e, "to", b.to);
     if (b.kind == BasicManoeuvre::Kind::arc) {
       emit_xy(e, "centre", b.centre);
-      e << YAML::Key << "radius_m" << YAML::Value << num(b.radius_m);
+      e << YAML::Key << "radius_m" << YAML::Value << fixed(b.radius_m, 4);
       e << YAML::Key << "turn" << YAML::Value << (b.turn > 0 ? "left" : "right");
-      e << YAML::Key << "length_m" << YAML::Value << num(b.length_m);  // a sweep near 0 or 2 pi is not recomputed
+      e << YAML::Key << "length_m" << YAML::Value << fixed(b.length_m, 4);  // a sweep near 0 or 2 pi is not recomputed
     }
-    e << YAML::Key << "from_depth_m" << YAML::Value << num(b.from_depth_m);
-    e << YAML::Key << "depth_m" << YAML::Value << num(b.depth_m);
-    e << YAML::Key << "speed_mps" << YAML::Value << num(b.speed_mps);
-    if (b.kind == BasicManoeuvre::Kind::point) e << YAML::Key << "hold_s" << YAML::Value << num(b.hold_s);
+    e << YAML::Key << "from_depth_m" << YAML::Value << fixed(b.from_depth_m, 4);
+    e << YAML::Key << "depth_m" << YAML::Value << fixed(b.depth_m, 4);
+    e << YAML::Key << "speed_mps" << YAML::Value << fixed(b.speed_mps, 4);
+    if (b.kind == BasicManoeuvre::Kind::point) e << YAML::Key << "hold_s" << YAML::Value << fixed(b.hold_s, 4);
     e << YAML::Key << "role" << YAML::Value << role_name(b.role);
     if (b.source < in.mission.manoeuvres.size()) {
       e << YAML::Key << "manoeuvre" << YAML::Value << in.mission.manoeuvres[b.source].name;

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/planning/single_query.hpp"
@@ -22,18 +23,6 @@ constexpr double kExtraZone = 0.2;      // m beyond the corridor: the header
 constexpr double kStep = 2.0;           // m: pieces of the danger scan, steps of the goal-point search
 constexpr double kNoGoTolerance = 2.0;  // m: how far no-go polygons may reach outside the shallow cells
 constexpr int kAttempts = 4;
-
-std::string at_text(const Vec2& p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.1f, %.1f)", p.x(), p.y());
-  return buf;
-}
-
-std::string metres(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f m", v);
-  return buf;
-}
 
 // What planning the evasions of one mission shares.
 class Evasions {
@@ -83,19 +72,19 @@ class Evasions {
     try {
       const SingleQueryPlan plan = plan_single_query(obstacles_at(depth), {from, to, false}, options);
       if (!plan.outcome.result.found) {
-        problem = "no safe route at " + metres(depth) + " from " + at_text(from) + " to " + at_text(to) +
+        problem = "no safe route at " + fixed(depth, 1) + " m" + " from " + point_text(from) + " to " + point_text(to) +
                   (plan.outcome.result.message.empty() ? "" : ": " + plan.outcome.result.message);
         return {};
       }
       if (!plan.outcome.check.safe) {
-        problem = "the route at " + metres(depth) + " fails the route checker: " + plan.outcome.check.describe();
+        problem = "the route at " + fixed(depth, 1) + " m" + " fails the route checker: " + plan.outcome.check.describe();
         return {};
       }
       return plan.outcome.result.route.points;
     } catch (const NoRouteError& e) {
-      problem = "no safe route at " + metres(depth) + ": " + e.what();
+      problem = "no safe route at " + fixed(depth, 1) + " m" + ": " + e.what();
     } catch (const InputError& e) {
-      problem = "no safe route at " + metres(depth) + ": " + e.what();
+      problem = "no safe route at " + fixed(depth, 1) + " m" + ": " + e.what();
     }
     return {};
   }
@@ -208,12 +197,12 @@ std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironm
     const PlanPosition from = position_at(plan, depart), to = position_at(plan, rendezvous);
     if (deepest_between(danger, plan, depart, rendezvous) > depth || !evasions.free_at(depth, from.xy) ||
         !evasions.free_at(depth, to.xy)) {
-      r.problem = "no free water at " + metres(depth) + " on the route before or after it to leave from or rejoin at";
+      r.problem = "no free water at " + fixed(depth, 1) + " m" + " on the route before or after it to leave from or rejoin at";
       return std::nullopt;
     }
     if (holds_within(plan, depart, rendezvous)) {
-      r.problem = "evading it would skip a hold (a GPS fix or an alignment) between " + at_text(from.xy) + " and " +
-                  at_text(to.xy);
+      r.problem = "evading it would skip a hold (a GPS fix or an alignment) between " + point_text(from.xy) + " and " +
+                  point_text(to.xy);
       return std::nullopt;
     }
     std::vector<Vec2> points;
@@ -260,7 +249,7 @@ std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironm
       return c.along_m >= depart - 1e-6 && c.along_m <= rejoin + 1e-6;
     });
     if (still != after.end()) {
-      r.problem = "the evasive route still meets " + still->with + " at " + at_text(still->where);
+      r.problem = "the evasive route still meets " + still->with + " at " + point_text(still->where);
       return std::nullopt;
     }
     r.resolved = true;

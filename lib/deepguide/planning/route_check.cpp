@@ -6,21 +6,10 @@
 #include <stdexcept>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 
 namespace deepguide {
 namespace {
-
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string general(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 }  // namespace
 

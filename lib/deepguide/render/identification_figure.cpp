@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/identification/lee_goal.hpp"
 #include "deepguide/identification/offset_path.hpp"
 #include "deepguide/render/map_furniture.hpp"  // format_number
@@ -20,12 +21,6 @@ constexpr double kArrowSpacing = 56.0;  // design units
 Rgba with_alpha(Rgba c, double a) {
   c.a = a;
   return c;
-}
-
-std::string fixed(double v, int decimals) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
 }
 
 // The current the run started in at `p` (the field at time 0, or the uniform one).

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
@@ -19,12 +20,6 @@ namespace {
 constexpr double kArrival_m = 5.0;
 constexpr double kKnownSlack_m = 10.0;  // a contact this near a known footprint is that obstacle
 constexpr double kSameContact_m = 10.0;
-
-std::string at_text(const Vec2& p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.1f, %.1f)", p.x(), p.y());
-  return buf;
-}
 
 // The vehicle's place on the plan: its projection onto the plan's track,
 // searched from a little behind the last place to `window` ahead of it.
@@ -195,7 +190,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         run.detected.ellipses.push_back(object);
         char what[200];
         std::snprintf(what, sizeof what, "%s at %s is on no chart and endangers the plan %.0f m ahead", object.id.c_str(),
-                      at_text(c.center).c_str(), danger->along_m - cursor.along());
+                      point_text(c.center).c_str(), danger->along_m - cursor.along());
         event(t, pos, what);
         // Mission control plans the evasion with the contact among the known obstacles.
         MissionEnvironment seen_env = env;
@@ -224,7 +219,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
           for (const Resolution& r : planned.resolutions) {
             if (!r.resolved) why += ": " + r.conflict.with + ": " + r.problem;
           }
-          event(t, pos, why + "; the reactive level keeps control to the rendezvous " + at_text(reactive_target), true);
+          event(t, pos, why + "; the reactive level keeps control to the rendezvous " + point_text(reactive_target), true);
         }
         event(t, pos, "the reactive level takes over until the evasion is planned");
         reactive = true;
@@ -274,7 +269,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
                            {t, pos, cog, s.speed_mps, reactive_target, contacts.ellipses()});
       if (cmd.status == ReactiveStatus::target_in_zone) {
         // The rendezvous lies inside an object's zone: no way on. Stop short and say so.
-        event(t, pos, "the rendezvous " + at_text(reactive_target) +
+        event(t, pos, "the rendezvous " + point_text(reactive_target) +
                           " lies inside an object's security zone: the vehicle stops short, the mission cannot go on",
               true);
         break;

@@ -1,0 +1,19 @@
+#pragma once
+// Numbers as text for messages and files, in one place: printf's fixed
+// ("%.*f") and general ("%g") forms, and a point as "(x, y)". A buffer of
+// 384 characters holds any double in fixed form.
+
+#include <Eigen/Core>
+#include <string>
+
+namespace deepguide {
+
+/// `v` with `digits` decimals ("%.*f").
+std::string fixed(double v, int digits);
+/// `v` in printf's %g form (6 significant digits, no trailing zeros).
+std::string general(double v);
+/// "(x, y)" with `digits` decimals, e.g. "(120.0, 45.5)".
+std::string point_text(double x, double y, int digits = 1);
+inline std::string point_text(const Eigen::Vector2d& p, int digits = 1) { return point_text(p.x(), p.y(), digits); }
+
+}  // namespace deepguide
