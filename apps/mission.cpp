@@ -351,6 +351,9 @@ void register_mission_simulate(CLI::App& mission) {
   cmd->add_flag("--json", o->json, "Print the result as JSON");
   cmd->callback([o] {
     const Loaded l = load(o->mission);
+    if (!o->render.empty() && l.mission.charts.empty() && l.mission.obstacles.empty()) {
+      throw InputError("--render: expected a mission with charts or obstacle files to draw it over");
+    }
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
     throw_if_unresolved(o->mission, l, planned);
     ObstacleSet unknown;

@@ -24,7 +24,7 @@ mkdir -p docs/figures
 "$DEEPGUIDE_CLI" render mission data/missions/sample_mission.yaml -o docs/images/sample_mission.png
 # The seed's Fig. 4: an object nobody knew, found by the sonar on the survey, evaded while the route is repaired.
 "$DEEPGUIDE_CLI" mission simulate data/missions/sample_mission.yaml --unknown data/missions/sample_unknown.geojson \
-  --render docs/images/sample_mission_simulated.png --zoom 120 > /dev/null
+  --planning-delay 30 --render docs/images/sample_mission_simulated.png --zoom 120 > /dev/null
 shopt -s nullglob
 scenarios=(data/scenarios/*.yaml)
 if [ ${#scenarios[@]} -eq 0 ]; then

@@ -15,7 +15,7 @@ MISSION=data/missions/sample_mission.yaml
 ./build/apps/deepguide render mission "$MISSION" -o out/sample_mission.png
 ./build/apps/deepguide mission export "$MISSION" -o out/sample_mission.plan --overwrite
 ./build/apps/deepguide mission simulate "$MISSION" --unknown data/missions/sample_unknown.geojson \
-  --render out/sample_mission_simulated.png --zoom 120
+  --planning-delay 30 --render out/sample_mission_simulated.png --zoom 120
 echo
 CHART="charts/sample_chart.tif charts/sample_chart_hazards.gpkg"
 # shellcheck disable=SC2086  # two file names

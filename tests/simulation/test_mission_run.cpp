@@ -102,3 +102,49 @@ TEST(MissionRun, AnObjectThatLeavesNoWayOnRaisesTheAlarm) {
   EXPECT_TRUE(alarm);
   EXPECT_TRUE(has_event(run, "no evasion could be planned"));
 }
+
+TEST(MissionRun, ObjectsNearAheadOrLongAreEvadedNotHit) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 1000, y: 0}]}\n");
+  const MissionPlan plan = expand_mission(m, {});
+  // 40 m ahead at the start: too near for the planner, the reactive level alone.
+  ObstacleSet near;
+  near.ellipses.push_back(test::disc(40.0, 0.0, 5.0, "near"));
+  const MissionRun a = run_mission(m, {}, plan, near);
+  EXPECT_TRUE(a.completed);
+  EXPECT_FALSE(a.collided);
+  EXPECT_GT(a.min_clearance_m, 0.0);
+  // A 45 m x 5 m object lying along the track: the rendezvous is past its end.
+  ObstacleSet along;
+  EllipticCylinder log;
+  log.id = "log";
+  log.footprint = Ellipse{{500.0, 0.0}, 45.0, 5.0, 0.0};
+  along.ellipses.push_back(log);
+  const MissionRun b = run_mission(m, {}, plan, along);
+  EXPECT_TRUE(b.completed) << (b.events.empty() ? "" : b.events.back().what);
+  EXPECT_FALSE(b.collided);
+  // Another seed, another sonar noise: the estimate (and so the run) differs.
+  MissionRunOptions other;
+  other.seed = 7;
+  const MissionRun c = run_mission(m, {}, plan, along, other);
+  ASSERT_EQ(c.detected.size(), 1u);
+  EXPECT_NE(c.detected.ellipses[0].footprint.center, b.detected.ellipses[0].footprint.center);
+}
+
+TEST(MissionRun, LapsAreSailedWholeAndAHoldAtTheEndCounts) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
+                                      "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"
+                                      "  - goto: {speed_mps: 2, position: {x: 800, y: 0}}\n"
+                                      "  - gps_update: {hold_s: 300}\n");
+  MissionEnvironment env;
+  env.obstacles.ellipses.push_back(test::disc(500.0, 60.0, 3.0, "rock"));
+  const MissionPlan plan = expand_mission(m, env.obstacles);
+  const MissionRun run = run_mission(m, env, plan, {});
+  ASSERT_TRUE(run.completed);
+  EXPECT_FALSE(run.collided);
+  // The lap (2 pi 25 m = 157 m) is in the length sailed: within 3 % of the plan's.
+  EXPECT_NEAR(run.length_m, plan.length_m, 0.03 * plan.length_m);
+  EXPECT_NEAR(run.time_s, plan.length_m / 2.0 + 300.0, 0.03 * plan.length_m / 2.0);
+  EXPECT_TRUE(has_event(run, "hold 300 s"));
+}

@@ -7,6 +7,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
@@ -20,6 +21,8 @@ namespace {
 constexpr double kArrival_m = 5.0;
 constexpr double kKnownSlack_m = 10.0;  // a contact this near a known footprint is that obstacle
 constexpr double kSameContact_m = 10.0;
+constexpr double kCursorWindow_m = 15.0;  // per step the vehicle moves well under a metre
+constexpr double kRetry_s = 10.0;         // an evasion that cannot be planned yet is tried again after this
 
 // The vehicle's place on the plan: its projection onto the plan's track,
 // searched from a little behind the last place to `window` ahead of it.
@@ -31,18 +34,23 @@ class Cursor {
     along_ = along;
   }
   double along() const { return along_; }
-  void locate(const Vec2& p, double window) {
+  void set_along(double along) { along_ = along; }
+  // The nearest point of the track within [along - behind, along + ahead]; the
+  // window keeps the place continuous where the track passes near itself
+  // (laps, out and back, adjacent survey lines).
+  void locate(const Vec2& p, double behind, double ahead) {
     double best = std::numeric_limits<double>::infinity(), at = along_;
     for (std::size_t k = 0; k + 1 < track_.size(); ++k) {
       const TrackPoint &a = track_[k], &b = track_[k + 1];
-      if (b.along_m < along_ - 20.0 || a.along_m > along_ + window) continue;
+      if (b.along_m < along_ - behind || a.along_m > along_ + ahead) continue;
       const Vec2 d = b.xy - a.xy;
       const double len2 = d.squaredNorm();
       const double t = len2 > 0.0 ? std::clamp((p - a.xy).dot(d) / len2, 0.0, 1.0) : 0.0;
+      const double s = std::clamp(a.along_m + t * (b.along_m - a.along_m), along_ - behind, along_ + ahead);
       const double dist = (a.xy + t * d - p).norm();
       if (dist < best) {
         best = dist;
-        at = a.along_m + t * (b.along_m - a.along_m);
+        at = s;
       }
     }
     along_ = std::max(along_, at);  // the vehicle moves on along the plan, never back
@@ -110,6 +118,21 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
   Vec2 reactive_target{0.0, 0.0};
   std::optional<PlannedMission> pending;   // the evasion planned, spliced in when the planner is done
   std::vector<Vec2> handled;               // centres of unknown contacts already reacted to
+  std::vector<std::pair<Vec2, double>> waiting;  // contacts whose evasion could not be planned yet, and when to retry
+  double rendezvous_m = -1.0;              // where the reactive level hands back, on the plan of the time
+  const double zone_margin = mission.margin_m + 0.7;
+  const ObstacleField known_field(env.obstacles, 0.0);
+  // A contact is a known obstacle when it lies within kKnownSlack_m of a known
+  // footprint and is no bigger than it (+ the slack): a small object beside a
+  // big wreck is not the wreck.
+  const auto is_known = [&](const Ellipse& c) {
+    for (std::size_t i : known_field.near(c.center, c.center, kKnownSlack_m)) {
+      if (known_field.distance_to(i, c.center) > kKnownSlack_m) continue;
+      if (i < env.obstacles.ellipses.size() && c.a > env.obstacles.ellipses[i].footprint.a + kKnownSlack_m) continue;
+      return true;
+    }
+    return false;
+  };
   std::vector<char> held(run.plan.basics.size(), 0);
   double held_s = 0.0;                     // time spent holding (the plant's clock stops meanwhile)
   bool inside = false;
@@ -128,33 +151,23 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     const Vec2 pos = s.position;
     run.length_m += (pos - last).norm();
     last = pos;
-    if (!reactive) cursor.locate(pos, 150.0);
+    if (!reactive) cursor.locate(pos, 2.0, kCursorWindow_m);
     const PlanPosition here = position_at(run.plan, cursor.along());
 
     // Truth: clearance and collisions.
     for (std::size_t i : truth_field.near(pos, pos, 100.0)) {
-      if (truth_volume.zone_top(i) < here.depth_m) run.min_clearance_m = std::min(run.min_clearance_m, truth_field.distance_to(i, pos));
+      if (truth_volume.zone_top(i) < s.depth_m) run.min_clearance_m = std::min(run.min_clearance_m, truth_field.distance_to(i, pos));
     }
-    const WaterVolume::Verdict v = truth_volume.check_point({pos.x(), pos.y(), here.depth_m});
+    const WaterVolume::Verdict v = truth_volume.check_point({pos.x(), pos.y(), s.depth_m});
     if (v.blocked && !inside) {
       run.collided = true;
       event(t, pos, "COLLISION: the vehicle " + v.reason, true);
     }
     inside = v.blocked;
     if (t >= next_sample) {
-      run.track.push_back({t, pos, here.depth_m, s.heading, cursor.along(), reactive});
+      run.track.push_back({t, pos, s.depth_m, s.heading, cursor.along(), reactive});
       next_sample = t + options.sample_every_s;
     }
-    if (!reactive && cursor.along() >= run.plan.length_m - kArrival_m) {
-      run.completed = true;
-      event(t, pos, "reached the end of the plan");
-      break;
-    }
-    if (t >= max_time) {
-      event(t, pos, "time out: the plan's end was not reached", true);
-      break;
-    }
-
     // Holds: wait at the point (the clock runs on, the vehicle stays).
     for (std::size_t i = 0; !reactive && i < run.plan.basics.size(); ++i) {
       const BasicManoeuvre& b = run.plan.basics[i];
@@ -169,59 +182,103 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
       }
     }
 
+    if (!reactive && cursor.along() >= run.plan.length_m - kArrival_m) {
+      for (std::size_t i = 0; i < run.plan.basics.size(); ++i) {  // holds at the very end
+        const BasicManoeuvre& b = run.plan.basics[i];
+        if (b.kind != BasicManoeuvre::Kind::point || held[i]) continue;
+        held[i] = 1;
+        if (b.hold_s > 0.0) {
+          event(t, pos, "hold " + fixed(b.hold_s, 0) + " s at " + fixed(b.depth_m, 1) + " m depth");
+          held_s += b.hold_s;
+        }
+      }
+      run.completed = true;
+      event(s.time_s + held_s, pos, "reached the end of the plan");
+      break;
+    }
+    if (t >= max_time) {
+      event(t, pos, "time out: the plan's end was not reached", true);
+      break;
+    }
+
     // The sonar, and what it finds that nobody knew.
     if (sonar.update(t, pos, s.heading, sc.obstacles)) {
       contacts.update(sonar.detections(), t);
       for (const Ellipse& c : contacts.ellipses()) {
-        const bool known = std::any_of(env.obstacles.ellipses.begin(), env.obstacles.ellipses.end(), [&](const EllipticCylinder& e) {
-          return (e.footprint.center - c.center).norm() <= e.footprint.a + kKnownSlack_m;
-        });
-        const bool seen = std::any_of(handled.begin(), handled.end(), [&](const Vec2& p) { return (p - c.center).norm() <= kSameContact_m; });
-        if (known || seen || reactive) continue;
-        ObstacleSet contact;
+        const auto near = [&](const Vec2& p) { return (p - c.center).norm() <= kSameContact_m; };
+        if (reactive || is_known(c) || std::any_of(handled.begin(), handled.end(), near)) continue;
+        if (std::any_of(waiting.begin(), waiting.end(), [&](const auto& w) { return near(w.first) && t < w.second; })) {
+          continue;
+        }
         EllipticCylinder object;
-        object.id = "unknown-" + std::to_string(handled.size() + 1);
+        object.id = "unknown-" + std::to_string(run.detected.size() + 1);
         object.footprint = c;
+        ObstacleSet contact;
         contact.ellipses.push_back(object);
         const std::vector<Conflict> ahead = observe_collisions(run.plan, contact, nullptr, observe);
         const auto danger = std::find_if(ahead.begin(), ahead.end(), [&](const Conflict& x) { return x.along_m > cursor.along(); });
         if (danger == ahead.end()) continue;
-        handled.push_back(c.center);
-        run.detected.ellipses.push_back(object);
-        char what[200];
-        std::snprintf(what, sizeof what, "%s at %s is on no chart and endangers the plan %.0f m ahead", object.id.c_str(),
-                      point_text(c.center).c_str(), danger->along_m - cursor.along());
-        event(t, pos, what);
-        // Mission control plans the evasion with the contact among the known obstacles.
+        const double speed = std::max(here.speed_mps, 0.1);
+        const double lead = 2.0 * turn_radius(mission.vehicle, speed) + zone_margin;
+        // Mission control plans the evasion, the contact among the known obstacles.
+        Mission rules = mission;
+        if (mission.control.unknown_objects == ControlRules::Reaction::identify) rules.control.identify.push_back(object.id);
         MissionEnvironment seen_env = env;
         seen_env.obstacles.ellipses.insert(seen_env.obstacles.ellipses.end(), run.detected.ellipses.begin(),
                                            run.detected.ellipses.end());
-        const double speed = std::max(here.speed_mps, 0.1);
-        const double lead = 2.0 * turn_radius(mission.vehicle, speed) + mission.margin_m + 0.7;
-        reactive_target = position_at(run.plan, std::min(run.plan.length_m, danger->along_m + 2.0 * lead)).xy;
-        PlannedMission planned =
-            plan_mission(mission, seen_env, run.plan, cursor.along() + speed * options.planning_delay_s + lead);
-        const bool ok = std::all_of(planned.resolutions.begin(), planned.resolutions.end(),
-                                    [](const Resolution& r) { return r.resolved; }) && planned.remaining.empty();
-        pending_at = t + options.planning_delay_s;
-        // Danger in view ahead (within the sonar's range and the lead) needs the
-        // reactive level now; danger farther along the plan can wait for the planner.
-        const bool imminent = danger->along_m - cursor.along() <= sc.sonar.range_m + lead;
+        seen_env.obstacles.ellipses.push_back(object);
+        const double from_m = cursor.along() + speed * options.planning_delay_s + lead;
+        PlannedMission planned = plan_mission(rules, seen_env, run.plan, from_m);
+        const auto mine = std::find_if(planned.resolutions.begin(), planned.resolutions.end(),
+                                       [&](const Resolution& r) { return r.conflict.with == object.id; });
+        const bool ok = mine != planned.resolutions.end() && planned.remaining.empty() &&
+                        std::all_of(planned.resolutions.begin(), planned.resolutions.end(),
+                                    [](const Resolution& r) { return r.resolved; });
+        // In view ahead, before the planner can be done, the reactive level must act now.
+        const bool imminent = danger->along_m - cursor.along() <= speed * options.planning_delay_s + 2.0 * lead;
+        if (!ok && !imminent) {
+          waiting.emplace_back(c.center, t + kRetry_s);  // try again as it comes nearer
+          continue;
+        }
+        handled.push_back(c.center);
+        run.detected.ellipses.push_back(object);
+        event(t, pos, object.id + " at " + point_text(c.center) + " is on no chart and endangers the plan " +
+                          fixed(danger->along_m - cursor.along(), 0) + " m ahead");
         if (ok) {
+          // The rendezvous is on the route as written, so the new plan's point for it is the place.
+          reactive_target = position_at(planned.plan, mine->rendezvous_m).xy;
           pending = std::move(planned);
+          pending_at = t + options.planning_delay_s;
           if (!imminent) {
             event(t, pos, object.id + " lies farther along the plan: the planner repairs it while the plan level keeps control");
             break;
           }
+          event(t, pos, "the reactive level takes over until the evasion is planned");
         } else {
-          pending.reset();
-          std::string why = "no evasion could be planned";
-          for (const Resolution& r : planned.resolutions) {
-            if (!r.resolved) why += ": " + r.conflict.with + ": " + r.problem;
+          // The rendezvous past the danger, from goal points on the contact alone.
+          const ObstacleField contact_field(contact, zone_margin);
+          const WaterVolume contact_volume(contact_field, nullptr,
+                                           {mission.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()});
+          std::string why;
+          const std::optional<EvasionStretch> stretch =
+              goal_points(track_danger(run.plan, contact_volume, 2.0), danger->along_m, lead, cursor.along(), &why);
+          rendezvous_m = stretch ? stretch->rendezvous_m : run.plan.length_m;
+          const bool planner_failed = mine != planned.resolutions.end() && !mine->resolved;
+          if (planner_failed || !stretch) {
+            event(t, pos, "no evasion could be planned (" + (planner_failed ? mine->problem : why) +
+                              "): the reactive level steers to the rendezvous " +
+                              point_text(position_at(run.plan, rendezvous_m).xy),
+                  true);
+          } else {
+            event(t, pos, object.id + " is too near for the planner: the reactive level evades it to the rendezvous " +
+                              point_text(position_at(run.plan, rendezvous_m).xy));
           }
-          event(t, pos, why + "; the reactive level keeps control to the rendezvous " + point_text(reactive_target), true);
         }
-        event(t, pos, "the reactive level takes over until the evasion is planned");
+        if (ok) {
+          rendezvous_m = -1.0;  // the new plan takes over
+        } else {
+          reactive_target = position_at(run.plan, rendezvous_m).xy;
+        }
         reactive = true;
         reactive_until = t + options.planning_delay_s;
         memory = {};
@@ -234,15 +291,16 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     set.depth_m = here.depth_m;
     if (pending && t >= pending_at) {
       {
+        // Before the departure the plan is unchanged, so the vehicle's place on it holds.
         run.plan = pending->plan;
+        double added = 0.0;
+        for (const Resolution& r : pending->resolutions) added += r.added_m;
+        cursor.reset(run.plan, cursor.along());
+        cursor.locate(pos, 2.0, 60.0);
         held.assign(run.plan.basics.size(), 0);
         for (std::size_t i = 0; i < run.plan.basics.size(); ++i) {
           held[i] = run.plan.basics[i].start_m < cursor.along() - 1e-6 ? 1 : 0;
         }
-        double added = 0.0;
-        for (const Resolution& r : pending->resolutions) added += r.added_m;
-        cursor.reset(run.plan, cursor.along());
-        cursor.locate(pos, 400.0);
         ++run.replans;
         char what[128];
         std::snprintf(what, sizeof what, "evasion planned and spliced in (%+.0f m)%s", added,
@@ -252,9 +310,17 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         reactive = false;
       }
     } else if (reactive) {
-      if (t >= reactive_until && (pos - reactive_target).norm() <= 2.0 * kArrival_m) {
-        cursor.reset(run.plan, cursor.along());
-        cursor.locate(pos, 1e9);
+      if (t >= reactive_until && rendezvous_m >= 0.0 && (pos - reactive_target).norm() <= 2.0 * kArrival_m) {
+        // Holds between the place the reactive level took over and the rendezvous were not sailed: say so.
+        for (std::size_t i = 0; i < run.plan.basics.size(); ++i) {
+          const BasicManoeuvre& b = run.plan.basics[i];
+          if (b.kind != BasicManoeuvre::Kind::point || held[i] || b.start_m > rendezvous_m) continue;
+          held[i] = 1;
+          if (b.hold_s > 0.0) event(t, pos, "the hold at " + point_text(b.from) + " was skipped by the reactive level", true);
+        }
+        cursor.reset(run.plan, rendezvous_m);
+        cursor.locate(pos, 2.0, kCursorWindow_m);
+        rendezvous_m = -1.0;
         event(t, pos, "at the rendezvous: the plan level again");
         reactive = false;
       }
@@ -267,7 +333,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
       const ReactiveCommand cmd =
           reactive_command(ReactiveMethod::geometric, params, memory,
                            {t, pos, cog, s.speed_mps, reactive_target, contacts.ellipses()});
-      if (cmd.status == ReactiveStatus::target_in_zone) {
+      if (cmd.status == ReactiveStatus::target_in_zone && !pending) {
         // The rendezvous lies inside an object's zone: no way on. Stop short and say so.
         event(t, pos, "the rendezvous " + point_text(reactive_target) +
                           " lies inside an object's security zone: the vehicle stops short, the mission cannot go on",

@@ -23,11 +23,22 @@
 // from the vehicle's place on it. When no evasion can be planned the
 // reactive level keeps control to the rendezvous, and the run says so loudly.
 //
-// The run ends when the vehicle reaches the plan's end (within 5 m), or at
-// max_time_s. A collision (the vehicle inside an obstacle below its top, or
-// under the sea floor) does not stop it; each is an event with time and
-// place. The depth loop is not simulated: the vehicle is at the plan's depth
-// for its place on the track.
+// A contact is a known obstacle when it lies within 10 m of a known footprint
+// and is no bigger than it + 10 m. The sonar models elliptic objects only:
+// an unknown polygon is never seen.
+//
+// The vehicle's place on the plan is its projection onto the track within a
+// window (2 m behind, 15 m ahead of the last place), so laps and tracks that
+// pass near themselves are sailed in order. When the danger begins before the
+// planner could be done, the reactive level alone evades it to the
+// rendezvous past it (goal points on the contact) and hands back there; holds
+// it cut across are alarms. An evasion that cannot be planned yet, the danger
+// still far, is tried again every 10 s as it comes nearer.
+//
+// The run ends when the vehicle reaches the plan's end (within 5 m; holds
+// there are sailed), or at max_time_s. A collision (the vehicle, at its
+// simulated depth, inside an obstacle below its top, or under the sea floor)
+// does not stop it; each is an event with time and place.
 
 #include <cstdint>
 #include <string>
