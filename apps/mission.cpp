@@ -53,10 +53,20 @@ Loaded load(const std::string& path) {
   return l;
 }
 
-double plan_time(const MissionPlan& plan) {
-  double t = 0.0;
-  for (const BasicManoeuvre& b : plan.basics) t += b.hold_s + (b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0);
-  return t;
+// The figure of a loaded mission and its planned version: charts, obstacle
+// files, frame, and where each conflict began (a cross where unresolved).
+MissionFigure mission_figure(const Loaded& l, const PlannedMission& planned) {
+  MissionFigure f;
+  f.charts = l.mission.charts;
+  f.obstacles = l.mission.obstacles;
+  f.crs = l.mission.frame.id();
+  f.plan = &planned.plan;
+  f.written = &l.plan;
+  for (const Resolution& r : planned.resolutions) {
+    f.conflicts.push_back(r.conflict.where);
+    if (!r.resolved) f.unresolved.push_back(r.conflict.where);
+  }
+  return f;
 }
 
 std::string clock(double seconds) {
@@ -96,7 +106,7 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
                         {"crs", m.frame.id()},
                         {"basic_manoeuvres", planned.plan.basics.size()},
                         {"length_m", planned.plan.length_m},
-                        {"time_s", plan_time(planned.plan)},
+                        {"time_s", plan_duration(planned.plan)},
                         {"original_length_m", l.plan.length_m},
                         {"resolutions", list},
                         {"remaining_conflicts", planned.remaining.size()},
@@ -106,8 +116,8 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
   }
   std::printf("mission          %s (%s)\n", m.name.c_str(), m.frame.id().c_str());
   std::printf("plan             %zu basic manoeuvres, %.0f m, %s (before: %zu, %.0f m, %s)\n",
-              planned.plan.basics.size(), planned.plan.length_m, clock(plan_time(planned.plan)).c_str(),
-              l.plan.basics.size(), l.plan.length_m, clock(plan_time(l.plan)).c_str());
+              planned.plan.basics.size(), planned.plan.length_m, clock(plan_duration(planned.plan)).c_str(),
+              l.plan.basics.size(), l.plan.length_m, clock(plan_duration(l.plan)).c_str());
   if (planned.resolutions.empty()) {
     std::printf("conflicts        none: nothing to evade\n");
   } else {
@@ -184,7 +194,7 @@ void register_mission(CLI::App& app) {
     const MissionPlan& plan = l.plan;
     const ObservationOptions observe = observation_options(m);
     const std::vector<Conflict> conflicts = observe_collisions(plan, env.obstacles, env.floor.get(), observe);
-    const double time_s = plan_time(plan);
+    const double time_s = plan_duration(plan);
     // Whether mission control can resolve each: what it cannot is reported here already.
     const PlannedMission planned = plan_mission(m, env, plan);
     std::vector<const Resolution*> unavoidable;
@@ -389,13 +399,8 @@ void register_mission_simulate(CLI::App& mission) {
       }
     }
     if (!o->render.empty()) {
-      MissionFigure f;
-      f.charts = l.mission.charts;
-      f.obstacles = l.mission.obstacles;
-      f.crs = l.mission.frame.id();
-      f.plan = &run.plan;
-      f.written = &l.plan;
-      for (const Resolution& r : planned.resolutions) f.conflicts.push_back(r.conflict.where);
+      MissionFigure f = mission_figure(l, planned);
+      f.plan = &run.plan;  // with the evasions planned on the way
       for (const MissionSample& p : run.track) f.track.push_back(p.position);
       f.detected = &run.detected;
       if (o->zoom > 0.0 && !run.detected.ellipses.empty()) {
@@ -440,21 +445,16 @@ void register_render_mission(CLI::App& render) {
   cmd->callback([o] {
     const Loaded l = load(o->mission);
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
-    MissionFigure f;
-    f.charts = l.mission.charts;
-    f.obstacles = l.mission.obstacles;
-    f.crs = l.mission.frame.id();
-    f.plan = o->as_written ? &l.plan : &planned.plan;
-    f.written = o->as_written ? nullptr : &l.plan;
-    for (const Resolution& r : planned.resolutions) {
-      f.conflicts.push_back(r.conflict.where);
-      if (!r.resolved) f.unresolved.push_back(r.conflict.where);
+    MissionFigure f = mission_figure(l, planned);
+    if (o->as_written) {
+      f.plan = &l.plan;
+      f.written = nullptr;
     }
     f.width_px = o->width;
     const MissionPlan& shown = *f.plan;
     char title[256];
     std::snprintf(title, sizeof title, "%s: %.2f km, %s; %zu conflict(s), %zu resolved", l.mission.name.c_str(),
-                  shown.length_m / 1000.0, clock(plan_time(shown)).c_str(), planned.resolutions.size(),
+                  shown.length_m / 1000.0, clock(plan_duration(shown)).c_str(), planned.resolutions.size(),
                   planned.resolutions.size() - f.unresolved.size());
     f.title = o->title.empty() ? std::string(title) : o->title;
     render_mission(f, o->output);

@@ -228,6 +228,12 @@ Vec2 BasicManoeuvre::point_at(double s) const {
   return centre + radius_m * Vec2(std::cos(a), std::sin(a));
 }
 
+double plan_duration(const MissionPlan& plan) {
+  double t = 0.0;
+  for (const BasicManoeuvre& b : plan.basics) t += b.duration_s();
+  return t;
+}
+
 double turn_radius(const VehicleParams& vehicle, double speed_mps) {
   return speed_mps / vehicle.autopilot.max_reference_turn_rate;
 }

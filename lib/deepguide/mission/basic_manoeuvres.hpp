@@ -57,6 +57,8 @@ struct BasicManoeuvre {
 
   /// The point s metres along it (clamped).
   Vec2 point_at(double s) const;
+  /// How long it takes at its speed, its hold included.
+  double duration_s() const { return hold_s + (speed_mps > 0.0 ? length_m / speed_mps : 0.0); }
 };
 
 struct MissionPlan {
@@ -64,6 +66,9 @@ struct MissionPlan {
   double length_m = 0.0;
   std::vector<std::string> warnings;  ///< one line each, naming the manoeuvre
 };
+
+/// How long the plan takes at its speeds and holds (s).
+double plan_duration(const MissionPlan& plan);
 
 /// The turn radius at `speed_mps` (the header).
 double turn_radius(const VehicleParams& vehicle, double speed_mps);

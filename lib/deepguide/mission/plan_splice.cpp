@@ -37,7 +37,7 @@ PlanPosition position_at(const MissionPlan& plan, double along_m) {
     i = k;
     if (b.kind != BasicManoeuvre::Kind::point && along_m < b.start_m + b.length_m - kEps) break;
     if (k + 1 < plan.basics.size() && plan.basics[k + 1].start_m <= along_m + kEps) {
-      time += b.hold_s + (b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0);
+      time += b.duration_s();
     }
   }
   const BasicManoeuvre& b = plan.basics[i];

@@ -98,9 +98,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
   sc.current = local_current(mission);
   sc.depth_m = mission.start_depth_m;
   sc.reactive.margin_m = mission.margin_m + 0.5;
-  double plan_time = 0.0;
-  for (const BasicManoeuvre& b : initial.basics) plan_time += b.hold_s + (b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0);
-  const double max_time = options.max_time_s > 0.0 ? options.max_time_s : 2.0 * plan_time + 600.0;
+  const double max_time = options.max_time_s > 0.0 ? options.max_time_s : 2.0 * plan_duration(initial) + 600.0;
 
   const BasicManoeuvre& first = initial.basics.front();
   const Vec2 first_to = position_at(initial, std::min(initial.length_m, 10.0)).xy;
