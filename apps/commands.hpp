@@ -35,6 +35,8 @@ void register_render_reactive(CLI::App& render);
 void register_chart_nogo(CLI::App& chart);
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
+void register_suite(CLI::App& app);
+void register_evaluate(CLI::App& app);
 void register_render_identification(CLI::App& render);
 
 /// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north

@@ -1,5 +1,6 @@
 // deepguide: guidance planning and analysis for autonomous underwater vehicles.
-// Exit codes: 0 success, 1 bad input, 2 usage, 3 no safe route.
+// Exit codes: 0 success, 1 bad input, 2 usage, 3 no safe route, 4 done with
+// some inputs skipped (evaluate: a broken scenario).
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -40,6 +41,8 @@ int main(int argc, char** argv) {
   app::register_mission(app);
   app::register_simulate(app);
   app::register_identify(app);
+  app::register_suite(app);
+  app::register_evaluate(app);
   CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
   check->require_subcommand(1);
   app::register_check_route(*check);
@@ -71,6 +74,9 @@ int main(int argc, char** argv) {
   } catch (const ManoeuvreError& e) {
     std::cerr << "deepguide: manoeuvre failed: " << e.what() << "\n";
     return 3;
+  } catch (const PartialError& e) {
+    std::cerr << "deepguide: incomplete: " << e.what() << "\n";
+    return 4;
   } catch (const std::bad_alloc&) {
     std::cerr << "deepguide: error: out of memory\n";
     return 1;

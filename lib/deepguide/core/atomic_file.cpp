@@ -1,5 +1,7 @@
 #include "deepguide/core/atomic_file.hpp"
 
+#include <fstream>
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -56,6 +58,17 @@ void AtomicOutput::commit(bool replace) {
     throw InputError(destination_.string() + ": could not write the file (" + ec.message() + ")");
   }
   committed_ = true;
+}
+
+void write_text_file(const std::filesystem::path& path, const std::string& text, const char* what, bool replace) {
+  AtomicOutput out(path);
+  {
+    std::ofstream file(out.temp_path(), std::ios::binary);
+    file.write(text.data(), static_cast<std::streamsize>(text.size()));
+    file.flush();
+    if (!file) throw InputError(path.string() + ": could not write the " + what);
+  }
+  out.commit(replace);
 }
 
 }  // namespace deepguide

@@ -4,6 +4,7 @@
 // and rename it over the destination only when everything has been written.
 
 #include <filesystem>
+#include <string>
 
 namespace deepguide {
 
@@ -30,5 +31,11 @@ class AtomicOutput {
   std::filesystem::path temp_;
   bool committed_ = false;
 };
+
+/// Writes `text` to `path` atomically; `what` names the file in the error
+/// ("could not write the WHAT"). With replace false an existing file is kept
+/// (AtomicOutput::commit).
+void write_text_file(const std::filesystem::path& path, const std::string& text, const char* what,
+                     bool replace = true);
 
 }  // namespace deepguide

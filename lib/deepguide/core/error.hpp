@@ -27,6 +27,14 @@ class ManoeuvreError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The work was done, but some of its inputs were skipped (a batch with a
+/// broken scenario): every output was written, and they say what was left
+/// out. Exit code 4.
+class PartialError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Where in an input a problem sits; formats as "FILE: feature F: field 'X'".
 struct InputLocation {
   std::string file;

@@ -22,12 +22,27 @@ std::uint64_t splitmix64(std::uint64_t x) {
 // Clear water the vehicle needs around start and target beyond the margin (m).
 constexpr double kOpenWater_m = 25.0;
 
+}  // namespace
+
 void validate(const MonteCarloParams& p) {
   if (p.scenarios < 1 || p.scenarios > 1000000) {
     throw InputError("monte carlo: scenarios: expected 1 .. 1000000, got " + std::to_string(p.scenarios));
   }
   if (p.max_obstacles < 0 || p.max_obstacles > 1000) {
     throw InputError("monte carlo: max_obstacles: expected 0 .. 1000, got " + std::to_string(p.max_obstacles));
+  }
+  if (p.min_obstacles < 0 || p.min_obstacles > p.max_obstacles) {
+    throw InputError("monte carlo: min_obstacles: expected 0 .. max_obstacles (" + std::to_string(p.max_obstacles) +
+                     "), got " + std::to_string(p.min_obstacles));
+  }
+  if (!std::isfinite(p.min_size_m) || p.min_size_m < 0.1 || p.min_size_m > 1000.0) {
+    throw InputError("monte carlo: min_size_m: expected 0.1 .. 1000 m");
+  }
+  if (!std::isfinite(p.max_size_m) || p.max_size_m < p.min_size_m || p.max_size_m > 1000.0) {
+    throw InputError("monte carlo: max_size_m: expected min_size_m .. 1000 m");
+  }
+  if (!std::isfinite(p.sonar_noise) || p.sonar_noise < 0.0 || p.sonar_noise > 100.0) {
+    throw InputError("monte carlo: sonar_noise: expected a factor 0 .. 100");
   }
   if (!std::isfinite(p.cross_track_sigma_m) || p.cross_track_sigma_m < 0.0) {
     throw InputError("monte carlo: cross_track_sigma_m: expected a finite value >= 0");
@@ -36,8 +51,6 @@ void validate(const MonteCarloParams& p) {
     throw InputError("monte carlo: max_current_mps: expected a finite value >= 0");
   }
 }
-
-}  // namespace
 
 Scenario monte_carlo_scenario(const MonteCarloParams& params, int index) {
   validate(params);
@@ -57,20 +70,23 @@ Scenario monte_carlo_scenario(const MonteCarloParams& params, int index) {
   sc.start = Vec2::Zero();
   sc.target = length * along;
 
-  const int count =
-      params.max_obstacles == 0 ? 0 : 1 + static_cast<int>(unit(rng) * params.max_obstacles) % params.max_obstacles;
+  const int span = params.max_obstacles - params.min_obstacles + 1;
+  const int count = params.max_obstacles == 0 ? 0 : params.min_obstacles + static_cast<int>(unit(rng) * span) % span;
   const double keep_clear = sc.reactive.margin_m + kOpenWater_m;
   for (int i = 0; i < count; ++i) {
     EllipticCylinder e;
     e.id = "o" + std::to_string(i);
     for (int attempt = 0;; ++attempt) {
-      const double a = uniform(5.0, 30.0);
+      const double a = uniform(params.min_size_m, params.max_size_m);
       const Vec2 c = uniform(0.25, 0.85) * length * along + params.cross_track_sigma_m * normal(rng) * across;
       e.footprint = Ellipse{c, a, a * uniform(0.3, 1.0), uniform(0.0, kTwoPi)};
       // The disc of radius a holds the footprint: clear of it is clear of the ellipse.
       const bool clear = (c - sc.start).norm() - a > keep_clear && (c - sc.target).norm() - a > keep_clear;
       if (clear) break;
-      if (attempt > 1000) throw std::logic_error("monte carlo: no room for an obstacle");
+      if (attempt > 1000) {
+        throw InputError("monte carlo: max_size_m: expected obstacles that fit between start and target (scenario " +
+                         std::to_string(index) + " found no place for one in 1000 draws)");
+      }
     }
     sc.obstacles.push_back(e);
   }
@@ -78,6 +94,10 @@ Scenario monte_carlo_scenario(const MonteCarloParams& params, int index) {
   const double current_dir = uniform(0.0, kTwoPi);
   sc.current = current_speed * Vec2(std::cos(current_dir), std::sin(current_dir));
   sc.sonar.seed = rng();
+  sc.sonar.position_sigma_m *= params.sonar_noise;
+  sc.sonar.position_sigma_per_m *= params.sonar_noise;
+  sc.sonar.size_sigma_m *= params.sonar_noise;
+  sc.sonar.size_sigma_per_m *= params.sonar_noise;
   return sc;
 }
 

@@ -8,15 +8,19 @@
 // whatever the number of scenarios, and runs are reproducible on one build.
 // What scenario k holds (lengths in m, speeds in m/s):
 //   start (0, 0); target at distance U(400, 800) in a direction U(0, 360) deg;
-//   1 .. max_obstacles ellipses, centres at U(0.25, 0.85) of the way and
-//   N(0, cross_track_sigma_m) across it, semi-major U(5, 30), b/a U(0.3, 1),
+//   min_obstacles .. max_obstacles ellipses (uniform count), centres at
+//   U(0.25, 0.85) of the way and N(0, cross_track_sigma_m) across it (the
+//   density: the count over the leg and this spread), semi-major
+//   U(min_size_m, max_size_m), b/a U(0.3, 1),
 //   any orientation; an obstacle that would put start or target within
 //   margin + 25 m of its footprint (the vehicle's turning circle at cruise
 //   is about 20 m) is drawn again, so every run starts and ends in open water;
 //   obstacles may overlap;
 //   a uniform current of speed U(0, max_current_mps) setting in a direction U(0, 360) deg;
-//   the scenario defaults otherwise (DeepC-like vehicle, the default inexact
-//   sonar with seed from the scenario's generator, margin 10 m).
+//   the default inexact sonar with its four error sigmas times sonar_noise
+//   and its seed from the scenario's generator;
+//   the scenario defaults otherwise (DeepC-like vehicle, margin 10 m).
+// The defaults draw exactly what the first version of this generator drew.
 
 #include <cstddef>
 #include <cstdint>
@@ -32,10 +36,18 @@ namespace deepguide {
 struct MonteCarloParams {
   int scenarios = 500;
   std::uint64_t seed = 1;
+  int min_obstacles = 1;  ///< 0 .. max_obstacles
   int max_obstacles = 6;
+  double min_size_m = 5.0, max_size_m = 30.0;  ///< semi-major axis range, 0.1 .. 1000 m
   double cross_track_sigma_m = 25.0;
   double max_current_mps = 0.5;
+  double sonar_noise = 1.0;  ///< factor on the default sonar's error sigmas, 0 = exact detections
+
+  bool operator==(const MonteCarloParams&) const = default;
 };
+
+/// Throws InputError naming the first bad field ("monte carlo: FIELD: expected ...").
+void validate(const MonteCarloParams& params);
 
 /// Scenario `index` of a Monte Carlo run (header).
 Scenario monte_carlo_scenario(const MonteCarloParams& params, int index);

@@ -98,8 +98,8 @@ void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const P
     canvas.text({right, bottom + tick + 36.0 * u}, options.x_title, size, style.text, TextAlign::right);
   }
   for (const double v : yt) {
-    canvas.text({left - tick - 4.0 * u, y.to_px(v) + 4.5 * u}, format_tick(v, y_step), size, style.text,
-                TextAlign::right);
+    const std::string label = options.y_label ? options.y_label(v, y_step) : format_tick(v, y_step);
+    canvas.text({left - tick - 4.0 * u, y.to_px(v) + 4.5 * u}, label, size, style.text, TextAlign::right);
   }
   canvas.text({left, top - 9.0 * u}, options.y_title, size, style.text, TextAlign::left);
 }

@@ -60,6 +60,9 @@ struct AxesOptions {
   int max_x_ticks = 10;
   int max_y_ticks = 6;
   bool x_labels = true;  ///< false for the upper panels of a stack sharing one time axis
+  /// The y tick labels (value, step); empty: format_tick. A log axis plots
+  /// log10 of its values and labels 10^v.
+  std::function<std::string(double value, double step)> y_label = {};
 };
 
 /// Grid lines, the frame, outward ticks with their numbers and the titles

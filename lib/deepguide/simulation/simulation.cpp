@@ -1,13 +1,16 @@
 #include "deepguide/simulation/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/simulation/contacts.hpp"
 #include "deepguide/simulation/plant.hpp"
+#include "deepguide/world/sonar.hpp"
 
 namespace deepguide {
 namespace {
@@ -82,8 +85,28 @@ SimulationStats trajectory_stats(std::span<const TrajectorySample> trajectory, c
 
 SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const SimulationOptions& options) {
   validate(sc);
+  std::optional<Sonar> sonar;
+  if (sc.sonar.range_m > 0.0) sonar.emplace(sc.sonar);
+  ContactMemory contacts(sc.contacts, sc.sonar);
+  ReactiveMemory memory;
+  const Guidance reactive = [&](double t, const VehicleState& state) {
+    if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
+      contacts.update(sonar->detections(), t);
+    }
+    const ReactiveInput input{t,         state.position,     course_over_ground(state), state.speed_mps,
+                              sc.target, contacts.ellipses()};
+    return reactive_command(method, sc.reactive, memory, input);
+  };
+  SimulationResult result = simulate_guided(sc, reactive, options);
+  result.method = method;
+  result.contacts = contacts.size();
+  return result;
+}
+
+SimulationResult simulate_guided(const Scenario& sc, const Guidance& guidance, const SimulationOptions& options) {
+  validate(sc);
   // validate() leaves the target alone when there is an identify section (its
-  // target defaults to the object's centre); a reactive run needs one outside.
+  // target defaults to the object's centre); a run to the target needs one outside.
   for (const EllipticCylinder& o : sc.obstacles) {
     if (o.footprint.contains(sc.target)) {
       throw input_error({sc.source, "", "target"},
@@ -98,15 +121,10 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
   const double heading0 = sc.start_heading.value_or(math_angle(sc.target - sc.start));
   Plant plant(sc, sc.start, heading0, sc.reactive.speed_mps);
   const VehicleState& state = plant.state();
-  std::optional<Sonar> sonar;
-  if (sc.sonar.range_m > 0.0) sonar.emplace(sc.sonar);
-  ContactMemory contacts(sc.contacts, sc.sonar);
-  ReactiveMemory memory;
   NearestClearance clearance(sc.obstacles);
   StatsAccumulator stats(stats_options(sc));
 
   SimulationResult result;
-  result.method = method;
   if (options.record_trajectory) result.trajectory.reserve(std::min<std::size_t>(max_steps + 1, std::size_t{1} << 20));
 
   double progress_distance = (sc.target - sc.start).norm();
@@ -116,12 +134,9 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
   for (std::size_t k = 0;; ++k) {
     plant.at_step(k);
     const double t = plant.time_s();
-    if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
-      contacts.update(sonar->detections(), t);
-    }
-    const ReactiveInput input{t,         state.position,     course_over_ground(state), state.speed_mps,
-                              sc.target, contacts.ellipses()};
-    const ReactiveCommand cmd = reactive_command(method, sc.reactive, memory, input);
+    const auto t0 = std::chrono::steady_clock::now();
+    const ReactiveCommand cmd = guidance(t, state);
+    result.guidance_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const AutopilotOutput ap = plant.steer({cmd.course, cmd.speed_mps, sc.depth_m});
 
     const TrajectorySample x{.time_s = t,
@@ -172,7 +187,6 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
     plant.advance();
   }
   result.stats = stats.stats();
-  result.contacts = contacts.size();
   return result;
 }
 

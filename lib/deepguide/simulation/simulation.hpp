@@ -51,12 +51,14 @@
 //   reached         |p_N - target| <= arrival_radius_m
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/scenario.hpp"
+#include "deepguide/vehicle/vehicle_model.hpp"
 
 namespace deepguide {
 
@@ -101,6 +103,7 @@ struct SimulationResult {
   SimulationEnd end = SimulationEnd::time_out;
   std::size_t samples = 0;   ///< samples taken (the trajectory's size when recorded)
   std::size_t contacts = 0;  ///< contacts remembered at the end
+  double guidance_ms = 0.0;  ///< wall time spent in the guidance (sonar, contacts and method; not the plant)
 };
 
 struct SimulationOptions {
@@ -111,6 +114,17 @@ struct SimulationOptions {
 /// Runs `scenario` with `method`. Throws InputError for an invalid scenario
 /// (validate()) or a vehicle that leaves a gridded current field.
 SimulationResult simulate(const Scenario& scenario, ReactiveMethod method, const SimulationOptions& options = {});
+
+/// One guidance step: the time and the vehicle's state in, a commanded course
+/// over ground, speed and status out (the reactive methods' command; other
+/// guidance, such as following a planned route, leaves sector at 0).
+using Guidance = std::function<ReactiveCommand(double time_s, const VehicleState& state)>;
+
+/// The loop above with any guidance in step 2 (simulate() passes the sonar,
+/// the contacts and the reactive method): the same plant, samples,
+/// statistics and stop rules, so runs of different guidance compare.
+SimulationResult simulate_guided(const Scenario& scenario, const Guidance& guidance,
+                                 const SimulationOptions& options = {});
 
 /// What the statistics need besides the samples.
 struct StatsOptions {

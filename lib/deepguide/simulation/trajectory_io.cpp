@@ -35,17 +35,6 @@ void append_vehicle_columns(std::string& out, const TrajectorySample& x) {
   }
 }
 
-// The text to `path`, atomically.
-void write_text(const std::string& path, const std::string& text, const char* what) {
-  AtomicOutput out(path);
-  {
-    std::ofstream file(out.temp_path(), std::ios::binary);
-    file.write(text.data(), static_cast<std::streamsize>(text.size()));
-    file.flush();
-    if (!file) throw InputError(path + ": could not write the " + what);
-  }
-  out.commit();
-}
 
 }  // namespace
 
@@ -62,7 +51,7 @@ std::string trajectory_csv(std::span<const TrajectorySample> trajectory) {
 }
 
 void write_trajectory_csv(const std::string& path, std::span<const TrajectorySample> trajectory) {
-  write_text(path, trajectory_csv(trajectory), "trajectory");
+  write_text_file(path, trajectory_csv(trajectory), "trajectory");
 }
 
 std::string identification_csv(std::span<const IdentifySample> trajectory) {
@@ -81,7 +70,7 @@ std::string identification_csv(std::span<const IdentifySample> trajectory) {
 }
 
 void write_identification_csv(const std::string& path, std::span<const IdentifySample> trajectory) {
-  write_text(path, identification_csv(trajectory), "trajectory");
+  write_text_file(path, identification_csv(trajectory), "trajectory");
 }
 
 nlohmann::ordered_json simulation_json(const Scenario& scenario, const SimulationResult& result) {

@@ -1,0 +1,179 @@
+// deepguide suite generate DIR ...           a seeded scenario suite
+// deepguide evaluate SUITE --methods LIST -o OUTDIR [--threads N] [--shard K/N]
+// deepguide evaluate merge -o OUTDIR SHARD_DIR...
+// Exit 0 when every scenario ran; 4 when some were skipped (each is named on
+// stderr and in the outputs); 1 for bad input (an unknown method, a suite
+// that cannot be read, a folder holding another run); 2 for usage.
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/evaluation/evaluate.hpp"
+#include "deepguide/evaluation/eval_summary.hpp"
+#include "deepguide/evaluation/suite.hpp"
+
+namespace deepguide::app {
+namespace {
+
+struct EvaluateArgs {
+  std::string suite;
+  std::string methods;
+  std::string output;
+  int threads = 0;
+  std::string shard = "1/1";
+  bool fresh = false;
+  bool no_timing = false;
+  bool no_report = false;
+  bool quiet = false;
+  std::vector<std::string> merge_dirs;
+  std::string merge_output;
+};
+
+std::vector<EvalMethod> parse_methods(const std::string& list) {
+  std::vector<EvalMethod> out;
+  std::istringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) out.push_back(parse_eval_method(name));
+  if (out.empty()) throw InputError("--methods: expected a comma-separated list, e.g. visibility,quadtree,geometric,dipole");
+  return out;
+}
+
+std::string clock_text(double s) {
+  const long t = static_cast<long>(s + 0.5);
+  char buf[32];
+  if (t >= 3600) {
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  } else {
+    std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
+  }
+  return buf;
+}
+
+// A progress bar with ETA on stderr, only when stderr is a terminal.
+struct ProgressBar {
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last;
+  bool active = isatty(STDERR_FILENO) != 0;
+
+  void operator()(std::size_t done, std::size_t total) {
+    if (!active || total == 0) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (done < total && now - last < std::chrono::milliseconds(100)) return;
+    last = now;
+    const double elapsed = std::chrono::duration<double>(now - start).count();
+    const double eta = done > 0 ? elapsed * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(kWidth * done / total);
+    std::fprintf(stderr, "\r[%s%s] %zu/%zu runs %5.1f %%  %s elapsed  ETA %s ", std::string(filled, '#').c_str(),
+                 std::string(kWidth - filled, '.').c_str(), done, total, 100.0 * done / total,
+                 clock_text(elapsed).c_str(), done > 0 ? clock_text(eta).c_str() : "--:--");
+    if (done == total) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+  }
+  // A warning on its own line, the bar redrawn after it.
+  void warn(const std::string& line) {
+    if (active) std::fprintf(stderr, "\r\033[K");
+    std::fprintf(stderr, "deepguide: warning: %s\n", line.c_str());
+  }
+};
+
+void report(const EvaluationRun& run, const std::string& out_dir, bool quiet) {
+  if (!quiet) std::cout << summary_markdown(run, summarize(run));
+  std::cout << "\nwrote " << out_dir << "/rows.csv, results.json, summary.md and report.html (" << run.rows.size()
+            << " rows";
+  if (run.resumed > 0 && run.computed > 0) std::cout << ", " << run.resumed << " kept from the earlier run";
+  std::cout << ")\n";
+  if (!run.manifest.skipped.empty()) {
+    throw PartialError(std::to_string(run.manifest.skipped.size()) + " run(s) skipped, the first: " +
+                       run.manifest.skipped.front().scenario +
+                       (run.manifest.skipped.front().method.empty() ? "" : " with " + run.manifest.skipped.front().method) +
+                       ": " + run.manifest.skipped.front().error);
+  }
+}
+
+}  // namespace
+
+void register_suite(CLI::App& app) {
+  CLI::App* suite = app.add_subcommand("suite", "Scenario suites for deepguide evaluate");
+  suite->require_subcommand(1);
+  auto o = std::make_shared<std::pair<std::string, MonteCarloParams>>();
+  auto name = std::make_shared<std::string>();
+  auto flags = std::make_shared<std::pair<bool, bool>>(false, false);  // on demand, overwrite
+  CLI::App* cmd = suite->add_subcommand("generate", "Write a seeded random suite (scenario files and suite.yaml)");
+  MonteCarloParams& p = o->second;
+  cmd->add_option("DIR", o->first, "Folder to create")->required();
+  cmd->add_option("--name", *name, "Suite name (default: the folder's name)");
+  cmd->add_option("--scenarios", p.scenarios, "How many scenarios")->capture_default_str();
+  cmd->add_option("--seed", p.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--min-obstacles", p.min_obstacles, "Fewest obstacles per scenario")->capture_default_str();
+  cmd->add_option("--max-obstacles", p.max_obstacles, "Most obstacles per scenario")->capture_default_str();
+  cmd->add_option("--min-size", p.min_size_m, "Smallest semi-major axis (m)")->capture_default_str();
+  cmd->add_option("--max-size", p.max_size_m, "Largest semi-major axis (m)")->capture_default_str();
+  cmd->add_option("--spread", p.cross_track_sigma_m, "Cross-track spread of the obstacles, sigma (m); with the count, the density")
+      ->capture_default_str();
+  cmd->add_option("--max-current", p.max_current_mps, "Fastest uniform current (m/s)")->capture_default_str();
+  cmd->add_option("--sonar-noise", p.sonar_noise, "Factor on the sonar's error sigmas (0 = exact)")->capture_default_str();
+  cmd->add_flag("--on-demand", flags->first, "Write only suite.yaml: evaluate makes the scenarios as it runs");
+  cmd->add_flag("--overwrite", flags->second, "Replace the folder if it exists");
+  cmd->callback([o, name, flags] {
+    std::string n = *name;
+    if (n.empty()) n = std::filesystem::absolute(o->first).lexically_normal().filename().string();
+    write_suite(o->first, n, o->second, !flags->first, flags->second);
+    std::cout << "wrote suite " << n << " to " << o->first << ": " << o->second.scenarios << " scenarios"
+              << (flags->first ? " (made on demand from suite.yaml)" : "") << "\n";
+  });
+}
+
+void register_evaluate(CLI::App& app) {
+  auto o = std::make_shared<EvaluateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "evaluate", "Run every scenario of a suite through planners and reactive methods; tables, summary and report");
+  cmd->add_option("SUITE", o->suite, "Suite folder, its suite.yaml, or one scenario file (docs/EVALUATION.md)");
+  cmd->add_option("--methods", o->methods,
+                  "Comma-separated methods: geometric, dipole, potential, or GRAPH[:SEARCH][:COST] "
+                  "(visibility, visibility-full, tangent, quadtree; astar, dijkstra; length, time, energy)");
+  cmd->add_option("-o,--output", o->output, "Output folder (rows.csv, results.json, summary.md, report.html)");
+  cmd->add_option("--threads", o->threads, "Worker threads (default: every core)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--shard", o->shard, "Run shard K of N (K/N): scenarios i with i mod N = K - 1")->capture_default_str();
+  cmd->add_flag("--fresh", o->fresh, "Discard the rows of an earlier run in the output folder instead of resuming");
+  cmd->add_flag("--no-timing", o->no_timing, "Write compute_ms as 0, so reruns are byte-identical");
+  cmd->add_flag("--no-report", o->no_report, "Skip the figures and report.html");
+  cmd->add_flag("-q,--quiet", o->quiet, "Do not print the summary");
+  CLI::App* merge = cmd->add_subcommand("merge", "Join the output folders of all shards of a run into one");
+  merge->add_option("SHARD_DIR", o->merge_dirs, "The shards' output folders")->required();
+  merge->add_option("-o,--output", o->merge_output, "Output folder")->required();
+  merge->add_flag("--no-report", o->no_report, "Skip the figures and report.html");
+  merge->add_flag("-q,--quiet", o->quiet, "Do not print the summary");
+  merge->callback([o] {
+    const EvaluationRun run = merge_evaluations(o->merge_dirs, o->merge_output, !o->no_report);
+    report(run, o->merge_output, o->quiet);
+  });
+  cmd->callback([o, cmd] {
+    if (cmd->got_subcommand("merge")) return;
+    if (o->suite.empty()) throw CLI::RequiredError("SUITE");
+    if (o->methods.empty()) throw CLI::RequiredError("--methods");
+    if (o->output.empty()) throw CLI::RequiredError("--output");
+    EvaluateOptions options;
+    options.methods = parse_methods(o->methods);
+    options.shard = parse_shard(o->shard);
+    options.threads = o->threads;
+    options.fresh = o->fresh;
+    options.timing = !o->no_timing;
+    options.report = !o->no_report;
+    auto bar = std::make_shared<ProgressBar>();
+    options.progress = [bar](std::size_t done, std::size_t total) { (*bar)(done, total); };
+    options.warn = [bar](const std::string& line) { bar->warn(line); };
+    const Suite suite = read_suite(o->suite);
+    const EvaluationRun run = evaluate_suite(suite, o->output, options);
+    report(run, o->output, o->quiet);
+  });
+}
+
+}  // namespace deepguide::app

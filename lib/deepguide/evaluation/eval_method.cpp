@@ -1,0 +1,131 @@
+#include "deepguide/evaluation/eval_method.hpp"
+
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/planning/single_query.hpp"
+#include "deepguide/simulation/route_following.hpp"
+#include "deepguide/simulation/simulation.hpp"
+
+namespace deepguide {
+
+namespace {
+
+[[noreturn]] void unknown(const std::string& text, const std::string& why) {
+  throw InputError("unknown method '" + printable(text) + "'" + (why.empty() ? "" : " (" + why + ")") +
+                   ": expected geometric, dipole, potential, or GRAPH[:SEARCH][:COST] with GRAPH visibility, "
+                   "visibility-full, tangent or quadtree, SEARCH astar or dijkstra, COST length, time or energy");
+}
+
+void fill_from(MethodRun& run, const SimulationResult& sim) {
+  run.end = std::string(to_string(sim.end));
+  run.reached = sim.stats.reached;
+  run.collided = sim.stats.collided;
+  run.path_length_m = sim.stats.path_length_m;
+  run.energy_j = sim.stats.energy_j;
+  run.time_s = sim.stats.time_s;
+  run.min_clearance_m = sim.stats.min_clearance_m;
+  run.max_rate_ref = sim.stats.max_abs_rate_ref;
+  run.rms_rate_ref = sim.stats.rms_rate_ref;
+  run.max_rate = sim.stats.max_abs_rate;
+  run.rms_rate = sim.stats.rms_rate;
+  run.heading_reversals = sim.stats.heading_reversals;
+}
+
+MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
+  ObstacleSet obstacles;
+  obstacles.ellipses = sc.obstacles;
+  PlannerOptions options;
+  options.margin = sc.reactive.margin_m;
+  options.graph = m.graph;
+  options.search = m.search;
+  if (m.cost != CostKind::length) {
+    auto cost = std::make_shared<CostModel>();
+    cost->kind = m.cost;
+    const Vec2 current = sc.current;
+    cost->current = [current](const Vec2&, double) { return std::optional<Vec2>(current); };
+    cost->max_current_mps = current.norm();
+    cost->speed_mps = sc.reactive.speed_mps;
+    cost->leg.energy = sc.energy;
+    validate(*cost);
+    options.cost = cost;
+  }
+  MethodRun run;
+  SingleQueryPlan plan;
+  try {
+    plan = plan_single_query(obstacles, {sc.start, sc.target, false}, options);
+  } catch (const NoRouteError& e) {
+    run.end = "no_route";
+    run.note = e.what();
+    return run;
+  }
+  run.compute_ms = plan.build_ms + plan.query_ms;
+  const PlanResult& r = plan.outcome.result;
+  run.graph_vertices = r.stats.graph_vertices;
+  run.graph_edges = r.stats.graph_edges;
+  if (!r.found) {
+    run.end = "no_route";
+    run.note = r.message;
+    run.min_clearance_m = std::numeric_limits<double>::infinity();
+    return run;
+  }
+  run.route_length_m = r.route.length();
+  RouteFollowing follow;
+  follow.simulation.record_trajectory = false;
+  fill_from(run, follow_route(sc, r.route, follow));
+  return run;
+}
+
+}  // namespace
+
+EvalMethod parse_eval_method(const std::string& text) {
+  EvalMethod m;
+  if (const auto reactive = parse_reactive_method(text)) {
+    m.reactive = *reactive;
+    m.name = text;
+    return m;
+  }
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
+  if (text.empty() || text.back() == ':' || parts.empty() || parts.size() > 3) unknown(text, "");
+  try {
+    m.graph = parse_graph_kind(parts[0]);
+  } catch (const InputError&) {
+    unknown(text, "");
+  }
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    if (parts[i] == "astar" || parts[i] == "dijkstra") {
+      if (i != 1) unknown(text, "the search comes before the cost");
+      m.search = parse_search(parts[i]);
+    } else if (parts[i] == "length" || parts[i] == "time" || parts[i] == "energy") {
+      if (i + 1 != parts.size()) unknown(text, "the cost comes last");
+      m.cost = parse_cost_kind(parts[i]);
+    } else {
+      unknown(text, "no search or cost '" + printable(parts[i]) + "'");
+    }
+  }
+  if (m.cost != CostKind::length && m.graph == GraphKind::tangent) {
+    unknown(text, "the tangent graph prices by length only");
+  }
+  m.name = to_string(m.graph);
+  if (m.search != SearchAlgorithm::astar) m.name += ":" + to_string(m.search);
+  if (m.cost != CostKind::length) m.name += ":" + to_string(m.cost);
+  return m;
+}
+
+MethodRun run_method(const Scenario& sc, const EvalMethod& m) {
+  if (m.is_planner()) return run_planner(sc, m);
+  SimulationOptions options;
+  options.record_trajectory = false;
+  const SimulationResult sim = simulate(sc, *m.reactive, options);
+  MethodRun run;
+  fill_from(run, sim);
+  run.compute_ms = sim.guidance_ms;
+  return run;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,54 @@
+#pragma once
+// What an evaluation's rows say: per method the counts, medians and 95th
+// percentiles of every metric and the wins; and whether the seed's two claims
+// hold on them (docs/EVALUATION.md):
+//   1. "the visibility graph ... is justified by its smaller computation cost
+//      and the form of the determined paths" compared with the quadtree graph:
+//      cheaper = a smaller median compute time (with --no-timing: a smaller
+//      median graph, vertices + edges); better routes = the visibility route
+//      is no longer than the quadtree's in most scenarios and the median
+//      length ratio quadtree / visibility is at least 1 (paired, scenarios
+//      where both found a route).
+//   2. "with the geometrical construction the reference turning rate r
+//      possesses substantially smaller maximum values than by the harmonic
+//      dipole potentials": the max |r_ref| of geometric below dipole's in most
+//      scenarios, and its median below dipole's (paired, every scenario both ran).
+// A claim whose methods are not in the run is "not tested".
+// Wins: per scenario, the methods that reached the target without a collision
+// and spent the least energy (within 1 J; ties win together).
+
+#include <string>
+#include <vector>
+
+#include "deepguide/evaluation/evaluate.hpp"
+#include "deepguide/evaluation/monte_carlo.hpp"
+
+namespace deepguide {
+
+struct MethodStats {
+  std::string method;
+  int runs = 0, reached = 0, collisions = 0, no_route = 0, other_ends = 0, wins = 0;
+  Distribution path_length_m, route_length_m, energy_kj, time_s, min_clearance_m;
+  Distribution max_rate_ref_deg_s, rms_rate_ref_deg_s, compute_ms, graph_size;
+};
+
+struct ClaimCheck {
+  std::string claim;    ///< the seed's words, shortened
+  std::string verdict;  ///< "holds", "does not hold" or "not tested"
+  std::vector<std::string> evidence;  ///< lines with the numbers
+};
+
+struct EvaluationSummary {
+  std::vector<MethodStats> methods;  ///< in the run's order
+  std::vector<ClaimCheck> claims;    ///< the seed's two claims
+};
+
+EvaluationSummary summarize(const EvaluationRun& run);
+
+/// The summary as Markdown (summary.md; also what the terminal shows).
+std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& summary);
+
+/// Writes results.json (manifest, rows, summary, claims) and summary.md into `dir`.
+void write_results(const std::string& dir, const EvaluationRun& run);
+
+}  // namespace deepguide

@@ -1,0 +1,353 @@
+#include "deepguide/evaluation/evaluate.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "deepguide/core/atomic_file.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/evaluation/eval_report.hpp"
+#include "deepguide/evaluation/eval_summary.hpp"
+
+namespace deepguide {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kManifest = "run.json";
+constexpr const char* kRows = "rows.csv";
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": expected a readable file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json manifest_json(const RunManifest& m) {
+  nlohmann::json skipped = nlohmann::json::array();
+  for (const SkippedRun& s : m.skipped) {
+    skipped.push_back({{"scenario_index", s.scenario_index}, {"scenario", s.scenario}, {"method", s.method},
+                       {"error", s.error}});
+  }
+  return {{"suite", m.suite},   {"suite_source", m.suite_source},
+          {"scenarios", m.scenarios}, {"methods", m.methods},
+          {"shard", std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count)},
+          {"timing", m.timing}, {"skipped", skipped}};
+}
+
+RunManifest read_manifest(const fs::path& path) {
+  const std::string where = path.string();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(read_all(path));
+    RunManifest m;
+    m.suite = j.at("suite").get<std::string>();
+    m.suite_source = j.at("suite_source").get<std::string>();
+    m.scenarios = j.at("scenarios").get<std::size_t>();
+    m.methods = j.at("methods").get<std::vector<std::string>>();
+    m.shard = parse_shard(j.at("shard").get<std::string>());
+    m.timing = j.at("timing").get<bool>();
+    for (const auto& s : j.at("skipped")) {
+      m.skipped.push_back({s.at("scenario_index").get<std::size_t>(), s.at("scenario").get<std::string>(),
+                           s.at("method").get<std::string>(), s.at("error").get<std::string>()});
+    }
+    return m;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where + ": expected deepguide's run manifest (suite, scenarios, methods, shard, timing, "
+                             "skipped): " + printable(e.what(), 100));
+  }
+}
+
+bool in_shard(std::size_t scenario, const Shard& shard) {
+  return scenario % static_cast<std::size_t>(shard.count) == static_cast<std::size_t>(shard.index - 1);
+}
+
+// Rows in canonical order: scenario, then the methods as asked.
+void sort_rows(std::vector<EvalRow>& rows, const std::vector<std::string>& methods) {
+  std::map<std::string, std::size_t> order;
+  for (std::size_t i = 0; i < methods.size(); ++i) order[methods[i]] = i;
+  std::stable_sort(rows.begin(), rows.end(), [&](const EvalRow& a, const EvalRow& b) {
+    if (a.scenario_index != b.scenario_index) return a.scenario_index < b.scenario_index;
+    return order[a.method] < order[b.method];
+  });
+}
+
+std::string rows_text(const std::vector<EvalRow>& rows, bool timing) {
+  std::string text = eval_rows_header();
+  for (const EvalRow& r : rows) text += eval_row_csv(r, timing);
+  return text;
+}
+
+void sort_skipped(std::vector<SkippedRun>& skipped) {
+  std::sort(skipped.begin(), skipped.end(), [](const SkippedRun& a, const SkippedRun& b) {
+    return std::tie(a.scenario_index, a.method) < std::tie(b.scenario_index, b.method);
+  });
+}
+
+// The final files of a finished run: rows in order, manifest, results, summary, report.
+void finish(const fs::path& dir, EvaluationRun& run, bool report) {
+  sort_rows(run.rows, run.manifest.methods);
+  sort_skipped(run.manifest.skipped);
+  const std::string text = rows_text(run.rows, run.manifest.timing);
+  // Read back: every summary is made from the rows as written (eval_rows.hpp).
+  run.rows = parse_eval_rows(text, (dir / kRows).string(), false);
+  write_text_file(dir / kRows, text, "rows");
+  write_text_file(dir / kManifest, manifest_json(run.manifest).dump(2) + "\n", "run manifest");
+  write_results(dir.string(), run);
+  if (report) write_report(dir.string(), run);
+}
+
+// One job's outcome: a row, or why the run was skipped.
+struct JobResult {
+  std::optional<EvalRow> row;
+  std::optional<SkippedRun> skipped;
+};
+
+}  // namespace
+
+Shard parse_shard(const std::string& text) {
+  Shard s;
+  const auto slash = text.find('/');
+  auto whole = [](const std::string& t, int& v) {
+    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos) return false;
+    v = std::stoi(t);
+    return true;
+  };
+  if (slash == std::string::npos || !whole(text.substr(0, slash), s.index) || !whole(text.substr(slash + 1), s.count) ||
+      s.count < 1 || s.count > 100000 || s.index < 1 || s.index > s.count) {
+    throw InputError("--shard: expected K/N with 1 <= K <= N <= 100000 (e.g. 3/8), got '" + printable(text) + "'");
+  }
+  return s;
+}
+
+EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, const EvaluateOptions& options) {
+  if (options.methods.empty()) throw InputError("--methods: expected at least one method");
+  RunManifest manifest;
+  manifest.suite = suite.name;
+  manifest.suite_source = suite.source;
+  manifest.scenarios = suite.scenarios.size();
+  manifest.shard = options.shard;
+  manifest.timing = options.timing;
+  for (const EvalMethod& m : options.methods) {
+    if (std::find(manifest.methods.begin(), manifest.methods.end(), m.name) != manifest.methods.end()) {
+      throw InputError("--methods: expected each method once, got '" + m.name + "' twice");
+    }
+    manifest.methods.push_back(m.name);
+  }
+
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir, ec)) throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+
+  // Resume: keep the rows of the same run, drop a line cut off by a kill.
+  EvaluationRun run;
+  run.manifest = manifest;
+  std::set<std::pair<std::size_t, std::string>> done;
+  const bool earlier = fs::exists(dir / kManifest, ec) || fs::exists(dir / kRows, ec);
+  if (earlier && !options.fresh) {
+    if (!fs::exists(dir / kManifest, ec) || !fs::exists(dir / kRows, ec)) {
+      throw InputError(out_dir + ": expected both run.json and rows.csv of an earlier run, or neither "
+                                 "(give --fresh to start over)");
+    }
+    const RunManifest before = read_manifest(dir / kManifest);
+    if (before.suite != manifest.suite || before.scenarios != manifest.scenarios ||
+        before.methods != manifest.methods || before.shard != manifest.shard || before.timing != manifest.timing) {
+      throw InputError(out_dir + ": holds another run (suite " + before.suite + ", " +
+                       std::to_string(before.scenarios) + " scenarios, shard " + std::to_string(before.shard.index) +
+                       "/" + std::to_string(before.shard.count) +
+                       "): give --fresh to discard it, or another -o folder");
+    }
+    std::size_t dropped = 0;
+    for (EvalRow& r : parse_eval_rows(read_all(dir / kRows), (dir / kRows).string(), true, &dropped)) {
+      const bool known = r.scenario_index < suite.scenarios.size() &&
+                         suite.scenarios[r.scenario_index].id == r.scenario && in_shard(r.scenario_index, options.shard) &&
+                         std::find(manifest.methods.begin(), manifest.methods.end(), r.method) != manifest.methods.end();
+      if (known && done.insert({r.scenario_index, r.method}).second) run.rows.push_back(std::move(r));
+    }
+    run.resumed = run.rows.size();
+  }
+  // The journal starts as the kept rows; every new row is appended and flushed.
+  sort_rows(run.rows, manifest.methods);
+  write_text_file(dir / kRows, rows_text(run.rows, options.timing), "rows");
+  write_text_file(dir / kManifest, manifest_json(manifest).dump(2) + "\n", "run manifest");
+
+  struct Job {
+    std::size_t scenario;
+    std::size_t method;
+  };
+  std::vector<Job> jobs;
+  for (std::size_t i = 0; i < suite.scenarios.size(); ++i) {
+    if (!in_shard(i, options.shard)) continue;
+    for (std::size_t j = 0; j < options.methods.size(); ++j) {
+      if (!done.count({i, options.methods[j].name})) jobs.push_back({i, j});
+    }
+  }
+
+  std::vector<std::optional<JobResult>> results(jobs.size());
+  std::mutex mutex;
+  std::condition_variable ready;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  auto work = [&] {
+    for (;;) {
+      const std::size_t k = next.fetch_add(1);
+      if (k >= jobs.size() || stop) return;
+      const Job& job = jobs[k];
+      const SuiteScenario& s = suite.scenarios[job.scenario];
+      const EvalMethod& method = options.methods[job.method];
+      JobResult out;
+      std::string stage;
+      try {
+        const Scenario sc = load_suite_scenario(suite, job.scenario);
+        stage = method.name;
+        validate(sc);
+        out.row = EvalRow{job.scenario, s.id, method.name, run_method(sc, method)};
+      } catch (const std::exception& e) {
+        out.skipped = SkippedRun{job.scenario, s.id, stage, printable(e.what(), 400)};
+      }
+      {
+        std::lock_guard lock(mutex);
+        results[k] = std::move(out);
+      }
+      ready.notify_all();
+    }
+  };
+  const int threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::vector<std::jthread> pool;
+  for (int t = 0; t < std::min<int>(threads, static_cast<int>(std::max<std::size_t>(jobs.size(), 1))); ++t) {
+    pool.emplace_back(work);
+  }
+
+  std::ofstream journal(dir / kRows, std::ios::binary | std::ios::app);
+  if (!journal) throw InputError((dir / kRows).string() + ": could not open the rows for appending");
+  std::set<std::size_t> unreadable;  // scenarios already reported as unreadable
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    JobResult r;
+    {
+      std::unique_lock lock(mutex);
+      ready.wait(lock, [&] { return results[k].has_value(); });
+      r = std::move(*results[k]);
+      results[k].reset();
+    }
+    if (r.row) {
+      journal << eval_row_csv(*r.row, options.timing);
+      journal.flush();
+      if (!journal) throw InputError((dir / kRows).string() + ": could not write a row");
+      run.rows.push_back(std::move(*r.row));
+    } else {
+      SkippedRun& s = *r.skipped;
+      if (s.method.empty() && !unreadable.insert(s.scenario_index).second) continue;
+      if (options.warn) {
+        options.warn("skipped " + s.scenario + (s.method.empty() ? "" : " with " + s.method) + ": " + s.error);
+      }
+      run.manifest.skipped.push_back(std::move(s));
+    }
+    ++run.computed;
+    if (options.progress) options.progress(k + 1, jobs.size());
+    if (options.stop_after > 0 && k + 1 >= options.stop_after && k + 1 < jobs.size()) {
+      stop = true;
+      run.complete = false;
+      break;
+    }
+  }
+  journal.close();
+  pool.clear();  // joins
+  if (!run.complete) return run;
+  finish(dir, run, options.report);
+  return run;
+}
+
+EvaluationRun read_evaluation(const std::string& dir_text) {
+  const fs::path dir(dir_text);
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / kManifest, ec) || !fs::is_regular_file(dir / kRows, ec)) {
+    throw InputError(dir_text + ": expected an evaluation folder (run.json and rows.csv)");
+  }
+  EvaluationRun run;
+  run.manifest = read_manifest(dir / kManifest);
+  run.rows = parse_eval_rows(read_all(dir / kRows), (dir / kRows).string(), false);
+  return run;
+}
+
+EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, const std::string& out_dir, bool report) {
+  if (shard_dirs.empty()) throw InputError("evaluate merge: expected the shards' folders");
+  EvaluationRun merged;
+  std::vector<std::string> seen;  // the folder of each shard index
+  for (const std::string& d : shard_dirs) {
+    EvaluationRun part = read_evaluation(d);
+    const RunManifest& m = part.manifest;
+    if (seen.empty()) {
+      merged.manifest = m;
+      merged.manifest.shard = Shard{};
+      merged.manifest.skipped.clear();
+      seen.assign(static_cast<std::size_t>(m.shard.count), "");
+    }
+    const RunManifest& first = merged.manifest;
+    if (m.suite != first.suite || m.scenarios != first.scenarios || m.methods != first.methods ||
+        m.timing != first.timing || static_cast<std::size_t>(m.shard.count) != seen.size()) {
+      throw InputError(d + ": expected a shard of the same run as " + shard_dirs.front() + " (suite " + first.suite +
+                       ", " + std::to_string(first.scenarios) + " scenarios, " + std::to_string(seen.size()) +
+                       " shards, the same methods), got suite " + m.suite + ", " + std::to_string(m.scenarios) +
+                       " scenarios, shard " + std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count));
+    }
+    std::string& slot = seen[static_cast<std::size_t>(m.shard.index - 1)];
+    if (!slot.empty()) {
+      throw InputError(d + ": shard " + std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count) +
+                       " was given already (" + slot + ")");
+    }
+    slot = d;
+    // Complete: every scenario of the shard has each method's row or a skip.
+    std::set<std::pair<std::size_t, std::string>> have;
+    for (const EvalRow& r : part.rows) {
+      if (!in_shard(r.scenario_index, m.shard) || !have.insert({r.scenario_index, r.method}).second) {
+        throw InputError(d + ": rows.csv: scenario " + r.scenario + " with " + r.method +
+                         (in_shard(r.scenario_index, m.shard) ? " twice" : " does not belong to this shard"));
+      }
+    }
+    std::set<std::size_t> unreadable;
+    for (const SkippedRun& s : m.skipped) {
+      if (s.method.empty()) unreadable.insert(s.scenario_index);
+      else have.insert({s.scenario_index, s.method});
+    }
+    for (std::size_t i = 0; i < m.scenarios; ++i) {
+      if (!in_shard(i, m.shard) || unreadable.count(i)) continue;
+      for (const std::string& method : m.methods) {
+        if (!have.count({i, method})) {
+          throw InputError(d + ": expected a finished shard, but scenario index " + std::to_string(i) + " with " +
+                           method + " has no row (run `deepguide evaluate` on it again to finish it)");
+        }
+      }
+    }
+    for (EvalRow& r : part.rows) merged.rows.push_back(std::move(r));
+    for (SkippedRun& s : part.manifest.skipped) merged.manifest.skipped.push_back(std::move(s));
+  }
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    if (seen[k].empty()) {
+      throw InputError("evaluate merge: expected all " + std::to_string(seen.size()) + " shards, shard " +
+                       std::to_string(k + 1) + "/" + std::to_string(seen.size()) + " is missing");
+    }
+  }
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir, ec)) throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+  merged.resumed = merged.rows.size();
+  finish(dir, merged, report);
+  return merged;
+}
+
+}  // namespace deepguide

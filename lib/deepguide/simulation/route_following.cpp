@@ -1,0 +1,74 @@
+#include "deepguide/simulation/route_following.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "deepguide/core/angles.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
+#include "deepguide/mission/basic_manoeuvres.hpp"
+
+namespace deepguide {
+
+namespace {
+
+// Whether a segment is done: the vehicle is past its end along it.
+bool passed(const Vec2& p, const Vec2& a, const Vec2& b) { return (p - a).dot(b - a) >= (b - a).squaredNorm(); }
+
+}  // namespace
+
+SimulationResult follow_route(const Scenario& sc, const Route& route, const RouteFollowing& options) {
+  if (route.points.size() < 2) throw InputError(sc.source + ": route: expected at least two points");
+  constexpr double kEnds_m = 1e-6;
+  if ((route.points.front() - sc.start).norm() > kEnds_m || (route.points.back() - sc.target).norm() > kEnds_m) {
+    throw InputError(sc.source + ": route: expected a route from the start " + point_text(sc.start) +
+                     " to the target " + point_text(sc.target) + ", got " + point_text(route.points.front()) +
+                     " to " + point_text(route.points.back()));
+  }
+  // Legs of zero length are dropped: they have no direction.
+  std::vector<Vec2> legs{route.points.front()};
+  double length = 0.0;
+  for (const Vec2& q : route.points) {
+    if ((q - legs.back()).norm() > 1e-9) {
+      length += (q - legs.back()).norm();
+      legs.push_back(q);
+    }
+  }
+  if (legs.size() < 2) legs.push_back(route.points.back());
+  const double lookahead =
+      options.lookahead_m > 0.0 ? options.lookahead_m : turn_radius(sc.vehicle, sc.reactive.speed_mps);
+  std::size_t leg = 0;  // steering along legs[leg] -> legs[leg + 1]
+  const Guidance line_of_sight = [&](double, const VehicleState& state) {
+    const Vec2& p = state.position;
+    while (leg + 2 < legs.size() &&
+           (passed(p, legs[leg], legs[leg + 1]) || (p - legs[leg + 1]).norm() < lookahead)) {
+      ++leg;
+    }
+    const Vec2 a = legs[leg], b = legs[leg + 1];
+    ReactiveCommand cmd;
+    cmd.speed_mps = sc.reactive.speed_mps;
+    if (leg + 2 == legs.size() && passed(p, a, b)) {
+      // Past the target's abeam on the last leg: home on it.
+      const Vec2 to = b - p;
+      cmd.course = to.norm() > 1e-9 ? math_angle(to) : course_over_ground(state);
+      return cmd;
+    }
+    const Vec2 t = (b - a).normalized();
+    const double cross = t.x() * (p - a).y() - t.y() * (p - a).x();  // left of the leg > 0
+    cmd.course = wrap_pi(math_angle(t) - std::atan2(cross, lookahead));
+    return cmd;
+  };
+  // Progress is made along the route, which may lead away from the target for
+  // a while: the no-progress rule (distance to the target) is off, and the
+  // time limit, unless the scenario sets one, is 3 x the route's time + 300 s.
+  Scenario run = sc;
+  if (std::isnan(run.max_time_s)) {
+    run.max_time_s = std::min(kMaxSimulationTime_s, 3.0 * length / sc.reactive.speed_mps + 300.0);
+  }
+  run.no_progress_s = kMaxSimulationTime_s;
+  return simulate_guided(run, line_of_sight, options.simulation);
+}
+
+}  // namespace deepguide

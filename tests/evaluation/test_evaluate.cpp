@@ -1,0 +1,255 @@
+// Batch evaluation: method names, rows that are the same for any number of
+// threads, for merged shards and for a run stopped and resumed; a broken
+// scenario skipped while the rest runs; a folder holding another run
+// refused; hand-checked rows; and the CLI's exit codes, including a run
+// killed with SIGKILL and started again.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "../test_support.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/evaluation/eval_summary.hpp"
+#include "deepguide/evaluation/evaluate.hpp"
+
+using namespace deepguide;
+using deepguide::test::ScratchDir;
+
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::vector<EvalMethod> methods(std::initializer_list<const char*> names) {
+  std::vector<EvalMethod> out;
+  for (const char* n : names) out.push_back(parse_eval_method(n));
+  return out;
+}
+
+Suite small_suite(const ScratchDir& tmp, int scenarios = 8) {
+  MonteCarloParams p;
+  p.scenarios = scenarios;
+  p.seed = 21;
+  p.max_obstacles = 4;
+  write_suite(tmp.file("suite"), "small", p, true, true);
+  return read_suite(tmp.file("suite"));
+}
+
+EvaluateOptions options(std::initializer_list<const char*> names, int threads) {
+  EvaluateOptions o;
+  o.methods = methods(names);
+  o.threads = threads;
+  o.timing = false;
+  o.report = false;
+  return o;
+}
+
+void expect_same_outputs(const std::filesystem::path& a, const std::filesystem::path& b) {
+  for (const char* f : {"rows.csv", "results.json", "summary.md"}) {
+    const std::string x = slurp(a / f), y = slurp(b / f);
+    EXPECT_FALSE(x.empty()) << f;
+    EXPECT_EQ(x, y) << f << " differs between " << a << " and " << b;
+  }
+}
+
+}  // namespace
+
+TEST(EvalMethod, NamesParseToCanonicalForms) {
+  EXPECT_EQ(parse_eval_method("geometric").reactive, ReactiveMethod::geometric);
+  const EvalMethod q = parse_eval_method("quadtree:dijkstra:length");
+  EXPECT_TRUE(q.is_planner());
+  EXPECT_EQ(q.graph, GraphKind::quadtree);
+  EXPECT_EQ(q.search, SearchAlgorithm::dijkstra);
+  EXPECT_EQ(q.name, "quadtree:dijkstra");
+  EXPECT_EQ(parse_eval_method("visibility:astar").name, "visibility");
+  EXPECT_EQ(parse_eval_method("visibility:energy").name, "visibility:energy");
+  EXPECT_EQ(parse_eval_method("visibility-full:dijkstra:time").cost, CostKind::time);
+  for (const char* bad : {"", "astar", "visibility:", "visibility:energy:astar", "visibility:fast", "octree",
+                          "tangent:energy", "geometric:astar", "visibility:astar:time:x"}) {
+    deepguide::test::expect_one_line_error([&] { (void)parse_eval_method(bad); }, "unknown method");
+  }
+}
+
+TEST(Evaluate, HandCheckedRowsWithoutObstacles) {
+  ScratchDir tmp;
+  const std::string file = tmp.write("open.yaml", "start: {x: 0, y: 0}\ntarget: {x: 300, y: 400}\n");
+  const Suite suite = read_suite(file);
+  const EvaluationRun run = evaluate_suite(suite, tmp.file("out"), options({"visibility", "quadtree", "geometric"}, 1));
+  ASSERT_EQ(run.rows.size(), 3u);
+  const MethodRun& vis = run.rows[0].run;
+  EXPECT_EQ(run.rows[0].method, "visibility");
+  EXPECT_DOUBLE_EQ(vis.route_length_m, 500.0);  // the straight line, to the mm the CSV keeps
+  for (const EvalRow& r : run.rows) {
+    EXPECT_EQ(r.run.end, "reached") << r.method;
+    EXPECT_FALSE(r.run.collided);
+    EXPECT_TRUE(std::isinf(r.run.min_clearance_m));
+    // Sailed straight at cruise (2.058 m/s), stopping within the 5 m arrival radius.
+    EXPECT_NEAR(r.run.path_length_m, 495.0, 1.0) << r.method;
+    EXPECT_NEAR(r.run.time_s, 495.0 / (4.0 * 1852.0 / 3600.0), 2.0) << r.method;
+    EXPECT_LT(r.run.max_rate_ref, 1e-6) << r.method;
+  }
+}
+
+TEST(Evaluate, OneAndTwoThreadsAndMergedShardsWriteTheSameBytes) {
+  ScratchDir tmp;
+  const Suite suite = small_suite(tmp);
+  const auto names = {"visibility", "quadtree", "geometric", "dipole"};
+  const EvaluationRun one = evaluate_suite(suite, tmp.file("one"), options(names, 1));
+  const EvaluationRun two = evaluate_suite(suite, tmp.file("two"), options(names, 2));
+  ASSERT_EQ(one.rows.size(), 32u);
+  expect_same_outputs(tmp.path() / "one", tmp.path() / "two");
+  std::vector<std::string> shards;
+  for (int k = 1; k <= 3; ++k) {
+    EvaluateOptions o = options(names, 2);
+    o.shard = {k, 3};
+    const std::string dir = tmp.file("shard" + std::to_string(k));
+    const EvaluationRun part = evaluate_suite(suite, dir, o);
+    for (const EvalRow& r : part.rows) EXPECT_EQ(r.scenario_index % 3, static_cast<std::size_t>(k - 1));
+    shards.push_back(dir);
+  }
+  std::swap(shards[0], shards[2]);  // any order
+  merge_evaluations(shards, tmp.file("merged"), false);
+  EXPECT_EQ(slurp(tmp.path() / "merged" / "rows.csv"), slurp(tmp.path() / "one" / "rows.csv"));
+  EXPECT_EQ(slurp(tmp.path() / "merged" / "summary.md"), slurp(tmp.path() / "one" / "summary.md"));
+
+  // Every route the planners sailed stayed out of every obstacle, and every
+  // visibility route is no longer than the quadtree's on the same scenario.
+  for (std::size_t i = 0; i < one.rows.size(); i += 4) {
+    EXPECT_FALSE(one.rows[i].run.collided) << one.rows[i].scenario;
+    EXPECT_FALSE(one.rows[i + 1].run.collided) << one.rows[i + 1].scenario;
+    EXPECT_LE(one.rows[i].run.route_length_m, one.rows[i + 1].run.route_length_m + 1e-3) << one.rows[i].scenario;
+  }
+
+  // Bad merges: a shard missing, one given twice, shards of another run.
+  using deepguide::test::expect_one_line_error;
+  expect_one_line_error([&] { merge_evaluations({shards[0], shards[1]}, tmp.file("m2"), false); }, "is missing");
+  expect_one_line_error([&] { merge_evaluations({shards[0], shards[0], shards[1]}, tmp.file("m3"), false); },
+                        "given already");
+  expect_one_line_error([&] { merge_evaluations({shards[0], tmp.file("one")}, tmp.file("m4"), false); },
+                        "same run");
+}
+
+TEST(Evaluate, StoppedRunResumesWithoutLostOrDuplicatedRows) {
+  ScratchDir tmp;
+  const Suite suite = small_suite(tmp);
+  const auto names = {"visibility", "geometric", "dipole"};
+  const EvaluationRun whole = evaluate_suite(suite, tmp.file("whole"), options(names, 2));
+
+  EvaluateOptions o = options(names, 2);
+  o.stop_after = 10;
+  const EvaluationRun cut = evaluate_suite(suite, tmp.file("cut"), o);
+  EXPECT_FALSE(cut.complete);
+  EXPECT_EQ(cut.computed, 10u);
+  // A kill while a row was being written leaves half a line.
+  { std::ofstream(tmp.path() / "cut" / "rows.csv", std::ios::app) << "11,scenario-0003,dipo"; }
+  EXPECT_EQ(deepguide::parse_eval_rows(slurp(tmp.path() / "cut" / "rows.csv"), "rows", true).size(), 10u);
+
+  o.stop_after = 0;
+  const EvaluationRun resumed = evaluate_suite(suite, tmp.file("cut"), o);
+  EXPECT_TRUE(resumed.complete);
+  EXPECT_EQ(resumed.resumed, 10u);
+  EXPECT_EQ(resumed.computed, 14u);
+  expect_same_outputs(tmp.path() / "whole", tmp.path() / "cut");
+  std::set<std::pair<std::size_t, std::string>> keys;
+  for (const EvalRow& r : resumed.rows) EXPECT_TRUE(keys.insert({r.scenario_index, r.method}).second);
+  EXPECT_EQ(keys.size(), 24u);
+
+  // Another run into the same folder is refused, unless --fresh.
+  deepguide::test::expect_one_line_error(
+      [&] { (void)evaluate_suite(suite, tmp.file("cut"), options({"visibility"}, 1)); }, "holds another run");
+  EvaluateOptions fresh = options({"visibility"}, 1);
+  fresh.fresh = true;
+  EXPECT_EQ(evaluate_suite(suite, tmp.file("cut"), fresh).rows.size(), 8u);
+}
+
+TEST(Evaluate, BrokenScenarioIsSkippedAndTheRestRuns) {
+  ScratchDir tmp;
+  Suite suite = small_suite(tmp, 5);
+  tmp.write("suite/scenario-0002.yaml", "start: {x: 0, y: 0}\ntarget: {x: 100, y: 0}\nsonar: {range_m: -4}\n");
+  suite = read_suite(tmp.file("suite"));
+  std::vector<std::string> warnings;
+  EvaluateOptions o = options({"visibility", "geometric"}, 2);
+  o.warn = [&](const std::string& line) { warnings.push_back(line); };
+  const EvaluationRun run = evaluate_suite(suite, tmp.file("out"), o);
+  EXPECT_EQ(run.rows.size(), 8u);
+  ASSERT_EQ(run.manifest.skipped.size(), 1u);  // once for the scenario, not once per method
+  EXPECT_EQ(run.manifest.skipped[0].scenario, "scenario-0002");
+  EXPECT_NE(run.manifest.skipped[0].error.find("range_m"), std::string::npos);
+  ASSERT_EQ(warnings.size(), 1u);
+  for (const EvalRow& r : run.rows) EXPECT_NE(r.scenario, "scenario-0002");
+  const std::string summary = slurp(tmp.path() / "out" / "summary.md");
+  EXPECT_NE(summary.find("1 skipped"), std::string::npos);
+  EXPECT_NE(summary.find("scenario-0002"), std::string::npos);
+}
+
+TEST(Evaluate, ClaimsAreJudgedFromTheRows) {
+  ScratchDir tmp;
+  const Suite suite = small_suite(tmp);
+  const EvaluationRun run =
+      evaluate_suite(suite, tmp.file("out"), options({"visibility", "quadtree", "geometric", "dipole"}, 2));
+  const EvaluationSummary s = summarize(run);
+  ASSERT_EQ(s.claims.size(), 2u);
+  // Without timing the first claim's cost is the graph size, which is the
+  // visibility graph's smaller here by construction of the suite (few obstacles).
+  EXPECT_EQ(s.claims[0].verdict, "holds");
+  EXPECT_NE(s.claims[0].evidence.back().find("median"), std::string::npos);
+  const EvaluationRun only = evaluate_suite(suite, tmp.file("only"), options({"geometric"}, 1));
+  const EvaluationSummary t = summarize(only);
+  EXPECT_EQ(t.claims[0].verdict, "not tested");
+  EXPECT_EQ(t.claims[1].verdict, "not tested");
+  int wins = 0;
+  for (const MethodStats& m : s.methods) wins += m.wins;
+  EXPECT_GE(wins, 8);  // at least one winner per scenario
+}
+
+TEST(EvaluateCli, UnknownMethodAndBrokenScenarioExitCodes) {
+  ScratchDir tmp;
+  (void)small_suite(tmp, 3);
+  const std::string suite = tmp.file("suite");
+  auto r = deepguide::test::run_cli("evaluate '" + suite + "' --methods visibility,astral -o '" + tmp.file("o1") + "'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("unknown method 'astral'"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("o1")));
+
+  tmp.write("suite/scenario-0001.yaml", "start: {x: 0, y: 0}\n");  // no target
+  r = deepguide::test::run_cli("evaluate '" + suite + "' --methods visibility,geometric -q -o '" + tmp.file("o2") + "'");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_NE(r.err.find("skipped scenario-0001"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("target"), std::string::npos) << r.err;
+  EXPECT_EQ(deepguide::parse_eval_rows(slurp(tmp.path() / "o2" / "rows.csv"), "rows", false).size(), 4u);
+  EXPECT_TRUE(std::filesystem::exists(tmp.path() / "o2" / "report.html"));
+}
+
+TEST(EvaluateCli, KilledRunStartedAgainHasEveryRowOnce) {
+  ScratchDir tmp;
+  const std::string suite = tmp.file("lazy");
+  auto r = deepguide::test::run_cli("suite generate '" + suite + "' --scenarios 60 --seed 5 --on-demand");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string args = "evaluate '" + suite + "' --methods geometric,dipole --threads 1 --no-timing -q --no-report";
+  r = deepguide::test::run_cli(args + " -o '" + tmp.file("whole") + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  // Start it in the background, SIGKILL it once 20 rows are down.
+  const std::string rows = tmp.file("cut/rows.csv");
+  const std::string script = tmp.write(
+      "kill.sh", "'" + std::string(DEEPGUIDE_CLI) + "' " + args + " -o '" + tmp.file("cut") +
+                     "' >/dev/null 2>&1 &\npid=$!\nfor i in $(seq 1 3000); do\n"
+                     "  n=$(cat '" + rows + "' 2>/dev/null | wc -l)\n  [ \"$n\" -ge 21 ] && break\n  sleep 0.01\ndone\n"
+                     "kill -9 $pid\nwait $pid 2>/dev/null\nexit 0\n");
+  ASSERT_EQ(std::system(("bash '" + script + "'").c_str()), 0);
+  const std::size_t kept = deepguide::parse_eval_rows(slurp(rows), "rows", true).size();
+  EXPECT_GE(kept, 20u);
+  EXPECT_LT(kept, 120u) << "the run finished before it was killed: the test proves nothing";
+
+  r = deepguide::test::run_cli(args + " -o '" + tmp.file("cut") + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("kept from the earlier run"), std::string::npos) << r.out;
+  EXPECT_EQ(slurp(rows), slurp(tmp.file("whole/rows.csv")));
+  EXPECT_EQ(deepguide::parse_eval_rows(slurp(rows), "rows", false).size(), 120u);
+}
