@@ -124,7 +124,11 @@ void register_suite(CLI::App& app) {
   cmd->add_flag("--overwrite", flags->second, "Replace the folder if it exists");
   cmd->callback([o, name, flags] {
     std::string n = *name;
-    if (n.empty()) n = std::filesystem::absolute(o->first).lexically_normal().filename().string();
+    if (n.empty()) {
+      std::filesystem::path dir = std::filesystem::absolute(o->first).lexically_normal();
+      if (dir.filename().empty()) dir = dir.parent_path();
+      n = dir.filename().string();
+    }
     write_suite(o->first, n, o->second, !flags->first, flags->second);
     std::cout << "wrote suite " << n << " to " << o->first << ": " << o->second.scenarios << " scenarios"
               << (flags->first ? " (made on demand from suite.yaml)" : "") << "\n";

@@ -146,6 +146,16 @@ TEST(Suite, WrittenFilesAndOnDemandGiveTheSameScenarios) {
   p.scenarios = 3;
   write_suite(tmp.file("files"), "three", p, true, true);
   EXPECT_EQ(read_suite(tmp.file("files")).scenarios.size(), 3u);
+  // A trailing slash names the same folder; the current folder is never replaced.
+  write_suite(tmp.file("slash") + "/", "slash", p, true, false);
+  EXPECT_EQ(read_suite(tmp.file("slash")).scenarios.size(), 3u);
+  write_suite(tmp.file("slash") + "/", "slash", p, false, true);
+  EXPECT_TRUE(read_suite(tmp.file("slash")).generator.has_value());
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(tmp.path() / "slash");
+  deepguide::test::expect_one_line_error([&] { write_suite(".", "here", p, true, true); }, "outside the current one");
+  EXPECT_EQ(read_suite("suite.yaml").name, "slash");  // suite.yaml of the current folder
+  std::filesystem::current_path(cwd);
   // One scenario file is a suite of one.
   const Suite one = read_suite(deepguide::test::source_file("data/scenarios/one_obstacle.yaml"));
   ASSERT_EQ(one.scenarios.size(), 1u);

@@ -71,6 +71,11 @@ ClaimCheck visibility_claim(const EvaluationRun& run, const RowsByScenario& rows
   const bool cheaper = timed ? mv < mq : sv < sq;
   const double r = median_of(ratio);
   const bool better = paired > 0 && 2 * vis_no_longer > paired && r >= 1.0;
+  if (vis_ms.empty() || paired == 0) {
+    c.verdict = "not tested";
+    c.evidence.push_back("no scenario where both " + vis + " and " + quad + " found a route");
+    return c;
+  }
   c.verdict = cheaper && better ? "holds" : "does not hold";
   if (timed) {
     c.evidence.push_back("compute time, median: " + vis + " " + fixed(mv, 2) + " ms, " + quad + " " + fixed(mq, 2) +
@@ -107,7 +112,12 @@ ClaimCheck turning_claim(const EvaluationRun& run, const RowsByScenario& rows) {
     lower += g->second->run.max_rate_ref < d->second->run.max_rate_ref;
   }
   const Distribution dg = distribution(geo), dd = distribution(dip);
-  const bool holds = paired > 0 && 2 * lower > paired && dg.median < dd.median;
+  if (paired == 0) {
+    c.verdict = "not tested";
+    c.evidence.push_back("no scenario that both geometric and dipole ran");
+    return c;
+  }
+  const bool holds = 2 * lower > paired && dg.median < dd.median;
   c.verdict = holds ? "holds" : "does not hold";
   c.evidence.push_back("max |r_ref| lower with geometric: " + pct(lower, paired) + " scenarios");
   c.evidence.push_back("max |r_ref| median: geometric " + fixed(dg.median, 2) + " deg/s, dipole " +

@@ -65,6 +65,8 @@ RunManifest read_manifest(const fs::path& path) {
                            s.at("method").get<std::string>(), s.at("error").get<std::string>()});
     }
     return m;
+  } catch (const InputError& e) {
+    throw InputError(where + ": shard: " + e.what());
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where + ": expected deepguide's run manifest (suite, scenarios, methods, shard, timing, "
                              "skipped): " + printable(e.what(), 100));
@@ -159,9 +161,8 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   std::set<std::pair<std::size_t, std::string>> done;
   const bool earlier = fs::exists(dir / kManifest, ec) || fs::exists(dir / kRows, ec);
   if (earlier && !options.fresh) {
-    if (!fs::exists(dir / kManifest, ec) || !fs::exists(dir / kRows, ec)) {
-      throw InputError(out_dir + ": expected both run.json and rows.csv of an earlier run, or neither "
-                                 "(give --fresh to start over)");
+    if (!fs::exists(dir / kManifest, ec)) {
+      throw InputError(out_dir + ": expected run.json beside rows.csv (give --fresh to start over)");
     }
     const RunManifest before = read_manifest(dir / kManifest);
     if (before.suite != manifest.suite || before.scenarios != manifest.scenarios ||
@@ -172,7 +173,9 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
                        "): give --fresh to discard it, or another -o folder");
     }
     std::size_t dropped = 0;
-    for (EvalRow& r : parse_eval_rows(read_all(dir / kRows), (dir / kRows).string(), true, &dropped)) {
+    // run.json is written first: a kill before rows.csv leaves an empty journal.
+    const std::string journal = fs::exists(dir / kRows, ec) ? read_all(dir / kRows) : eval_rows_header();
+    for (EvalRow& r : parse_eval_rows(journal, (dir / kRows).string(), true, &dropped)) {
       const bool known = r.scenario_index < suite.scenarios.size() &&
                          suite.scenarios[r.scenario_index].id == r.scenario && in_shard(r.scenario_index, options.shard) &&
                          std::find(manifest.methods.begin(), manifest.methods.end(), r.method) != manifest.methods.end();
@@ -182,8 +185,8 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   }
   // The journal starts as the kept rows; every new row is appended and flushed.
   sort_rows(run.rows, manifest.methods);
-  write_text_file(dir / kRows, rows_text(run.rows, options.timing), "rows");
   write_text_file(dir / kManifest, manifest_json(manifest).dump(2) + "\n", "run manifest");
+  write_text_file(dir / kRows, rows_text(run.rows, options.timing), "rows");
 
   struct Job {
     std::size_t scenario;
@@ -227,9 +230,18 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
     }
   };
   const int threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  std::vector<std::jthread> pool;
+  // Declared after everything the workers use, so it is destroyed (joined)
+  // first; on an error in the writing loop the workers stop after their job.
+  struct Pool {
+    std::atomic<bool>& stop;
+    std::vector<std::jthread> threads;
+    ~Pool() {
+      stop = true;
+      threads.clear();
+    }
+  } pool{stop, {}};
   for (int t = 0; t < std::min<int>(threads, static_cast<int>(std::max<std::size_t>(jobs.size(), 1))); ++t) {
-    pool.emplace_back(work);
+    pool.threads.emplace_back(work);
   }
 
   std::ofstream journal(dir / kRows, std::ios::binary | std::ios::app);
@@ -250,11 +262,12 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
       run.rows.push_back(std::move(*r.row));
     } else {
       SkippedRun& s = *r.skipped;
-      if (s.method.empty() && !unreadable.insert(s.scenario_index).second) continue;
-      if (options.warn) {
-        options.warn("skipped " + s.scenario + (s.method.empty() ? "" : " with " + s.method) + ": " + s.error);
+      if (!s.method.empty() || unreadable.insert(s.scenario_index).second) {  // an unreadable scenario once
+        if (options.warn) {
+          options.warn("skipped " + s.scenario + (s.method.empty() ? "" : " with " + s.method) + ": " + s.error);
+        }
+        run.manifest.skipped.push_back(std::move(s));
       }
-      run.manifest.skipped.push_back(std::move(s));
     }
     ++run.computed;
     if (options.progress) options.progress(k + 1, jobs.size());
@@ -265,7 +278,7 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
     }
   }
   journal.close();
-  pool.clear();  // joins
+  pool.threads.clear();  // joins
   if (!run.complete) return run;
   finish(dir, run, options.report);
   return run;

@@ -44,11 +44,11 @@ void validate(const MonteCarloParams& p) {
   if (!std::isfinite(p.sonar_noise) || p.sonar_noise < 0.0 || p.sonar_noise > 100.0) {
     throw InputError("monte carlo: sonar_noise: expected a factor 0 .. 100");
   }
-  if (!std::isfinite(p.cross_track_sigma_m) || p.cross_track_sigma_m < 0.0) {
-    throw InputError("monte carlo: cross_track_sigma_m: expected a finite value >= 0");
+  if (!std::isfinite(p.cross_track_sigma_m) || p.cross_track_sigma_m < 0.0 || p.cross_track_sigma_m > 1e4) {
+    throw InputError("monte carlo: cross_track_sigma_m: expected 0 .. 10000 m");
   }
-  if (!std::isfinite(p.max_current_mps) || p.max_current_mps < 0.0) {
-    throw InputError("monte carlo: max_current_mps: expected a finite value >= 0");
+  if (!std::isfinite(p.max_current_mps) || p.max_current_mps < 0.0 || p.max_current_mps > 20.0) {
+    throw InputError("monte carlo: max_current_mps: expected 0 .. 20 m/s");
   }
 }
 

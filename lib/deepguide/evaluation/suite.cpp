@@ -91,7 +91,10 @@ Suite read_suite(const std::string& path) {
   Suite suite;
   suite.source = path;
   if (fs::is_regular_file(path, ec)) {
-    if (fs::path(path).filename() == kSuiteFile) return read_suite(fs::path(path).parent_path().string());
+    if (fs::path(path).filename() == kSuiteFile) {
+      const fs::path parent = fs::path(path).parent_path();
+      return read_suite(parent.empty() ? std::string(".") : parent.string());
+    }
     suite.name = fs::path(path).stem().string();
     suite.scenarios.push_back({suite.name, path, -1});
     return suite;
@@ -156,8 +159,14 @@ void write_suite(const std::string& dir, const std::string& name, const MonteCar
   if (name.empty() || name.find_first_of("\"\\\n\r") != std::string::npos) {
     throw InputError(dir + ": name: expected a suite name without quotes, backslashes or line breaks");
   }
-  const fs::path target = fs::absolute(dir).lexically_normal();
+  fs::path target = fs::absolute(dir).lexically_normal();
+  if (target.filename().empty()) target = target.parent_path();  // "suites/mine/"
   std::error_code ec;
+  const fs::path here = fs::current_path(ec).lexically_normal();
+  if (target.filename().empty() || target == target.root_path() ||
+      (!ec && !fs::relative(here, target, ec).empty() && fs::relative(here, target, ec).native().rfind("..", 0) != 0)) {
+    throw InputError(dir + ": expected a new folder outside the current one (it would be replaced whole)");
+  }
   if (fs::exists(target, ec) && !overwrite) {
     throw InputError(dir + ": expected a new folder, got one that exists (give --overwrite to replace it)");
   }
