@@ -37,6 +37,7 @@ void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
 void register_suite(CLI::App& app);
 void register_evaluate(CLI::App& app);
+void register_figures(CLI::App& app);
 void register_render_identification(CLI::App& render);
 
 /// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north

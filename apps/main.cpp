@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   app::register_identify(app);
   app::register_suite(app);
   app::register_evaluate(app);
+  app::register_figures(app);
   CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
   check->require_subcommand(1);
   app::register_check_route(*check);

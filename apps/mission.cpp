@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/mission/collision_observation.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
@@ -38,49 +39,11 @@ const char* kind_name(BasicManoeuvre::Kind kind) {
   return "?";
 }
 
-// The mission read, its environment loaded, its positions checked, expanded.
-struct Loaded {
-  Mission mission;
-  MissionEnvironment env;
-  MissionPlan plan;
-};
-
-Loaded load(const std::string& path) {
-  Loaded l{read_mission(path), {}, {}};
-  l.env = load_environment(l.mission);
-  check_positions(l.mission, l.env);
-  l.plan = expand_mission(l.mission, l.env.obstacles);
-  return l;
-}
-
-// The figure of a loaded mission and its planned version: charts, obstacle
-// files, frame, and where each conflict began (a cross where unresolved).
-MissionFigure mission_figure(const Loaded& l, const PlannedMission& planned) {
-  MissionFigure f;
-  f.charts = l.mission.charts;
-  f.obstacles = l.mission.obstacles;
-  f.crs = l.mission.frame.id();
-  f.plan = &planned.plan;
-  f.written = &l.plan;
-  for (const Resolution& r : planned.resolutions) {
-    f.conflicts.push_back(r.conflict.where);
-    if (!r.resolved) f.unresolved.push_back(r.conflict.where);
-  }
-  return f;
-}
-
-std::string clock(double seconds) {
-  char buf[32];
-  const long s = static_cast<long>(seconds + 0.5);
-  std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-  return buf;
-}
-
 const char* reaction_name(ControlRules::Reaction r) {
   return r == ControlRules::Reaction::identify ? "identify" : "evade";
 }
 
-void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPlanCheck& verdict, bool json) {
+void print_plan(const LoadedMission& l, const PlannedMission& planned, const MissionPlanCheck& verdict, bool json) {
   const Mission& m = l.mission;
   const auto lonlat = [&](const Vec2& p) { return m.frame.to_lonlat(p); };
   if (json) {
@@ -116,8 +79,8 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
   }
   std::printf("mission          %s (%s)\n", m.name.c_str(), m.frame.id().c_str());
   std::printf("plan             %zu basic manoeuvres, %.0f m, %s (before: %zu, %.0f m, %s)\n",
-              planned.plan.basics.size(), planned.plan.length_m, clock(plan_duration(planned.plan)).c_str(),
-              l.plan.basics.size(), l.plan.length_m, clock(plan_duration(l.plan)).c_str());
+              planned.plan.basics.size(), planned.plan.length_m, clock_text(plan_duration(planned.plan)).c_str(),
+              l.plan.basics.size(), l.plan.length_m, clock_text(plan_duration(l.plan)).c_str());
   if (planned.resolutions.empty()) {
     std::printf("conflicts        none: nothing to evade\n");
   } else {
@@ -127,11 +90,11 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
   for (const Resolution& r : planned.resolutions) {
     const Vec2 ll = lonlat(r.conflict.where);
     if (r.resolved) {
-      std::printf("%8s  %-24s %-9s %-9s %9.0f %9.0f %8.0f  %.5f, %.5f (at %.1f m)%s%s\n", clock(r.time_s).c_str(),
+      std::printf("%8s  %-24s %-9s %-9s %9.0f %9.0f %8.0f  %.5f, %.5f (at %.1f m)%s%s\n", clock_text(r.time_s).c_str(),
                   r.conflict.with.substr(0, 24).c_str(), reaction_name(r.reaction), "resolved", r.depart_m,
                   r.rendezvous_m, r.added_m, ll.x(), ll.y(), r.depth_m, r.note.empty() ? "" : "; ", r.note.c_str());
     } else {
-      std::printf("%8s  %-24s %-9s %-9s %9s %9s %8s  %.5f, %.5f: %s\n", clock(r.time_s).c_str(),
+      std::printf("%8s  %-24s %-9s %-9s %9s %9s %8s  %.5f, %.5f: %s\n", clock_text(r.time_s).c_str(),
                   r.conflict.with.substr(0, 24).c_str(), reaction_name(r.reaction), "UNSOLVED", "-", "-", "-", ll.x(),
                   ll.y(), r.problem.c_str());
     }
@@ -139,7 +102,7 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
   for (const Conflict& c : planned.remaining) {
     const Vec2 ll = lonlat(c.where);
     std::printf("REMAINING        %s into the mission, %s at %.5f, %.5f, %.1f m deep\n",
-                clock(position_at(planned.plan, c.along_m).time_s).c_str(), c.with.c_str(), ll.x(), ll.y(), c.depth_m);
+                clock_text(position_at(planned.plan, c.along_m).time_s).c_str(), c.with.c_str(), ll.x(), ll.y(), c.depth_m);
   }
   std::printf("check            %s: %zu legs against every obstacle's zone and top and the sea floor",
               verdict.safe ? "safe" : "UNSAFE", verdict.legs);
@@ -149,7 +112,7 @@ void print_plan(const Loaded& l, const PlannedMission& planned, const MissionPla
 
 // Exit 3, loudly, for a conflict mission control could not resolve: the
 // first one's time, place and why (every one is in the printed table).
-void throw_if_unresolved(const std::string& file, const Loaded& l, const PlannedMission& planned) {
+void throw_if_unresolved(const std::string& file, const LoadedMission& l, const PlannedMission& planned) {
   std::size_t unsolved = 0;
   const Resolution* first = nullptr;
   for (const Resolution& r : planned.resolutions) {
@@ -162,14 +125,14 @@ void throw_if_unresolved(const std::string& file, const Loaded& l, const Planned
     const Vec2 ll = l.mission.frame.to_lonlat(c.where);
     char where[160];
     std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f, %.1f m deep",
-                  clock(position_at(planned.plan, c.along_m).time_s).c_str(), ll.x(), ll.y(), c.depth_m);
+                  clock_text(position_at(planned.plan, c.along_m).time_s).c_str(), ll.x(), ll.y(), c.depth_m);
     throw NoRouteError(file + ": " + std::to_string(planned.remaining.size()) +
                        " conflict(s) remain in the planned mission; the first, with " + c.with + where);
   }
   if (first == nullptr) return;
   const Vec2 ll = l.mission.frame.to_lonlat(first->conflict.where);
   char where[160];
-  std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f, %.1f m deep: ", clock(first->time_s).c_str(),
+  std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f, %.1f m deep: ", clock_text(first->time_s).c_str(),
                 ll.x(), ll.y(), first->conflict.depth_m);
   throw NoRouteError(file + ": " + std::to_string(unsolved) + " conflict(s) could not be resolved; the first, with " +
                      first->conflict.with + where + first->problem);
@@ -188,7 +151,7 @@ void register_mission(CLI::App& app) {
   check->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   check->add_flag("--json", o->json, "Print the result as JSON");
   check->callback([o] {
-    const Loaded l = load(o->mission);
+    const LoadedMission l = load_mission(o->mission);
     const Mission& m = l.mission;
     const MissionEnvironment& env = l.env;
     const MissionPlan& plan = l.plan;
@@ -266,13 +229,13 @@ void register_mission(CLI::App& app) {
       const std::string basics = c.last_basic > c.basic ? std::to_string(c.last_basic - c.basic + 1) + " basics"
                                                         : std::string(kind_name(b.kind));
       std::printf("%9.0f %8s  %-28s %-10s %-24s %7.1f  %.5f, %.5f\n", c.along_m,
-                  clock(position_at(plan, c.along_m).time_s).c_str(),
+                  clock_text(position_at(plan, c.along_m).time_s).c_str(),
                   m.manoeuvres[b.source].name.substr(0, 28).c_str(), basics.c_str(), c.with.substr(0, 24).c_str(),
                   c.depth_m, ll.x(), ll.y());
     }
     for (const Resolution* r : unavoidable) {
       const Vec2 ll = lonlat(r->conflict.where);
-      std::printf("UNAVOIDABLE      %s into the mission, %s at %.5f, %.5f, %.1f m deep: %s\n", clock(r->time_s).c_str(),
+      std::printf("UNAVOIDABLE      %s into the mission, %s at %.5f, %.5f, %.1f m deep: %s\n", clock_text(r->time_s).c_str(),
                   r->conflict.with.c_str(), ll.x(), ll.y(), r->conflict.depth_m, r->problem.c_str());
     }
     throw_if_unresolved(o->mission, l, planned);
@@ -283,7 +246,7 @@ void register_mission(CLI::App& app) {
   plan->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   plan->add_flag("--json", o->json, "Print the result as JSON");
   plan->callback([o] {
-    const Loaded l = load(o->mission);
+    const LoadedMission l = load_mission(o->mission);
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
     const MissionPlanCheck verdict = check_mission_plan(planned.plan, l.env, observation_options(l.mission));
     print_plan(l, planned, verdict, o->json);
@@ -317,7 +280,7 @@ void register_mission(CLI::App& app) {
       ->check(CLI::Range(0.01, 100.0));
   exp->callback([o, e] {
     const ExportFormat format = e->format.empty() ? export_format_for(e->output) : parse_export_format(e->format);
-    const Loaded l = load(o->mission);
+    const LoadedMission l = load_mission(o->mission);
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
     if (!e->as_written) {
       throw_if_unresolved(o->mission, l, planned);
@@ -360,7 +323,7 @@ void register_mission_simulate(CLI::App& mission) {
       ->check(CLI::Range(10.0, 1e5));
   cmd->add_flag("--json", o->json, "Print the result as JSON");
   cmd->callback([o] {
-    const Loaded l = load(o->mission);
+    const LoadedMission l = load_mission(o->mission);
     if (!o->render.empty() && l.mission.charts.empty() && l.mission.obstacles.empty()) {
       throw InputError("--render: expected a mission with charts or obstacle files to draw it over");
     }
@@ -387,39 +350,25 @@ void register_mission_simulate(CLI::App& mission) {
       std::cout << j.dump(2) << "\n";
     } else {
       std::printf("mission          %s: %s in %s, %.0f m sailed; %zu unknown object(s) found, %zu replan(s)\n",
-                  l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock(run.time_s).c_str(),
+                  l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock_text(run.time_s).c_str(),
                   run.length_m, run.detected.size(), run.replans);
       if (std::isfinite(run.min_clearance_m)) {
         std::printf("clearance        %.1f m at least to the footprints of obstacles the vehicle was not above\n", run.min_clearance_m);
       }
       for (const MissionEvent& e : run.events) {
         const Vec2 ll = lonlat(e.where);
-        std::printf("%8s  %.5f, %.5f  %s%s\n", clock(e.time_s).c_str(), ll.x(), ll.y(), e.alarm ? "ALARM: " : "",
+        std::printf("%8s  %.5f, %.5f  %s%s\n", clock_text(e.time_s).c_str(), ll.x(), ll.y(), e.alarm ? "ALARM: " : "",
                     e.what.c_str());
       }
     }
     if (!o->render.empty()) {
-      MissionFigure f = mission_figure(l, planned);
-      f.plan = &run.plan;  // with the evasions planned on the way
-      for (const MissionSample& p : run.track) f.track.push_back(p.position);
-      f.detected = &run.detected;
-      if (o->zoom > 0.0 && !run.detected.ellipses.empty()) {
-        const Vec2 c = run.detected.ellipses.front().footprint.center;
-        f.extent.extend(c - Vec2::Constant(o->zoom));
-        f.extent.extend(c + Vec2::Constant(o->zoom));
-      }
-      char title[256];
-      std::snprintf(title, sizeof title, "%s, simulated: %s in %s, %zu unknown object(s), %zu replan(s)",
-                    l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock(run.time_s).c_str(),
-                    run.detected.size(), run.replans);
-      f.title = title;
-      render_mission(f, o->render);
+      render_mission(simulated_mission_figure(l.mission, l.plan, planned, run, o->zoom), o->render);
     }
     for (const MissionEvent& e : run.events) {
       if (!e.alarm) continue;
       const Vec2 ll = lonlat(e.where);
       char where[128];
-      std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f: ", clock(e.time_s).c_str(), ll.x(), ll.y());
+      std::snprintf(where, sizeof where, " at %s into the mission, %.5f, %.5f: ", clock_text(e.time_s).c_str(), ll.x(), ll.y());
       throw NoRouteError(o->mission + ": simulation" + where + e.what);
     }
   });
@@ -443,9 +392,9 @@ void register_render_mission(CLI::App& render) {
   cmd->add_option("--title", o->title, "Title line (default: the mission's name, length and time)");
   cmd->add_flag("--as-written", o->as_written, "Draw the plan as written, without mission control's changes");
   cmd->callback([o] {
-    const Loaded l = load(o->mission);
+    const LoadedMission l = load_mission(o->mission);
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
-    MissionFigure f = mission_figure(l, planned);
+    MissionFigure f = mission_figure_for(l.mission, l.plan, planned);
     if (o->as_written) {
       f.plan = &l.plan;
       f.written = nullptr;
@@ -454,7 +403,7 @@ void register_render_mission(CLI::App& render) {
     const MissionPlan& shown = *f.plan;
     char title[256];
     std::snprintf(title, sizeof title, "%s: %.2f km, %s; %zu conflict(s), %zu resolved", l.mission.name.c_str(),
-                  shown.length_m / 1000.0, clock(plan_duration(shown)).c_str(), planned.resolutions.size(),
+                  shown.length_m / 1000.0, clock_text(plan_duration(shown)).c_str(), planned.resolutions.size(),
                   planned.resolutions.size() - f.unresolved.size());
     f.title = o->title.empty() ? std::string(title) : o->title;
     render_mission(f, o->output);

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the sample mission's figure (docs/images/sample_mission.png), the quadtree, replanning and octree figures and the Gulf Stream time
+# Regenerates the seed's figures (docs/images/seed, `deepguide figures`; the
+# README shows them), the sample mission's figure (docs/images/sample_mission.png), the quadtree, replanning and octree figures and the Gulf Stream time
 # route (docs/PLANNING.md; the latter when ../shared has the HYCOM sample),
 # and the reactive level's and the identification's figures
 # (docs/SIMULATION.md, docs/IDENTIFICATION.md) from every scenario in
@@ -20,6 +21,8 @@ if [ -z "${DEEPGUIDE_CLI:-}" ]; then
 fi
 cd "$DEEPGUIDE_ROOT"
 mkdir -p docs/figures
+# The seed paper's Figs. 4, 6, 7, 8, 10, 11 and 12 (README, "The seed's figures").
+"$DEEPGUIDE_CLI" figures -o docs/images/seed > /dev/null
 # The README's figure: the sample mission, planned (docs/MISSIONS.md).
 "$DEEPGUIDE_CLI" render mission data/missions/sample_mission.yaml -o docs/images/sample_mission.png
 # The seed's Fig. 4: an object nobody knew, found by the sonar on the survey, evaded while the route is repaired.

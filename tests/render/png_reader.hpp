@@ -4,6 +4,7 @@
 #include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "deepguide/geometry/vec2.hpp"
+#include "deepguide/render/canvas.hpp"
 
 namespace deepguide::test {
 
@@ -38,5 +40,13 @@ class Png {
  private:
   cairo_surface_t* surface_;
 };
+
+/// The largest difference of one channel (0..255) between a pixel and a colour.
+inline int colour_distance(const std::array<int, 3>& got, const Rgba& want) {
+  const double w[3] = {want.r, want.g, want.b};
+  int worst = 0;
+  for (int i = 0; i < 3; ++i) worst = std::max(worst, std::abs(got[i] - static_cast<int>(std::lround(w[i] * 255))));
+  return worst;
+}
 
 }  // namespace deepguide::test

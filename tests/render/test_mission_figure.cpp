@@ -15,28 +15,19 @@
 using namespace deepguide;
 using deepguide::test::ScratchDir;
 
-namespace {
-
-int colour_distance(const std::array<int, 3>& got, const Rgba& want) {
-  int worst = 0;
-  const double w[3] = {want.r, want.g, want.b};
-  for (int i = 0; i < 3; ++i) worst = std::max(worst, std::abs(got[i] - static_cast<int>(std::lround(w[i] * 255))));
-  return worst;
-}
-
-}  // namespace
+using test::colour_distance;
 
 TEST(MissionFigure, EachPartIsDrawnInTheColourOfItsRole) {
   const Mission m = read_mission(test::source_file("data/missions/sample_mission.yaml"));
   const MissionEnvironment env = load_environment(m);
   const MissionPlan written = expand_mission(m, env.obstacles);
   const PlannedMission planned = plan_mission(m, env, written);
-  MissionFigure f;
-  f.charts = m.charts;
-  f.obstacles = m.obstacles;
-  f.crs = m.frame.id();
-  f.plan = &planned.plan;
-  f.written = &written;
+  MissionFigure f = mission_figure_for(m, written, planned);
+  EXPECT_EQ(f.plan, &planned.plan);
+  EXPECT_EQ(f.written, &written);
+  EXPECT_EQ(f.conflicts.size(), planned.resolutions.size());
+  EXPECT_TRUE(f.unresolved.empty());
+  EXPECT_EQ(f.crs, "EPSG:32632");
   f.width_px = 900;
   ScratchDir dir;
   const std::string path = dir.file("mission.png");

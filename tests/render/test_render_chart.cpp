@@ -132,6 +132,28 @@ TEST(RenderChart, SvgAndObstacles) {
   EXPECT_NE(text.find("width=\"600"), std::string::npos);
 }
 
+// The overlay's legend wraps instead of running off the image: each row it
+// needs adds 24 design units to the footer, and every entry of a row ends
+// inside the image (measured with the same text widths the drawing uses).
+TEST(RenderChart, OverlayLegendWrapsIntoRowsThatFit) {
+  ScratchDir dir;
+  ChartRenderOptions o = sample(600);  // unit 0.5
+  o.overlay_legend = {{rgb_hex(0x000000), 2.0, false, "short"}};
+  const int one_row = render_chart(o, dir.file("one.png")).height;
+  o.overlay_legend.clear();
+  const std::string label = "an entry with a fairly long label, and longer still";
+  for (int k = 0; k < 6; ++k) o.overlay_legend.push_back({rgb_hex(0x000000), 2.0, k % 2 == 0, label});
+  const int many = render_chart(o, dir.file("many.png")).height;
+  // Room for a row: 600 - (330 + 24) * 0.5 = 423 px; an entry: 46 * 0.5 + the label at 6.5 px.
+  const double entry = 23.0 + measure_text_width(label, 6.5);
+  ASSERT_GT(entry, 423.0 / 3.0) << "the label must be long enough for at most 2 entries a row";
+  const int per_row = static_cast<int>((423.0 + 9.0) / entry);
+  ASSERT_GE(per_row, 1);
+  const int rows = (6 + per_row - 1) / per_row;
+  EXPECT_NEAR(many - one_row, 12.0 * (rows - 1), 1.0) << per_row << " entries a row";
+  EXPECT_GE(rows, 3);
+}
+
 TEST(RenderChart, BadInputLeavesNoFile) {
   ScratchDir dir;
   ChartRenderOptions o = sample(800);

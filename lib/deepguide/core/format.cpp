@@ -18,4 +18,12 @@ std::string general(double v) {
 
 std::string point_text(double x, double y, int digits) { return "(" + fixed(x, digits) + ", " + fixed(y, digits) + ")"; }
 
+std::string clock_text(double seconds) {
+  if (!(seconds >= 0.0 && seconds < 1e15)) return "-";  // NaN, negative, or beyond any mission
+  char buf[48];
+  const long long s = static_cast<long long>(seconds + 0.5);
+  std::snprintf(buf, sizeof buf, "%lld:%02lld:%02lld", s / 3600, (s / 60) % 60, s % 60);
+  return buf;
+}
+
 }  // namespace deepguide

@@ -15,5 +15,8 @@ std::string general(double v);
 /// "(x, y)" with `digits` decimals, e.g. "(120.0, 45.5)".
 std::string point_text(double x, double y, int digits = 1);
 inline std::string point_text(const Eigen::Vector2d& p, int digits = 1) { return point_text(p.x(), p.y(), digits); }
+/// A duration as a clock, "H:MM:SS", rounded to the second (e.g. "1:47:47"); "-" for
+/// a negative or non-finite one.
+std::string clock_text(double seconds);
 
 }  // namespace deepguide

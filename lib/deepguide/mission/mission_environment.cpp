@@ -83,4 +83,12 @@ void check_positions(const Mission& mission, const MissionEnvironment& env) {
   }
 }
 
+LoadedMission load_mission(const std::string& path) {
+  LoadedMission l{read_mission(path), {}, {}};
+  l.env = load_environment(l.mission);
+  check_positions(l.mission, l.env);
+  l.plan = expand_mission(l.mission, l.env.obstacles);
+  return l;
+}
+
 }  // namespace deepguide

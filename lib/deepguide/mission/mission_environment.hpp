@@ -7,6 +7,7 @@
 // past the waypoints), 200 m wider, at the raster's own resolution.
 
 #include <memory>
+#include <string>
 
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission.hpp"
@@ -28,5 +29,17 @@ MissionEnvironment load_environment(const Mission& mission);
 /// footprint below its top, at the manoeuvre's depth. Throws InputError
 /// naming the file, the manoeuvre's line and name, the waypoint and why.
 void check_positions(const Mission& mission, const MissionEnvironment& environment);
+
+/// A mission read, its environment loaded, its positions checked and its
+/// manoeuvres expanded: what every mission command starts from.
+struct LoadedMission {
+  Mission mission;
+  MissionEnvironment env;
+  MissionPlan plan;  ///< the plan as written (expand_mission)
+};
+
+/// read_mission, load_environment, check_positions, expand_mission; throws
+/// what they throw.
+LoadedMission load_mission(const std::string& path);
 
 }  // namespace deepguide

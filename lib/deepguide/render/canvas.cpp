@@ -301,6 +301,19 @@ void Canvas::text_with_halo(const Vec2& anchor, const std::string& text, double 
   cairo_fill(impl_->cr);
 }
 
+double measure_text_width(const std::string& text, double size_px, bool bold) {
+  // A 1 x 1 surface measures as any other: text extents do not depend on it.
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+  cairo_t* cr = cairo_create(surface);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size_px);
+  cairo_text_extents_t ext{};
+  cairo_text_extents(cr, text.c_str(), &ext);
+  cairo_destroy(cr);
+  cairo_surface_destroy(surface);
+  return ext.x_advance;
+}
+
 double Canvas::text_width(const std::string& text, double size_px, bool bold) {
   impl_->font(size_px, bold);
   cairo_text_extents_t ext;

@@ -97,6 +97,10 @@ struct Stroke {
 
 enum class TextAlign { left, center, right };
 
+/// Advance width in pixels of `text` in the canvases' sans-serif, without a
+/// canvas: for layouts that must know how much room text takes before drawing.
+double measure_text_width(const std::string& text, double size_px, bool bold = false);
+
 class Canvas {
  public:
   /// Starts an image of the given size for `path`; the format comes from the

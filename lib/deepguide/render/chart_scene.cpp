@@ -40,6 +40,29 @@ std::uint32_t pack(const Rgba& c) {
   return 0xff000000u | byte(c.r) << 16 | byte(c.g) << 8 | byte(c.b);
 }
 
+// The overlay's legend entries: a 22-unit line, its label, and a gap.
+double legend_entry_width(const std::string& label, double u) {
+  return 28.0 * u + measure_text_width(label, 13.0 * u) + 18.0 * u;
+}
+
+// Where each row of the overlay's legend starts (indices into `lines`): as
+// many entries a row as fit between the legend's left edge and the side.
+std::vector<std::size_t> overlay_legend_rows(const std::vector<ChartRenderOptions::LegendLine>& lines, int width_px,
+                                             double u) {
+  std::vector<std::size_t> rows;
+  const double room = width_px - (kLegendX + kSide) * u;
+  double used = room;  // a first entry always starts a row
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const double w = legend_entry_width(lines[k].label, u);
+    if (used + w - 18.0 * u > room) {
+      rows.push_back(k);
+      used = 0.0;
+    }
+    used += w;
+  }
+  return rows;
+}
+
 // Round band step (1, 2, 2.5 or 5 x 10^k) giving about kTargetBands bands over [lo, hi].
 std::vector<double> band_edges(double lo, double hi) {
   if (!(hi > lo)) hi = lo + 1.0;
@@ -340,14 +363,19 @@ struct Painter {
       canvas.text({ex + 28.0 * u, ey + 12.0 * u}, e.label, size, style.text);
       ex += 28.0 * u + canvas.text_width(e.label, size) + 18.0 * u;
     }
-    double lx = kLegendX * u;
-    const double ly = ey + 24.0 * u;
-    for (const ChartRenderOptions::LegendLine& line : scene.options.overlay_legend) {
-      Stroke stroke{line.color, line.width_px * u, {}};
-      if (line.dashed) stroke.dash = {6.0 * u, 4.0 * u};
-      canvas.stroke_polyline({{lx, ly + 7.0 * u}, {lx + 22.0 * u, ly + 7.0 * u}}, stroke);
-      canvas.text({lx + 28.0 * u, ly + 12.0 * u}, line.label, size, style.text);
-      lx += 28.0 * u + canvas.text_width(line.label, size) + 18.0 * u;
+    const std::vector<ChartRenderOptions::LegendLine>& lines = scene.options.overlay_legend;
+    const std::vector<std::size_t> rows = overlay_legend_rows(lines, layout.width, u);
+    for (std::size_t row = 0; row < rows.size(); ++row) {
+      double lx = kLegendX * u;
+      const double ly = ey + 24.0 * u * static_cast<double>(row + 1);
+      const std::size_t end = row + 1 < rows.size() ? rows[row + 1] : lines.size();
+      for (std::size_t k = rows[row]; k < end; ++k) {
+        Stroke stroke{lines[k].color, lines[k].width_px * u, {}};
+        if (lines[k].dashed) stroke.dash = {6.0 * u, 4.0 * u};
+        canvas.stroke_polyline({{lx, ly + 7.0 * u}, {lx + 22.0 * u, ly + 7.0 * u}}, stroke);
+        canvas.text({lx + 28.0 * u, ly + 12.0 * u}, lines[k].label, size, style.text);
+        lx += legend_entry_width(lines[k].label, u);
+      }
     }
   }
 
@@ -468,7 +496,9 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   l.map = {kSide * u, kTitleBand * u, options.width_px - 2.0 * kSide * u, 0.0};
   const double aspect = std::clamp(l.extent.height() / std::max(l.extent.width(), 1e-9), 0.45, 1.5);
   l.map.height = std::round(l.map.width * aspect);
-  const double footer = kFooter + (options.overlay_legend.empty() ? 0.0 : 26.0);  // a row for the overlay's legend
+  // A row of 24 for each row of the overlay's legend, and 2 under the last.
+  const std::size_t rows = overlay_legend_rows(options.overlay_legend, options.width_px, u).size();
+  const double footer = kFooter + (rows == 0 ? 0.0 : 2.0 + 24.0 * static_cast<double>(rows));
   l.footer = {0.0, l.map.y + l.map.height, static_cast<double>(options.width_px), footer * u};
   l.height = static_cast<int>(std::ceil(l.footer.y + l.footer.height));
   l.view = ViewTransform(l.extent, l.map);

@@ -4,6 +4,8 @@
 #include <numbers>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
+#include "deepguide/simulation/mission_run.hpp"
 
 namespace deepguide {
 namespace {
@@ -27,8 +29,50 @@ std::vector<Run> runs_of(const MissionPlan& plan) {
 
 }  // namespace
 
+MissionFigure mission_figure_for(const Mission& mission, const MissionPlan& written, const PlannedMission& planned) {
+  MissionFigure f;
+  f.charts = mission.charts;
+  f.obstacles = mission.obstacles;
+  f.crs = mission.frame.id();
+  f.plan = &planned.plan;
+  f.written = &written;
+  for (const Resolution& r : planned.resolutions) {
+    f.conflicts.push_back(r.conflict.where);
+    if (!r.resolved) f.unresolved.push_back(r.conflict.where);
+  }
+  return f;
+}
+
+MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan& written, const PlannedMission& planned,
+                                       const MissionRun& run, double zoom_m) {
+  MissionFigure f = mission_figure_for(mission, written, planned);
+  f.plan = &run.plan;
+  for (const MissionSample& p : run.track) {
+    f.track.push_back(p.position);
+    f.track_reactive.push_back(p.reactive);
+  }
+  const auto first_reactive = std::find_if(run.track.begin(), run.track.end(), [](const MissionSample& p) { return p.reactive; });
+  // The sample before the first reactive one is where the reactive level took the helm.
+  if (first_reactive != run.track.end()) {
+    f.marks.emplace_back((first_reactive == run.track.begin() ? first_reactive : first_reactive - 1)->position, "A");
+  }
+  f.detected = &run.detected;
+  if (zoom_m > 0.0 && !run.detected.ellipses.empty()) {
+    const Vec2 c = run.detected.ellipses.front().footprint.center;
+    f.extent.extend(c - Vec2::Constant(zoom_m));
+    f.extent.extend(c + Vec2::Constant(zoom_m));
+  }
+  f.title = mission.name + ", simulated: " + (run.completed ? "completed" : "NOT completed") + " in " +
+            clock_text(run.time_s) + ", " + std::to_string(run.detected.size()) + " unknown object(s), " +
+            std::to_string(run.replans) + " replan(s)";
+  return f;
+}
+
 ChartLayout render_mission(const MissionFigure& f, const std::string& path, const MissionStyle& style) {
   if (f.plan == nullptr || f.plan->basics.empty()) throw InputError(path + ": expected a mission plan to draw");
+  if (!f.track_reactive.empty() && f.track_reactive.size() != f.track.size()) {
+    throw InputError(path + ": expected one reactive flag per track point");
+  }
   const std::vector<Run> runs = runs_of(*f.plan);
   const std::vector<Run> written = f.written != nullptr ? runs_of(*f.written) : std::vector<Run>{};
   WorldBox box;
@@ -80,7 +124,17 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
     }
     if (!f.track.empty()) {
       canvas.stroke_polyline(px(f.track), Stroke{style.casing, 3.8 * u, {}});
-      canvas.stroke_polyline(px(f.track), Stroke{style.track, 1.8 * u, {}});
+      // Runs of one level each, sharing their end points so the line has no gaps.
+      std::size_t begin = 0;
+      while (begin + 1 < f.track.size()) {
+        const bool reactive = !f.track_reactive.empty() && f.track_reactive[begin + 1];
+        std::size_t end = begin + 1;
+        while (end + 1 < f.track.size() && !f.track_reactive.empty() && f.track_reactive[end + 1] == reactive) ++end;
+        const std::vector<Vec2> piece(f.track.begin() + static_cast<std::ptrdiff_t>(begin),
+                                      f.track.begin() + static_cast<std::ptrdiff_t>(end) + 1);
+        canvas.stroke_polyline(px(piece), Stroke{reactive ? style.reactive : style.track, 1.8 * u, {}});
+        begin = end;
+      }
     }
     for (const Vec2& p : f.conflicts) {
       canvas.circle(view.to_pixel(p), 7.0 * u, std::nullopt, Stroke{style.casing, 4.4 * u, {}});
@@ -92,6 +146,12 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
       const Stroke cross{style.conflict, 3.0 * u, {}};
       canvas.stroke_polyline({c + Vec2(-s, -s), c + Vec2(s, s)}, cross);
       canvas.stroke_polyline({c + Vec2(-s, s), c + Vec2(s, -s)}, cross);
+    }
+    for (const auto& [where, label] : f.marks) {
+      const Vec2 c = view.to_pixel(where);
+      canvas.circle(c, 4.5 * u, style.end, Stroke{Rgba{1.0, 1.0, 1.0, 1.0}, 1.5 * u, {}});
+      canvas.text_with_halo(c + Vec2(-9.0 * u, -7.0 * u), label, 17.0 * u, style.end, Rgba{1.0, 1.0, 1.0, 0.9}, 3.0 * u,
+                            TextAlign::right);
     }
     const Vec2 start = f.plan->basics.front().from, end = f.plan->basics.back().to;
     canvas.circle(view.to_pixel(start), 6.0 * u, style.start, Stroke{Rgba{1.0, 1.0, 1.0, 1.0}, 1.5 * u, {}});
@@ -106,8 +166,16 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
   if (evades) o.overlay_legend.push_back({style.evasion, 2.4, false, "evasion"});
   if (identifies) o.overlay_legend.push_back({style.identification, 2.4, false, "identification lap"});
   if (!written.empty()) o.overlay_legend.push_back({style.written, 1.4, true, "as written"});
-  if (!f.conflicts.empty()) o.overlay_legend.push_back({style.conflict, 2.2, false, "conflict (ring), unresolved (cross)"});
-  if (!f.track.empty()) o.overlay_legend.push_back({style.track, 1.8, false, "track sailed"});
+  if (!f.conflicts.empty()) {
+    o.overlay_legend.push_back(
+        {style.conflict, 2.2, false, f.unresolved.empty() ? "conflict (ring)" : "conflict (ring), unresolved (cross)"});
+  }
+  const bool reactive = std::find(f.track_reactive.begin(), f.track_reactive.end(), true) != f.track_reactive.end();
+  if (!f.track.empty()) o.overlay_legend.push_back({style.track, 1.8, false, reactive ? "track, plan level" : "track sailed"});
+  if (reactive) o.overlay_legend.push_back({style.reactive, 1.8, false, "track, reactive level"});
+  if (f.detected != nullptr && !f.detected->empty()) {
+    o.overlay_legend.push_back({style.conflict, 5.0, false, "object the sonar found (its estimate)"});
+  }
   return render_chart(o, path);
 }
 
