@@ -1,13 +1,14 @@
 // Batch evaluation: method names, rows that are the same for any number of
 // threads, for merged shards and for a run stopped and resumed; a broken
 // scenario skipped while the rest runs; a folder holding another run
-// refused; hand-checked rows; and the CLI's exit codes, including a run
+// refused, and so is the same suite changed since; hand-checked rows; and the CLI's exit codes, including a run
 // killed with SIGKILL and started again.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "../test_support.hpp"
@@ -165,6 +166,64 @@ TEST(Evaluate, StoppedRunResumesWithoutLostOrDuplicatedRows) {
   EvaluateOptions fresh = options({"visibility"}, 1);
   fresh.fresh = true;
   EXPECT_EQ(evaluate_suite(suite, tmp.file("cut"), fresh).rows.size(), 8u);
+}
+
+// A suite regenerated under the same name and size (another seed) has other
+// scenarios: a run begun on the old one is not resumed with it, nor merged
+// with a shard of it. The fingerprint follows the files' bytes, and an
+// on-demand suite's generator.
+TEST(Evaluate, ASuiteChangedUnderTheSameNameIsNotResumedOrMerged) {
+  ScratchDir tmp;
+  const Suite before = small_suite(tmp, 6);
+  EXPECT_EQ(before.fingerprint.rfind("fnv1a64:", 0), 0u);
+  EXPECT_EQ(before.fingerprint.size(), 8u + 16u);
+  EXPECT_EQ(read_suite(tmp.file("suite")).fingerprint, before.fingerprint) << "the same files, the same fingerprint";
+
+  EvaluateOptions o = options({"visibility"}, 1);
+  o.stop_after = 2;
+  (void)evaluate_suite(before, tmp.file("cut"), o);
+  o.shard = {1, 2};
+  o.stop_after = 0;
+  (void)evaluate_suite(before, tmp.file("shard1"), o);
+
+  MonteCarloParams p;
+  p.scenarios = 6;
+  p.seed = 22;  // small_suite's is 21
+  p.max_obstacles = 4;
+  write_suite(tmp.file("suite"), "small", p, true, true);
+  const Suite after = read_suite(tmp.file("suite"));
+  ASSERT_EQ(after.name, before.name);
+  ASSERT_EQ(after.scenarios.size(), before.scenarios.size());
+  EXPECT_NE(after.fingerprint, before.fingerprint);
+  deepguide::test::expect_one_line_error(
+      [&] { (void)evaluate_suite(after, tmp.file("cut"), options({"visibility"}, 1)); }, "have changed since");
+  EvaluateOptions fresh = options({"visibility"}, 1);
+  fresh.fresh = true;
+  EXPECT_EQ(evaluate_suite(after, tmp.file("cut"), fresh).rows.size(), 6u);
+
+  o.shard = {2, 2};
+  (void)evaluate_suite(after, tmp.file("shard2"), o);
+  deepguide::test::expect_one_line_error(
+      [&] { (void)merge_evaluations({tmp.file("shard1"), tmp.file("shard2")}, tmp.file("merged"), false); },
+      "other scenarios");
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "merged" / "rows.csv"));
+
+  // One byte of one file changes it; on demand, the generator does.
+  tmp.write("suite/scenario-0004.yaml", slurp(tmp.path() / "suite" / "scenario-0004.yaml") + "\n");
+  EXPECT_NE(read_suite(tmp.file("suite")).fingerprint, after.fingerprint);
+  write_suite(tmp.file("demand"), "small", p, false, true);
+  const std::string demand = read_suite(tmp.file("demand")).fingerprint;
+  p.sonar_noise = 2.0;
+  write_suite(tmp.file("demand"), "small", p, false, true);
+  EXPECT_NE(read_suite(tmp.file("demand")).fingerprint, demand);
+
+  // A folder written before the fingerprint was kept still resumes.
+  const std::filesystem::path manifest = tmp.path() / "cut" / "run.json";
+  nlohmann::json j = nlohmann::json::parse(slurp(manifest));
+  j.erase("suite_fingerprint");
+  std::ofstream(manifest) << j.dump(2);
+  const Suite now = read_suite(tmp.file("suite"));
+  EXPECT_EQ(evaluate_suite(now, tmp.file("cut"), options({"visibility"}, 1)).resumed, 6u);
 }
 
 TEST(Evaluate, BrokenScenarioIsSkippedAndTheRestRuns) {

@@ -43,6 +43,7 @@ nlohmann::json manifest_json(const RunManifest& m) {
                        {"error", s.error}});
   }
   return {{"suite", m.suite},   {"suite_source", m.suite_source},
+          {"suite_fingerprint", m.suite_fingerprint},
           {"scenarios", m.scenarios}, {"methods", m.methods},
           {"shard", std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count)},
           {"timing", m.timing}, {"skipped", skipped}};
@@ -57,6 +58,7 @@ RunManifest read_manifest(const fs::path& path) {
     m.suite = j.at("suite").get<std::string>();
     m.suite_source = j.at("suite_source").get<std::string>();
     m.scenarios = j.at("scenarios").get<std::size_t>();
+    m.suite_fingerprint = j.value("suite_fingerprint", std::string());
     m.methods = j.at("methods").get<std::vector<std::string>>();
     m.shard = parse_shard(j.at("shard").get<std::string>());
     m.timing = j.at("timing").get<bool>();
@@ -141,6 +143,7 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   manifest.suite = suite.name;
   manifest.suite_source = suite.source;
   manifest.scenarios = suite.scenarios.size();
+  manifest.suite_fingerprint = suite.fingerprint;
   manifest.shard = options.shard;
   manifest.timing = options.timing;
   for (const EvalMethod& m : options.methods) {
@@ -171,6 +174,11 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
                        std::to_string(before.scenarios) + " scenarios, shard " + std::to_string(before.shard.index) +
                        "/" + std::to_string(before.shard.count) +
                        "): give --fresh to discard it, or another -o folder");
+    }
+    if (!before.suite_fingerprint.empty() && before.suite_fingerprint != manifest.suite_fingerprint) {
+      throw InputError(out_dir + ": holds a run of suite " + before.suite + " as it was (" + before.suite_fingerprint +
+                       "); its scenarios have changed since (" + manifest.suite_fingerprint +
+                       "): give --fresh to discard the old rows, or another -o folder");
     }
     std::size_t dropped = 0;
     // run.json is written first: a kill before rows.csv leaves an empty journal.
@@ -316,6 +324,12 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
                        ", " + std::to_string(first.scenarios) + " scenarios, " + std::to_string(seen.size()) +
                        " shards, the same methods), got suite " + m.suite + ", " + std::to_string(m.scenarios) +
                        " scenarios, shard " + std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count));
+    }
+    if (!m.suite_fingerprint.empty() && !first.suite_fingerprint.empty() &&
+        m.suite_fingerprint != first.suite_fingerprint) {
+      throw InputError(d + ": expected a shard of the same suite as " + shard_dirs.front() + " (" +
+                       first.suite_fingerprint + "), got suite " + m.suite + " with other scenarios (" +
+                       m.suite_fingerprint + ")");
     }
     std::string& slot = seen[static_cast<std::size_t>(m.shard.index - 1)];
     if (!slot.empty()) {

@@ -10,8 +10,9 @@
 // Resumable: rows.csv in the output folder is the run's journal, one flushed
 // line per finished row. A run started again on the same folder keeps the
 // rows there (a line cut off by the kill is dropped) and computes only the
-// missing ones; run.json says which suite, methods and shard the folder
-// holds, and a different run is refused.
+// missing ones; run.json says which suite (name, size and fingerprint:
+// suite.hpp), methods and shard the folder holds, and a different run, or the
+// same suite changed since, is refused.
 // Shardable: shard K of N (1-based) runs the scenarios whose index i has
 // i mod N = K - 1, with all their methods; merge_evaluations joins the
 // shards' folders into one, which equals the unsharded run's.
@@ -51,6 +52,7 @@ struct RunManifest {
   std::string suite;         ///< the suite's name
   std::string suite_source;  ///< where it was read (informative)
   std::size_t scenarios = 0; ///< in the whole suite
+  std::string suite_fingerprint;  ///< Suite::fingerprint; empty in folders written before it was kept
   std::vector<std::string> methods;
   Shard shard;
   bool timing = true;

@@ -1,6 +1,8 @@
 #include "deepguide/evaluation/suite.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -61,6 +63,39 @@ MonteCarloParams read_generator(const Mapping& root) {
   return p;
 }
 
+// 64-bit FNV-1a, fed piece by piece; each piece is preceded by its length so
+// that no two different sequences of pieces hash the same bytes.
+struct Fnv1a {
+  std::uint64_t h = 14695981039346656037ull;
+  void bytes(const std::string& s) {
+    for (char c : std::to_string(s.size()) + ":" + s) {
+      h ^= static_cast<unsigned char>(c);
+      h *= 1099511628211ull;
+    }
+  }
+  std::string text() const {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
+    return buf;
+  }
+};
+
+std::string fingerprint_of(const Suite& suite) {
+  Fnv1a f;
+  for (const SuiteScenario& s : suite.scenarios) {
+    f.bytes(s.id);
+    if (s.path.empty()) continue;
+    std::ifstream in(s.path, std::ios::binary);
+    std::ostringstream text;
+    if (in) text << in.rdbuf();
+    f.bytes(in ? text.str() : std::string("(unreadable)"));
+  }
+  if (!suite.scenarios.empty() && suite.scenarios.front().path.empty() && suite.generator) {
+    f.bytes(suite_yaml(suite.name, *suite.generator));
+  }
+  return f.text();
+}
+
 void read_suite_file(const fs::path& file, Suite& suite) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw input_error({file.string(), "", ""}, "a readable suite file");
@@ -97,6 +132,7 @@ Suite read_suite(const std::string& path) {
     }
     suite.name = fs::path(path).stem().string();
     suite.scenarios.push_back({suite.name, path, -1});
+    suite.fingerprint = fingerprint_of(suite);
     return suite;
   }
   if (!fs::is_directory(path, ec)) {
@@ -123,6 +159,7 @@ Suite read_suite(const std::string& path) {
     throw input_error({path, "", ""}, "scenario files (*.yaml) or a suite.yaml with a generate section",
                       "an empty suite");
   }
+  suite.fingerprint = fingerprint_of(suite);
   return suite;
 }
 

@@ -14,8 +14,16 @@
 // whether it was written to a file or is made on demand: the two give the
 // same rows. A single scenario file is a suite of one.
 //
-// Reading a suite reads no scenario: a broken scenario file is found when it
-// is run (load_suite_scenario throws), so the rest of the suite still runs.
+// Reading a suite parses no scenario: a broken scenario file is found when
+// it is run (load_suite_scenario throws), so the rest of the suite still runs.
+//
+// Fingerprint: what the suite's rows depend on, hashed (64-bit FNV-1a), so a
+// resumed or merged run can tell that the suite changed under the same name
+// and size: every scenario file's id and bytes (an unreadable one as such),
+// or, for a suite made on demand, suite.yaml's generator as suite_yaml()
+// writes it. Files a scenario refers to (its vehicle) are not hashed. A suite
+// written to files and the same made on demand give the same rows but
+// different fingerprints.
 
 #include <cstddef>
 #include <optional>
@@ -38,6 +46,7 @@ struct Suite {
   std::string source;  ///< the folder or file given
   std::optional<MonteCarloParams> generator;  ///< from suite.yaml
   std::vector<SuiteScenario> scenarios;
+  std::string fingerprint;  ///< "fnv1a64:" and 16 hex digits (header)
 };
 
 /// Reads a suite folder, its suite.yaml, or one scenario file. Throws
