@@ -69,7 +69,7 @@ void render_box_plot(const BoxPlot& plot, const std::string& path) {
   canvas.fill_rect({0.0, 0.0, static_cast<double>(plot.width_px), static_cast<double>(plot.height_px)},
                    rgb_hex(0xffffff));
   draw_figure_title(canvas, plot.title, plot.width_px, u, kText);
-  AxesOptions axes{"", plot.y_title, 2, 8, false};
+  AxesOptions axes{"", plot.y_title, 2, 8, false, false};  // the x axis is the groups, labelled below
   if (plot.log_y) {
     axes.y_title += " (log scale)";
     axes.max_y_ticks = std::max(2, static_cast<int>(hi - lo) + 1);  // one tick per decade

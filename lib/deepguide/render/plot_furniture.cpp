@@ -70,7 +70,7 @@ std::string format_tick(double value, double step) {
 
 void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const PlotAxis& y,
                const AxesOptions& options, double u, const AxesStyle& style) {
-  const std::vector<double> xt = nice_ticks(x.lo, x.hi, options.max_x_ticks);
+  const std::vector<double> xt = options.x_ticks ? nice_ticks(x.lo, x.hi, options.max_x_ticks) : std::vector<double>{};
   const std::vector<double> yt = nice_ticks(y.lo, y.hi, options.max_y_ticks);
   const double x_step = nice_tick_step(x.hi - x.lo, options.max_x_ticks);
   const double y_step = nice_tick_step(y.hi - y.lo, options.max_y_ticks);

@@ -60,6 +60,7 @@ struct AxesOptions {
   int max_x_ticks = 10;
   int max_y_ticks = 6;
   bool x_labels = true;  ///< false for the upper panels of a stack sharing one time axis
+  bool x_ticks = true;   ///< false for a categorical x axis (box plots): no x grid, ticks or numbers
   /// The y tick labels (value, step); empty: format_tick. A log axis plots
   /// log10 of its values and labels 10^v.
   std::function<std::string(double value, double step)> y_label = {};
