@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -208,7 +209,9 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
     }
   }
 
-  std::vector<std::optional<JobResult>> results(jobs.size());
+  // Finished jobs wait here for the writer, in the order they finish: only
+  // the rows in flight are held, and a kill loses none that were finished.
+  std::deque<JobResult> finished;
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<std::size_t> next{0};
@@ -232,9 +235,9 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
       }
       {
         std::lock_guard lock(mutex);
-        results[k] = std::move(out);
+        finished.push_back(std::move(out));
       }
-      ready.notify_all();
+      ready.notify_one();
     }
   };
   const int threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -259,9 +262,9 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
     JobResult r;
     {
       std::unique_lock lock(mutex);
-      ready.wait(lock, [&] { return results[k].has_value(); });
-      r = std::move(*results[k]);
-      results[k].reset();
+      ready.wait(lock, [&] { return !finished.empty(); });
+      r = std::move(finished.front());
+      finished.pop_front();
     }
     if (r.row) {
       journal << eval_row_csv(*r.row, options.timing);
