@@ -73,7 +73,12 @@ void register_figures(CLI::App& app) {
         std::fflush(stdout);
       }
     });
-    if (o->json) std::cout << nlohmann::json{{"data", options.data_root}, {"figures", list}}.dump(2) << "\n";
+    if (o->json) {
+      // Paths need not be UTF-8; JSON must be.
+      std::cout << nlohmann::json{{"data", options.data_root}, {"figures", list}}.dump(
+                       2, ' ', false, nlohmann::json::error_handler_t::replace)
+                << "\n";
+    }
   });
 }
 

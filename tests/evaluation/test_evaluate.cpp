@@ -196,7 +196,7 @@ TEST(Evaluate, ASuiteChangedUnderTheSameNameIsNotResumedOrMerged) {
   ASSERT_EQ(after.scenarios.size(), before.scenarios.size());
   EXPECT_NE(after.fingerprint, before.fingerprint);
   deepguide::test::expect_one_line_error(
-      [&] { (void)evaluate_suite(after, tmp.file("cut"), options({"visibility"}, 1)); }, "have changed since");
+      [&] { (void)evaluate_suite(after, tmp.file("cut"), options({"visibility"}, 1)); }, "with other scenarios");
   EvaluateOptions fresh = options({"visibility"}, 1);
   fresh.fresh = true;
   EXPECT_EQ(evaluate_suite(after, tmp.file("cut"), fresh).rows.size(), 6u);
@@ -215,7 +215,15 @@ TEST(Evaluate, ASuiteChangedUnderTheSameNameIsNotResumedOrMerged) {
   const std::string demand = read_suite(tmp.file("demand")).fingerprint;
   p.sonar_noise = 2.0;
   write_suite(tmp.file("demand"), "small", p, false, true);
-  EXPECT_NE(read_suite(tmp.file("demand")).fingerprint, demand);
+  const std::string noisier = read_suite(tmp.file("demand")).fingerprint;
+  EXPECT_NE(noisier, demand);
+  // suite.yaml keeps every setting exactly, so one ulp is another suite.
+  p.sonar_noise = std::nextafter(2.0, 3.0);
+  write_suite(tmp.file("demand"), "small", p, false, true);
+  const Suite ulp = read_suite(tmp.file("demand"));
+  ASSERT_TRUE(ulp.generator.has_value());
+  EXPECT_EQ(ulp.generator->sonar_noise, p.sonar_noise);
+  EXPECT_NE(ulp.fingerprint, noisier);
 
   // A folder written before the fingerprint was kept still resumes.
   const std::filesystem::path manifest = tmp.path() / "cut" / "run.json";

@@ -9,6 +9,7 @@
 // library and the CLI: one line, exit 1, nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -145,13 +146,12 @@ TEST(SeedFigures, TheReactivePartOfTheTrackHasItsOwnColour) {
   ASSERT_EQ(f.track_reactive.size(), f.track.size());
   ASSERT_EQ(f.marks.size(), 1u);
   EXPECT_EQ(f.marks.front().second, "A");
-  std::size_t first = 0, last = 0;
-  for (std::size_t k = 0; k < f.track.size(); ++k) {
-    if (f.track_reactive[k]) {
-      if (first == 0) first = k;
-      last = k;
-    }
-  }
+  const auto begin = std::find(f.track_reactive.begin(), f.track_reactive.end(), true);
+  ASSERT_NE(begin, f.track_reactive.end()) << "the reactive level steered";
+  ASSERT_NE(begin, f.track_reactive.begin()) << "the plan level steered first";
+  const auto first = static_cast<std::size_t>(begin - f.track_reactive.begin());
+  std::size_t last = first;
+  while (last + 1 < f.track.size() && f.track_reactive[last + 1]) ++last;
   ASSERT_GT(last, first + 10) << "the reactive level steered for a while";
   EXPECT_LT((f.marks.front().first - f.track[first - 1]).norm(), 1e-9);
   EXPECT_NE(f.title.find("completed in " + clock_text(run.time_s)), std::string::npos) << f.title;
@@ -225,14 +225,24 @@ TEST(SeedFigures, BadInputIsOneLineAndWritesNothing) {
   EXPECT_EQ(locate_seed_data({"/nonexistent-deepguide", DEEPGUIDE_SOURCE_DIR}), DEEPGUIDE_SOURCE_DIR);
   EXPECT_FALSE(std::filesystem::exists(dir.file("figs")));
 
-  // A broken input file: its reader's one-line error, and no figure for it.
+  // A broken input file: its reader's one-line error, and no figure at all,
+  // not even those drawn before it; the folder the call made goes too, and a
+  // folder that was there stays with what it held.
   std::filesystem::create_directories(dir.path() / "root" / "data");
   std::filesystem::copy(source_file("data"), dir.path() / "root" / "data", std::filesystem::copy_options::recursive);
-  dir.write("root/data/scenarios/one_obstacle.yaml", "name: broken\nstart: {x: 0}\n");
+  dir.write("root/data/scenarios/obstacle_field.yaml", "name: broken\nstart: {x: 0}\n");
   o.data_root = dir.file("root");
+  o.only = {8, 11};
+  test::expect_error(test::error_of([&] { write_seed_figures(o); }), {"obstacle_field.yaml", "start"});
+  EXPECT_FALSE(std::filesystem::exists(dir.file("figs")));
+  std::filesystem::create_directories(dir.path() / "kept");
+  dir.write("kept/mine.txt", "mine");
+  o.output_dir = dir.file("kept");
+  test::expect_error(test::error_of([&] { write_seed_figures(o); }), {"obstacle_field.yaml", "start"});
+  EXPECT_EQ(files_in(dir.file("kept")), 1u) << "only what was there before";
   o.only = {8};
-  test::expect_error(test::error_of([&] { write_seed_figures(o); }), {"one_obstacle.yaml", "start"});
-  EXPECT_FALSE(std::filesystem::exists(dir.file("figs/fig08_dipole_gradient_lines.png")));
+  ASSERT_EQ(write_seed_figures(o).size(), 1u) << "the other inputs are fine";
+  EXPECT_EQ(files_in(dir.file("kept")), 2u);
 }
 
 TEST(SeedFiguresCli, WritesTheChosenFiguresAndRefusesBadInput) {

@@ -1,6 +1,7 @@
 #include "deepguide/core/yaml_mapping.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -12,6 +13,13 @@ std::string yaml_number(double v) {
   s.precision(10);
   s << v;
   return s.str();
+}
+
+std::string yaml_exact_number(double v) {
+  if (std::isinf(v)) return v > 0 ? ".inf" : "-.inf";
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : std::string(".nan");
 }
 
 std::string line_of(const YAML::Node& node) {

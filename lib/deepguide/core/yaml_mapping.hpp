@@ -18,8 +18,11 @@ namespace deepguide {
 
 /// "line N" (1-based) of a node, or "" when yaml-cpp has no mark.
 std::string line_of(const YAML::Node& node);
-/// A number as the files write it (up to 10 significant digits).
+/// A number as messages show it (up to 10 significant digits).
 std::string yaml_number(double v);
+/// A number as files written to be read back write it: the shortest text
+/// that reads back to the same double (.inf, -.inf, .nan for the others).
+std::string yaml_exact_number(double v);
 
 /// A numeric key's range: lo < v (or lo <= v when lo_closed) and v <= hi, in the file's unit.
 struct Range {

@@ -177,9 +177,10 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
                        "): give --fresh to discard it, or another -o folder");
     }
     if (!before.suite_fingerprint.empty() && before.suite_fingerprint != manifest.suite_fingerprint) {
-      throw InputError(out_dir + ": holds a run of suite " + before.suite + " as it was (" + before.suite_fingerprint +
-                       "); its scenarios have changed since (" + manifest.suite_fingerprint +
-                       "): give --fresh to discard the old rows, or another -o folder");
+      throw InputError(out_dir + ": holds a run of suite " + before.suite + " with other scenarios (fingerprint " +
+                       before.suite_fingerprint + ", now " + manifest.suite_fingerprint +
+                       ": regenerated, edited, or files instead of on demand): give --fresh to discard the old "
+                       "rows, or another -o folder");
     }
     std::size_t dropped = 0;
     // run.json is written first: a kill before rows.csv leaves an empty journal.
@@ -311,6 +312,7 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
   if (shard_dirs.empty()) throw InputError("evaluate merge: expected the shards' folders");
   EvaluationRun merged;
   std::vector<std::string> seen;  // the folder of each shard index
+  std::string fingerprint_from;    // the first shard that had a suite fingerprint
   for (const std::string& d : shard_dirs) {
     EvaluationRun part = read_evaluation(d);
     const RunManifest& m = part.manifest;
@@ -328,11 +330,16 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
                        " shards, the same methods), got suite " + m.suite + ", " + std::to_string(m.scenarios) +
                        " scenarios, shard " + std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count));
     }
-    if (!m.suite_fingerprint.empty() && !first.suite_fingerprint.empty() &&
-        m.suite_fingerprint != first.suite_fingerprint) {
-      throw InputError(d + ": expected a shard of the same suite as " + shard_dirs.front() + " (" +
-                       first.suite_fingerprint + "), got suite " + m.suite + " with other scenarios (" +
-                       m.suite_fingerprint + ")");
+    // Shards written before fingerprints were kept have none; the others must agree.
+    if (!m.suite_fingerprint.empty()) {
+      if (fingerprint_from.empty()) {
+        merged.manifest.suite_fingerprint = m.suite_fingerprint;
+        fingerprint_from = d;
+      } else if (m.suite_fingerprint != merged.manifest.suite_fingerprint) {
+        throw InputError(d + ": expected a shard of the same suite as " + fingerprint_from + " (" +
+                         merged.manifest.suite_fingerprint + "), got suite " + m.suite + " with other scenarios (" +
+                         m.suite_fingerprint + ")");
+      }
     }
     std::string& slot = seen[static_cast<std::size_t>(m.shard.index - 1)];
     if (!slot.empty()) {

@@ -67,11 +67,42 @@ MonteCarloParams read_generator(const Mapping& root) {
 // that no two different sequences of pieces hash the same bytes.
 struct Fnv1a {
   std::uint64_t h = 14695981039346656037ull;
-  void bytes(const std::string& s) {
-    for (char c : std::to_string(s.size()) + ":" + s) {
-      h ^= static_cast<unsigned char>(c);
+  void raw(const char* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= static_cast<unsigned char>(data[i]);
       h *= 1099511628211ull;
     }
+  }
+  void piece(const std::string& s) {
+    const std::string length = std::to_string(s.size()) + ":";
+    raw(length.data(), length.size());
+    raw(s.data(), s.size());
+  }
+  // A file as one piece, read in chunks; one the scenario reader would refuse
+  // for its size (over 4 MiB) by its size alone, an unreadable one by a tag
+  // piece of its own.
+  void file(const std::string& path) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    if (ec || !in) {
+      piece("unreadable");
+      return;
+    }
+    if (size > (4u << 20)) {
+      piece("over 4 MiB: " + std::to_string(size));
+      return;
+    }
+    piece("file");
+    const std::string length = std::to_string(size) + ":";
+    raw(length.data(), length.size());
+    char buffer[1 << 16];
+    std::uintmax_t left = size;  // what the size promised, even if the file grows meanwhile
+    while (left > 0 && in.read(buffer, static_cast<std::streamsize>(std::min<std::uintmax_t>(left, sizeof buffer)))) {
+      raw(buffer, static_cast<std::size_t>(in.gcount()));
+      left -= static_cast<std::uintmax_t>(in.gcount());
+    }
+    if (left > 0) piece("shorter than its size");
   }
   std::string text() const {
     char buf[32];
@@ -83,15 +114,14 @@ struct Fnv1a {
 std::string fingerprint_of(const Suite& suite) {
   Fnv1a f;
   for (const SuiteScenario& s : suite.scenarios) {
-    f.bytes(s.id);
-    if (s.path.empty()) continue;
-    std::ifstream in(s.path, std::ios::binary);
-    std::ostringstream text;
-    if (in) text << in.rdbuf();
-    f.bytes(in ? text.str() : std::string("(unreadable)"));
+    f.piece(s.id);
+    if (!s.path.empty()) f.file(s.path);
   }
   if (!suite.scenarios.empty() && suite.scenarios.front().path.empty() && suite.generator) {
-    f.bytes(suite_yaml(suite.name, *suite.generator));
+    // Every setting at full precision (suite_yaml writes them exactly), and
+    // the generator's own version: a new way of drawing is another suite.
+    f.piece("monte carlo generator 1");
+    f.piece(suite_yaml(suite.name, *suite.generator));
   }
   return f.text();
 }
@@ -182,11 +212,11 @@ std::string suite_yaml(const std::string& name, const MonteCarloParams& p) {
     << "  seed: " << p.seed << "\n"
     << "  min_obstacles: " << p.min_obstacles << "\n"
     << "  max_obstacles: " << p.max_obstacles << "\n"
-    << "  min_size_m: " << yaml_number(p.min_size_m) << "\n"
-    << "  max_size_m: " << yaml_number(p.max_size_m) << "\n"
-    << "  cross_track_sigma_m: " << yaml_number(p.cross_track_sigma_m) << "\n"
-    << "  max_current_mps: " << yaml_number(p.max_current_mps) << "\n"
-    << "  sonar_noise: " << yaml_number(p.sonar_noise) << "\n";
+    << "  min_size_m: " << yaml_exact_number(p.min_size_m) << "\n"
+    << "  max_size_m: " << yaml_exact_number(p.max_size_m) << "\n"
+    << "  cross_track_sigma_m: " << yaml_exact_number(p.cross_track_sigma_m) << "\n"
+    << "  max_current_mps: " << yaml_exact_number(p.max_current_mps) << "\n"
+    << "  sonar_noise: " << yaml_exact_number(p.sonar_noise) << "\n";
   return o.str();
 }
 

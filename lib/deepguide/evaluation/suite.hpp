@@ -19,11 +19,12 @@
 //
 // Fingerprint: what the suite's rows depend on, hashed (64-bit FNV-1a), so a
 // resumed or merged run can tell that the suite changed under the same name
-// and size: every scenario file's id and bytes (an unreadable one as such),
-// or, for a suite made on demand, suite.yaml's generator as suite_yaml()
-// writes it. Files a scenario refers to (its vehicle) are not hashed. A suite
-// written to files and the same made on demand give the same rows but
-// different fingerprints.
+// and size: every scenario file's id and bytes (an unreadable one, or one
+// over the reader's 4 MiB, as such), or, for a suite made on demand, the
+// generator's version and every setting at full precision. Files a scenario
+// refers to (vehicle, obstacles_file, current_file) are not hashed: a change
+// there goes unnoticed. A suite written to files and the same made on demand
+// give the same rows but different fingerprints.
 
 #include <cstddef>
 #include <optional>

@@ -125,11 +125,12 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
     if (!f.track.empty()) {
       canvas.stroke_polyline(px(f.track), Stroke{style.casing, 3.8 * u, {}});
       // Runs of one level each, sharing their end points so the line has no gaps.
+      const auto level = [&](std::size_t i) { return !f.track_reactive.empty() && f.track_reactive[i]; };
       std::size_t begin = 0;
       while (begin + 1 < f.track.size()) {
-        const bool reactive = !f.track_reactive.empty() && f.track_reactive[begin + 1];
+        const bool reactive = level(begin + 1);
         std::size_t end = begin + 1;
-        while (end + 1 < f.track.size() && !f.track_reactive.empty() && f.track_reactive[end + 1] == reactive) ++end;
+        while (end + 1 < f.track.size() && level(end + 1) == reactive) ++end;
         const std::vector<Vec2> piece(f.track.begin() + static_cast<std::ptrdiff_t>(begin),
                                       f.track.begin() + static_cast<std::ptrdiff_t>(end) + 1);
         canvas.stroke_polyline(px(piece), Stroke{reactive ? style.reactive : style.track, 1.8 * u, {}});

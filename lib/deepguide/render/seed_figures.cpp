@@ -1,7 +1,9 @@
 #include "deepguide/render/seed_figures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <random>
 #include <system_error>
 
 #include "deepguide/core/angles.hpp"
@@ -29,6 +31,10 @@ const char* const kEncounter = "data/missions/encounter.yaml";
 const char* const kEncounterUnknown = "data/missions/encounter_unknown.geojson";
 const char* const kObstacleField = "data/scenarios/obstacle_field.yaml";
 const char* const kOneObstacle = "data/scenarios/one_obstacle.yaml";
+// Files those name in turn: checked with them, so a candidate folder holding
+// only the four above is not taken for the data.
+const char* const kVehicle = "data/vehicles/deepc.yaml";
+const char* const kKnownObstacles = "data/sample_obstacles.geojson";
 
 constexpr double kFig4PlanningDelay_s = 30.0;
 constexpr double kFig4Zoom_m = 200.0;
@@ -48,6 +54,9 @@ std::string title(int number, const std::string& what) { return "Fig. " + std::t
 
 double deg_s(double rad_s) { return rad_to_deg(rad_s); }
 
+// A clearance for the summaries: "none" where nothing was near (+inf).
+std::string metres(double m, int digits) { return std::isfinite(m) ? fixed(m, digits) + " m" : std::string("none"); }
+
 WrittenSeedFigure fig4_two_levels(const Job& job) {
   const LoadedMission l = load_mission(job.input(kEncounter));
   const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
@@ -57,7 +66,10 @@ WrittenSeedFigure fig4_two_levels(const Job& job) {
   const MissionRun run = run_mission(l.mission, l.env, planned.plan, unknown, options);
   MissionFigure f = simulated_mission_figure(l.mission, l.plan, planned, run, kFig4Zoom_m);
   f.width_px = job.width_px;
-  f.title = title(4, "the reactive level reacts at A, the repaired plan is sailed");
+  f.title = title(4, f.marks.empty() ? "the two levels of control: " + std::string(run.completed ? "" : "NOT ") +
+                                            "completed, the reactive level never steered"
+                                      : std::string("the reactive level reacts at A, the repaired plan is sailed") +
+                                            (run.completed && !run.collided ? "" : " (NOT completed safely)"));
   render_mission(f, job.path);
 
   double reactive_s = 0.0;
@@ -70,8 +82,8 @@ WrittenSeedFigure fig4_two_levels(const Job& job) {
              {"reactive_s", reactive_s}, {"time_s", run.time_s}, {"min_clearance_m", run.min_clearance_m}};
   w.summary = std::string(run.completed ? "completed" : "NOT completed") + " in " + clock_text(run.time_s) + ", " +
               std::to_string(run.detected.size()) + " object(s) found, reactive level " + fixed(reactive_s, 0) +
-              " s, " + std::to_string(run.replans) + " replan(s), least clearance " + fixed(run.min_clearance_m, 1) +
-              " m" + (run.collided ? ", COLLIDED" : "");
+              " s, " + std::to_string(run.replans) + " replan(s), least clearance " + metres(run.min_clearance_m, 1) +
+              (run.collided ? ", COLLIDED" : "");
   return w;
 }
 
@@ -104,7 +116,10 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
   Planner planner(obstacles, options);
   const PlanOutcome outcome = planner.solve({sc.start, sc.target, false});
   const PlanResult& r = outcome.result;
-  if (!r.found) throw InputError(job.input(kObstacleField) + ": expected a route from start to target, got none: " + r.message);
+  if (!r.found) {
+    throw InputError(printable(job.input(kObstacleField), 200) + ": expected a route from start to target, got none: " +
+                     r.message);
+  }
 
   RouteScene scene;
   scene.obstacles = &obstacles;
@@ -121,7 +136,8 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
       // The root overhangs the work area; what lies beyond it is no cell of the graph.
       const auto b = q->tree().box(leaf);
       const Vec2 lo = b.min.cwiseMax(options.quadtree.area_min), hi = b.max.cwiseMin(options.quadtree.area_max);
-      if (lo.x() < hi.x() && lo.y() < hi.y()) list.emplace_back(lo, hi);
+      if (!(lo.x() < hi.x() && lo.y() < hi.y())) continue;
+      list.emplace_back(lo, hi);
       ++cells;
       free_cells += leaf.state == CellState::free ? 1 : 0;
     }
@@ -139,9 +155,8 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
              {"edges", static_cast<double>(r.stats.graph_edges)},
              {"route_m", r.route.length()},
              {"waypoints", static_cast<double>(r.route.points.size())},
-             {"min_clearance_m", outcome.check.min_clearance_m},
-             {"build_ms", r.stats.build_ms}};
-  w.summary = sizes + ", " + route + ", least clearance " + fixed(outcome.check.min_clearance_m, 2) + " m";
+             {"min_clearance_m", outcome.check.min_clearance_m}};
+  w.summary = sizes + ", " + route + ", least clearance " + metres(outcome.check.min_clearance_m, 2);
   if (kind != GraphKind::quadtree) {
     // The yardstick: the exact tangent graph's optimum along the zones' curves.
     PlannerOptions exact;
@@ -192,7 +207,7 @@ void add_runs(WrittenSeedFigure& w, const std::vector<SimulationResult>& runs, b
       w.summary += m + " max |r_ref| " + fixed(deg_s(s.max_abs_rate_ref), 1) + " deg/s (RMS " +
                    fixed(deg_s(s.rms_rate_ref), 2) + "), max |r| " + fixed(deg_s(s.max_abs_rate), 1) + " deg/s";
     } else {
-      w.summary += m + " " + fixed(s.path_length_m, 0) + " m, least clearance " + fixed(s.min_clearance_m, 1) + " m" +
+      w.summary += m + " " + fixed(s.path_length_m, 0) + " m, least clearance " + metres(s.min_clearance_m, 1) +
                    (s.collided ? ", COLLIDED" : "") + (s.reached ? "" : ", target not reached");
     }
   }
@@ -243,14 +258,16 @@ std::string known_numbers() {
 const std::vector<SeedFigureSpec>& seed_figure_specs() {
   static const std::vector<SeedFigureSpec> specs = {
       {4, "fig04_two_levels", "route by the two levels of control: reactive reaction at A, then the repaired plan",
-       {kEncounter, kEncounterUnknown}},
-      {6, "fig06_visibility_graph", "visibility graph over the obstacle scenario and its shortest route", {kObstacleField}},
-      {7, "fig07_quadtree_graph", "quadtree graph over the same obstacles and its shortest route", {kObstacleField}},
-      {8, "fig08_dipole_gradient_lines", "gradient lines of the harmonic dipole potential", {kOneObstacle}},
-      {10, "fig10_geometric_gradient_lines", "gradient lines by geometric construction", {kOneObstacle}},
+       {kEncounter, kEncounterUnknown, kKnownObstacles, kVehicle}},
+      {6, "fig06_visibility_graph", "visibility graph over the obstacle scenario and its shortest route",
+       {kObstacleField, kVehicle}},
+      {7, "fig07_quadtree_graph", "quadtree graph over the same obstacles and its shortest route",
+       {kObstacleField, kVehicle}},
+      {8, "fig08_dipole_gradient_lines", "gradient lines of the harmonic dipole potential", {kOneObstacle, kVehicle}},
+      {10, "fig10_geometric_gradient_lines", "gradient lines by geometric construction", {kOneObstacle, kVehicle}},
       {11, "fig11_paths", "paths of the dipole method and the geometric construction through the obstacle scenario",
-       {kObstacleField}},
-      {12, "fig12_turning_rates", "reference turning rate r_ref of both methods over time", {kObstacleField}},
+       {kObstacleField, kVehicle}},
+      {12, "fig12_turning_rates", "reference turning rate r_ref of both methods over time", {kObstacleField, kVehicle}},
   };
   return specs;
 }
@@ -267,7 +284,7 @@ std::string locate_seed_data(const std::vector<std::string>& candidates) {
       }
     }
     if (missing.empty()) return c;
-    why += (why.empty() ? "" : "; ") + c + " lacks " + missing;
+    why += (why.empty() ? "" : "; ") + printable(c, 200) + " lacks " + missing;
   }
   throw InputError("the bundled data: expected a folder holding data/scenarios and data/missions (--data DIR), got " +
                    (why.empty() ? std::string("no candidate") : why));
@@ -300,21 +317,50 @@ std::vector<WrittenSeedFigure> write_seed_figures(const SeedFigureOptions& optio
 
   std::error_code ec;
   const fs::path out(options.output_dir);
+  const std::string shown = printable(options.output_dir, 200);
   if (options.output_dir.empty()) throw InputError("the figures' folder: expected a folder (-o DIR), got nothing");
   if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
-    throw InputError(options.output_dir + ": expected a folder for the figures, got a file");
+    throw InputError(shown + ": expected a folder for the figures, got a file");
   }
+  const bool made = !fs::exists(out, ec);
   fs::create_directories(out, ec);
-  if (ec) throw InputError(options.output_dir + ": cannot make the figures' folder: " + ec.message());
+  if (ec) throw InputError(shown + ": cannot make the figures' folder: " + ec.message());
+
+  // All or nothing: the figures are drawn into a folder of their own inside
+  // the output folder (so the renames stay on one file system) and moved out
+  // only when every one has been drawn. On an error that folder goes, and so
+  // does the output folder when this call made it.
+  std::random_device random;
+  const fs::path staging = out / (".deepguide-figures-" + std::to_string(random()) + std::to_string(random()));
+  struct Cleanup {
+    fs::path staging, out;
+    bool made;
+    bool armed = true;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(staging, ignored);
+      if (armed && made) fs::remove(out, ignored);  // only if empty
+    }
+  } cleanup{staging, out, made};
+  fs::create_directory(staging, ec);
+  if (ec) throw InputError(shown + ": cannot write the figures there: " + ec.message());
 
   std::vector<WrittenSeedFigure> written;
   for (const SeedFigureSpec* s : chosen) {
-    const Job job{options.data_root, (out / (s->stem + "." + options.extension)).string(), options.width_px};
+    const std::string file = s->stem + "." + options.extension;
+    const Job job{options.data_root, (staging / file).string(), options.width_px};
     WrittenSeedFigure w = draw(s->number, job);
     w.number = s->number;
-    w.path = job.path;
-    if (on_written) on_written(w);
+    w.path = (out / file).string();
     written.push_back(std::move(w));
+  }
+  for (const WrittenSeedFigure& w : written) {
+    fs::rename(staging / fs::path(w.path).filename(), w.path, ec);
+    if (ec) throw InputError(printable(w.path, 200) + ": cannot put the figure in place: " + ec.message());
+  }
+  cleanup.armed = false;
+  if (on_written) {
+    for (const WrittenSeedFigure& w : written) on_written(w);
   }
   return written;
 }

@@ -70,11 +70,13 @@ struct WrittenSeedFigure {
 /// InputError naming the candidates and the first input each one lacks.
 std::string locate_seed_data(const std::vector<std::string>& candidates);
 
-/// Draws the figures (options.only, or all) into options.output_dir, each
-/// file atomically, in the seed's order; calls `on_written` after each one.
-/// Throws InputError for an unknown figure number (naming the known ones), a
-/// bad extension or width, an output_dir that is a file or cannot be made, and
-/// what the drawings throw for their inputs.
+/// Draws the figures (options.only, or all) into options.output_dir, in the
+/// seed's order, all or nothing: they are drawn into a staging folder inside
+/// it and moved in when every one is done (then `on_written` is called for
+/// each). Throws InputError for an unknown figure number (naming the known
+/// ones), a bad extension or width, an output_dir that is a file or cannot be
+/// made or written, and what the drawings throw for their inputs; then no
+/// figure of this call is left, nor the output folder if the call made it.
 std::vector<WrittenSeedFigure> write_seed_figures(const SeedFigureOptions& options,
                                                   const std::function<void(const WrittenSeedFigure&)>& on_written = {});
 
