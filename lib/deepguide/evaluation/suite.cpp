@@ -89,7 +89,7 @@ struct Fnv1a {
       piece("unreadable");
       return;
     }
-    if (size > (4u << 20)) {
+    if (size > kMaxScenarioFileBytes) {
       piece("over 4 MiB: " + std::to_string(size));
       return;
     }

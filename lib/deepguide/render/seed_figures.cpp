@@ -52,8 +52,6 @@ struct Job {
 
 std::string title(int number, const std::string& what) { return "Fig. " + std::to_string(number) + " (seed): " + what; }
 
-double deg_s(double rad_s) { return rad_to_deg(rad_s); }
-
 // A clearance for the summaries: "none" where nothing was near (+inf).
 std::string metres(double m, int digits) { return std::isfinite(m) ? fixed(m, digits) + " m" : std::string("none"); }
 
@@ -96,16 +94,12 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
   options.margin = sc.reactive.margin_m;
   options.graph = kind;
   if (kind == GraphKind::quadtree) {
-    // The square over start, target and every zone, a tenth wider: the route
+    // The box over start, target and every zone, a tenth wider: the route
     // may pass outside the obstacles' box.
+    const auto [lo, hi] = footprint_box(obstacles);
     WorldBox box;
-    box.extend(sc.start);
-    box.extend(sc.target);
-    for (const EllipticCylinder& c : sc.obstacles) {
-      const double r = c.footprint.a + options.margin;
-      box.extend(c.footprint.center - Vec2::Constant(r));
-      box.extend(c.footprint.center + Vec2::Constant(r));
-    }
+    box.extend((lo - Vec2::Constant(options.margin)).cwiseMin(sc.start).cwiseMin(sc.target));
+    box.extend((hi + Vec2::Constant(options.margin)).cwiseMax(sc.start).cwiseMax(sc.target));
     box = box.padded(0.1 * std::max(box.width(), box.height()));
     options.quadtree.min_cell_m = kFig7MinCell_m;
     options.quadtree.area_min = box.min;
@@ -157,7 +151,11 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
              {"waypoints", static_cast<double>(r.route.points.size())},
              {"min_clearance_m", outcome.check.min_clearance_m}};
   w.summary = sizes + ", " + route + ", least clearance " + metres(outcome.check.min_clearance_m, 2);
-  if (kind != GraphKind::quadtree) {
+  if (kind == GraphKind::quadtree) {
+    w.facts["cells"] = static_cast<double>(cells);
+    w.facts["free_cells"] = static_cast<double>(free_cells);
+    w.summary = std::to_string(cells) + " cells (" + std::to_string(free_cells) + " free), " + w.summary;
+  } else {
     // The yardstick: the exact tangent graph's optimum along the zones' curves.
     PlannerOptions exact;
     exact.margin = options.margin;
@@ -167,11 +165,6 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
       w.facts["optimum_m"] = best.result.exact_length_m;
       w.summary += " (the exact optimum " + fixed(best.result.exact_length_m, 1) + " m)";
     }
-  }
-  if (kind == GraphKind::quadtree) {
-    w.facts["cells"] = static_cast<double>(cells);
-    w.facts["free_cells"] = static_cast<double>(free_cells);
-    w.summary = std::to_string(cells) + " cells (" + std::to_string(free_cells) + " free), " + w.summary;
   }
   return w;
 }
@@ -199,13 +192,13 @@ void add_runs(WrittenSeedFigure& w, const std::vector<SimulationResult>& runs, b
     w.facts[m + "_collided"] = s.collided ? 1.0 : 0.0;
     w.facts[m + "_path_m"] = s.path_length_m;
     w.facts[m + "_min_clearance_m"] = s.min_clearance_m;
-    w.facts[m + "_max_r_ref_deg_s"] = deg_s(s.max_abs_rate_ref);
-    w.facts[m + "_rms_r_ref_deg_s"] = deg_s(s.rms_rate_ref);
-    w.facts[m + "_max_r_deg_s"] = deg_s(s.max_abs_rate);
+    w.facts[m + "_max_r_ref_deg_s"] = rad_to_deg(s.max_abs_rate_ref);
+    w.facts[m + "_rms_r_ref_deg_s"] = rad_to_deg(s.rms_rate_ref);
+    w.facts[m + "_max_r_deg_s"] = rad_to_deg(s.max_abs_rate);
     if (!w.summary.empty()) w.summary += "; ";
     if (rates) {
-      w.summary += m + " max |r_ref| " + fixed(deg_s(s.max_abs_rate_ref), 1) + " deg/s (RMS " +
-                   fixed(deg_s(s.rms_rate_ref), 2) + "), max |r| " + fixed(deg_s(s.max_abs_rate), 1) + " deg/s";
+      w.summary += m + " max |r_ref| " + fixed(rad_to_deg(s.max_abs_rate_ref), 1) + " deg/s (RMS " +
+                   fixed(rad_to_deg(s.rms_rate_ref), 2) + "), max |r| " + fixed(rad_to_deg(s.max_abs_rate), 1) + " deg/s";
     } else {
       w.summary += m + " " + fixed(s.path_length_m, 0) + " m, least clearance " + metres(s.min_clearance_m, 1) +
                    (s.collided ? ", COLLIDED" : "") + (s.reached ? "" : ", target not reached");

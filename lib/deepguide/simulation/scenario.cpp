@@ -513,9 +513,8 @@ Scenario parse_scenario_yaml(const std::string& text, const std::string& source,
 Scenario read_scenario_file(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing scenario file");
-  constexpr std::uintmax_t kMaxBytes = 4u << 20;
   const auto size = fs::file_size(path, ec);
-  if (ec || size > kMaxBytes) {
+  if (ec || size > kMaxScenarioFileBytes) {
     throw input_error({path, "", ""}, "a scenario file under 4 MiB (large obstacle sets go in an obstacles_file)",
                       std::to_string(size) + " bytes");
   }

@@ -154,7 +154,10 @@ void validate(const Scenario& scenario);
 /// the folder relative paths start from.
 Scenario parse_scenario_yaml(const std::string& text, const std::string& source, const std::string& base_dir);
 
-/// Reads a scenario file (at most 4 MiB); throws InputError for a missing, unreadable or invalid file.
+/// The largest scenario file read_scenario_file takes (large obstacle sets go in an obstacles_file).
+inline constexpr std::uintmax_t kMaxScenarioFileBytes = 4u << 20;
+
+/// Reads a scenario file (at most kMaxScenarioFileBytes); throws InputError for a missing, unreadable or invalid file.
 Scenario read_scenario_file(const std::string& path);
 
 }  // namespace deepguide
