@@ -49,6 +49,16 @@ void print_text(const ChartInfo& c) {
   std::printf("hazards          %zu", c.hazards);
   if (c.kind == ChartKind::s57) std::printf(" (+ %zu land area feature(s))", c.land_features);
   std::printf("\n");
+  if (c.kind == ChartKind::s57) {
+    std::printf("zones of conf.   ");
+    if (c.zoc_areas.empty()) std::printf("none (M_QUAL absent: depths and positions taken as unassessed)");
+    const char* sep = "";
+    for (const auto& [zoc, n] : c.zoc_areas) {
+      std::printf("%sCATZOC %s: %zu area(s)", sep, zoc.c_str(), n);
+      sep = ", ";
+    }
+    std::printf("\n");
+  }
   if (c.no_go) {
     const NoGoSummary& n = *c.no_go;
     std::printf("no-go at %g m    %.0f m2 (clearance %g m), %zu polygon(s)", n.depth_m, n.area_m2, n.clearance_m,
@@ -58,9 +68,18 @@ void print_text(const ChartInfo& c) {
                   n.total_cells > 0 ? 100.0 * static_cast<double>(n.no_go_cells) / static_cast<double>(n.total_cells)
                                     : 0.0);
     } else {
-      std::printf(", %zu hazard(s) passed over", n.hazards_passable);
+      std::printf(", %zu %s passed over", n.hazards_passable, c.kind == ChartKind::s57 ? "feature(s)" : "hazard(s)");
     }
     std::printf("\n");
+    if (!n.no_go_by_class.empty()) {
+      std::printf("no-go by class   ");
+      const char* sep = "";
+      for (const auto& [cls, k] : n.no_go_by_class) {
+        std::printf("%s%s %zu", sep, cls.c_str(), k);
+        sep = ", ";
+      }
+      std::printf(" (%zu polygon corners for the planners)\n", n.vertices);
+    }
   }
 }
 

@@ -1,12 +1,15 @@
-// deepguide check route ROUTE --obstacles FILE... [--margin M] [--json]
+// deepguide check route ROUTE (--obstacles FILE... | --chart CELL|FOLDER... --depth D) [--margin M] [--json]
 
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/route_io.hpp"
+#include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
@@ -14,42 +17,110 @@ namespace {
 struct CheckOptions {
   std::string route;
   std::vector<std::string> obstacles;
+  std::vector<std::string> charts;
   FrameOptions frame;
   double margin = 5.0;
+  double depth = std::nan("");
+  double clearance = 2.0;
+  bool restricted = false;
+  bool no_zoc = false;
   bool json = false;
 };
+
+// The route against S-57 cells, feature by feature (enc_route_check.hpp).
+nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& why) {
+  if (std::isnan(o.depth)) throw InputError("--depth: expected the operating depth (m) to check against S-57 charts");
+  EncNoGoOptions opts;
+  opts.operating_depth_m = o.depth;
+  opts.vertical_clearance_m = o.clearance;
+  opts.restricted_areas = o.restricted;
+  opts.zone_of_confidence = !o.no_zoc;
+  std::optional<LocalFrame> frame;
+  if (!o.frame.crs.empty()) frame = LocalFrame::from_user_crs(o.frame.crs);
+  const EncNoGo no_go = enc_no_go(o.charts, frame, opts);
+  const Route route = read_route(o.route, no_go.frame);
+  const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin);
+  safe = check.safe;
+  why = check.describe(no_go.frame);
+  nlohmann::json j = {{"safe", check.safe},        {"crossed_features", check.crossed_features},
+                      {"margin_m", o.margin},      {"required_depth_m", no_go.required_depth_m},
+                      {"length_m", route.length()}};
+  if (check.first) {
+    const ChartCrossing& c = *check.first;
+    const Vec2 ll = no_go.frame.to_lonlat(c.at);
+    j["first_crossing"] = {{"feature", c.feature->id},     {"cell", c.feature->cell},
+                           {"class", c.feature->cls},      {"rcid", c.feature->rcid},
+                           {"reason", c.feature->reason},  {"leg", c.leg + 1},
+                           {"along_m", c.along_m},         {"lon", ll.x()},
+                           {"lat", ll.y()}};
+    if (std::isfinite(c.feature->charted_depth_m)) j["first_crossing"]["charted_depth_m"] = c.feature->charted_depth_m;
+  }
+  return j;
+}
+
 }  // namespace
 
 void register_check_route(CLI::App& check) {
   auto o = std::make_shared<CheckOptions>();
   CLI::App* cmd = check.add_subcommand(
-      "route", "Exact clearance of every route segment to every obstacle; exit 1 when the route is unsafe");
+      "route", "Check a route against obstacles (exact clearance) or S-57 charts at a depth (the first crossing "
+               "named); exit 1 when the route is unsafe");
   cmd->add_option("ROUTE", o->route, "Route file (GeoJSON, GPX, KML, ... with a LineString)")->required();
-  cmd->add_option("--obstacles", o->obstacles, "Obstacle files")->required()->expected(1, -1);
+  cmd->add_option("--obstacles", o->obstacles, "Obstacle files")->expected(1, -1);
+  cmd->add_option("--chart", o->charts, "S-57 cells (*.000, updates beside them) or folders of cells")
+      ->expected(1, -1);
+  cmd->add_option("--depth", o->depth, "Operating depth (m, positive down), for --chart");
+  cmd->add_option("--vertical-clearance", o->clearance, "Water kept under the vehicle (m), for --chart")
+      ->capture_default_str();
+  cmd->add_flag("--restricted", o->restricted, "--chart: restricted areas (RESTRN 7, 8, 14) are no-go too");
+  cmd->add_flag("--no-zoc", o->no_zoc, "--chart: charted depths and positions as exact (no zone of confidence)");
   add_frame_options(*cmd, o->frame);
   cmd->add_option("--margin", o->margin, "Safety margin the route must keep (m)")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the verdict as JSON");
   cmd->callback([o] {
-    const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
-    const Route route = read_route(o->route, loaded.frame);
+    if (o->obstacles.empty() && o->charts.empty()) {
+      throw CLI::ValidationError("check route", "give --obstacles FILE... or --chart CELL... (or both)");
+    }
     if (!std::isfinite(o->margin) || o->margin < 0.0) {
       throw InputError("--margin: expected a safety margin >= 0 m, got " + std::to_string(o->margin));
     }
-    const ObstacleField field(loaded.obstacles, o->margin);
-    const RouteCheck check = check_route(route.points, field);
-    if (o->json) {
-      std::cout << nlohmann::json{{"safe", check.safe},
-                                  {"min_clearance_m", check.min_clearance_m},
-                                  {"worst_segment", check.worst_segment},
-                                  {"worst_obstacle", check.worst_obstacle},
-                                  {"margin_m", o->margin},
-                                  {"length_m", route.length()}}
-                       .dump(2)
-                << "\n";
-    } else if (check.safe) {
-      std::cout << "safe: " << check.describe() << "\n";
+    nlohmann::json out = nlohmann::json::object();
+    bool safe = true;
+    std::string why;
+    if (!o->obstacles.empty()) {
+      const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
+      const Route route = read_route(o->route, loaded.frame);
+      const ObstacleField field(loaded.obstacles, o->margin);
+      const RouteCheck check = check_route(route.points, field);
+      out = {{"safe", check.safe},
+             {"min_clearance_m", check.min_clearance_m},
+             {"worst_segment", check.worst_segment},
+             {"worst_obstacle", check.worst_obstacle},
+             {"margin_m", o->margin},
+             {"length_m", route.length()}};
+      safe = check.safe;
+      why = check.describe();
     }
-    if (!check.safe) throw InputError(o->route + ": " + check.describe());
+    if (!o->charts.empty()) {
+      bool chart_safe = true;
+      std::string chart_why;
+      const nlohmann::json chart = check_on_chart(*o, chart_safe, chart_why);
+      if (o->obstacles.empty()) {
+        out = chart;
+      } else {
+        out["chart"] = chart;
+        out["safe"] = safe && chart_safe;
+      }
+      if (safe && !chart_safe) why = chart_why;
+      if (safe && chart_safe) why = o->obstacles.empty() ? chart_why : why + "; " + chart_why;
+      safe = safe && chart_safe;
+    }
+    if (o->json) {
+      std::cout << out.dump(2) << "\n";
+    } else if (safe) {
+      std::cout << "safe: " << why << "\n";
+    }
+    if (!safe) throw InputError(o->route + ": " + why);
   });
 }
 

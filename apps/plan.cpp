@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "plan_depth.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
@@ -18,6 +19,7 @@
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_scene.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
+#include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
@@ -268,6 +270,18 @@ void register_plan(CLI::App& app) {
                                 charted.obstacles.ellipses.end());
       obstacles.polygons.insert(obstacles.polygons.end(), charted.obstacles.polygons.begin(),
                                 charted.obstacles.polygons.end());
+    }
+    if (charted.enc) {
+      // Name the charted feature, not the merged no-go polygon the planner would.
+      auto refuse_inside = [&](const Vec2& p, const char* which) {
+        if (const EncNoGoFeature* f = no_go_feature_at(*charted.enc, p, o->margin)) {
+          throw NoRouteError(std::string("the ") + which + " lies within " + fixed(o->margin, 2) +
+                             " m of " + f->id + (f->cell.empty() ? "" : " of " + f->cell) + " (" + f->reason +
+                             ")" + (which[0] == 's' ? "; --escape leaves it by the shortest way" : ""));
+        }
+      };
+      if (!problem.escape) refuse_inside(problem.start, "start");
+      refuse_inside(problem.goal, "goal");
     }
     const auto model = std::make_shared<const CostModel>(cost_model_of(*o, frame, problem));
     if (model->kind != CostKind::length) options.cost = model;

@@ -1,5 +1,5 @@
 #pragma once
-// Numbers as text for messages and files, in one place: printf's fixed
+// Numbers (and names) as text for messages and files, in one place: printf's fixed
 // ("%.*f") and general ("%g") forms, and a point as "(x, y)". A buffer of
 // 384 characters holds any double in fixed form.
 
@@ -18,5 +18,7 @@ inline std::string point_text(const Eigen::Vector2d& p, int digits = 1) { return
 /// A duration as a clock, "H:MM:SS", rounded to the second (e.g. "1:47:47"); "-" for
 /// a negative or non-finite one.
 std::string clock_text(double seconds);
+/// `s` with ASCII letters in lower case (names in files: units, extensions, attributes).
+std::string ascii_lower(std::string s);
 
 }  // namespace deepguide

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
@@ -15,11 +16,6 @@ namespace deepguide {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 std::string item(GDALMajorObject& o, const std::string& key) {
   const char* v = o.GetMetadataItem(key.c_str());
@@ -49,8 +45,8 @@ GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOption
 // The vertical sense the file states, with the reason; elevation by default.
 std::pair<VerticalSense, std::string> detect_sense(GDALDataset& ds, GDALRasterBand& band) {
   const std::string var = item(band, "NETCDF_VARNAME");
-  std::string positive = lower(item(band, "positive"));
-  if (positive.empty() && !var.empty()) positive = lower(item(ds, var + "#positive"));
+  std::string positive = ascii_lower(item(band, "positive"));
+  if (positive.empty() && !var.empty()) positive = ascii_lower(item(ds, var + "#positive"));
   if (positive == "down") return {VerticalSense::depth, "attribute positive=down"};
   if (positive == "up") return {VerticalSense::elevation, "attribute positive=up"};
 
@@ -62,7 +58,7 @@ std::pair<VerticalSense, std::string> detect_sense(GDALDataset& ds, GDALRasterBa
                                                        {"long_name", item(band, "long_name")},
                                                        {"variable name", var}};
   for (const auto& [what, text] : names) {
-    const std::string t = lower(text);
+    const std::string t = ascii_lower(text);
     if (t.empty()) continue;
     if (t.find("depth") != std::string::npos)
       return {VerticalSense::depth, std::string("band ") + what + " '" + printable(text) + "' says depth"};
@@ -80,7 +76,7 @@ bool has_cf_lonlat_axes(GDALDataset& ds) {
   bool east = false, north = false;
   if (char** md = ds.GetMetadata()) {
     for (char** p = md; *p != nullptr; ++p) {
-      const std::string kv = lower(*p);
+      const std::string kv = ascii_lower(*p);
       if (kv.find("#units=degrees_east") != std::string::npos) east = true;
       if (kv.find("#units=degrees_north") != std::string::npos) north = true;
     }

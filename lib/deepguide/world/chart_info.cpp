@@ -9,7 +9,9 @@
 #include <filesystem>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/geometry/polygon_ops.hpp"
 #include "deepguide/geometry/safety_zone.hpp"
+#include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
@@ -136,16 +138,33 @@ void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
       info.hazards += n;
     }
   }
+  info.zoc_areas = sum.zoc_areas;
   if (!std::isnan(o.depth_m)) {
-    so.operating_depth_m = o.depth_m;
-    so.vertical_clearance_m = o.clearance_m;
-    const S57Hazards left = s57_hazards(info.path, frame, so);
+    EncNoGoOptions eo;
+    eo.operating_depth_m = o.depth_m;
+    eo.vertical_clearance_m = o.clearance_m;
+    const EncNoGo no_go = enc_no_go({info.path}, frame, eo);
     NoGoSummary s;
     s.depth_m = o.depth_m;
     s.clearance_m = o.clearance_m;
-    s.area_m2 = union_area(left.obstacles);
-    s.polygons = left.obstacles.size();
-    s.hazards_passable = left.removed_by_depth;
+    // Inside the coverage: the ring of unknown water round it is the planners' fence, not chart.
+    BgMultiPolygon areas;
+    for (const EncNoGoFeature& f : no_go.features) {
+      if (f.cls == "M_COVR") continue;
+      for (const BgPolygon& p : f.area) areas.push_back(p);
+      if (f.point) {
+        Ellipse disc;
+        disc.center = *f.point;
+        disc.a = disc.b = f.radius_m;
+        areas.push_back(enclosing_bg_polygon({disc, 0.0}, {0.1}));
+      }
+    }
+    s.area_m2 = 0.0;
+    for (const BgPolygon& p : merge_overlapping(std::move(areas))) s.area_m2 += boost::geometry::area(p);
+    s.polygons = no_go.obstacles.polygons.size();
+    s.vertices = no_go.vertices;
+    s.no_go_by_class = no_go.no_go_by_class;
+    for (const auto& [cls, n] : no_go.passable_by_class) s.hazards_passable += n;
     info.no_go = s;
   }
 }
@@ -269,7 +288,10 @@ nlohmann::json to_json(const ChartInfo& info) {
   j["min_depth_m"] = number_or_null(info.min_depth_m);
   j["max_depth_m"] = number_or_null(info.max_depth_m);
   j["hazards"] = info.hazards;
-  if (info.kind == ChartKind::s57) j["land_features"] = info.land_features;
+  if (info.kind == ChartKind::s57) {
+    j["land_features"] = info.land_features;
+    j["zones_of_confidence"] = info.zoc_areas;
+  }
   if (info.kind == ChartKind::raster) {
     j["raster"] = {{"width", info.raster_width},
                    {"height", info.raster_height},
@@ -288,6 +310,10 @@ nlohmann::json to_json(const ChartInfo& info) {
       g["total_cells"] = n.total_cells;
     } else {
       g["hazards_passable"] = n.hazards_passable;
+    }
+    if (info.kind == ChartKind::s57) {
+      g["no_go_by_class"] = n.no_go_by_class;
+      g["planner_vertices"] = n.vertices;
     }
     j["no_go"] = g;
   }

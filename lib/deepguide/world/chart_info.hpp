@@ -14,13 +14,16 @@
 //   UWTROC features for an S-57 cell (land is counted apart); every obstacle
 //   for a vector file.
 // - No-go at ChartInfoOptions::depth_m: for a raster, compute_no_go (too
-//   shallow, land, NoData); for an S-57 cell and a vector file, the union of
-//   the footprints of the hazards that remain after the depth filter (and of
-//   land), ellipses as polygons within 0.1 m. Areas in the local frame (m2):
+//   shallow, land, NoData); for an S-57 cell, enc_no_go (depth areas,
+//   soundings, dangers, land, zones of confidence: docs/CHARTS.md), inside
+//   the cell's coverage; for a vector file, the union of the footprints of
+//   the hazards that remain after the depth filter, ellipses as polygons
+//   within 0.1 m. Areas in the local frame (m2):
 //   the UTM zone of the chart's centre unless local_crs names one.
 
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +51,9 @@ struct NoGoSummary {
   std::size_t no_go_cells = 0;    ///< raster only
   std::size_t total_cells = 0;    ///< raster only
   std::size_t hazards_passable = 0;  ///< S-57 / vector: hazards the vehicle passes over
+  /// S-57: no-go features per object class (SOUNDG: soundings), and the planners' polygon vertices.
+  std::map<std::string, std::size_t> no_go_by_class;
+  std::size_t vertices = 0;
 };
 
 struct ChartInfo {
@@ -63,6 +69,7 @@ struct ChartInfo {
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
   std::size_t hazards = 0;
   std::size_t land_features = 0;  ///< S-57: LNDARE features
+  std::map<std::string, std::size_t> zoc_areas;  ///< S-57: M_QUAL areas per CATZOC letter
   // Raster facts.
   int raster_width = 0, raster_height = 0;
   double cell_x_m = 0, cell_y_m = 0;  ///< in CRS units

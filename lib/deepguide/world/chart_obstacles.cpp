@@ -4,9 +4,9 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"
-#include "deepguide/world/s57_chart.hpp"
 
 namespace deepguide {
 
@@ -25,41 +25,52 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
                                const ChartObstacleOptions& options) {
   const bool has_depth = !std::isnan(options.depth_m);
   ChartObstacles out;
+  // S-57 cells (and folders of them) are read together: where they overlap the better scale wins.
+  std::vector<std::string> enc;
   for (const std::string& path : paths) {
+    if (names_enc(path) || chart_kind(path) == ChartKind::s57) {
+      enc.push_back(path);
+      continue;
+    }
     const ChartKind kind = chart_kind(path);
     ChartFileObstacles file{path, to_string(kind)};
     ObstacleSet set;
-    switch (kind) {
-      case ChartKind::raster: {
-        if (!has_depth) {
-          throw input_error({path, "", "--depth"},
-                            "the operating depth (m) to tell too-shallow water in a bathymetry raster");
-        }
-        NoGoOptions no_go;
-        no_go.operating_depth_m = options.depth_m;
-        no_go.vertical_clearance_m = options.clearance_m;
-        no_go.simplify_tolerance_m = options.simplify_tolerance_m;
-        set.polygons = compute_no_go(path, frame, no_go).polygons;
-        break;
+    if (kind == ChartKind::raster) {
+      if (!has_depth) {
+        throw input_error({path, "", "--depth"},
+                          "the operating depth (m) to tell too-shallow water in a bathymetry raster");
       }
-      case ChartKind::s57: {
-        S57Options s57;
-        s57.operating_depth_m = options.depth_m;
-        s57.vertical_clearance_m = options.clearance_m;
-        S57Hazards hazards = s57_hazards(path, frame, s57);
-        file.passed_over = hazards.removed_by_depth;
-        set = std::move(hazards.obstacles);
-        break;
-      }
-      case ChartKind::vector: {
-        set = load_obstacles({path}, {frame.id(), options.source_crs}).obstacles;
-        if (has_depth) file.passed_over = remove_passable(set, options.depth_m, options.clearance_m);
-        break;
-      }
+      NoGoOptions no_go;
+      no_go.operating_depth_m = options.depth_m;
+      no_go.vertical_clearance_m = options.clearance_m;
+      no_go.simplify_tolerance_m = options.simplify_tolerance_m;
+      set.polygons = compute_no_go(path, frame, no_go).polygons;
+    } else {
+      set = load_obstacles({path}, {frame.id(), options.source_crs}).obstacles;
+      if (has_depth) file.passed_over = remove_passable(set, options.depth_m, options.clearance_m);
     }
     file.obstacles = set.size();
     append(out.obstacles, std::move(set));
     out.files.push_back(file);
+  }
+  if (!enc.empty()) {
+    if (!has_depth) {
+      throw input_error({enc.front(), "", "--depth"},
+                        "the operating depth (m) to tell too-shallow water in an S-57 chart");
+    }
+    EncNoGoOptions o = options.enc;
+    o.operating_depth_m = options.depth_m;
+    o.vertical_clearance_m = options.clearance_m;
+    EncNoGo no_go = enc_no_go(enc, frame, o);
+    // One row for the cells read together.
+    ChartFileObstacles file{no_go.cells.size() == 1 ? no_go.cells.front().path
+                                                    : std::to_string(no_go.cells.size()) + " cells",
+                            to_string(ChartKind::s57)};
+    for (const auto& [cls, n] : no_go.passable_by_class) file.passed_over += n;
+    file.obstacles = no_go.obstacles.size();
+    out.files.push_back(file);
+    append(out.obstacles, std::move(no_go.obstacles));
+    out.enc = std::make_shared<EncNoGo>(std::move(no_go));
   }
   return out;
 }

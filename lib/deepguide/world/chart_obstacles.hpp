@@ -4,18 +4,21 @@
 // kind from what GDAL opens):
 //  - a bathymetry raster: its no-go polygons at the operating depth
 //    (no_go.hpp: too shallow for depth + clearance, land, and no data);
-//  - an S-57 cell: its hazards and land (s57_chart.hpp), less the hazards
-//    deep enough to pass over;
+//  - S-57 cells and folders of cells, read together: their no-go at the
+//    operating depth (enc_no_go.hpp: depth areas, land, unsurveyed water,
+//    structures, dangers and soundings, by the zones of confidence);
 //  - a vector file (a hazard layer, an obstacle store): its obstacles, less
 //    those whose top lies deeper than depth + clearance.
-// A raster needs the operating depth: without it no cell can be judged, and
+// A raster or an S-57 cell needs the operating depth: without it no cell can be judged, and
 // the caller is told so instead of getting an empty chart.
 
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
@@ -30,6 +33,8 @@ struct ChartObstacleOptions {
   double simplify_tolerance_m = 5.0;
   /// CRS of vector files that carry none (empty: lon/lat).
   std::string source_crs;
+  /// How S-57 cells are read (their depth and clearance are the two above).
+  EncNoGoOptions enc = {};
 };
 
 struct ChartFileObstacles {
@@ -42,6 +47,8 @@ struct ChartFileObstacles {
 struct ChartObstacles {
   ObstacleSet obstacles;
   std::vector<ChartFileObstacles> files;
+  /// The S-57 cells' no-go, feature by feature (null without cells): what names a crossing.
+  std::shared_ptr<const EncNoGo> enc;
 };
 
 /// Reads every chart into `frame`. Throws InputError (one line naming the

@@ -10,6 +10,7 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -18,11 +19,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 std::string trim(const std::string& s) {
   const auto a = s.find_first_not_of(" \t");
@@ -40,7 +36,7 @@ std::string num(double v, int decimals = 3) {
 
 // "UNITS since YYYY-MM-DD[( |T)hh:mm[:ss[.f]]][Z| UTC|+hh[:mm]]" -> (seconds per unit, epoch of the origin).
 std::optional<std::pair<double, double>> parse_time_units(const std::string& text) {
-  const std::string t = lower(trim(text));
+  const std::string t = ascii_lower(trim(text));
   const auto since = t.find(" since ");
   if (since == std::string::npos) return std::nullopt;
   const std::string unit = trim(t.substr(0, since));
@@ -150,15 +146,15 @@ Role role_of(const GDALDimension& dim) {
   if (type == "VERTICAL") return Role::z;
   if (type == "TEMPORAL") return Role::t;
   if (const auto var = dim.GetIndexingVariable()) {
-    const std::string axis = lower(attr_string(*var, "axis"));
-    const std::string units = lower(var->GetUnit());
-    const std::string sn = lower(attr_string(*var, "standard_name"));
+    const std::string axis = ascii_lower(attr_string(*var, "axis"));
+    const std::string units = ascii_lower(var->GetUnit());
+    const std::string sn = ascii_lower(attr_string(*var, "standard_name"));
     if (axis == "x" || units == "degrees_east" || sn == "longitude" || sn == "projection_x_coordinate") return Role::x;
     if (axis == "y" || units == "degrees_north" || sn == "latitude" || sn == "projection_y_coordinate") return Role::y;
     if (axis == "z" || sn == "depth" || attr_string(*var, "positive").size() > 0) return Role::z;
     if (axis == "t" || sn == "time" || units.find(" since ") != std::string::npos) return Role::t;
   }
-  const std::string n = lower(dim.GetName());
+  const std::string n = ascii_lower(dim.GetName());
   if (n == "lon" || n == "longitude" || n == "x") return Role::x;
   if (n == "lat" || n == "latitude" || n == "y") return Role::y;
   if (n == "depth" || n == "z" || n == "lev" || n == "level" || n == "deptht" || n == "depthu") return Role::z;
@@ -187,7 +183,7 @@ std::shared_ptr<GDALMDArray> find_by(const GDALGroup& root, const std::vector<st
   for (const auto& sn : standard_names) {
     for (const auto& name : root.GetMDArrayNames()) {
       auto a = root.OpenMDArray(name);
-      if (a && lower(attr_string(*a, "standard_name")) == sn) return a;
+      if (a && ascii_lower(attr_string(*a, "standard_name")) == sn) return a;
     }
   }
   for (const auto& n : names) {
@@ -367,12 +363,12 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
 
   // CRS: CF lon/lat axes, the array's grid mapping, or the assumed one.
   auto is_lon = [](const std::shared_ptr<GDALMDArray>& a) {
-    return a && (lower(a->GetUnit()).rfind("degrees_e", 0) == 0 || lower(a->GetUnit()) == "degree_east" ||
-                 lower(attr_string(*a, "standard_name")) == "longitude");
+    return a && (ascii_lower(a->GetUnit()).rfind("degrees_e", 0) == 0 || ascii_lower(a->GetUnit()) == "degree_east" ||
+                 ascii_lower(attr_string(*a, "standard_name")) == "longitude");
   };
   auto is_lat = [](const std::shared_ptr<GDALMDArray>& a) {
-    return a && (lower(a->GetUnit()).rfind("degrees_n", 0) == 0 || lower(a->GetUnit()) == "degree_north" ||
-                 lower(attr_string(*a, "standard_name")) == "latitude");
+    return a && (ascii_lower(a->GetUnit()).rfind("degrees_n", 0) == 0 || ascii_lower(a->GetUnit()) == "degree_north" ||
+                 ascii_lower(attr_string(*a, "standard_name")) == "latitude");
   };
   std::unique_ptr<OGRSpatialReference> srs;
   std::string srs_source;
@@ -415,7 +411,7 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
                           "'UNITS since YYYY-MM-DD hh:mm:ss' with UNITS seconds, minutes, hours or days",
                           "'" + printable(units) + "'");
       }
-      const std::string cal = lower(attr_string(*tvar, "calendar"));
+      const std::string cal = ascii_lower(attr_string(*tvar, "calendar"));
       if (!cal.empty() && cal != "gregorian" && cal != "standard" && cal != "proleptic_gregorian") {
         throw input_error({path, "variable '" + printable(tvar->GetName()) + "'", "calendar"},
                           "gregorian, standard or proleptic_gregorian", "'" + printable(cal) + "'");
@@ -446,8 +442,8 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
     std::vector<double> z(nz, 0.0);
     if (const auto zvar = zdim->GetIndexingVariable()) {
       z = read_vector(*zvar, path);
-      bool up = lower(attr_string(*zvar, "positive")) == "up";
-      if (!up && lower(attr_string(*zvar, "positive")).empty()) {
+      bool up = ascii_lower(attr_string(*zvar, "positive")) == "up";
+      if (!up && ascii_lower(attr_string(*zvar, "positive")).empty()) {
         up = std::all_of(z.begin(), z.end(), [](double d) { return d <= 0; }) &&
              std::any_of(z.begin(), z.end(), [](double d) { return d < 0; });
       }

@@ -103,6 +103,11 @@ S57Summary summarize_s57(const std::string& path, bool apply_updates) {
       } else if (name == "M_COVR" && g != nullptr && !g->IsEmpty()) {
         grow(s.extent, env);
         has_coverage = true;
+      } else if (name == "M_QUAL") {
+        const std::string zoc = string_field(*f, "CATZOC");
+        static const char* const letters[] = {"A1", "A2", "B", "C", "D", "U"};
+        const int k = std::atoi(zoc.c_str());
+        ++s.zoc_areas[k >= 1 && k <= 6 ? letters[k - 1] : "unknown"];
       } else if (name == "DEPARE") {
         if (const auto d1 = real_field(*f, "DRVAL1")) min_max(s.depare_min_m, s.depare_max_m, *d1);
         if (const auto d2 = real_field(*f, "DRVAL2")) min_max(s.depare_min_m, s.depare_max_m, *d2);

@@ -73,6 +73,8 @@ struct S57Summary {
   std::size_t soundings = 0;
   double sounding_min_m = std::numeric_limits<double>::quiet_NaN();
   double sounding_max_m = std::numeric_limits<double>::quiet_NaN();
+  /// M_QUAL areas per zone of confidence (CATZOC: "A1", "A2", "B", "C", "D", "U", "unknown" when not given).
+  std::map<std::string, std::size_t> zoc_areas;
   /// Envelope of the coverage features (M_COVR); of all features if the cell has none.
   LonLatExtent extent;
 };

@@ -1,0 +1,37 @@
+#pragma once
+// Which S-57 cells a chart argument names, and whether each cell's update
+// files form an unbroken sequence.
+//
+// Decisions (docs/CHARTS.md, "Cells and updates"):
+// - A chart argument is a cell file (*.000, any case) or a folder; a folder
+//   is searched recursively for *.000 files. A folder without one is an
+//   error, as is a file named *.000 that the S57 driver does not open (the
+//   reader reports that).
+// - Updates are the files BASE.001, BASE.002, ... beside the base cell (same
+//   stem, any case). They must run 1, 2, ..., N without a gap: a missing
+//   number is an error naming the first file past the gap. GDAL applies the
+//   sequence when the cell is opened; the reader then checks that the cell's
+//   DSID_UPDN reached N (a damaged update stops GDAL's sequence silently).
+// - Cells are returned sorted by path, each once (a cell named twice, or
+//   found in a folder and named too, is read once).
+
+#include <string>
+#include <vector>
+
+namespace deepguide {
+
+struct EncCellFiles {
+  std::string base;                  ///< the base cell, *.000
+  std::vector<std::string> updates;  ///< BASE.001 .. BASE.N in order
+};
+
+/// True for a folder or a file whose extension is .000 (any case): an
+/// argument that must be read as S-57 whatever GDAL thinks of it.
+bool names_enc(const std::string& path);
+
+/// Expands files and folders into base cells with their updates. Throws
+/// InputError (one line naming the path) for a missing path, a folder
+/// without cells, a file that is not named *.000, or a gap in the updates.
+std::vector<EncCellFiles> find_enc_cells(const std::vector<std::string>& paths);
+
+}  // namespace deepguide

@@ -1,0 +1,570 @@
+#include "deepguide/world/enc_no_go.hpp"
+
+#include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <set>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/geometry/polygon_ops.hpp"
+#include "deepguide/world/no_go_union.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using BgLine = bg::model::linestring<BgPoint>;
+using BgMultiLine = bg::model::multi_linestring<BgLine>;
+using BoxItem = std::pair<BgBox, std::size_t>;
+using BoxTree = bgi::rtree<BoxItem, bgi::rstar<16>>;
+
+const std::set<std::string> kDepthAreas = {"DEPARE", "DRGARE"};
+const std::set<std::string> kAlways = {"LNDARE", "UNSARE", "SLCONS", "PONTON", "HULKES", "FLODOC", "PILPNT",
+                                       "PYLONS", "MORFAC", "OFSPLF", "CAUSWY", "DAMCON", "DRYDOC", "GATCON"};
+const std::set<std::string> kDangers = {"OBSTRN", "WRECKS", "UWTROC"};
+// S-57's skin of the earth: areas of one cell that tile it, sharing their edges.
+const std::set<std::string> kSkin = {"DEPARE", "DRGARE", "LNDARE", "UNSARE", "FLODOC", "HULKES", "PONTON"};
+// RESTRN values that keep a vehicle out: entry prohibited, entry restricted, area to be avoided.
+const std::set<int> kNoEntry = {7, 8, 14};
+// S-52's depth for a non-dangerous wreck without VALSOU (deeper than 20 m).
+constexpr double kNonDangerousWreckDepth = 20.1;
+constexpr int kCirclePoints = 16;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+void check_options(const EncNoGoOptions& o) {
+  auto need = [](bool ok, const char* field, const char* expected, double got) {
+    if (!ok) throw InputError(std::string(field) + ": expected " + expected + ", got " + num(got));
+  };
+  need(std::isfinite(o.operating_depth_m) && o.operating_depth_m >= 0.0, "--depth",
+       "the operating depth (m, >= 0) to tell too-shallow water in an S-57 chart", o.operating_depth_m);
+  need(std::isfinite(o.vertical_clearance_m) && o.vertical_clearance_m >= 0.0, "--vertical-clearance",
+       "a clearance >= 0 m", o.vertical_clearance_m);
+  need(std::isfinite(o.point_radius_m) && o.point_radius_m > 0.0, "point radius", "a radius > 0 m", o.point_radius_m);
+  need(std::isfinite(o.line_half_width_m) && o.line_half_width_m > 0.0, "line half width", "a width > 0 m",
+       o.line_half_width_m);
+  need(std::isfinite(o.simplify_tolerance_m) && o.simplify_tolerance_m >= 0.0, "simplify tolerance",
+       "a tolerance >= 0 m", o.simplify_tolerance_m);
+  const ZocFigures& u = o.unassessed;
+  need(std::isfinite(u.depth_fixed_m) && u.depth_fixed_m >= 0.0, "unassessed zone of confidence",
+       "a depth uncertainty >= 0 m", u.depth_fixed_m);
+  need(std::isfinite(u.depth_fraction) && u.depth_fraction >= 0.0 && u.depth_fraction < 1.0,
+       "unassessed zone of confidence", "a depth fraction in [0, 1)", u.depth_fraction);
+  need(std::isfinite(u.position_m) && u.position_m > 0.0, "unassessed zone of confidence",
+       "a position accuracy > 0 m", u.position_m);
+}
+
+BgBox envelope(const BgMultiPolygon& m) { return bg::return_envelope<BgBox>(m); }
+
+// Disc and strip polygons that enclose the true round shape: the chords of a
+// regular n-gon at radius r / cos(pi / n) stay outside the circle of radius r.
+BgMultiPolygon buffer_line(const std::vector<Vec2>& line, double half_width) {
+  BgLine l;
+  for (const Vec2& p : line) l.push_back(to_bg(p));
+  BgMultiPolygon out;
+  if (l.size() < 2) return out;
+  const double d = half_width / std::cos(std::numbers::pi / kCirclePoints);
+  bg::buffer(l, out, bg::strategy::buffer::distance_symmetric<double>(d), bg::strategy::buffer::side_straight(),
+             bg::strategy::buffer::join_round(kCirclePoints), bg::strategy::buffer::end_round(kCirclePoints),
+             bg::strategy::buffer::point_circle(kCirclePoints));
+  return out;
+}
+
+// Zones of confidence of one cell.
+struct ZocZones {
+  std::vector<BgPolygon> polys;
+  std::vector<int> catzoc;
+  BoxTree tree;
+
+  void build() {
+    std::vector<BoxItem> items;
+    for (std::size_t i = 0; i < polys.size(); ++i) items.emplace_back(bg::return_envelope<BgBox>(polys[i]), i);
+    tree = BoxTree(items.begin(), items.end());
+  }
+  // Zones meeting `area`.
+  std::vector<std::size_t> meeting(const BgMultiPolygon& area) const {
+    std::vector<BoxItem> hits;
+    tree.query(bgi::intersects(envelope(area)), std::back_inserter(hits));
+    std::vector<std::size_t> out;
+    for (const auto& h : hits) {
+      if (bg::intersects(polys[h.second], area)) out.push_back(h.second);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  // The worst zone holding p (largest uncertainty at depth z), or -1.
+  int at(const Vec2& p, double z, const EncNoGoOptions& o) const {
+    std::vector<BoxItem> hits;
+    const BgPoint q = to_bg(p);
+    tree.query(bgi::intersects(q), std::back_inserter(hits));
+    int best = -1;
+    double worst = -1.0;
+    for (const auto& h : hits) {
+      if (!bg::covered_by(q, polys[h.second])) continue;
+      const ZocFigures f = zoc_figures(catzoc[h.second], o);
+      const double u = f.depth_fixed_m + f.depth_fraction * std::max(z, 0.0) + 1e-9 * f.position_m;
+      if (u > worst) worst = u, best = static_cast<int>(h.second);
+    }
+    return best;
+  }
+};
+
+// Depth areas of one cell, for the depth around a hazard (EXPSOU).
+struct DepthAreas {
+  std::vector<const EncFeature*> areas;
+  BoxTree tree;
+  void build() {
+    std::vector<BoxItem> items;
+    for (std::size_t i = 0; i < areas.size(); ++i) items.emplace_back(envelope(areas[i]->areas), i);
+    tree = BoxTree(items.begin(), items.end());
+  }
+  // Least DRVAL1 of the depth areas meeting the feature's geometry (NaN: none, or unknown).
+  double least_drval1(const EncFeature& f) const {
+    BgBox box;
+    bool any = false;
+    auto grow = [&](const Vec2& p) {
+      if (!any) box = BgBox(to_bg(p), to_bg(p)), any = true;
+      else bg::expand(box, to_bg(p));
+    };
+    for (const Vec2& p : f.points) grow(p);
+    for (const auto& l : f.lines) for (const Vec2& p : l) grow(p);
+    if (!f.areas.empty()) {
+      const BgBox a = envelope(f.areas);
+      grow(to_eigen(a.min_corner()));
+      grow(to_eigen(a.max_corner()));
+    }
+    if (!any) return kNaN;
+    std::vector<BoxItem> hits;
+    tree.query(bgi::intersects(box), std::back_inserter(hits));
+    double least = kNaN;
+    for (const auto& h : hits) {
+      const EncFeature& d = *areas[h.second];
+      bool meets = false;
+      for (const Vec2& p : f.points) meets = meets || bg::covered_by(to_bg(p), d.areas);
+      if (!f.areas.empty()) meets = meets || bg::intersects(f.areas, d.areas);
+      if (!f.lines.empty() && !meets) {
+        for (const auto& l : f.lines) {
+          BgLine bl;
+          for (const Vec2& p : l) bl.push_back(to_bg(p));
+          meets = meets || bg::intersects(bl, d.areas);
+        }
+      }
+      if (!meets) continue;
+      if (std::isnan(d.drval1)) return kNaN;  // one unknown neighbour: unknown
+      least = std::isnan(least) ? d.drval1 : std::min(least, d.drval1);
+    }
+    return least;
+  }
+};
+
+BgMultiPolygon clip_away(const BgMultiPolygon& area, const BgMultiPolygon& better) {
+  if (better.empty() || !bg::intersects(envelope(area), envelope(better))) return area;
+  BgMultiPolygon out;
+  bg::difference(area, better, out);
+  return out;
+}
+
+struct Builder {
+  const EncNoGoOptions& o;
+  EncNoGo& out;
+  double D;
+  bool several_cells;
+  std::vector<std::size_t> tiles;  // features whose area is a whole, unclipped skin-of-the-earth area
+  bool clipped = false;            // the feature being read lost part of its area to a better cell
+
+  std::string id_of(const EncCell& c, const EncFeature& f) const {
+    return (several_cells ? c.name + ":" : std::string()) + f.cls + "/" + std::to_string(f.rcid);
+  }
+
+  double least(double z, const ZocFigures& f) const {
+    return z - (f.depth_fixed_m + f.depth_fraction * std::max(z, 0.0));
+  }
+  bool too_shallow(double z, const ZocFigures& f) const {
+    if (!(z >= 0.0)) return true;  // drying (or NaN: unknown)
+    return (o.zone_of_confidence ? least(z, f) : z) < D;
+  }
+  // Why a charted depth z is no-go; `catzoc` the (best) zone it fails in, -1 for none (unassessed).
+  std::string depth_reason(const char* what, double z, int catzoc) const {
+    if (std::isnan(z)) return std::string(what) + " unknown";
+    std::string r = std::string(what) + " " + num(z) + " m";
+    if (z < 0.0) return r + " (dries)";
+    if (z < D || !o.zone_of_confidence) return r + " < " + num(D) + " m";
+    // Deep enough as charted: the zone of confidence decides.
+    const ZocFigures f = zoc_figures(std::max(catzoc, 0), o);
+    return r + ", least " + num(least(z, f)) + " m at CATZOC " +
+           (catzoc <= 0 ? std::string("none (unassessed)") : zoc_name(catzoc)) + ", < " + num(D) + " m";
+  }
+
+  EncNoGoFeature base(const EncCell& c, const EncFeature& f) const {
+    EncNoGoFeature n;
+    n.id = id_of(c, f);
+    n.cell = c.name;
+    n.cls = f.cls;
+    n.rcid = f.rcid;
+    return n;
+  }
+
+  static int zoc_min(const std::vector<std::size_t>& ks, const ZocZones& zones) {
+    int m = 7;
+    for (std::size_t k : ks) m = std::min(m, zones.catzoc[k]);
+    return m;
+  }
+
+  // A point hazard's disc radius at p.
+  double radius_at(const ZocZones& zones, const Vec2& p, double z) const {
+    if (!o.zone_of_confidence) return o.point_radius_m;
+    const int k = zones.at(p, z, o);
+    return zoc_figures(k < 0 ? 0 : zones.catzoc[static_cast<std::size_t>(k)], o).position_m;
+  }
+
+  void add(EncNoGoFeature n, bool whole_area = false) {
+    ++out.no_go_by_class[n.cls];
+    if (whole_area && !clipped && kSkin.count(n.cls)) tiles.push_back(out.features.size());
+    out.features.push_back(std::move(n));
+  }
+
+  // Areas and lines of a feature no-go whatever the depth, points as discs.
+  void add_whole(const EncCell& c, const EncFeature& f, const ZocZones& zones, const std::string& reason,
+                 double depth) {
+    if (!f.areas.empty() || !f.lines.empty()) {
+      EncNoGoFeature n = base(c, f);
+      n.reason = reason;
+      n.charted_depth_m = depth;
+      n.area = f.areas;
+      for (const auto& l : f.lines) {
+        for (BgPolygon& p : buffer_line(l, o.line_half_width_m)) n.area.push_back(std::move(p));
+      }
+      if (!n.area.empty()) add(std::move(n), f.lines.empty());
+    }
+    for (std::size_t k = 0; k < f.points.size(); ++k) {
+      EncNoGoFeature n = base(c, f);
+      if (f.points.size() > 1) n.id += "#" + std::to_string(k + 1);
+      n.reason = reason;
+      n.charted_depth_m = depth;
+      n.point = f.points[k];
+      n.radius_m = radius_at(zones, f.points[k], std::isnan(depth) ? 0.0 : depth);
+      add(std::move(n));
+    }
+  }
+
+  // An area with charted depth z: no-go where too shallow in its zones of confidence.
+  void add_area_by_depth(const EncCell& c, const EncFeature& f, const BgMultiPolygon& area, double z,
+                         const char* what, const ZocZones& zones) {
+    if (area.empty()) return;
+    EncNoGoFeature n = base(c, f);
+    n.charted_depth_m = z;
+    if (std::isnan(z) || z < 0.0 || !o.zone_of_confidence) {
+      if (!too_shallow(z, {})) {
+        ++out.passable_by_class[f.cls];
+        return;
+      }
+      n.reason = depth_reason(what, z, -1);
+      n.area = area;
+      add(std::move(n), &area == &f.areas);
+      return;
+    }
+    const bool unassessed_fails = too_shallow(z, o.unassessed);
+    std::vector<std::size_t> failing, passing;
+    for (std::size_t k : zones.meeting(area)) {
+      (too_shallow(z, zoc_figures(zones.catzoc[k], o)) ? failing : passing).push_back(k);
+    }
+    if (passing.empty() && unassessed_fails) {
+      // No-go in every zone it meets: the whole area, as charted.
+      n.reason = depth_reason(what, z, failing.empty() ? -1 : zoc_min(failing, zones));
+      n.area = area;
+      add(std::move(n), &area == &f.areas);
+      return;
+    }
+    BgMultiPolygon no_go;
+    // The zone named: the best one the area fails in (the verdict's least favourable case is shown elsewhere).
+    int shown_zoc = failing.empty() ? -1 : 7;
+    for (std::size_t k : failing) shown_zoc = std::min(shown_zoc, zones.catzoc[k]);
+    if (unassessed_fails) {
+      no_go = area;
+      for (std::size_t k : passing) {
+        BgMultiPolygon next;
+        bg::difference(no_go, zones.polys[k], next);
+        no_go = std::move(next);
+      }
+    } else {
+      for (std::size_t k : failing) {
+        BgMultiPolygon part, next;
+        bg::intersection(area, zones.polys[k], part);
+        bg::union_(no_go, part, next);
+        no_go = std::move(next);
+      }
+    }
+    if (no_go.empty() || bg::area(no_go) <= 0.0) {
+      ++out.passable_by_class[f.cls];
+      return;
+    }
+    n.reason = depth_reason(what, z, shown_zoc);
+    n.area = std::move(no_go);
+    add(std::move(n));
+  }
+
+  void add_points_by_depth(const EncCell& c, const EncFeature& f, const std::vector<double>& depths,
+                           const char* what, const ZocZones& zones) {
+    for (std::size_t k = 0; k < f.points.size(); ++k) {
+      const double z = depths[k];
+      const int zi = o.zone_of_confidence ? zones.at(f.points[k], std::isnan(z) ? 0.0 : z, o) : -1;
+      const int catzoc = zi < 0 ? 0 : zones.catzoc[static_cast<std::size_t>(zi)];
+      if (!too_shallow(z, zoc_figures(catzoc, o))) {
+        ++out.passable_by_class[f.cls];
+        continue;
+      }
+      EncNoGoFeature n = base(c, f);
+      if (f.points.size() > 1) n.id += "#" + std::to_string(k + 1);
+      n.charted_depth_m = z;
+      n.reason = depth_reason(what, z, zi < 0 ? -1 : catzoc);
+      n.point = f.points[k];
+      n.radius_m = o.zone_of_confidence ? zoc_figures(catzoc, o).position_m : o.point_radius_m;
+      add(std::move(n));
+    }
+  }
+
+  void cell(const EncCell& c, const BgMultiPolygon& better) {
+    ZocZones zones;
+    DepthAreas depth_areas;
+    std::vector<EncFeature> features;  // clipped to what no better cell covers
+    std::vector<bool> clipped_area;     // per feature: its area lost a part to a better cell
+    for (const EncFeature& f : c.features) {
+      EncFeature g = f;
+      const bool near_better =
+          !better.empty() && !f.areas.empty() && bg::intersects(envelope(f.areas), envelope(better));
+      if (!better.empty()) {
+        if (near_better) g.areas = clip_away(f.areas, better);
+        g.points.clear();
+        g.point_depths.clear();
+        for (std::size_t k = 0; k < f.points.size(); ++k) {
+          if (bg::covered_by(to_bg(f.points[k]), better)) continue;
+          g.points.push_back(f.points[k]);
+          if (k < f.point_depths.size()) g.point_depths.push_back(f.point_depths[k]);
+        }
+        g.lines.clear();
+        for (const auto& l : f.lines) {
+          BgLine bl;
+          for (const Vec2& p : l) bl.push_back(to_bg(p));
+          BgMultiLine kept;
+          bg::difference(bl, better, kept);
+          for (const BgLine& k : kept) {
+            std::vector<Vec2> line;
+            for (const BgPoint& p : k) line.push_back(to_eigen(p));
+            g.lines.push_back(std::move(line));
+          }
+        }
+      }
+      if (f.cls == "M_QUAL") {
+        // Zones of confidence are the cell's own, unclipped: they qualify its own features.
+        ++out.zoc_areas[zoc_name(f.catzoc)];
+        for (const BgPolygon& p : f.areas) {
+          zones.polys.push_back(p);
+          zones.catzoc.push_back(f.catzoc);
+        }
+        continue;
+      }
+      if (g.areas.empty() && g.points.empty() && g.lines.empty()) continue;
+      features.push_back(std::move(g));
+      clipped_area.push_back(near_better);
+    }
+    zones.build();
+    for (const EncFeature& f : features) {
+      if (f.cls == "DEPARE" && !f.areas.empty()) depth_areas.areas.push_back(&f);
+    }
+    depth_areas.build();
+
+    for (std::size_t i = 0; i < features.size(); ++i) {
+      const EncFeature& f = features[i];
+      clipped = clipped_area[i];
+      if (kDepthAreas.count(f.cls)) {
+        add_area_by_depth(c, f, f.areas, f.drval1, "DRVAL1", zones);  // lines of a depth area bound nothing
+      } else if (kAlways.count(f.cls)) {
+        add_whole(c, f, zones, f.cls == "UNSARE" ? "unsurveyed" : f.cls == "LNDARE" ? "land" : "hit at any depth",
+                  kNaN);
+      } else if (kDangers.count(f.cls)) {
+        const std::optional<double> z = hazard_depth(f, depth_areas.least_drval1(f));
+        if (!z) {
+          add_whole(c, f, zones, "VALSOU unknown, depth not told by WATLEV, CATWRK or EXPSOU", kNaN);
+          continue;
+        }
+        const char* what = std::isnan(f.valsou) ? "estimated depth" : "VALSOU";
+        BgMultiPolygon strips = f.areas;
+        for (const auto& l : f.lines) {
+          for (BgPolygon& p : buffer_line(l, o.line_half_width_m)) strips.push_back(std::move(p));
+        }
+        add_area_by_depth(c, f, strips, *z, what, zones);
+        add_points_by_depth(c, f, std::vector<double>(f.points.size(), *z), what, zones);
+      } else if (f.cls == "SOUNDG") {
+        add_points_by_depth(c, f, f.point_depths, "sounding", zones);
+      } else if (o.restricted_areas && !f.areas.empty()) {
+        const bool no_entry =
+            std::any_of(f.restrn.begin(), f.restrn.end(), [](int r) { return kNoEntry.count(r) > 0; });
+        if (no_entry) {
+          EncNoGoFeature n = base(c, f);
+          n.reason = "restricted (RESTRN entry prohibited, restricted or area to be avoided)";
+          n.area = f.areas;
+          add(std::move(n));
+        }
+      }
+    }
+  }
+};
+
+// The planners' obstacles: every no-go area merged and simplified outward,
+// discs kept where they reach outside the merged areas.
+void planning_obstacles(EncNoGo& out, const std::vector<std::size_t>& tiles, double tol) {
+  std::vector<bool> is_tile(out.features.size(), false);
+  for (std::size_t i : tiles) is_tile[i] = true;
+  std::vector<const BgPolygon*> tile_areas, other_areas;
+  for (std::size_t i = 0; i < out.features.size(); ++i) {
+    for (const BgPolygon& p : out.features[i].area) (is_tile[i] ? tile_areas : other_areas).push_back(&p);
+  }
+  std::vector<BgPolygon> merged = union_no_go(tile_areas, other_areas);
+  std::vector<BgPolygon> simple;
+  for (BgPolygon& p : merged) {
+    if (tol <= 0.0) {
+      simple.push_back(std::move(p));
+      continue;
+    }
+    for (BgPolygon& q : simplify_outward(p, tol)) simple.push_back(std::move(q));
+  }
+  if (tol > 0.0) simple = merge_overlapping(std::move(simple));
+  std::vector<BoxItem> items;
+  for (std::size_t i = 0; i < simple.size(); ++i) items.emplace_back(bg::return_envelope<BgBox>(simple[i]), i);
+  const BoxTree tree(items.begin(), items.end());
+  for (std::size_t i = 0; i < simple.size(); ++i) {
+    PolygonObstacle p;
+    p.id = "enc/" + std::to_string(i + 1);
+    out.vertices += distinct_vertices(simple[i]);
+    p.footprint = std::move(simple[i]);
+    out.obstacles.polygons.push_back(std::move(p));
+  }
+  for (const EncNoGoFeature& f : out.features) {
+    if (!f.point) continue;
+    const BgPoint c = to_bg(*f.point);
+    std::vector<BoxItem> hits;
+    tree.query(bgi::intersects(c), std::back_inserter(hits));
+    bool inside = false;
+    for (const auto& h : hits) {
+      const BgPolygon& poly = out.obstacles.polygons[h.second].footprint;
+      if (!bg::within(c, poly)) continue;
+      // The disc lies inside when its centre is farther than its radius from every ring.
+      double to_edge = bg::distance(c, poly.outer());
+      for (const auto& r : poly.inners()) to_edge = std::min(to_edge, bg::distance(c, r));
+      inside = to_edge >= f.radius_m;
+      if (inside) break;
+    }
+    if (inside) continue;
+    EllipticCylinder e;
+    e.id = f.id;
+    e.footprint.center = *f.point;
+    e.footprint.a = e.footprint.b = f.radius_m;
+    e.footprint.theta = 0.0;
+    out.obstacles.ellipses.push_back(std::move(e));
+  }
+}
+
+}  // namespace
+
+std::string zoc_name(int catzoc) {
+  static const char* const names[] = {"A1", "A2", "B", "C", "D", "U"};
+  return catzoc >= 1 && catzoc <= 6 ? names[catzoc - 1] : "unknown";
+}
+
+ZocFigures zoc_figures(int catzoc, const EncNoGoOptions& options) {
+  switch (catzoc) {
+    case 1: return {0.5, 0.01, 5.0};
+    case 2: return {1.0, 0.02, 20.0};
+    case 3: return {1.0, 0.02, 50.0};
+    case 4: return {2.0, 0.05, 500.0};
+    default: return options.unassessed;
+  }
+}
+
+std::optional<double> hazard_depth(const EncFeature& h, double surrounding_drval1) {
+  if (!std::isnan(h.valsou)) return h.valsou;
+  switch (h.watlev) {
+    case 1: case 2: case 4: case 5: case 6: case 7: return 0.0;
+    default: break;
+  }
+  if (h.cls == "WRECKS" && h.catwrk == 1) return kNonDangerousWreckDepth;
+  if ((h.expsou == 1 || h.expsou == 3) && !std::isnan(surrounding_drval1)) return surrounding_drval1;
+  return std::nullopt;
+}
+
+EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<LocalFrame>& frame,
+                  const EncNoGoOptions& options) {
+  check_options(options);
+  const std::vector<EncCellFiles> files = find_enc_cells(charts);
+  EncReadRequest request;
+  request.classes.insert(kDepthAreas.begin(), kDepthAreas.end());
+  request.classes.insert(kAlways.begin(), kAlways.end());
+  request.classes.insert(kDangers.begin(), kDangers.end());
+  request.classes.insert({"SOUNDG", "M_QUAL"});
+  request.with_restrictions = options.restricted_areas;
+  request.apply_updates = options.apply_updates;
+  EncCells read = read_enc_cells(files, frame, request);
+  for (const EncCell& c : read.cells) {
+    const auto it = c.layer_counts.find("DEPARE");
+    if (it == c.layer_counts.end() || it->second == 0) {
+      throw InputError(printable(c.path, 240) + ": expected depth areas (DEPARE) to tell deep water from shallow, "
+                       "found none (not a navigational ENC?)");
+    }
+  }
+  // Best scale first: a smaller DSPM_CSCL, then a higher usage band, then the name.
+  std::vector<const EncCell*> order;
+  for (const EncCell& c : read.cells) order.push_back(&c);
+  std::stable_sort(order.begin(), order.end(), [](const EncCell* a, const EncCell* b) {
+    const long sa = a->compilation_scale > 0 ? a->compilation_scale : std::numeric_limits<long>::max();
+    const long sb = b->compilation_scale > 0 ? b->compilation_scale : std::numeric_limits<long>::max();
+    if (sa != sb) return sa < sb;
+    if (a->usage_band != b->usage_band) return a->usage_band > b->usage_band;
+    return a->name < b->name;
+  });
+
+  EncNoGo out{read.frame, options.operating_depth_m + options.vertical_clearance_m, {}, {}, {}, {}, {}, {}, 0};
+  Builder builder{options, out, out.required_depth_m, order.size() > 1, {}, false};
+  BgMultiPolygon covered;  // by the cells done so far
+  for (const EncCell* c : order) {
+    out.cells.push_back({c->path, c->name, c->usage_band, c->compilation_scale, c->edition, c->issue_date,
+                         c->update_number, c->layer_counts});
+    builder.cell(*c, covered);
+    BgMultiPolygon next;
+    bg::union_(covered, c->coverage, next);
+    covered = std::move(next);
+  }
+  // Water no cell covers is unknown: a ring from the coverage out to a box
+  // well beyond it (5 km or a tenth of its size), so no route leaves the charts.
+  BgMultiPolygon unknown_water;
+  if (!covered.empty()) {
+    BgBox box = envelope(covered);
+    const double pad = std::max(5000.0, 0.1 * std::max(box.max_corner().x() - box.min_corner().x(),
+                                                        box.max_corner().y() - box.min_corner().y()));
+    BgPolygon outer;
+    bg::convert(BgBox(BgPoint(box.min_corner().x() - pad, box.min_corner().y() - pad),
+                      BgPoint(box.max_corner().x() + pad, box.max_corner().y() + pad)),
+                outer);
+    bg::correct(outer);
+    bg::difference(outer, covered, unknown_water);
+    EncNoGoFeature n;
+    n.id = "M_COVR/outside";
+    n.cls = "M_COVR";
+    n.reason = "outside every cell's coverage: unknown water";
+    n.area = unknown_water;
+    out.features.push_back(std::move(n));
+  }
+  planning_obstacles(out, builder.tiles, options.simplify_tolerance_m);
+  return out;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,149 @@
+#include "deepguide/world/no_go_union.hpp"
+
+#include <ogr_geometry.h>
+
+#include <algorithm>
+#include <array>
+#include <boost/geometry.hpp>
+#include <boost/geometry/algorithms/point_on_surface.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <memory>
+#include <stdexcept>
+
+#include "deepguide/world/gdal_support.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+namespace {
+
+using Segment = std::array<double, 4>;  // x0, y0, x1, y1 with (x0, y0) < (x1, y1)
+using OgrPtr = std::unique_ptr<OGRGeometry, decltype(&OGRGeometryFactory::destroyGeometry)>;
+
+OgrPtr owned(OGRGeometry* g) { return OgrPtr(g, &OGRGeometryFactory::destroyGeometry); }
+
+template <class Ring>
+void add_edges(const Ring& ring, std::vector<Segment>& out) {
+  for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+    BgPoint a = ring[i], b = ring[i + 1];
+    if (a.x() == b.x() && a.y() == b.y()) continue;
+    if (std::make_pair(b.x(), b.y()) < std::make_pair(a.x(), a.y())) std::swap(a, b);
+    out.push_back({a.x(), a.y(), b.x(), b.y()});
+  }
+}
+
+OGRLinearRing to_ogr_ring(const BgPolygon::ring_type& ring) {
+  OGRLinearRing r;
+  r.setNumPoints(static_cast<int>(ring.size()), FALSE);
+  for (std::size_t i = 0; i < ring.size(); ++i) r.setPoint(static_cast<int>(i), ring[i].x(), ring[i].y());
+  return r;
+}
+
+void add_to(OGRMultiPolygon& mp, const BgPolygon& p) {
+  OGRPolygon poly;
+  OGRLinearRing outer = to_ogr_ring(p.outer());
+  poly.addRing(&outer);
+  for (const auto& in : p.inners()) {
+    OGRLinearRing r = to_ogr_ring(in);
+    poly.addRing(&r);
+  }
+  mp.addGeometry(&poly);
+}
+
+void from_ogr(const OGRGeometry& g, std::vector<BgPolygon>& out) {
+  switch (wkbFlatten(g.getGeometryType())) {
+    case wkbPolygon: {
+      const OGRPolygon& poly = *g.toPolygon();
+      if (poly.IsEmpty()) return;
+      BgPolygon p;
+      auto copy = [](const OGRLinearRing& r, auto& dst) {
+        for (int i = 0; i < r.getNumPoints(); ++i) dst.push_back(BgPoint(r.getX(i), r.getY(i)));
+      };
+      copy(*poly.getExteriorRing(), p.outer());
+      for (int k = 0; k < poly.getNumInteriorRings(); ++k) copy(*poly.getInteriorRing(k), p.inners().emplace_back());
+      bg::correct(p);
+      out.push_back(std::move(p));
+      break;
+    }
+    case wkbMultiPolygon:
+    case wkbGeometryCollection:
+      for (const OGRGeometry* part : *g.toGeometryCollection()) from_ogr(*part, out);
+      break;
+    default:
+      break;  // lines and points of a degenerate overlay carry no area
+  }
+}
+
+// The faces of the tiles' union, from the edges no two tiles share.
+void tile_faces(const std::vector<const BgPolygon*>& tiles, OGRMultiPolygon& into) {
+  std::vector<Segment> edges;
+  for (const BgPolygon* t : tiles) {
+    add_edges(t->outer(), edges);
+    for (const auto& r : t->inners()) add_edges(r, edges);
+  }
+  std::sort(edges.begin(), edges.end());
+  OGRMultiLineString boundary;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if ((j - i) % 2 == 1) {
+      OGRLineString l;
+      l.addPoint(edges[i][0], edges[i][1]);
+      l.addPoint(edges[i][2], edges[i][3]);
+      boundary.addGeometry(&l);
+    }
+    i = j;
+  }
+  if (boundary.IsEmpty()) return;
+  // Node the edges (a tile corner lying on another tile's edge), then form
+  // faces. A union with a part of itself nodes the whole (one with an empty
+  // geometry may be returned as it is).
+  OgrPtr noded = owned(boundary.Union(boundary.getGeometryRef(0)));
+  if (!noded) throw std::runtime_error("GEOS could not node the no-go boundary");
+  OgrPtr faces = owned(noded->Polygonize());
+  if (!faces) throw std::runtime_error("GEOS could not polygonize the no-go boundary");
+
+  using Item = std::pair<BgBox, std::size_t>;
+  std::vector<Item> boxes;
+  for (std::size_t i = 0; i < tiles.size(); ++i) boxes.emplace_back(bg::return_envelope<BgBox>(*tiles[i]), i);
+  const bgi::rtree<Item, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
+  for (const OGRGeometry* face : *faces->toGeometryCollection()) {
+    std::vector<BgPolygon> as_bg;
+    from_ogr(*face, as_bg);
+    if (as_bg.size() != 1) continue;
+    // (OGR's PointOnSurface fails on GEOS's polygonizer output here; Boost's works.)
+    BgPoint q;
+    try {
+      bg::point_on_surface(as_bg.front(), q);
+    } catch (const std::exception&) {
+      continue;  // a degenerate face: no interior
+    }
+    std::vector<Item> hits;
+    tree.query(bgi::intersects(q), std::back_inserter(hits));
+    const bool kept =
+        std::any_of(hits.begin(), hits.end(), [&](const Item& h) { return bg::covered_by(q, *tiles[h.second]); });
+    if (kept) into.addGeometry(face);
+  }
+}
+
+}  // namespace
+
+std::vector<BgPolygon> union_no_go(const std::vector<const BgPolygon*>& tiles,
+                                   const std::vector<const BgPolygon*>& others) {
+  if (!OGRGeometryFactory::haveGEOS()) throw std::runtime_error("GDAL was built without GEOS: no polygon union");
+  gdal::QuietErrors quiet;
+  OGRMultiPolygon all;
+  tile_faces(tiles, all);
+  for (const BgPolygon* p : others) add_to(all, *p);
+  std::vector<BgPolygon> out;
+  if (all.IsEmpty()) return out;
+  OgrPtr merged = owned(all.UnionCascaded());
+  if (!merged) {
+    throw std::runtime_error("GEOS could not join the no-go areas: " + gdal::QuietErrors::last_message());
+  }
+  from_ogr(*merged, out);
+  return out;
+}
+
+}  // namespace deepguide

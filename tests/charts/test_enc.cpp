@@ -1,0 +1,459 @@
+// S-57 cells as an ECDIS reads them for a submerged vehicle: the no-go rules
+// (enc_no_go.hpp), the cells and their updates (enc_cells.hpp), and the chart
+// route check (enc_route_check.hpp). Facts come from independent OGR reads of
+// the real cells in ../shared/data/real (GEOS predicates through OGR, not the
+// library's Boost.Geometry), and from test cells written through GDAL's own
+// S57 writer (copies of a real cell with edited attributes).
+
+#include <gdal_utils.h>
+#include <gtest/gtest.h>
+#include <ogr_api.h>
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/world/enc_cells.hpp"
+#include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/world/enc_route_check.hpp"
+#include "test_support.hpp"
+
+namespace deepguide {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ScratchDir;
+
+const char* const kKeyWest = "noaa-enc-US5FL4DQ/US5FL4DQ.000";
+const char* const kChesapeake = "noaa-enc-US4MD81M/US4MD81M.000";
+
+GDALDatasetUniquePtr open_ogr(const std::string& path, std::vector<const char*> options = {}) {
+  GDALAllRegister();
+  options.push_back(nullptr);
+  GDALDatasetUniquePtr ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, options.data(), nullptr));
+  EXPECT_TRUE(ds) << path;
+  return ds;
+}
+
+EncNoGoOptions at_depth(double depth, double clearance = 2.0) {
+  EncNoGoOptions o;
+  o.operating_depth_m = depth;
+  o.vertical_clearance_m = clearance;
+  return o;
+}
+
+void expect_one_line_error(const std::function<void()>& fn, const std::string& names, const std::string& says) {
+  try {
+    fn();
+    ADD_FAILURE() << "no error; expected one naming " << names;
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_NE(what.find(names), std::string::npos) << what;
+    EXPECT_NE(what.find(says), std::string::npos) << what;
+  }
+}
+
+// A copy of a real cell through GDAL's S57 writer, with the features of the
+// layers kept edited on the way (an in-memory copy in between).
+// The writer makes its own DSID; `dsco` sets its fields (e.g. "S57_CSCL=50000").
+void write_edited_cell(const std::string& src, const std::string& dst, const std::vector<std::string>& layers,
+                       const std::function<void(const std::string&, OGRFeature&)>& edit,
+                       const std::vector<std::string>& dsco = {}) {
+  // The writer needs the cell's spatial primitives, which the reader returns as layers on request.
+  GDALDatasetUniquePtr in = open_ogr(src, {"RETURN_PRIMITIVES=ON", "RETURN_LINKAGES=ON", "LNAM_REFS=ON"});
+  GDALDriver* mem_driver = GetGDALDriverManager()->GetDriverByName("Memory");
+  ASSERT_NE(mem_driver, nullptr);
+  GDALDatasetUniquePtr mem(mem_driver->Create("", 0, 0, 0, GDT_Unknown, nullptr));
+  std::vector<std::string> all = {"IsolatedNode", "ConnectedNode", "Edge", "Face"};
+  all.insert(all.end(), layers.begin(), layers.end());
+  for (const std::string& name : all) {
+    OGRLayer* from = in->GetLayerByName(name.c_str());
+    if (from == nullptr && std::isupper(static_cast<unsigned char>(name[1])) == 0) continue;  // no such primitive
+    ASSERT_NE(from, nullptr) << name;
+    OGRLayer* to = mem->CopyLayer(from, name.c_str());
+    ASSERT_NE(to, nullptr) << name;
+    to->ResetReading();
+    std::vector<std::unique_ptr<OGRFeature>> feats;
+    for (auto& f : *to) feats.emplace_back(f->Clone());
+    for (auto& f : feats) {
+      edit(name, *f);
+      ASSERT_EQ(to->SetFeature(f.get()), OGRERR_NONE);
+    }
+  }
+  std::vector<const char*> argv = {"-f", "S57"};
+  for (const std::string& d : dsco) argv.insert(argv.end(), {"-dsco", d.c_str()});
+  argv.push_back(nullptr);
+  GDALVectorTranslateOptions* opts = GDALVectorTranslateOptionsNew(const_cast<char**>(argv.data()), nullptr);
+  GDALDatasetH src_h = GDALDataset::ToHandle(mem.get());
+  int usage_error = 0;
+  GDALDatasetH out = GDALVectorTranslate(dst.c_str(), nullptr, 1, &src_h, opts, &usage_error);
+  GDALVectorTranslateOptionsFree(opts);
+  ASSERT_NE(out, nullptr) << CPLGetLastErrorMsg();
+  GDALClose(out);
+}
+
+// ------------------------------------------------------------------ rules
+
+TEST(EncRules, HazardDepthFollowsValsouThenWatlevCatwrkExpsou) {
+  EncFeature h;
+  h.cls = "OBSTRN";
+  h.valsou = 4.2;
+  EXPECT_DOUBLE_EQ(*hazard_depth(h, 30.0), 4.2);
+  h.valsou = std::nan("");
+  for (int dries : {1, 2, 4, 5, 6, 7}) {
+    h.watlev = dries;
+    EXPECT_DOUBLE_EQ(*hazard_depth(h, 30.0), 0.0) << dries;
+  }
+  h.watlev = 3;  // always under water, depth not given
+  EXPECT_FALSE(hazard_depth(h, 30.0).has_value());
+  h.expsou = 1;  // within the surrounding depth
+  EXPECT_DOUBLE_EQ(*hazard_depth(h, 30.0), 30.0);
+  EXPECT_FALSE(hazard_depth(h, std::nan("")).has_value()) << "surrounding depth unknown";
+  h.expsou = 2;  // shoaler than the surrounding: unknown
+  EXPECT_FALSE(hazard_depth(h, 30.0).has_value());
+  h.expsou = 0;
+  h.cls = "WRECKS";
+  h.catwrk = 1;  // non-dangerous
+  EXPECT_DOUBLE_EQ(*hazard_depth(h, 30.0), 20.1);
+  h.catwrk = 2;
+  EXPECT_FALSE(hazard_depth(h, 30.0).has_value());
+}
+
+TEST(EncRules, ZonesOfConfidenceAreTheIhoFigures) {
+  const EncNoGoOptions o;
+  struct Row {
+    int catzoc;
+    double a, b, pos;
+  };
+  for (const Row& r : {Row{1, 0.5, 0.01, 5}, Row{2, 1.0, 0.02, 20}, Row{3, 1.0, 0.02, 50}, Row{4, 2.0, 0.05, 500}}) {
+    const ZocFigures f = zoc_figures(r.catzoc, o);
+    EXPECT_DOUBLE_EQ(f.depth_fixed_m, r.a) << r.catzoc;
+    EXPECT_DOUBLE_EQ(f.depth_fraction, r.b) << r.catzoc;
+    EXPECT_DOUBLE_EQ(f.position_m, r.pos) << r.catzoc;
+  }
+  for (int unassessed : {0, 5, 6, 99}) {
+    EXPECT_DOUBLE_EQ(zoc_figures(unassessed, o).depth_fixed_m, o.unassessed.depth_fixed_m);
+    EXPECT_DOUBLE_EQ(zoc_figures(unassessed, o).position_m, o.unassessed.position_m);
+  }
+  EXPECT_EQ(zoc_name(1), "A1");
+  EXPECT_EQ(zoc_name(3), "B");
+  EXPECT_EQ(zoc_name(6), "U");
+}
+
+// ------------------------------------------------------------------ real cells
+
+TEST(EncNoGo, StraightRouteOfTheIssueIsFlaggedWithItsFirstCrossing) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  const EncNoGo no_go = enc_no_go({path}, std::nullopt, at_depth(8.0));
+  EXPECT_DOUBLE_EQ(no_go.required_depth_m, 10.0);
+  const Vec2 a = no_go.frame.from_lonlat(-76.45, 38.45), b = no_go.frame.from_lonlat(-76.42, 38.55);
+  const ChartRouteCheck check = check_route_on_chart({a, b}, no_go, 5.0);
+  ASSERT_FALSE(check.safe);
+  ASSERT_TRUE(check.first.has_value());
+
+  // Independently (OGR, GEOS): the depth area holding the start, and every
+  // depth area shallower than 10 m the straight line meets.
+  auto ds = open_ogr(path);
+  OGRLayer* depare = ds->GetLayerByName("DEPARE");
+  OGRPoint start(-76.45, 38.45);
+  OGRLineString line;
+  line.addPoint(-76.45, 38.45);
+  line.addPoint(-76.42, 38.55);
+  long long holder = -1;
+  double holder_drval1 = 99;
+  std::set<double> crossed_depths;
+  std::size_t shallow_crossed = 0;
+  for (auto& f : *depare) {
+    const OGRGeometry* g = f->GetGeometryRef();
+    if (g == nullptr) continue;
+    const double d1 = f->GetFieldAsDouble("DRVAL1");
+    if (g->Contains(&start)) holder = f->GetFieldAsInteger64("RCID"), holder_drval1 = d1;
+    if (g->Intersects(&line) && d1 < 10.0) {
+      crossed_depths.insert(d1);
+      ++shallow_crossed;
+    }
+  }
+  ASSERT_GE(holder, 0);
+  EXPECT_EQ(check.first->feature->id, "DEPARE/" + std::to_string(holder));
+  EXPECT_DOUBLE_EQ(check.first->feature->charted_depth_m, holder_drval1);
+  EXPECT_NEAR(check.first->along_m, 0.0, 1e-6);
+  // The issue's depth areas: 0.0, 1.8, 3.6, 5.4 and 9.1 m.
+  EXPECT_EQ(crossed_depths, (std::set<double>{0.0, 1.8, 3.6, 5.4, 9.1}));
+  EXPECT_GE(check.crossed_features, shallow_crossed);
+  const std::string line_text = check.describe(no_go.frame);
+  EXPECT_NE(line_text.find("DEPARE/" + std::to_string(holder)), std::string::npos) << line_text;
+  EXPECT_NE(line_text.find("DRVAL1 0 m < 10 m"), std::string::npos) << line_text;
+}
+
+TEST(EncNoGo, UpdatesGiveWhatGdalsOwnAppliedReadingGives) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  // At 100 m every depth area, danger and sounding is too shallow: the no-go
+  // then lists every feature of those classes, which GDAL's reading must match.
+  auto ids_from_gdal = [&](bool apply) {
+    std::set<std::string> ids;
+    auto ds = open_ogr(path, {apply ? "UPDATES=APPLY" : "UPDATES=IGNORE"});
+    for (const char* cls : {"WRECKS", "OBSTRN", "UWTROC", "DEPARE", "SOUNDG"}) {
+      for (auto& f : *ds->GetLayerByName(cls)) ids.insert(std::string(cls) + "/" + f->GetFieldAsString("RCID"));
+    }
+    return ids;
+  };
+  auto ids_from_no_go = [&](bool apply) {
+    EncNoGoOptions o = at_depth(100.0);
+    o.apply_updates = apply;
+    std::set<std::string> ids;
+    for (const EncNoGoFeature& f : enc_no_go({path}, std::nullopt, o).features) {
+      if (f.cls == "WRECKS" || f.cls == "OBSTRN" || f.cls == "UWTROC" || f.cls == "DEPARE" || f.cls == "SOUNDG") {
+        ids.insert(f.id.substr(0, f.id.find('#')));
+      }
+    }
+    return ids;
+  };
+  const auto applied = ids_from_gdal(true), ignored = ids_from_gdal(false);
+  EXPECT_EQ(ids_from_no_go(true), applied);
+  EXPECT_EQ(ids_from_no_go(false), ignored);
+  EXPECT_NE(applied, ignored) << "updates 1-3 add a wreck and soundings (SOURCES.md)";
+}
+
+TEST(EncNoGo, DepthDecidesDepthAreasAndChartInfoCountsZones) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  EncNoGoOptions exact = at_depth(5.0);
+  exact.zone_of_confidence = false;
+  const EncNoGo no_go = enc_no_go({path}, std::nullopt, exact);
+  // Independently: depth areas with DRVAL1 < 7 m (or none) are no-go, the others pass.
+  std::set<std::string> expected;
+  auto ds = open_ogr(path);
+  std::size_t deep = 0;
+  for (auto& f : *ds->GetLayerByName("DEPARE")) {
+    const int i = f->GetFieldIndex("DRVAL1");
+    const bool shallow = !f->IsFieldSetAndNotNull(i) || f->GetFieldAsDouble(i) < 7.0;
+    if (shallow) expected.insert(std::string("DEPARE/") + f->GetFieldAsString("RCID"));
+    deep += !shallow;
+  }
+  std::set<std::string> got;
+  for (const EncNoGoFeature& f : no_go.features) {
+    if (f.cls == "DEPARE") got.insert(f.id);
+  }
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(no_go.passable_by_class.at("DEPARE"), deep);
+  // Zones of confidence only add no-go.
+  const EncNoGo zoc = enc_no_go({path}, std::nullopt, at_depth(5.0));
+  EXPECT_GE(zoc.no_go_by_class.at("DEPARE"), no_go.no_go_by_class.at("DEPARE"));
+  EXPECT_GE(zoc.no_go_by_class.at("SOUNDG"), no_go.no_go_by_class.at("SOUNDG"));
+  EXPECT_EQ(zoc.zoc_areas.at("A1"), 19u);
+  EXPECT_EQ(zoc.zoc_areas.at("C"), 7u);
+  EXPECT_EQ(zoc.zoc_areas.at("U"), 16u);
+}
+
+TEST(EncNoGo, PointHazardsAreDiscsOfTheirZonesPositionAccuracy) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
+  const EncNoGo no_go = enc_no_go({path}, std::nullopt, at_depth(30.0));
+  std::set<double> radii;
+  for (const EncNoGoFeature& f : no_go.features) {
+    if (f.point) radii.insert(f.radius_m);
+  }
+  // Key West has zones A1, B and C (SOURCES.md: CATZOC 1, 3, 4).
+  for (double r : radii) EXPECT_TRUE(r == 5.0 || r == 50.0 || r == 500.0) << r;
+  EXPECT_TRUE(radii.count(5.0) || radii.count(50.0));
+}
+
+
+// Every no-go feature lies inside what the planners get (their merged,
+// simplified polygons and discs), checked with GEOS through OGR: an overlay
+// the library's Boost-based merging shares nothing with.
+TEST(EncNoGo, PlannersPolygonsCoverEveryNoGoFeature) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(chesapeake, kChesapeake);
+  DEEPGUIDE_REAL_FILE_OR_SKIP(key_west, kKeyWest);
+  auto to_ogr = [](const BgPolygon& p) {
+    auto poly = std::make_unique<OGRPolygon>();
+    auto ring = [](const auto& r) {
+      OGRLinearRing out;
+      for (const BgPoint& q : r) out.addPoint(q.x(), q.y());
+      return out;
+    };
+    OGRLinearRing outer = ring(p.outer());
+    poly->addRing(&outer);
+    for (const auto& in : p.inners()) {
+      OGRLinearRing r = ring(in);
+      poly->addRing(&r);
+    }
+    return poly;
+  };
+  for (const auto& [path, depth] : {std::pair{chesapeake, 5.0}, std::pair{key_west, 3.0}}) {
+    const EncNoGo no_go = enc_no_go({path}, std::nullopt, at_depth(depth));
+    OGRMultiPolygon planners;
+    for (const PolygonObstacle& p : no_go.obstacles.polygons) planners.addGeometryDirectly(to_ogr(p.footprint).release());
+    ASSERT_TRUE(planners.IsValid()) << path;
+    std::size_t areas = 0;
+    for (const EncNoGoFeature& f : no_go.features) {
+      if (f.area.empty()) continue;
+      ++areas;
+      OGRMultiPolygon feature;
+      for (const BgPolygon& p : f.area) feature.addGeometryDirectly(to_ogr(p).release());
+      std::unique_ptr<OGRGeometry> left(feature.Difference(&planners));
+      ASSERT_TRUE(left) << f.id;
+      const double uncovered = left->IsEmpty() ? 0.0 : OGR_G_Area(OGRGeometry::ToHandle(left.get()));
+      EXPECT_LT(uncovered, 0.01) << path << " " << f.id << " (m2 outside the planners' polygons)";
+    }
+    EXPECT_GT(areas, 100u) << path;
+    // A disc left out lies inside a polygon by at least its radius.
+    std::set<std::string> discs;
+    for (const EllipticCylinder& e : no_go.obstacles.ellipses) discs.insert(e.id);
+    for (const EncNoGoFeature& f : no_go.features) {
+      if (!f.point || discs.count(f.id)) continue;
+      OGRPoint c(f.point->x(), f.point->y());
+      std::unique_ptr<OGRGeometry> disc(c.Buffer(f.radius_m, 16));
+      EXPECT_TRUE(planners.Contains(disc.get())) << f.id;
+    }
+  }
+}
+
+// ------------------------------------------------------------------ a test cell through GDAL's writer
+
+TEST(EncNoGo, ZoneOfConfidenceChangesTheVerdictOnA9p5mArea) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
+  ScratchDir tmp;
+  auto make = [&](const std::string& name, int catzoc) {
+    const std::string cell = (tmp.path() / (name + ".000")).string();
+    write_edited_cell(path, cell, {"M_COVR", "M_QUAL", "DEPARE"}, [&](const std::string& layer, OGRFeature& f) {
+      if (layer == "DEPARE") f.SetField("DRVAL1", 9.5);
+      if (layer == "M_QUAL") f.SetField("CATZOC", catzoc);
+    });
+    return cell;
+  };
+  const std::string a1 = make("ZOCA1", 1), b = make("ZOCB", 3);
+  // D = 7 + 2 = 9 m. As charted 9.5 m passes; A1 takes 0.5 + 0.095 = 0.595 m off (8.905 < 9).
+  EncNoGoOptions o = at_depth(7.0, 2.0);
+  o.zone_of_confidence = false;
+  const EncNoGo charted = enc_no_go({a1}, std::nullopt, o);
+  EXPECT_EQ(charted.no_go_by_class.count("DEPARE"), 0u);
+  EXPECT_EQ(charted.passable_by_class.at("DEPARE"), 97u);
+  const EncNoGo zoc = enc_no_go({a1}, std::nullopt, at_depth(7.0, 2.0));
+  EXPECT_EQ(zoc.no_go_by_class.at("DEPARE"), 97u);
+  ASSERT_FALSE(zoc.features.empty());
+  EXPECT_NE(zoc.features.front().reason.find("least 8.905 m at CATZOC A1"), std::string::npos)
+      << zoc.features.front().reason;
+  // At D = 8.9 m A1 passes (8.905) and B does not (9.5 - 1.19 = 8.31).
+  EXPECT_EQ(enc_no_go({a1}, std::nullopt, at_depth(6.9, 2.0)).no_go_by_class.count("DEPARE"), 0u);
+  EXPECT_EQ(enc_no_go({b}, std::nullopt, at_depth(6.9, 2.0)).no_go_by_class.at("DEPARE"), 97u);
+}
+
+// ------------------------------------------------------------------ bad input
+
+TEST(EncCells, BrokenInputIsOneLineEach) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  ScratchDir tmp;
+  const fs::path src = fs::path(path).parent_path();
+  // A missing update in the sequence: .001 and .003 without .002.
+  const fs::path gap = tmp.path() / "gap";
+  fs::create_directories(gap);
+  for (const char* ext : {".000", ".001", ".003"}) fs::copy_file(src / ("US4MD81M" + std::string(ext)), gap / ("US4MD81M" + std::string(ext)));
+  expect_one_line_error([&] { find_enc_cells({(gap / "US4MD81M.000").string()}); }, "US4MD81M.003",
+                        "expected update 2");
+  // A damaged update: GDAL stops applying there.
+  const fs::path cut = tmp.path() / "cut";
+  fs::create_directories(cut);
+  fs::copy_file(src / "US4MD81M.000", cut / "US4MD81M.000");
+  fs::copy_file(src / "US4MD81M.001", cut / "US4MD81M.001");
+  fs::resize_file(cut / "US4MD81M.001", fs::file_size(cut / "US4MD81M.001") / 2);
+  expect_one_line_error([&] { enc_no_go({(cut / "US4MD81M.000").string()}, std::nullopt, at_depth(5.0)); },
+                        "US4MD81M.001", "expected update files");
+  // A file named .000 that is not S-57.
+  const fs::path fake = tmp.path() / "FAKE.000";
+  std::ofstream(fake) << "{\"type\": \"FeatureCollection\", \"features\": []}\n";
+  expect_one_line_error([&] { enc_no_go({fake.string()}, std::nullopt, at_depth(5.0)); }, "FAKE.000",
+                        "expected an S-57 ENC cell");
+  // A folder without cells, a missing path, a file not named *.000.
+  const fs::path empty = tmp.path() / "empty";
+  fs::create_directories(empty);
+  expect_one_line_error([&] { find_enc_cells({empty.string()}); }, "empty", "found none");
+  expect_one_line_error([&] { find_enc_cells({(tmp.path() / "nothing").string()}); }, "nothing", "found nothing");
+  expect_one_line_error([&] { find_enc_cells({(src / "US4MD81A.TXT").string()}); }, "US4MD81A.TXT", "*.000");
+  // A cell without depth areas (written through GDAL from the real one).
+  DEEPGUIDE_REAL_FILE_OR_SKIP(key_west, kKeyWest);
+  const std::string no_depare = (tmp.path() / "NODEPARE.000").string();
+  write_edited_cell(key_west, no_depare, {"M_COVR", "LNDARE"}, [](const std::string&, OGRFeature&) {});
+  expect_one_line_error([&] { enc_no_go({no_depare}, std::nullopt, at_depth(5.0)); }, "NODEPARE.000", "DEPARE");
+  // Options.
+  expect_one_line_error([&] { enc_no_go({path}, std::nullopt, at_depth(std::nan(""))); }, "--depth", "operating depth");
+  expect_one_line_error([&] { enc_no_go({path}, std::nullopt, at_depth(5.0, -1.0)); }, "--vertical-clearance", ">= 0");
+}
+
+TEST(EncCells, FoldersAreSearchedAndEachCellReadOnce) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  const fs::path dir = fs::path(path).parent_path();
+  const auto cells = find_enc_cells({dir.string(), path});
+  ASSERT_EQ(cells.size(), 1u);
+  EXPECT_EQ(cells.front().updates.size(), 3u);
+  EXPECT_NE(cells.front().updates.back().find("US4MD81M.003"), std::string::npos);
+}
+
+TEST(EncNoGo, SeveralCellsLetTheBetterScaleWin) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
+  ScratchDir tmp;
+  // The same Key West cell twice, the copy said to be at 1:50,000 with every
+  // depth area 30 m: where both cover, the 1:10,000 original decides.
+  const std::string coarse = (tmp.path() / "COARSE.000").string();
+  write_edited_cell(
+      path, coarse, {"M_COVR", "DEPARE"},
+      [](const std::string& layer, OGRFeature& f) {
+        if (layer == "DEPARE") f.SetField("DRVAL1", 30.0);
+      },
+      {"S57_CSCL=50000"});
+  const EncNoGo both = enc_no_go({coarse, path}, std::nullopt, at_depth(5.0));
+  ASSERT_EQ(both.cells.size(), 2u);
+  EXPECT_EQ(both.cells.front().name, "US5FL4DQ");
+  EXPECT_EQ(both.cells.front().compilation_scale, 10000);
+  const EncNoGo alone = enc_no_go({path}, std::nullopt, at_depth(5.0));
+  std::size_t from_coarse = 0;
+  for (const EncNoGoFeature& f : both.features) from_coarse += f.cell == "COARSE";
+  EXPECT_EQ(from_coarse, 0u) << "the coarse cell covers nothing the fine one does not";
+  EXPECT_EQ(both.no_go_by_class.at("DEPARE"), alone.no_go_by_class.at("DEPARE"));
+}
+
+
+// ------------------------------------------------------------------ the command line
+
+TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  ScratchDir tmp;
+  const std::string chart = "--chart '" + path + "' ";
+  // The issue's straight route: flagged, the feature named, one line, exit 1.
+  const std::string straight = tmp.file("straight.geojson");
+  std::ofstream(straight) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},)"
+                          << R"("geometry":{"type":"LineString","coordinates":[[-76.45,38.45],[-76.42,38.55]]}}]})";
+  const auto flagged = test::run_cli("check route '" + straight + "' " + chart + "--depth 8");
+  EXPECT_EQ(flagged.exit_code, 1) << flagged.err;
+  EXPECT_NE(flagged.err.find("crosses DEPARE/4363 of US4MD81M (DRVAL1 0 m < 10 m)"), std::string::npos) << flagged.err;
+  EXPECT_EQ(std::count(flagged.err.begin(), flagged.err.end(), '\n'), 1) << flagged.err;
+  // Its start lies on that bank: plan refuses with the feature named (exit 3).
+  const auto refused =
+      test::run_cli("plan " + chart + "--depth 8 --from -76.45,38.45 --to -76.42,38.55 -o '" + tmp.file("r.geojson") + "'");
+  EXPECT_EQ(refused.exit_code, 3) << refused.err;
+  EXPECT_NE(refused.err.find("start lies within 5.00 m of DEPARE/4363"), std::string::npos) << refused.err;
+  // Two points in the deep channel whose straight line crosses shoals: the
+  // route goes round them, and the check (which shares no code with the
+  // planner's zones) passes it.
+  const std::string route = tmp.file("round.geojson");
+  const auto planned =
+      test::run_cli("plan " + chart + "--depth 5 --from -76.41,38.87 --to -76.35,38.60 -o '" + route + "' --json");
+  ASSERT_EQ(planned.exit_code, 0) << planned.err;
+  const auto summary = nlohmann::json::parse(planned.out);
+  const EncNoGo no_go = enc_no_go({path}, std::nullopt, at_depth(5.0));
+  const Vec2 a = no_go.frame.from_lonlat(-76.41, 38.87), b = no_go.frame.from_lonlat(-76.35, 38.60);
+  EXPECT_FALSE(check_route_on_chart({a, b}, no_go, 5.0).safe) << "the straight line crosses shoals";
+  EXPECT_GT(summary["length_m"].get<double>(), (b - a).norm() * 1.01);
+  const auto passed = test::run_cli("check route '" + route + "' " + chart + "--depth 5 --json");
+  EXPECT_EQ(passed.exit_code, 0) << passed.err;
+  EXPECT_TRUE(nlohmann::json::parse(passed.out)["safe"].get<bool>());
+}
+
+}  // namespace
+}  // namespace deepguide
