@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "deepguide/geometry/safety_zone.hpp"
+#include "deepguide/world/no_go_union.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
@@ -33,6 +34,10 @@ BgMultiPolygon polygon_zone(const BgPolygon& footprint, const ZoneOptions& optio
 }
 
 namespace {
+
+// Groups of overlapping zones up to this size are merged by Boost.Geometry
+// one zone at a time (every scenario and mission so far); larger ones by GEOS.
+constexpr std::size_t kLargestBoostGroup = 64;
 
 // Union-find over zone indices, to merge only zones that overlap.
 struct Components {
@@ -84,6 +89,15 @@ BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOpti
     if (group.empty()) continue;
     if (group.size() == 1) {
       merged.push_back(std::move(zones[group[0]]));
+      continue;
+    }
+    if (group.size() > kLargestBoostGroup) {
+      // A chart's coast with its hazards: thousands of zones in one group.
+      // Adding them one by one costs O(group x vertices), and Boost 1.74's
+      // union is not robust at that scale (world/no_go_union.hpp).
+      std::vector<const BgPolygon*> parts;
+      for (std::size_t k : group) parts.push_back(&zones[k]);
+      for (BgPolygon& part : union_no_go({}, parts)) merged.push_back(std::move(part));
       continue;
     }
     BgMultiPolygon acc;

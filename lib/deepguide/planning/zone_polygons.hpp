@@ -7,7 +7,9 @@
 // joins at the distance d / cos(pi / n): the joins' chords then stay outside
 // the disc of radius d and the straight sides d (1 / cos(pi / n) - 1) <= tol
 // farther out than needed. Overlapping zones are merged (Boost.Geometry
-// union), so no vertex of one zone hides inside another.
+// union; groups of more than 64 overlapping zones, a chart's coast with its
+// hazards, through GEOS: world/no_go_union.hpp), so no vertex of one zone
+// hides inside another.
 
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/obstacle.hpp"

@@ -5,10 +5,12 @@
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 #include <set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/geometry/polygon_locator.hpp"
 #include "deepguide/geometry/polygon_ops.hpp"
 #include "deepguide/world/no_go_union.hpp"
 
@@ -85,11 +87,17 @@ struct ZocZones {
   std::vector<BgPolygon> polys;
   std::vector<int> catzoc;
   BoxTree tree;
+  std::unique_ptr<PolygonLocator> locator;
 
   void build() {
     std::vector<BoxItem> items;
-    for (std::size_t i = 0; i < polys.size(); ++i) items.emplace_back(bg::return_envelope<BgBox>(polys[i]), i);
+    std::vector<const BgPolygon*> ptrs;
+    for (std::size_t i = 0; i < polys.size(); ++i) {
+      items.emplace_back(bg::return_envelope<BgBox>(polys[i]), i);
+      ptrs.push_back(&polys[i]);
+    }
     tree = BoxTree(items.begin(), items.end());
+    locator = std::make_unique<PolygonLocator>(ptrs);
   }
   // Zones meeting `area`.
   std::vector<std::size_t> meeting(const BgMultiPolygon& area) const {
@@ -104,16 +112,12 @@ struct ZocZones {
   }
   // The worst zone holding p (largest uncertainty at depth z), or -1.
   int at(const Vec2& p, double z, const EncNoGoOptions& o) const {
-    std::vector<BoxItem> hits;
-    const BgPoint q = to_bg(p);
-    tree.query(bgi::intersects(q), std::back_inserter(hits));
     int best = -1;
     double worst = -1.0;
-    for (const auto& h : hits) {
-      if (!bg::covered_by(q, polys[h.second])) continue;
-      const ZocFigures f = zoc_figures(catzoc[h.second], o);
+    for (std::size_t k : locator->covering(p)) {
+      const ZocFigures f = zoc_figures(catzoc[k], o);
       const double u = f.depth_fixed_m + f.depth_fraction * std::max(z, 0.0) + 1e-9 * f.position_m;
-      if (u > worst) worst = u, best = static_cast<int>(h.second);
+      if (u > worst) worst = u, best = static_cast<int>(k);
     }
     return best;
   }
@@ -438,10 +442,13 @@ void planning_obstacles(EncNoGo& out, const std::vector<std::size_t>& tiles, dou
     }
     for (BgPolygon& q : simplify_outward(p, tol)) simple.push_back(std::move(q));
   }
-  if (tol > 0.0) simple = merge_overlapping(std::move(simple));
-  std::vector<BoxItem> items;
-  for (std::size_t i = 0; i < simple.size(); ++i) items.emplace_back(bg::return_envelope<BgBox>(simple[i]), i);
-  const BoxTree tree(items.begin(), items.end());
+  if (tol > 0.0) {
+    // Grown outward, neighbours may overlap now: join them again.
+    std::vector<const BgPolygon*> grown;
+    for (const BgPolygon& p : simple) grown.push_back(&p);
+    simple = union_no_go({}, grown);
+  }
+  std::vector<const BgPolygon*> ptrs;
   for (std::size_t i = 0; i < simple.size(); ++i) {
     PolygonObstacle p;
     p.id = "enc/" + std::to_string(i + 1);
@@ -449,22 +456,12 @@ void planning_obstacles(EncNoGo& out, const std::vector<std::size_t>& tiles, dou
     p.footprint = std::move(simple[i]);
     out.obstacles.polygons.push_back(std::move(p));
   }
+  for (const PolygonObstacle& p : out.obstacles.polygons) ptrs.push_back(&p.footprint);
+  const PolygonLocator locator(ptrs);
   for (const EncNoGoFeature& f : out.features) {
     if (!f.point) continue;
-    const BgPoint c = to_bg(*f.point);
-    std::vector<BoxItem> hits;
-    tree.query(bgi::intersects(c), std::back_inserter(hits));
-    bool inside = false;
-    for (const auto& h : hits) {
-      const BgPolygon& poly = out.obstacles.polygons[h.second].footprint;
-      if (!bg::within(c, poly)) continue;
-      // The disc lies inside when its centre is farther than its radius from every ring.
-      double to_edge = bg::distance(c, poly.outer());
-      for (const auto& r : poly.inners()) to_edge = std::min(to_edge, bg::distance(c, r));
-      inside = to_edge >= f.radius_m;
-      if (inside) break;
-    }
-    if (inside) continue;
+    // A disc inside the polygons adds nothing: its centre is covered and no edge is nearer than its radius.
+    if (!locator.covering(*f.point).empty() && locator.distance_to_edges(*f.point) >= f.radius_m) continue;
     EllipticCylinder e;
     e.id = f.id;
     e.footprint.center = *f.point;

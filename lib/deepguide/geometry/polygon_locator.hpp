@@ -1,0 +1,40 @@
+#pragma once
+// Which of many large polygons hold a point, and how far the point is from
+// their edges, in O(log n) per query instead of a walk round every ring.
+//
+// An R-tree holds every edge of every ring. A point lies inside polygon k
+// when a ray from it to the east crosses k's edges an odd number of times
+// (holes included: their edges count too); an edge crosses when its ends lie
+// on either side of the ray's line, the lower end counting as above on a tie
+// (the half-open rule, so a ray through a vertex counts once). Points on an
+// edge count as inside (covered). The edges the ray can cross are those whose
+// box meets the ray's box, found by the R-tree.
+
+#include <boost/geometry/geometries/segment.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "deepguide/geometry/polygon.hpp"
+
+namespace deepguide {
+
+class PolygonLocator {
+ public:
+  explicit PolygonLocator(const std::vector<const BgPolygon*>& polygons);
+
+  /// Indices (into the constructor's list) of the polygons covering p, ascending.
+  std::vector<std::size_t> covering(const Vec2& p) const;
+  /// Distance from p to the nearest edge of any polygon (infinite without polygons).
+  double distance_to_edges(const Vec2& p) const;
+
+ private:
+  using Segment = boost::geometry::model::segment<BgPoint>;
+  using Item = std::pair<Segment, std::size_t>;
+  boost::geometry::index::rtree<Item, boost::geometry::index::rstar<16>> edges_;
+  std::size_t count_ = 0;
+  double max_x_ = -std::numeric_limits<double>::infinity();
+};
+
+}  // namespace deepguide
