@@ -47,13 +47,16 @@ PolygonVisibility::PolygonVisibility(BgMultiPolygon polygons, double eps)
   }
   edges_ = decltype(edges_)(edges);
   boxes_ = decltype(boxes_)(boxes);
+  std::vector<const BgPolygon*> ptrs;
+  for (const BgPolygon& poly : polygons_) ptrs.push_back(&poly);
+  locator_ = std::make_unique<PolygonLocator>(ptrs);
 }
 
+PolygonVisibility::~PolygonVisibility() = default;
+
 std::size_t PolygonVisibility::containing_polygon(const Vec2& p) const {
-  std::vector<BoxItem> hits;
-  boxes_.query(bgi::intersects(to_bg(p)), std::back_inserter(hits));
-  for (const BoxItem& h : hits) {
-    if (!bg::within(to_bg(p), polygons_[h.second])) continue;
+  // The locator answers in O(log n) where a walk round a chart's coast takes thousands of steps.
+  for (const std::size_t k : locator_->covering(p)) {
     // Rounding may put a boundary point just inside: count it as boundary.
     std::vector<EdgeItem> nearest;
     edges_.query(bgi::nearest(to_bg(p), 1), std::back_inserter(nearest));
@@ -61,7 +64,7 @@ std::size_t PolygonVisibility::containing_polygon(const Vec2& p) const {
         point_segment_distance(p, to_eigen(nearest[0].first.first), to_eigen(nearest[0].first.second)) <= eps_) {
       return npos;
     }
-    return h.second;
+    return k;
   }
   return npos;
 }

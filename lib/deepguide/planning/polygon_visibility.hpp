@@ -14,9 +14,11 @@
 
 #include <boost/geometry/index/rtree.hpp>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "deepguide/geometry/polygon.hpp"
+#include "deepguide/geometry/polygon_locator.hpp"
 
 namespace deepguide {
 
@@ -24,6 +26,9 @@ class PolygonVisibility {
  public:
   /// `eps` is the distance (m) under which points count as on a line or a boundary.
   PolygonVisibility(BgMultiPolygon polygons, double eps);
+  ~PolygonVisibility();
+  PolygonVisibility(const PolygonVisibility&) = delete;
+  PolygonVisibility& operator=(const PolygonVisibility&) = delete;
 
   bool segment_visible(const Vec2& p, const Vec2& q) const;
   /// True if the segment properly crosses some polygon edge (enters an
@@ -48,6 +53,7 @@ class PolygonVisibility {
   double eps_;
   boost::geometry::index::rtree<EdgeItem, boost::geometry::index::rstar<16>> edges_;
   boost::geometry::index::rtree<BoxItem, boost::geometry::index::rstar<16>> boxes_;
+  std::unique_ptr<PolygonLocator> locator_;  // which polygon holds a point (strictly_inside)
 };
 
 }  // namespace deepguide
