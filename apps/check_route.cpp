@@ -10,6 +10,7 @@
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/world/enc_route_check.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
@@ -37,7 +38,7 @@ nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& wh
   opts.zone_of_confidence = !o.no_zoc;
   std::optional<LocalFrame> frame;
   if (!o.frame.crs.empty()) frame = LocalFrame::from_user_crs(o.frame.crs);
-  const EncNoGo no_go = enc_no_go(o.charts, frame, opts);
+  const EncNoGo no_go = chart_no_go(o.charts, frame, opts);
   const Route route = read_route(o.route, no_go.frame);
   const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin);
   safe = check.safe;
@@ -67,7 +68,8 @@ void register_check_route(CLI::App& check) {
                "named); exit 1 when the route is unsafe");
   cmd->add_option("ROUTE", o->route, "Route file (GeoJSON, GPX, KML, ... with a LineString)")->required();
   cmd->add_option("--obstacles", o->obstacles, "Obstacle files")->expected(1, -1);
-  cmd->add_option("--chart", o->charts, "S-57 cells (*.000, updates beside them) or folders of cells")
+  cmd->add_option("--chart", o->charts,
+                  "S-57 cells (*.000, updates beside them), folders of cells, or a prepared chart (.gpkg)")
       ->expected(1, -1);
   cmd->add_option("--depth", o->depth, "Operating depth (m, positive down), for --chart");
   cmd->add_option("--vertical-clearance", o->clearance, "Water kept under the vehicle (m), for --chart")

@@ -33,6 +33,7 @@ void register_chart_info(CLI::App& chart);
 void register_render_chart(CLI::App& render);
 void register_render_reactive(CLI::App& render);
 void register_chart_nogo(CLI::App& chart);
+void register_chart_prepare(CLI::App& chart);
 void register_simulate(CLI::App& app);
 void register_identify(CLI::App& app);
 void register_suite(CLI::App& app);

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   app::register_chart_synth(*chart);
   app::register_chart_info(*chart);
   app::register_chart_nogo(*chart);
+  app::register_chart_prepare(*chart);
   app::register_plan(app);
   app::register_mission(app);
   app::register_simulate(app);

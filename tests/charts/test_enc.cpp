@@ -22,6 +22,7 @@
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/enc_route_check.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {
@@ -419,6 +420,53 @@ TEST(EncNoGo, SeveralCellsLetTheBetterScaleWin) {
 }
 
 
+
+// ------------------------------------------------------------------ prepared charts
+
+TEST(PreparedChart, RoundTripKeepsTheNoGoAndRefusesAnotherDepth) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
+  ScratchDir tmp;
+  const EncNoGoOptions o = at_depth(3.0);
+  const EncNoGo made = enc_no_go({path}, std::nullopt, o);
+  const std::string gpkg = tmp.file("area.gpkg");
+  write_prepared_chart(gpkg, made, o, false);
+  ASSERT_TRUE(is_prepared_chart(gpkg));
+  EXPECT_FALSE(is_prepared_chart(path));
+  PreparedChartInfo info;
+  const EncNoGo back = read_prepared_chart(gpkg, std::nullopt, 3.0, 2.0, &info);
+  EXPECT_EQ(back.frame.id(), made.frame.id());
+  EXPECT_DOUBLE_EQ(back.required_depth_m, 5.0);
+  EXPECT_NE(info.cells.find("US5FL4DQ edition 2"), std::string::npos) << info.cells;
+  ASSERT_EQ(back.obstacles.polygons.size(), made.obstacles.polygons.size());
+  ASSERT_EQ(back.obstacles.ellipses.size(), made.obstacles.ellipses.size());
+  for (std::size_t i = 0; i < made.obstacles.polygons.size(); ++i) {
+    const auto& a = made.obstacles.polygons[i].footprint.outer();
+    const auto& b = back.obstacles.polygons[i].footprint.outer();
+    ASSERT_EQ(a.size(), b.size()) << i;
+    for (std::size_t k = 0; k < a.size(); k += 97) {
+      EXPECT_LT((to_eigen(a[k]) - to_eigen(b[k])).norm(), 1e-6) << i << " " << k;
+    }
+  }
+  ASSERT_EQ(back.features.size(), made.features.size());
+  for (std::size_t i = 0; i < made.features.size(); ++i) {
+    EXPECT_EQ(back.features[i].id, made.features[i].id);
+    EXPECT_EQ(back.features[i].reason, made.features[i].reason);
+    EXPECT_EQ(back.features[i].point.has_value(), made.features[i].point.has_value());
+  }
+  // The same route verdicts from both.
+  const Vec2 a = made.frame.from_lonlat(-81.87, 24.54), b = made.frame.from_lonlat(-81.83, 24.59);
+  EXPECT_EQ(check_route_on_chart({a, b}, back, 5.0).safe, check_route_on_chart({a, b}, made, 5.0).safe);
+  // Another depth, or clearance, is refused; an existing file is kept without replace.
+  expect_one_line_error([&] { read_prepared_chart(gpkg, std::nullopt, 4.0, 2.0); }, "area.gpkg",
+                        "prepared for depth 3 m");
+  expect_one_line_error([&] { read_prepared_chart(gpkg, std::nullopt, 3.0, 1.0); }, "area.gpkg", "prepare it again");
+  expect_one_line_error([&] { write_prepared_chart(gpkg, made, o, false); }, "area.gpkg", "--overwrite");
+  expect_one_line_error([&] { write_prepared_chart(tmp.file("area.geojson"), made, o, true); }, "area.geojson",
+                        "*.gpkg");
+  expect_one_line_error([&] { read_prepared_chart(path, std::nullopt, 3.0, 2.0); }, "US5FL4DQ.000",
+                        "expected a prepared chart");
+}
+
 // ------------------------------------------------------------------ the command line
 
 TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
@@ -450,6 +498,16 @@ TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
   const Vec2 a = no_go.frame.from_lonlat(-76.41, 38.87), b = no_go.frame.from_lonlat(-76.35, 38.60);
   EXPECT_FALSE(check_route_on_chart({a, b}, no_go, 5.0).safe) << "the straight line crosses shoals";
   EXPECT_GT(summary["length_m"].get<double>(), (b - a).norm() * 1.01);
+  // Prepared once, the same route from the GeoPackage.
+  const std::string gpkg = tmp.file("area.gpkg");
+  ASSERT_EQ(test::run_cli("chart prepare '" + path + "' --depth 5 -o '" + gpkg + "'").exit_code, 0);
+  const auto from_gpkg = test::run_cli("plan --chart '" + gpkg +
+                                       "' --depth 5 --from -76.41,38.87 --to -76.35,38.60 -o '" +
+                                       tmp.file("round2.geojson") + "' --json");
+  ASSERT_EQ(from_gpkg.exit_code, 0) << from_gpkg.err;
+  EXPECT_NEAR(nlohmann::json::parse(from_gpkg.out)["length_m"].get<double>(), summary["length_m"].get<double>(), 1e-3);
+  const auto other_depth = test::run_cli("plan --chart '" + gpkg + "' --depth 6 --from -76.41,38.87 --to -76.35,38.60");
+  EXPECT_EQ(other_depth.exit_code, 1) << other_depth.err;
   const auto passed = test::run_cli("check route '" + route + "' " + chart + "--depth 5 --json");
   EXPECT_EQ(passed.exit_code, 0) << passed.err;
   EXPECT_TRUE(nlohmann::json::parse(passed.out)["safe"].get<bool>());

@@ -5,6 +5,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -28,7 +29,7 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
   // S-57 cells (and folders of them) are read together: where they overlap the better scale wins.
   std::vector<std::string> enc;
   for (const std::string& path : paths) {
-    if (names_enc(path) || chart_kind(path) == ChartKind::s57) {
+    if (names_enc(path) || is_prepared_chart(path) || chart_kind(path) == ChartKind::s57) {
       enc.push_back(path);
       continue;
     }
@@ -61,11 +62,12 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
     EncNoGoOptions o = options.enc;
     o.operating_depth_m = options.depth_m;
     o.vertical_clearance_m = options.clearance_m;
-    EncNoGo no_go = enc_no_go(enc, frame, o);
+    EncNoGo no_go = chart_no_go(enc, frame, o);
     // One row for the cells read together.
-    ChartFileObstacles file{no_go.cells.size() == 1 ? no_go.cells.front().path
-                                                    : std::to_string(no_go.cells.size()) + " cells",
-                            to_string(ChartKind::s57)};
+    ChartFileObstacles file{no_go.cells.empty()       ? enc.front()
+                            : no_go.cells.size() == 1 ? no_go.cells.front().path
+                                                      : std::to_string(no_go.cells.size()) + " cells",
+                            no_go.cells.empty() ? "prepared chart" : to_string(ChartKind::s57)};
     for (const auto& [cls, n] : no_go.passable_by_class) file.passed_over += n;
     file.obstacles = no_go.obstacles.size();
     out.files.push_back(file);

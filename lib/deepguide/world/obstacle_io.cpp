@@ -269,6 +269,10 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
   std::vector<std::string> crs_names;
   for (OGRLayer* layer : ds->GetLayers()) {
     if (any_spatial && layer->GetGeomType() == wkbNone) continue;
+    if (!options.layers.empty() &&
+        std::find(options.layers.begin(), options.layers.end(), layer->GetName()) == options.layers.end()) {
+      continue;
+    }
     const OGRSpatialReference* layer_srs = layer->GetSpatialRef();
     std::unique_ptr<OGRSpatialReference> srs;
     std::string crs_name;

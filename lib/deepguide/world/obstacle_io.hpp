@@ -33,6 +33,8 @@ struct ObstacleReadOptions {
   std::string source_crs;
   /// Extra fields to return per feature as text (ObstacleOrigin::extra), e.g. "time".
   std::vector<std::string> extra_fields = {};
+  /// Layers to read (empty: every layer with geometry), e.g. a prepared chart's "obstacles".
+  std::vector<std::string> layers = {};
 };
 
 struct ObstacleSourceInfo {

@@ -1,0 +1,81 @@
+// deepguide chart prepare CELL|FOLDER... --depth M [--vertical-clearance M] [--tolerance M] [--restricted]
+//                        [--no-zoc] [--crs EPSG:n] -o AREA.gpkg [--overwrite] [--json]
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "commands.hpp"
+#include "deepguide/world/prepared_chart.hpp"
+
+namespace deepguide::app {
+namespace {
+struct PrepareOptions {
+  std::vector<std::string> charts;
+  std::string output, crs;
+  EncNoGoOptions enc;
+  bool no_zoc = false, overwrite = false, json = false;
+};
+}  // namespace
+
+void register_chart_prepare(CLI::App& chart) {
+  auto o = std::make_shared<PrepareOptions>();
+  CLI::App* cmd = chart.add_subcommand(
+      "prepare", "Judge S-57 cells at one depth once and keep their no-go in a GeoPackage that plan --chart and "
+                 "check route --chart read");
+  cmd->add_option("CHART", o->charts, "S-57 cells (*.000, with their updates) and folders of cells")->required();
+  cmd->add_option("--depth", o->enc.operating_depth_m, "Operating depth of the vehicle (m, positive down)")
+      ->required();
+  cmd->add_option("--vertical-clearance", o->enc.vertical_clearance_m, "Water kept under the vehicle (m)")
+      ->capture_default_str();
+  cmd->add_option("--tolerance", o->enc.simplify_tolerance_m,
+                  "How far the planners' polygons may grow outward when simplified (m); 0 = exact")
+      ->capture_default_str();
+  cmd->add_flag("--restricted", o->enc.restricted_areas,
+                "Areas whose RESTRN is entry prohibited, entry restricted or area to be avoided are no-go too");
+  cmd->add_flag("--no-zoc", o->no_zoc, "Charted depths and positions as exact (no zone of confidence)");
+  cmd->add_option("--crs", o->crs, "Local planning frame, a projected CRS (default: UTM zone of the first cell)");
+  cmd->add_option("-o,--output", o->output, "The prepared chart to write (.gpkg)")->required();
+  cmd->add_flag("--overwrite", o->overwrite, "Replace an existing output file");
+  cmd->add_flag("--json", o->json, "Print a JSON object instead of text");
+  cmd->callback([o] {
+    EncNoGoOptions opts = o->enc;
+    opts.zone_of_confidence = !o->no_zoc;
+    const auto t0 = std::chrono::steady_clock::now();
+    const EncNoGo no_go =
+        enc_no_go(o->charts, o->crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(o->crs)),
+                  opts);
+    write_prepared_chart(o->output, no_go, opts, o->overwrite);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (o->json) {
+      std::cout << nlohmann::json{{"output", o->output},
+                                  {"cells", no_go.cells.size()},
+                                  {"local_crs", no_go.frame.id()},
+                                  {"required_depth_m", no_go.required_depth_m},
+                                  {"no_go_features", no_go.features.size()},
+                                  {"polygons", no_go.obstacles.polygons.size()},
+                                  {"discs", no_go.obstacles.ellipses.size()},
+                                  {"vertices", no_go.vertices},
+                                  {"seconds", seconds}}
+                       .dump(2)
+                << "\n";
+      return;
+    }
+    for (const EncCellSummary& c : no_go.cells) {
+      std::printf("cell             %s  1:%ld, edition %s, update %d\n", c.name.c_str(), c.compilation_scale,
+                  c.edition.c_str(), c.update_number);
+    }
+    std::printf("required depth   %.2f m (%.2f + %.2f clearance)%s\n", no_go.required_depth_m, opts.operating_depth_m,
+                opts.vertical_clearance_m, opts.zone_of_confidence ? ", less each zone of confidence" : "");
+    std::printf("no-go            %zu features; for the planners %zu polygon(s), %zu corners, %zu disc(s)\n",
+                no_go.features.size(), no_go.obstacles.polygons.size(), no_go.vertices,
+                no_go.obstacles.ellipses.size());
+    std::printf("time             %.2f s\n", seconds);
+    std::printf("wrote            %s\n", o->output.c_str());
+  });
+}
+
+}  // namespace deepguide::app

@@ -1,0 +1,232 @@
+#include "deepguide/world/prepared_chart.hpp"
+
+#include <ogrsf_frmts.h>
+
+#include <boost/geometry/algorithms/correct.hpp>
+#include <cmath>
+#include <filesystem>
+
+#include "deepguide/core/atomic_file.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
+#include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+
+namespace deepguide {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFormat = "deepguide prepared chart 1";
+constexpr const char* kMetaLayer = "deepguide_chart";
+constexpr const char* kFeatureLayer = "no_go_features";
+
+std::string shown(const std::string& path) { return printable(path, 240); }
+
+[[noreturn]] void fail_write(const std::string& path, const std::string& what) {
+  const std::string why = gdal::QuietErrors::last_message();
+  throw InputError(shown(path) + ": could not " + what + (why.empty() ? std::string() : ": " + why));
+}
+
+void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& path) {
+  const auto geo = gdal::wgs84();
+  OGRLayer* layer = ds.CreateLayer(kFeatureLayer, geo.get(), wkbUnknown, nullptr);
+  if (layer == nullptr) fail_write(path, "create the no_go_features layer");
+  for (const auto& [name, type] : std::initializer_list<std::pair<const char*, OGRFieldType>>{
+           {"id", OFTString}, {"cell", OFTString}, {"class", OFTString}, {"rcid", OFTInteger64},
+           {"reason", OFTString}, {"charted_depth_m", OFTReal}, {"radius_m", OFTReal}}) {
+    OGRFieldDefn fd(name, type);
+    if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
+  }
+  auto ll = [&](const Vec2& p) { return no_go.frame.to_lonlat(p); };
+  for (const EncNoGoFeature& f : no_go.features) {
+    OGRFeature out(layer->GetLayerDefn());
+    out.SetField("id", f.id.c_str());
+    out.SetField("cell", f.cell.c_str());
+    out.SetField("class", f.cls.c_str());
+    out.SetField("rcid", static_cast<GIntBig>(f.rcid));
+    out.SetField("reason", f.reason.c_str());
+    if (std::isfinite(f.charted_depth_m)) out.SetField("charted_depth_m", f.charted_depth_m);
+    if (f.point) {
+      const Vec2 p = ll(*f.point);
+      OGRPoint pt(p.x(), p.y());
+      out.SetGeometry(&pt);
+      out.SetField("radius_m", f.radius_m);
+    } else {
+      OGRMultiPolygon mp;
+      for (const BgPolygon& poly : f.area) {
+        OGRPolygon op;
+        auto ring = [&](const auto& r) {
+          OGRLinearRing lr;
+          for (const BgPoint& q : r) {
+            const Vec2 p = ll(to_eigen(q));
+            lr.addPoint(p.x(), p.y());
+          }
+          op.addRing(&lr);
+        };
+        ring(poly.outer());
+        for (const auto& in : poly.inners()) ring(in);
+        mp.addGeometry(&op);
+      }
+      out.SetGeometry(&mp);
+    }
+    if (layer->CreateFeature(&out) != OGRERR_NONE) fail_write(path, "write feature '" + f.id + "'");
+  }
+}
+
+void write_meta(GDALDataset& ds, const EncNoGo& no_go, const EncNoGoOptions& o, const std::string& path) {
+  OGRLayer* layer = ds.CreateLayer(kMetaLayer, nullptr, wkbNone, nullptr);
+  if (layer == nullptr) fail_write(path, "create the deepguide_chart table");
+  for (const auto& [name, type] : std::initializer_list<std::pair<const char*, OGRFieldType>>{
+           {"format", OFTString}, {"depth_m", OFTReal}, {"vertical_clearance_m", OFTReal},
+           {"required_depth_m", OFTReal}, {"zone_of_confidence", OFTInteger}, {"restricted_areas", OFTInteger},
+           {"simplify_tolerance_m", OFTReal}, {"local_crs", OFTString}, {"cells", OFTString}}) {
+    OGRFieldDefn fd(name, type);
+    if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
+  }
+  std::string cells;
+  for (const EncCellSummary& c : no_go.cells) {
+    cells += (cells.empty() ? "" : "; ") + c.name + " edition " + c.edition + " update " +
+             std::to_string(c.update_number) + " (" + c.issue_date + ")";
+  }
+  OGRFeature f(layer->GetLayerDefn());
+  f.SetField("format", kFormat);
+  f.SetField("depth_m", o.operating_depth_m);
+  f.SetField("vertical_clearance_m", o.vertical_clearance_m);
+  f.SetField("required_depth_m", no_go.required_depth_m);
+  f.SetField("zone_of_confidence", o.zone_of_confidence ? 1 : 0);
+  f.SetField("restricted_areas", o.restricted_areas ? 1 : 0);
+  f.SetField("simplify_tolerance_m", o.simplify_tolerance_m);
+  f.SetField("local_crs", no_go.frame.id().c_str());
+  f.SetField("cells", cells.c_str());
+  if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write the deepguide_chart row");
+}
+
+GDALDatasetUniquePtr open_gpkg(const std::string& path) {
+  gdal::ensure_registered();
+  const char* drivers[] = {"GPKG", nullptr};
+  return GDALDatasetUniquePtr(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, nullptr, nullptr));
+}
+
+}  // namespace
+
+bool is_prepared_chart(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_gpkg(path);
+  return ds && ds->GetLayerByName(kMetaLayer) != nullptr;
+}
+
+void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options,
+                          bool replace) {
+  if (ascii_lower(fs::path(path).extension().string()) != ".gpkg") {
+    throw InputError(shown(path) + ": expected a GeoPackage name (*.gpkg) for a prepared chart");
+  }
+  std::error_code ec;
+  if (!replace && fs::exists(path, ec)) {
+    throw InputError(shown(path) + ": exists; give --overwrite to replace it");
+  }
+  AtomicOutput out(path);
+  write_obstacles(out.temp_path().string(), no_go.obstacles, no_go.frame);
+  {
+    gdal::QuietErrors quiet;
+    GDALDatasetUniquePtr ds(GDALDataset::Open(out.temp_path().c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE));
+    if (!ds) fail_write(path, "reopen the GeoPackage");
+    if (ds->StartTransaction() != OGRERR_NONE) fail_write(path, "start a transaction");
+    write_features(*ds, no_go, path);
+    write_meta(*ds, no_go, options, path);
+    if (ds->CommitTransaction() != OGRERR_NONE) fail_write(path, "commit the GeoPackage");
+    ds.reset();  // closes (flushes) before the rename
+    if (!gdal::QuietErrors::last_message().empty()) fail_write(path, "finish the file");
+  }
+  out.commit(replace);
+}
+
+EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFrame>& frame, double depth_m,
+                            double vertical_clearance_m, PreparedChartInfo* info) {
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_gpkg(path);
+  OGRLayer* meta = ds ? ds->GetLayerByName(kMetaLayer) : nullptr;
+  if (meta == nullptr) throw InputError(shown(path) + ": expected a prepared chart (chart prepare), got none");
+  std::unique_ptr<OGRFeature> row(meta->GetNextFeature());
+  if (!row || std::string(row->GetFieldAsString("format")) != kFormat) {
+    throw InputError(shown(path) + ": table deepguide_chart: expected format '" + kFormat + "'");
+  }
+  PreparedChartInfo p;
+  p.depth_m = row->GetFieldAsDouble("depth_m");
+  p.vertical_clearance_m = row->GetFieldAsDouble("vertical_clearance_m");
+  p.zone_of_confidence = row->GetFieldAsInteger("zone_of_confidence") != 0;
+  p.restricted_areas = row->GetFieldAsInteger("restricted_areas") != 0;
+  p.simplify_tolerance_m = row->GetFieldAsDouble("simplify_tolerance_m");
+  p.cells = row->GetFieldAsString("cells");
+  if (info != nullptr) *info = p;
+  if (std::abs(p.depth_m - depth_m) > 1e-9 || std::abs(p.vertical_clearance_m - vertical_clearance_m) > 1e-9) {
+    throw InputError(shown(path) + ": prepared for depth " + general(p.depth_m) + " m and vertical clearance " +
+                     general(p.vertical_clearance_m) + " m, expected depth " + general(depth_m) + " m and " +
+                     general(vertical_clearance_m) + " m: prepare it again (chart prepare) for this depth");
+  }
+  const LocalFrame use = frame ? *frame : LocalFrame::from_user_crs(row->GetFieldAsString("local_crs"), shown(path));
+  ObstacleReadOptions ro;
+  ro.local_crs = use.id();
+  ro.layers = {"obstacles"};
+  EncNoGo out{use, depth_m + vertical_clearance_m, {}, {}, load_obstacles({path}, ro).obstacles, {}, {}, {}, 0};
+
+  OGRLayer* features = ds->GetLayerByName(kFeatureLayer);
+  if (features == nullptr) throw InputError(shown(path) + ": expected a no_go_features layer, found none");
+  const auto geo = gdal::wgs84();
+  const auto srs = gdal::srs_from_user_input(use.wkt());
+  const auto ct = gdal::make_transform(*geo, *srs);
+  if (!ct) throw InputError(shown(path) + ": no transformation from WGS 84 to " + use.id());
+  for (auto& f : *features) {
+    EncNoGoFeature n;
+    n.id = f->GetFieldAsString("id");
+    n.cell = f->GetFieldAsString("cell");
+    n.cls = f->GetFieldAsString("class");
+    n.rcid = f->GetFieldAsInteger64("rcid");
+    n.reason = f->GetFieldAsString("reason");
+    const int di = f->GetFieldIndex("charted_depth_m");
+    n.charted_depth_m = f->IsFieldSetAndNotNull(di) ? f->GetFieldAsDouble(di) : std::nan("");
+    OGRGeometry* g = f->GetGeometryRef();
+    if (g == nullptr || g->transform(ct.get()) != OGRERR_NONE) {
+      throw InputError(shown(path) + ": layer no_go_features, feature '" + printable(n.id) +
+                       "': expected a geometry in the frame's area");
+    }
+    if (wkbFlatten(g->getGeometryType()) == wkbPoint) {
+      n.point = Vec2(g->toPoint()->getX(), g->toPoint()->getY());
+      n.radius_m = f->GetFieldAsDouble("radius_m");
+    } else if (wkbFlatten(g->getGeometryType()) == wkbMultiPolygon) {
+      for (const OGRPolygon* op : *g->toMultiPolygon()) {
+        BgPolygon bp;
+        auto ring = [](const OGRLinearRing& r, auto& dst) {
+          for (int i = 0; i < r.getNumPoints(); ++i) dst.push_back(BgPoint(r.getX(i), r.getY(i)));
+        };
+        ring(*op->getExteriorRing(), bp.outer());
+        for (int k = 0; k < op->getNumInteriorRings(); ++k) ring(*op->getInteriorRing(k), bp.inners().emplace_back());
+        boost::geometry::correct(bp);
+        n.area.push_back(std::move(bp));
+      }
+    }
+    if (n.cls != "M_COVR") ++out.no_go_by_class[n.cls];
+    out.features.push_back(std::move(n));
+  }
+  return out;
+}
+
+EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<LocalFrame>& frame,
+                    const EncNoGoOptions& options) {
+  std::size_t prepared = 0;
+  for (const std::string& c : charts) prepared += is_prepared_chart(c);
+  if (prepared == 0) return enc_no_go(charts, frame, options);
+  if (charts.size() > 1) {
+    throw InputError("--chart: expected S-57 cells or one prepared chart, got " + std::to_string(prepared) +
+                     " prepared chart(s) among " + std::to_string(charts.size()) + " charts");
+  }
+  if (!std::isfinite(options.operating_depth_m)) {
+    throw InputError("--depth: expected the operating depth (m) the chart was prepared for");
+  }
+  return read_prepared_chart(charts.front(), frame, options.operating_depth_m, options.vertical_clearance_m);
+}
+
+}  // namespace deepguide

@@ -1,0 +1,54 @@
+#pragma once
+// A prepared chart: S-57 cells' no-go at one depth, computed once and kept in
+// a GeoPackage (`chart prepare`), so that `plan --chart area.gpkg` and
+// `check route --chart area.gpkg` skip reading and judging the cells.
+//
+// Layers (all lon/lat WGS 84):
+//  - "obstacles": what the planners take (EncNoGo::obstacles: the merged,
+//    simplified no-go polygons and the discs outside them), in the obstacle
+//    file format (obstacle_io.hpp), so any obstacle reader takes it too;
+//  - "no_go_features": every no-go feature with its id, cell, class, RCID,
+//    reason and charted depth (what names a crossing); discs as points with
+//    radius_m;
+//  - "deepguide_chart": one row without geometry: the depth, clearance,
+//    required depth, options and cells it was prepared for, and the format
+//    version. A chart is used only at the depth and clearance it was
+//    prepared for: anything else is an error naming both.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deepguide/world/enc_no_go.hpp"
+
+namespace deepguide {
+
+struct PreparedChartInfo {
+  double depth_m = 0;
+  double vertical_clearance_m = 0;
+  bool zone_of_confidence = true;
+  bool restricted_areas = false;
+  double simplify_tolerance_m = 0;
+  std::string cells;  ///< "NAME edition E update U; ..."
+};
+
+/// True when `path` is a GeoPackage holding a "deepguide_chart" layer.
+bool is_prepared_chart(const std::string& path);
+
+/// Writes the no-go atomically (a failed write leaves no file; an existing
+/// file is replaced only with `replace`). Throws InputError naming the file.
+void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options,
+                          bool replace);
+
+/// Reads a prepared chart into `frame` (or the frame it was prepared in) for
+/// `depth_m` and `vertical_clearance_m`; throws InputError naming the file
+/// when it was prepared for others, or is not a prepared chart.
+EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFrame>& frame, double depth_m,
+                            double vertical_clearance_m, PreparedChartInfo* info = nullptr);
+
+/// The no-go of `charts`: S-57 cells and folders (enc_no_go), or one prepared
+/// chart read at options' depth and clearance (its other options are its own).
+EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<LocalFrame>& frame,
+                    const EncNoGoOptions& options);
+
+}  // namespace deepguide
