@@ -17,6 +17,7 @@
 #include "deepguide/planning/replanning.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/route_io.hpp"
+#include "deepguide/render/route_on_chart.hpp"
 #include "deepguide/render/route_scene.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/enc_route_check.hpp"
@@ -409,7 +410,17 @@ void register_plan(CLI::App& app) {
       summary["repairs"] = repairs;
       summary["reached_goal"] = replay->reached_goal;
     }
-    if (!o->render.empty()) {
+    if (!o->render.empty() && charted.enc) {
+      // S-57 charts: the route over the chart as an ECDIS draws it.
+      RouteOnChart figure;
+      figure.charts = o->charts;
+      figure.depth_m = o->depth;
+      figure.clearance_m = o->vertical_clearance;
+      figure.local_crs = frame.id();
+      figure.route = route.points;
+      figure.title = route_title("deepguide plan", route, o->margin, frame);
+      render_route_on_chart(figure, o->render);
+    } else if (!o->render.empty()) {
       RouteScene scene;
       scene.obstacles = &obstacles;
       scene.margin = o->margin;

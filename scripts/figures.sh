@@ -71,3 +71,14 @@ if [ -f "$hycom" ]; then
 else
   echo "deepguide: $hycom is absent: skipping the Gulf Stream route figure" >&2
 fi
+
+# Real S-57 cells drawn as an ECDIS draws them, with their no-go (docs/CHARTS.md),
+# and a route down Chesapeake Bay planned on one, when ../shared holds them.
+enc="$DEEPGUIDE_ROOT/../shared/data/real"
+if [ -f "$enc/noaa-enc-US4MD81M/US4MD81M.000" ] && [ -f "$enc/noaa-enc-US5FL4DQ/US5FL4DQ.000" ]; then
+  "$DEEPGUIDE_CLI" render chart "$enc/noaa-enc-US5FL4DQ/US5FL4DQ.000" --depth 1 -o docs/images/enc_key_west.png >/dev/null
+  "$DEEPGUIDE_CLI" plan --chart "$enc/noaa-enc-US4MD81M/US4MD81M.000" --depth 5 --from -76.41,38.87 --to -76.35,38.60 \
+    --render docs/images/enc_chesapeake_route.png >/dev/null
+else
+  echo "deepguide: the NOAA cells in $enc are absent: skipping the ENC figures" >&2
+fi

@@ -13,6 +13,8 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/render/chart_scene.hpp"
+#include "deepguide/render/route_on_chart.hpp"
+#include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/sample_chart.hpp"
 #include "png_reader.hpp"
 #include "test_support.hpp"
@@ -199,4 +201,32 @@ TEST(RenderChartCli, BadInputExitsOneWithOneLine) {
   one_line(run_cli("render chart " + chart + " -o '" + dir.file("no/dir/a.png") + "'"), "no/dir");
   EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
   EXPECT_FALSE(std::filesystem::exists(dir.file("a.gif")));
+}
+
+// A route over an S-57 cell: the route, its start and goal on top of the
+// chart's tints and hatching, the map around the route's box.
+TEST(RenderChart, RouteOverAnEncCell) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(cell, "noaa-enc-US5FL4DQ/US5FL4DQ.000");
+  ScratchDir dir;
+  const std::string out = dir.file("route.png");
+  RouteOnChart r;
+  r.charts = {cell};
+  r.depth_m = 1.0;
+  r.local_crs = "EPSG:32617";
+  const LocalFrame frame = LocalFrame::from_user_crs(r.local_crs);
+  r.route = {frame.from_lonlat(-81.84, 24.59), frame.from_lonlat(-81.83, 24.55)};
+  r.width_px = 900;
+  const ChartLayout l = render_route_on_chart(r, out);
+  EXPECT_EQ(l.width, 900);
+  // The map holds the route's box widened by a fifth of its size (at least 1 km).
+  EXPECT_LE(l.extent.min.y(), r.route[1].y() - 1000.0 + 1e-6);
+  EXPECT_GE(l.extent.max.y(), r.route[0].y() + 1000.0 - 1e-6);
+  Png png(out);
+  ASSERT_TRUE(png.ok());
+  EXPECT_TRUE(same_colour(png.at(l.view.to_pixel(0.5 * (r.route[0] + r.route[1]))), rgb_hex(0x1864d6), 12));
+  EXPECT_TRUE(same_colour(png.at(l.view.to_pixel(r.route[0])), rgb_hex(0x2f9e44), 12));
+  EXPECT_TRUE(same_colour(png.at(l.view.to_pixel(r.route[1])), rgb_hex(0xc92a2a), 12));
+  // Depth bands from the cell's depth areas (DRVAL2 up to 18.2 m).
+  ASSERT_GE(l.band_edges.size(), 3u);
+  EXPECT_GE(l.band_edges.back(), 18.2);
 }

@@ -156,6 +156,15 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   m.focus = focus.shifted(m.origin);
   const ObstacleSet local = shifted(obstacles, m.origin);
   m.pieces = zone_pieces(local, m.margin);
+  if (m.focus.active()) {
+    // A piece no route within the bound can come near adds nothing (single_query.hpp): on a chart's
+    // coast this keeps the few hundred edges near the ellipse of thousands.
+    std::erase_if(m.pieces, [&](const ZonePiece& p) {
+      const Vec2 c = p.inner_point();
+      const double r = p.bounding_radius();
+      return (c - m.focus.start).norm() + (c - m.focus.goal).norm() - 2.0 * r > m.focus.bound_m;
+    });
+  }
   // The build pairs every two pieces: quadratic, so refuse what cannot finish.
   if (m.pieces.size() > kMaxPieces) {
     throw InputError("the tangent graph would pair " + std::to_string(m.pieces.size()) +

@@ -79,11 +79,19 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   std::vector<std::size_t> lattice_cells;
   if (grid.active()) lattice_cells = add_lattice_points(grid);
   graph_ = PlanningGraph(corners_.size() + 2);
+  // The corners a pair may use: an edge the focus keeps has both ends in its
+  // ellipse (triangle inequality), and the reduced graph bends at convex
+  // corners only. Filtering once keeps the pair loop to these.
+  std::vector<std::size_t> usable;
   for (std::size_t i = 0; i < n; ++i) {
+    if (variant_ == VisibilityVariant::reduced && !corners_[i].convex) continue;
+    if (focus_.keeps_point(corners_[i].p)) usable.push_back(i);
+  }
+  for (std::size_t ui = 0; ui < usable.size(); ++ui) {
+    const std::size_t i = usable[ui];
     const Corner& a = corners_[i];
-    if (variant_ == VisibilityVariant::reduced && !a.convex) continue;
-    if (!focus_.keeps_point(a.p)) continue;
-    for (std::size_t j = i + 1; j < n; ++j) {
+    for (std::size_t uj = ui + 1; uj < usable.size(); ++uj) {
+      const std::size_t j = usable[uj];
       const Corner& b = corners_[j];
       if (!focus_.keeps_segment(a.p, b.p)) continue;
       if (variant_ == VisibilityVariant::reduced &&

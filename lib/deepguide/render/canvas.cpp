@@ -205,6 +205,30 @@ void Canvas::fill_rings(const std::vector<std::vector<Vec2>>& rings, const Rgba&
   cairo_set_fill_rule(impl_->cr, CAIRO_FILL_RULE_WINDING);
 }
 
+void Canvas::hatch_rings(const std::vector<std::vector<Vec2>>& rings, const Stroke& stroke, double spacing_px) {
+  if (rings.empty() || !(spacing_px > 0.0)) return;
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  for (const auto& ring : rings) {
+    for (const Vec2& p : ring) {
+      x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y()), x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+    }
+  }
+  if (!(x1 > x0) || !(y1 > y0)) return;
+  cairo_save(impl_->cr);
+  for (const auto& ring : rings) impl_->path(ring, true);
+  cairo_set_fill_rule(impl_->cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_clip(impl_->cr);
+  // Lines at 45 degrees (down-right), `spacing_px` apart, across the rings' box.
+  const double span = (x1 - x0) + (y1 - y0);
+  for (double c = std::floor((x0 - y1) / spacing_px) * spacing_px; c <= x1 - y0 + spacing_px; c += spacing_px) {
+    cairo_move_to(impl_->cr, c + y0, y0);
+    cairo_line_to(impl_->cr, c + y0 + span, y0 + span);
+  }
+  impl_->apply(stroke);
+  cairo_stroke(impl_->cr);
+  cairo_restore(impl_->cr);
+}
+
 void Canvas::stroke_polyline(const std::vector<Vec2>& points, const Stroke& stroke, bool closed) {
   if (points.size() < 2) return;
   impl_->path(points, closed);

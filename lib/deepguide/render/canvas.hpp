@@ -125,6 +125,8 @@ class Canvas {
   void fill_rings(const std::vector<std::vector<Vec2>>& rings, const Rgba& color);
   /// Strokes a polyline (closed: back to the first point).
   void stroke_polyline(const std::vector<Vec2>& points, const Stroke& stroke, bool closed = false);
+  /// Parallel diagonal lines `spacing_px` apart inside the rings (even-odd, holes left clear).
+  void hatch_rings(const std::vector<std::vector<Vec2>>& rings, const Stroke& stroke, double spacing_px);
   /// Strokes many separate segments as one path.
   void stroke_segments(const std::vector<std::pair<Vec2, Vec2>>& segments, const Stroke& stroke);
   /// A closed polygon, filled and/or outlined.

@@ -20,6 +20,9 @@
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/render/enc_layer.hpp"
+#include "deepguide/world/enc_cells.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/s57_chart.hpp"
 
 namespace deepguide {
@@ -204,7 +207,8 @@ struct Scene {
   const ChartStyle& style = options.style;
   std::vector<RasterSource> rasters;
   std::vector<std::string> hazard_files;
-  std::vector<std::string> s57_files;
+  std::vector<std::string> enc_charts;  // S-57 cells, folders of cells, a prepared chart
+  std::optional<EncLayer> enc;
   ObstacleSet hazards;
   ObstacleSet obstacles;
   std::set<std::string> blocking;  // ids of hazards and obstacles the vehicle cannot pass over
@@ -221,6 +225,14 @@ struct Painter {
   double u = layout.unit;
 
   Vec2 px(const Vec2& w) const { return layout.view.to_pixel(w); }
+
+  // The depth band's tint of a charted depth d >= 0 (the shallowest band at 0).
+  Rgba band_color(double d) const {
+    if (layout.band_colors.empty()) return style.shallow;
+    const auto it = std::upper_bound(layout.band_edges.begin(), layout.band_edges.end(), d);
+    const std::size_t band = it == layout.band_edges.begin() ? 0 : static_cast<std::size_t>(it - layout.band_edges.begin()) - 1;
+    return layout.band_colors[std::min(band, layout.band_colors.size() - 1)];
+  }
 
   std::vector<std::vector<Vec2>> polygon_px(const BgPolygon& p) const {
     std::vector<std::vector<Vec2>> rings;
@@ -269,6 +281,11 @@ struct Painter {
       canvas.fill_rings(polygon_px(p.footprint), {style.no_go.r, style.no_go.g, style.no_go.b, 0.28});
     }
     if (!land.empty()) canvas.image(layout.map, w, h, land);
+    if (scene.enc) {
+      LabelPlacer placer;
+      draw_enc_layer(canvas, layout.view, *scene.enc, EncStyle{}, u,
+                     [&](double d) { return band_color(d); }, placer);
+    }
     for (const PolygonObstacle& p : scene.no_go) {
       for (const auto& ring : polygon_px(p.footprint)) {
         canvas.stroke_polyline(ring, Stroke{style.no_go, 1.2 * u, {}}, true);
@@ -353,6 +370,17 @@ struct Painter {
       std::snprintf(buf, sizeof buf, "no-go at %g m (+%g m)", options_depth(), scene.options.clearance_m);
       entries.push_back({{style.no_go.r, style.no_go.g, style.no_go.b, 0.30}, Stroke{style.no_go, 1.2 * u, {}}, buf});
     }
+    if (scene.enc) {
+      const EncStyle es;
+      entries.push_back({es.drying, Stroke{style.frame, 1.0 * u, {}}, "drying"});
+      entries.push_back({es.land, Stroke{es.land_edge, 1.0 * u, {}}, "land"});
+      if (scene.enc->no_go) {
+        char buf[120];
+        std::snprintf(buf, sizeof buf, "no-go and its edge at %g m (+%g m, zones of confidence)", options_depth(),
+                      scene.options.clearance_m);
+        entries.push_back({{es.no_go.r, es.no_go.g, es.no_go.b, 0.25}, Stroke{es.no_go, 1.6 * u, {}}, buf});
+      }
+    }
     if (!scene.hazards.empty()) entries.push_back({style.hazard, std::nullopt, "hazard"});
     if (!scene.obstacles.empty()) entries.push_back({style.obstacle, std::nullopt, "obstacle"});
     double ex = kLegendX * u;
@@ -425,9 +453,13 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   Scene scene(options);
   scene.has_depth = !std::isnan(options.depth_m);
   for (const std::string& f : options.charts) {
+    if (names_enc(f) || is_prepared_chart(f)) {
+      scene.enc_charts.push_back(f);
+      continue;
+    }
     switch (chart_kind(f)) {
       case ChartKind::raster: scene.rasters.push_back({f, inspect_bathymetry(f)}); break;
-      case ChartKind::s57: scene.s57_files.push_back(f); break;
+      case ChartKind::s57: scene.enc_charts.push_back(f); break;
       case ChartKind::vector: scene.hazard_files.push_back(f); break;
     }
   }
@@ -442,15 +474,16 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
                                    0.5 * (r.info.extent.south + r.info.extent.north));
       }
     }
-    if (!scene.s57_files.empty() && scene.s57_files.front() == first) return s57_local_frame(summarize_s57(first));
+    if (!scene.enc_charts.empty() && scene.enc_charts.front() == first) {
+      if (is_prepared_chart(first)) return load_obstacles({first}).frame;
+      return s57_local_frame(summarize_s57(find_enc_cells({first}).front().base));
+    }
     return load_obstacles({first}).frame;
   }();
   const ObstacleReadOptions read{frame.wkt(), ""};
   if (!scene.hazard_files.empty()) scene.hazards = load_obstacles(scene.hazard_files, read).obstacles;
-  for (const std::string& f : scene.s57_files) {
-    S57Hazards h = s57_hazards(f, frame);
-    for (auto& c : h.obstacles.ellipses) scene.hazards.ellipses.push_back(std::move(c));
-    for (auto& p : h.obstacles.polygons) scene.hazards.polygons.push_back(std::move(p));
+  if (!scene.enc_charts.empty()) {
+    scene.enc = read_enc_layer(scene.enc_charts, frame, options.depth_m, options.clearance_m);
   }
   if (!options.obstacles.empty()) scene.obstacles = load_obstacles(options.obstacles, read).obstacles;
   if (scene.has_depth) {
@@ -472,6 +505,7 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   // What the map shows: the rasters, the hazards and the obstacles.
   WorldBox content;
   for (const RasterSource& r : scene.rasters) content.extend(raster_box(r, frame));
+  if (scene.enc) content.extend(scene.enc->box());
   for (const ObstacleSet* set : {&scene.hazards, &scene.obstacles}) {
     for (const auto& c : set->ellipses) {
       content.extend(c.footprint.center - Vec2(c.footprint.a, c.footprint.a));
@@ -487,9 +521,9 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
 
   ChartLayout l;
   l.frame_id = frame.id();
-  l.extent = !options.extent.empty() ? options.extent
-             : scene.rasters.empty()  ? content.padded(0.05 * std::max(content.width(), content.height()))
-                                      : content;
+  l.extent = !options.extent.empty()                  ? options.extent
+             : scene.rasters.empty() && !scene.enc ? content.padded(0.05 * std::max(content.width(), content.height()))
+                                                    : content;
   l.width = options.width_px;
   l.unit = options.width_px / 1200.0;
   const double u = l.unit;
@@ -509,6 +543,14 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   Shading sh;
   sh.land = pack(options.style.land);
   sh.nodata = pack(options.style.nodata);
+  if (scene.enc && scene.rasters.empty() && scene.enc->max_depth_m > 0.0) {
+    sh.edges = band_edges(0.0, scene.enc->max_depth_m);
+    for (std::size_t i = 0; i + 1 < sh.edges.size(); ++i) {
+      l.band_colors.push_back(depth_band_color(options.style, i, sh.edges.size() - 1));
+      sh.colors.push_back(pack(l.band_colors.back()));
+    }
+    l.band_edges = sh.edges;
+  }
   if (!scene.rasters.empty()) {
     double lo = INFINITY, hi = -INFINITY;
     for (const RasterSource& r : scene.rasters) {

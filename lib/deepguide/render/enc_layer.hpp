@@ -1,0 +1,84 @@
+#pragma once
+// S-57 cells drawn as an ECDIS draws them, for the chart figure
+// (chart_scene.hpp): depth areas tinted by DRVAL1 (drying areas green), land,
+// structures, dangers as symbols by kind (rock: a cross, wreck: a hull,
+// obstruction: a dotted circle), soundings as numbers; with an operating
+// depth, the no-go hatched, its boundary drawn as the safety contour, and the
+// dangers and soundings shallower than the required depth in the no-go
+// colour. Labels (soundings, danger ids) are placed only where they collide
+// with no label already placed, shallowest first, so a cell with hundreds of
+// them stays legible.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deepguide/geometry/polygon.hpp"
+#include "deepguide/render/canvas.hpp"
+#include "deepguide/world/enc_no_go.hpp"
+
+namespace deepguide {
+
+struct EncLayer {
+  struct DepthArea {
+    BgMultiPolygon area;
+    double drval1;  ///< NaN: unknown
+  };
+  struct Danger {
+    std::string id, cls;
+    std::vector<Vec2> points;
+    BgMultiPolygon area;
+    std::vector<std::vector<Vec2>> lines;
+    double depth;  ///< VALSOU; NaN unknown
+  };
+  struct Sounding {
+    Vec2 at;
+    double depth;
+  };
+  std::vector<DepthArea> depth_areas;
+  BgMultiPolygon land;
+  BgMultiPolygon structure_areas;
+  std::vector<std::vector<Vec2>> structure_lines;
+  std::vector<Vec2> structure_points;
+  std::vector<Danger> dangers;
+  std::vector<Sounding> soundings;
+  BgMultiPolygon coverage;
+  std::optional<EncNoGo> no_go;  ///< with an operating depth
+  double max_depth_m = 0;        ///< deepest DRVAL1 (for the depth bands)
+
+  WorldBox box() const;  ///< the coverage's box in the frame
+};
+
+/// Reads the cells (files or folders) into `frame` for drawing; with a finite
+/// depth_m also their no-go. Throws what enc_no_go throws.
+EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame& frame, double depth_m,
+                        double clearance_m);
+
+struct EncStyle {
+  Rgba drying = rgb_hex(0xb8d3a3);
+  Rgba land = rgb_hex(0xf0e2bd);
+  Rgba land_edge = rgb_hex(0x9c8a5a);
+  Rgba structure = rgb_hex(0x5c5f66);
+  Rgba danger = rgb_hex(0x2b2d31);
+  Rgba no_go = rgb_hex(0xc2255c);       ///< hatching, the safety contour, dangers too shallow
+  Rgba sounding = rgb_hex(0x5b6b7c);
+};
+
+/// Rectangles of labels already on the map; a label goes where none overlaps.
+class LabelPlacer {
+ public:
+  explicit LabelPlacer(std::size_t max_labels = 400) : max_(max_labels) {}
+  /// True (and the box kept) when `box` overlaps no placed box.
+  bool place(const PixelRect& box);
+  std::size_t placed() const { return boxes_.size(); }
+
+ private:
+  std::size_t max_;
+  std::vector<PixelRect> boxes_;
+};
+
+/// Draws the layer; `depth_color(d)` tints a depth area of DRVAL1 d.
+void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& layer, const EncStyle& style,
+                    double unit, const std::function<Rgba(double)>& depth_color, LabelPlacer& labels);
+
+}  // namespace deepguide

@@ -1,0 +1,29 @@
+#pragma once
+// A planned route drawn over its charts (the chart figure, chart_scene.hpp,
+// with the route as overlay): what `plan --render` draws when the charts are
+// S-57 cells or a prepared chart, so the route is seen against depth areas,
+// the no-go hatching and the safety contour rather than against bare
+// obstacle outlines. The map shows the route's box, widened by a fifth of its
+// size (at least 1 km) on every side.
+
+#include <string>
+#include <vector>
+
+#include "deepguide/render/chart_scene.hpp"
+
+namespace deepguide {
+
+struct RouteOnChart {
+  std::vector<std::string> charts;
+  double depth_m = 0;
+  double clearance_m = 2.0;
+  std::string local_crs;  ///< the planning frame's id: the route's coordinates are in it
+  std::vector<Vec2> route;
+  std::string title;
+  int width_px = 1200;
+};
+
+/// Writes the figure (.png or .svg). Throws what render_chart throws.
+ChartLayout render_route_on_chart(const RouteOnChart& r, const std::string& path);
+
+}  // namespace deepguide
