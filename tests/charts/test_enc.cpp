@@ -11,6 +11,8 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <boost/geometry/algorithms/correct.hpp>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -19,9 +21,11 @@
 #include <set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/planner.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/enc_route_check.hpp"
+#include "deepguide/world/enc_sea_floor.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
@@ -316,6 +320,81 @@ TEST(EncNoGo, PlannersPolygonsCoverEveryNoGoFeature) {
   }
 }
 
+
+// On a part of the cell small enough for the seed's full visibility graph,
+// the reduced graph (what plan uses) finds the same route, and both lie
+// within the zone polygons' tolerance of the exact optimum (the tangent
+// graph along the zones' true boundaries).
+TEST(EncNoGo, ClippedPartRoutesMatchTheFullGraphAndTheExactOptimum) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  const EncNoGo no_go = enc_no_go({path}, std::nullopt, at_depth(5.0));
+  const LocalFrame& frame = no_go.frame;
+  const Vec2 lo = frame.from_lonlat(-76.42, 38.54), hi = frame.from_lonlat(-76.36, 38.59);
+  OGRPolygon box;
+  OGRLinearRing ring;
+  for (const Vec2& c : {lo, Vec2(lo.x(), hi.y()), hi, Vec2(hi.x(), lo.y()), lo}) ring.addPoint(c.x(), c.y());
+  box.addRing(&ring);
+  ObstacleSet part;
+  for (const PolygonObstacle& p : no_go.obstacles.polygons) {
+    OGRPolygon op;
+    auto to_ring = [](const auto& r) {
+      OGRLinearRing out;
+      for (const BgPoint& q : r) out.addPoint(q.x(), q.y());
+      return out;
+    };
+    OGRLinearRing outer = to_ring(p.footprint.outer());
+    op.addRing(&outer);
+    for (const auto& in : p.footprint.inners()) {
+      OGRLinearRing r = to_ring(in);
+      op.addRing(&r);
+    }
+    std::unique_ptr<OGRGeometry> cut(op.Intersection(&box));
+    ASSERT_TRUE(cut);
+    auto take = [&](const OGRPolygon& q) {
+      PolygonObstacle piece;
+      piece.id = p.id + "#" + std::to_string(part.polygons.size());
+      auto copy = [](const OGRLinearRing& r, auto& dst) {
+        for (int i = 0; i < r.getNumPoints(); ++i) dst.push_back(BgPoint(r.getX(i), r.getY(i)));
+      };
+      copy(*q.getExteriorRing(), piece.footprint.outer());
+      for (int k = 0; k < q.getNumInteriorRings(); ++k) copy(*q.getInteriorRing(k), piece.footprint.inners().emplace_back());
+      boost::geometry::correct(piece.footprint);
+      part.polygons.push_back(std::move(piece));
+    };
+    if (wkbFlatten(cut->getGeometryType()) == wkbPolygon && !cut->IsEmpty()) take(*cut->toPolygon());
+    if (wkbFlatten(cut->getGeometryType()) == wkbMultiPolygon) {
+      for (const OGRPolygon* q : *cut->toMultiPolygon()) take(*q);
+    }
+  }
+  for (const EllipticCylinder& e : no_go.obstacles.ellipses) {
+    const Vec2 c = e.footprint.center;
+    if (c.x() > lo.x() - e.footprint.a && c.x() < hi.x() + e.footprint.a && c.y() > lo.y() - e.footprint.a &&
+        c.y() < hi.y() + e.footprint.a) {
+      part.ellipses.push_back(e);
+    }
+  }
+  ASSERT_FALSE(part.polygons.empty());
+  const PlanningProblem problem{frame.from_lonlat(-76.401, 38.575), frame.from_lonlat(-76.375, 38.5766), false};
+  double length[3] = {0, 0, 0};
+  const GraphKind kinds[3] = {GraphKind::visibility, GraphKind::visibility_full, GraphKind::tangent};
+  for (int k = 0; k < 3; ++k) {
+    PlannerOptions o;
+    o.margin = 5.0;
+    o.graph = kinds[k];
+    Planner planner(part, o);
+    const PlanOutcome out = planner.solve(problem);
+    ASSERT_TRUE(out.result.found) << to_string(kinds[k]) << ": " << out.result.message;
+    EXPECT_TRUE(out.check.safe) << to_string(kinds[k]) << ": " << out.check.describe();
+    length[k] = k == 2 ? out.result.exact_length_m : out.result.route.length();
+    std::printf("%-16s %.3f m, build %.1f ms, query %.2f ms\n", to_string(kinds[k]).c_str(), length[k],
+                out.result.stats.build_ms, out.result.stats.query_ms);
+  }
+  EXPECT_GT(length[0], (problem.goal - problem.start).norm() * 1.05) << "the straight line crosses the shoal";
+  EXPECT_NEAR(length[0], length[1], 1e-6 * length[1]) << "reduced and full graphs: the same shortest path";
+  EXPECT_GE(length[0], length[2] - 1e-6);
+  EXPECT_LE(length[0], length[2] * 1.002) << "within the zone polygons' 0.5 m tolerance of the exact optimum";
+}
+
 // ------------------------------------------------------------------ a test cell through GDAL's writer
 
 TEST(EncNoGo, ZoneOfConfidenceChangesTheVerdictOnA9p5mArea) {
@@ -465,6 +544,46 @@ TEST(PreparedChart, RoundTripKeepsTheNoGoAndRefusesAnotherDepth) {
                         "*.gpkg");
   expect_one_line_error([&] { read_prepared_chart(path, std::nullopt, 3.0, 2.0); }, "US5FL4DQ.000",
                         "expected a prepared chart");
+}
+
+
+// The sea floor routes in depth take from a cell: never deeper than the
+// depth area holding a point (less its least zone uncertainty, 0.5 m), land
+// above the surface, and a route in depth over it found and checked.
+TEST(EncSeaFloor, NeverDeeperThanTheChartAndLandIsDry) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32618");
+  const Vec2 channel = frame.from_lonlat(-76.41, 38.87);
+  const SeaFloor floor = enc_sea_floor({path}, frame, channel - Vec2(3000, 3000), channel + Vec2(3000, 3000), 10.0);
+  // Independently: the depth area holding the point (OGR, GEOS).
+  auto ds = open_ogr(path);
+  OGRPoint here(-76.41, 38.87);
+  double drval1 = std::nan("");
+  for (auto& f : *ds->GetLayerByName("DEPARE")) {
+    if (f->GetGeometryRef() != nullptr && f->GetGeometryRef()->Contains(&here)) drval1 = f->GetFieldAsDouble("DRVAL1");
+  }
+  ASSERT_TRUE(std::isfinite(drval1));
+  EXPECT_GT(floor.depth_at(channel), 0.0);
+  EXPECT_LE(floor.depth_at(channel), drval1 - 0.5 + 1e-9);
+  // A point on land (west shore of the bay at 38.87 N).
+  int land_nodes = 0;
+  for (std::size_t j = 0; j < floor.ny(); ++j) {
+    for (std::size_t i = 0; i < floor.nx(); ++i) land_nodes += floor.node_depth(i, j) < 0.0;
+  }
+  EXPECT_GT(land_nodes, 0);
+  expect_one_line_error([&] { enc_sea_floor({path}, frame, channel, channel, 10.0); }, "sea floor", "box");
+  expect_one_line_error([&] { enc_sea_floor({path}, frame, channel - Vec2(1, 1), channel, 0.0); }, "spacing", "> 0");
+}
+
+TEST(EncSeaFloor, RouteInDepthOverACell) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  ScratchDir tmp;
+  const auto r = test::run_cli("plan --chart '" + path +
+                               "' --graph octree --depth 5 --from -76.41,38.87 --to -76.415,38.84 --min-cell 2 -o '" +
+                               tmp.file("r.geojson") + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GE(j["min_floor_gap_m"].get<double>(), 2.0 - 1e-9) << r.out;
 }
 
 // ------------------------------------------------------------------ the command line

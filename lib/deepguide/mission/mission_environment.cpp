@@ -6,6 +6,9 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
+#include "deepguide/world/enc_cells.hpp"
+#include "deepguide/world/enc_sea_floor.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/water_volume.hpp"
@@ -17,10 +20,12 @@ MissionEnvironment load_environment(const Mission& mission) {
   if (!mission.obstacles.empty()) {
     env.obstacles = load_obstacles(mission.obstacles, {mission.frame.id(), ""}).obstacles;
   }
-  std::vector<std::string> vectors;
+  std::vector<std::string> vectors, enc;
   std::string raster;
   for (const std::string& path : mission.charts) {
-    if (chart_kind(path) != ChartKind::raster) {
+    if (names_enc(path) || (!is_prepared_chart(path) && chart_kind(path) == ChartKind::s57)) {
+      enc.push_back(path);  // S-57 cells: the sea floor they chart (enc_sea_floor.hpp)
+    } else if (chart_kind(path) != ChartKind::raster) {
       vectors.push_back(path);
     } else if (raster.empty()) {
       raster = path;
@@ -36,6 +41,20 @@ MissionEnvironment load_environment(const Mission& mission) {
                                   charted.obstacles.ellipses.end());
     env.obstacles.polygons.insert(env.obstacles.polygons.end(), charted.obstacles.polygons.begin(),
                                   charted.obstacles.polygons.end());
+  }
+  if (!raster.empty() && !enc.empty()) {
+    throw InputError(mission.source + ": environment.charts: expected one sea floor, got a bathymetry raster and S-57 "
+                     "cells");
+  }
+  if (!enc.empty()) {
+    Vec2 lo = mission.start, hi = mission.start;
+    for (const TrackPoint& p : plan_polyline(expand_mission(mission, env.obstacles))) {
+      lo = lo.cwiseMin(p.xy);
+      hi = hi.cwiseMax(p.xy);
+    }
+    const Vec2 pad = Vec2::Constant(200.0);
+    EncNoGoOptions options;
+    env.floor = std::make_shared<const SeaFloor>(enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0, options));
   }
   if (!raster.empty()) {
     // The box around everything the plan visits (survey turns reach past

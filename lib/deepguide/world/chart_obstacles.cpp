@@ -56,11 +56,9 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
   }
   if (!enc.empty()) {
     if (!has_depth) {
-      // Missions and routes in depth have no single depth, and a sea floor from the depth areas and
-      // soundings is not built yet: refuse rather than plan on the hazards alone (docs/CHARTS.md).
       throw input_error({enc.front(), "", "--depth"},
-                        "an operating depth to judge an S-57 chart's depth areas by (missions and --graph octree "
-                        "do not read S-57 cells yet: give them a bathymetry raster)");
+                        "an operating depth to judge an S-57 chart's depth areas by (what plans in depth reads "
+                        "cells as a sea floor: enc_sea_floor.hpp)");
     }
     EncNoGoOptions o = options.enc;
     o.operating_depth_m = options.depth_m;

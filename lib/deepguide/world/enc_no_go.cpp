@@ -267,6 +267,16 @@ struct Builder {
     if (area.empty()) return;
     EncNoGoFeature n = base(c, f);
     n.charted_depth_m = z;
+    n.least_depth_m = z;
+    if (o.zone_of_confidence && std::isfinite(z) && z >= 0.0) {
+      // The worst zone the area meets (water no zone covers counts as unassessed).
+      double u = o.unassessed.depth_fixed_m + o.unassessed.depth_fraction * z;
+      for (std::size_t k : zones.meeting(area)) {
+        const ZocFigures f2 = zoc_figures(zones.catzoc[k], o);
+        u = std::max(u, f2.depth_fixed_m + f2.depth_fraction * z);
+      }
+      n.least_depth_m = z - u;
+    }
     if (std::isnan(z) || z < 0.0 || !o.zone_of_confidence) {
       if (!too_shallow(z, {})) {
         ++out.passable_by_class[f.cls];
@@ -330,6 +340,7 @@ struct Builder {
       EncNoGoFeature n = base(c, f);
       if (f.points.size() > 1) n.id += "#" + std::to_string(k + 1);
       n.charted_depth_m = z;
+      n.least_depth_m = o.zone_of_confidence ? least(z, zoc_figures(catzoc, o)) : z;
       n.reason = depth_reason(what, z, zi < 0 ? -1 : catzoc);
       n.point = f.points[k];
       n.radius_m = o.zone_of_confidence ? zoc_figures(catzoc, o).position_m : o.point_radius_m;
@@ -560,7 +571,7 @@ EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<Lo
     n.area = unknown_water;
     out.features.push_back(std::move(n));
   }
-  planning_obstacles(out, builder.tiles, options.simplify_tolerance_m);
+  if (options.planner_obstacles) planning_obstacles(out, builder.tiles, options.simplify_tolerance_m);
   return out;
 }
 

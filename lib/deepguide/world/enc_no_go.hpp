@@ -68,6 +68,9 @@ struct EncNoGoOptions {
   bool apply_updates = true;
   /// How far the planners' polygons may lie outside the exact no-go (m, >= 0; 0 = exact).
   double simplify_tolerance_m = 1.0;
+  /// Merge the features into the planners' obstacles (EncNoGo::obstacles); off for callers that
+  /// only want the features (the sea floor, enc_sea_floor.hpp).
+  bool planner_obstacles = true;
 };
 
 /// One feature (or part of one) that is no-go, with why.
@@ -78,6 +81,9 @@ struct EncNoGoFeature {
   long long rcid = 0;
   std::string reason;  ///< e.g. "DRVAL1 3.6 m, least 2.5 m at CATZOC B, < 10 m"
   double charted_depth_m = std::numeric_limits<double>::quiet_NaN();  ///< DRVAL1, VALSOU or sounding; NaN if none
+  /// The charted depth less the depth uncertainty of its zone of confidence
+  /// (an area: the worst zone it meets); NaN for what is no-go at any depth.
+  double least_depth_m = std::numeric_limits<double>::quiet_NaN();
   BgMultiPolygon area;        ///< areas, and line strips; empty for a point
   std::optional<Vec2> point;  ///< a point hazard: a disc of radius_m around it
   double radius_m = 0;
