@@ -12,6 +12,9 @@ runs="${2:-7}"
 cli="$build/apps/deepguide"
 cell="$root/../shared/data/real/noaa-enc-US4MD81M/US4MD81M.000"
 [ -f "$cell" ] || { echo "enc_bench: $cell is absent" >&2; exit 1; }
+# From the north end of the cell to its south end (56 km apart), in water deep enough at every depth below.
+from=-76.39,38.95
+to=-76.36,38.45
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 
@@ -27,11 +30,11 @@ for depth in 1 5 8; do
   "$cli" chart prepare "$cell" --depth "$depth" -o "$tmp/a$depth.gpkg" >/dev/null
   : >"$tmp/cell"; : >"$tmp/gpkg"
   for _ in $(seq "$runs"); do
-    timed "$cli" plan --chart "$cell" --depth "$depth" --from -76.41,38.87 --to -76.35,38.60 -o "$tmp/r.geojson" >>"$tmp/cell"
-    timed "$cli" plan --chart "$tmp/a$depth.gpkg" --depth "$depth" --from -76.41,38.87 --to -76.35,38.60 -o "$tmp/r2.geojson" >>"$tmp/gpkg"
+    timed "$cli" plan --chart "$cell" --depth "$depth" --from "$from" --to "$to" -o "$tmp/r.geojson" >>"$tmp/cell"
+    timed "$cli" plan --chart "$tmp/a$depth.gpkg" --depth "$depth" --from "$from" --to "$to" -o "$tmp/r2.geojson" >>"$tmp/gpkg"
   done
-  length=$("$cli" plan --chart "$tmp/a$depth.gpkg" --depth "$depth" --from -76.41,38.87 --to -76.35,38.60 --json |
-    sed -n 's/.*"length_m": \([0-9.]*\).*/\1/p' | head -1)
+  length=$("$cli" plan --chart "$tmp/a$depth.gpkg" --depth "$depth" --from "$from" --to "$to" --json |
+    python3 -c 'import json, sys; print("%.1f" % json.load(sys.stdin)["length_m"])')
   row() {  # file -> "median (min..max) | peak MiB"
     local m lo hi rss
     m=$(cut -d' ' -f1 "$1" | median); lo=$(cut -d' ' -f1 "$1" | sort -g | head -1); hi=$(cut -d' ' -f1 "$1" | sort -g | tail -1)

@@ -444,7 +444,7 @@ TEST(EncCells, BrokenInputIsOneLineEach) {
   fs::copy_file(src / "US4MD81M.001", cut / "US4MD81M.001");
   fs::resize_file(cut / "US4MD81M.001", fs::file_size(cut / "US4MD81M.001") / 2);
   expect_one_line_error([&] { enc_no_go({(cut / "US4MD81M.000").string()}, std::nullopt, at_depth(5.0)); },
-                        "US4MD81M.001", "expected update files");
+                        "US4MD81M.001", "expected a complete S-57 update");
   // A file named .000 that is not S-57.
   const fs::path fake = tmp.path() / "FAKE.000";
   std::ofstream(fake) << "{\"type\": \"FeatureCollection\", \"features\": []}\n";
@@ -584,6 +584,33 @@ TEST(EncSeaFloor, RouteInDepthOverACell) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GE(j["min_floor_gap_m"].get<double>(), 2.0 - 1e-9) << r.out;
+}
+
+
+TEST(EncSeaFloor, MissionOnACell) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  ScratchDir tmp;
+  const std::string yaml = tmp.file("bay.yaml");
+  std::ofstream(yaml) << "name: channel transit\nenvironment:\n  charts: ['" << path
+                      << "']\nsafety:\n  margin_m: 5\n  vertical_clearance_m: 2\n"
+                         "start: {lon: -76.41, lat: 38.87, depth_m: 0}\nmanoeuvres:\n  - track:\n      depth_m: 5\n"
+                         "      speed_kn: 3\n      waypoints:\n        - {lon: -76.415, lat: 38.84}\n"
+                         "        - {lon: -76.425, lat: 38.80}\n";
+  const auto planned = test::run_cli("mission plan '" + yaml + "'");
+  EXPECT_EQ(planned.exit_code, 0) << planned.err;
+  EXPECT_NE(planned.out.find("check            safe"), std::string::npos)
+      << planned.out;
+  // A waypoint over a 3 m bank: refused with its place.
+  std::string text;
+  {
+    std::ifstream in(yaml);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  text.replace(text.find("-76.425"), 7, "-76.400");
+  std::ofstream(yaml) << text;
+  const auto shoal = test::run_cli("mission check '" + yaml + "'");
+  EXPECT_EQ(shoal.exit_code, 1) << shoal.out;
+  EXPECT_NE(shoal.err.find("expected water deeper than the manoeuvre's 5.0 m"), std::string::npos) << shoal.err;
 }
 
 // ------------------------------------------------------------------ the command line

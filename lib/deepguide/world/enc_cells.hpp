@@ -9,7 +9,9 @@
 //   reader reports that).
 // - Updates are the files BASE.001, BASE.002, ... beside the base cell (same
 //   stem, any case). They must run 1, 2, ..., N without a gap: a missing
-//   number is an error naming the first file past the gap. GDAL applies the
+//   number is an error naming the first file past the gap. Each must be a
+//   whole ISO 8211 file (its records' lengths add up to its size): one cut
+//   short is an error naming it, before GDAL sees it. GDAL applies the
 //   sequence when the cell is opened; the reader then checks that the cell's
 //   DSID_UPDN reached N (a damaged update stops GDAL's sequence silently).
 // - Cells are returned sorted by path, each once (a cell named twice, or
