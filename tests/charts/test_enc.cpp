@@ -659,5 +659,42 @@ TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
   EXPECT_TRUE(nlohmann::json::parse(passed.out)["safe"].get<bool>());
 }
 
+TEST(EncCli, BadChartsAreOneLineAndExitOne) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  DEEPGUIDE_REAL_FILE_OR_SKIP(key_west, kKeyWest);
+  ScratchDir tmp;
+  namespace fs = std::filesystem;
+  const fs::path src = fs::path(path).parent_path();
+  const fs::path gap = tmp.path() / "gap";
+  fs::create_directories(gap);
+  for (const char* ext : {".000", ".001", ".003"}) {
+    fs::copy_file(src / ("US4MD81M" + std::string(ext)), gap / ("US4MD81M" + std::string(ext)));
+  }
+  const fs::path fake = tmp.path() / "FAKE.000";
+  std::ofstream(fake) << "not a chart\n";
+  const fs::path empty = tmp.path() / "empty";
+  fs::create_directories(empty);
+  const std::string no_depare = (tmp.path() / "NODEPARE.000").string();
+  write_edited_cell(key_west, no_depare, {"M_COVR", "LNDARE"}, [](const std::string&, OGRFeature&) {});
+  const std::string straight = tmp.file("straight.geojson");
+  std::ofstream(straight) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},)"
+                          << R"("geometry":{"type":"LineString","coordinates":[[-76.45,38.45],[-76.42,38.55]]}}]})";
+  for (const auto& [chart, says] : std::vector<std::pair<std::string, std::string>>{
+           {(gap / "US4MD81M.000").string(), "expected update 2"},
+           {no_depare, "DEPARE"},
+           {fake.string(), "expected an S-57 ENC cell"},
+           {empty.string(), "found none"}}) {
+    for (const std::string& cmd : {"check route '" + straight + "' --chart '" + chart + "' --depth 5",
+                                   "plan --chart '" + chart + "' --depth 5 --from -76.41,38.87 --to -76.35,38.60",
+                                   "chart prepare '" + chart + "' --depth 5 -o '" + tmp.file("x.gpkg") + "'"}) {
+      const auto r = test::run_cli(cmd);
+      EXPECT_EQ(r.exit_code, 1) << cmd << "\n" << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << cmd << "\n" << r.err;
+      EXPECT_NE(r.err.find(says), std::string::npos) << cmd << "\n" << r.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(tmp.file("x.gpkg"))) << "no half-written prepared chart";
+}
+
 }  // namespace
 }  // namespace deepguide
