@@ -496,6 +496,12 @@ TEST(EncNoGo, SeveralCellsLetTheBetterScaleWin) {
   for (const EncNoGoFeature& f : both.features) from_coarse += f.cell == "COARSE";
   EXPECT_EQ(from_coarse, 0u) << "the coarse cell covers nothing the fine one does not";
   EXPECT_EQ(both.no_go_by_class.at("DEPARE"), alone.no_go_by_class.at("DEPARE"));
+  // The same cell from two folders: one would clip the other.
+  const std::filesystem::path copy = tmp.path() / "copy";
+  std::filesystem::create_directories(copy);
+  std::filesystem::copy_file(path, copy / "US5FL4DQ.000");
+  expect_one_line_error([&] { enc_no_go({path, (copy / "US5FL4DQ.000").string()}, std::nullopt, at_depth(5.0)); },
+                        "US5FL4DQ.000", "expected each cell once");
 }
 
 
@@ -544,6 +550,11 @@ TEST(PreparedChart, RoundTripKeepsTheNoGoAndRefusesAnotherDepth) {
                         "*.gpkg");
   expect_one_line_error([&] { read_prepared_chart(path, std::nullopt, 3.0, 2.0); }, "US5FL4DQ.000",
                         "expected a prepared chart");
+  // Other options than it was prepared with are refused too.
+  EncNoGoOptions exact = at_depth(3.0);
+  exact.zone_of_confidence = false;
+  expect_one_line_error([&] { chart_no_go({gpkg}, std::nullopt, exact); }, "area.gpkg", "prepared with zones of confidence");
+  EXPECT_EQ(chart_no_go({gpkg}, std::nullopt, o).features.size(), made.features.size());
 }
 
 

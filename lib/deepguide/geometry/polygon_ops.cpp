@@ -30,7 +30,9 @@ BgMultiPolygon simplify_outward(const BgPolygon& exact, double tol) {
   BgMultiPolygon simple;
   bg::simplify(grown, simple, 0.45 * tol);
   if (!simple.empty() && bg::is_valid(simple) && bg::covered_by(exact, simple)) return simple;
-  return grown;  // DP broke a ring (self-touching, collapsed): the buffer itself keeps both promises
+  // DP broke a ring (self-touching, collapsed): the buffer itself keeps both promises, when it is whole.
+  if (!grown.empty() && bg::covered_by(exact, grown)) return grown;
+  return BgMultiPolygon{exact};  // the overlay failed: the exact polygon, never less
 }
 
 std::vector<BgPolygon> merge_overlapping(std::vector<BgPolygon> polys) {

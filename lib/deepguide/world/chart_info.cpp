@@ -9,12 +9,12 @@
 #include <filesystem>
 
 #include "deepguide/core/error.hpp"
-#include "deepguide/geometry/polygon_ops.hpp"
 #include "deepguide/geometry/safety_zone.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
+#include "deepguide/world/no_go_union.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/obstacle_summary.hpp"
 
@@ -160,7 +160,9 @@ void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
       }
     }
     s.area_m2 = 0.0;
-    for (const BgPolygon& p : merge_overlapping(std::move(areas))) s.area_m2 += boost::geometry::area(p);
+    std::vector<const BgPolygon*> parts;
+    for (const BgPolygon& p : areas) parts.push_back(&p);
+    for (const BgPolygon& p : union_no_go({}, parts)) s.area_m2 += boost::geometry::area(p);
     s.polygons = no_go.obstacles.polygons.size();
     s.vertices = no_go.vertices;
     s.no_go_by_class = no_go.no_go_by_class;

@@ -318,6 +318,25 @@ struct Builder {
         no_go = std::move(next);
       }
     }
+    // Overlays of areas sharing edges with the zones are where Boost can go wrong: the no-go
+    // must hold what it is made of (the area less the passing zones' parts, or the failing
+    // zones' parts); if it falls short by more than a square metre, the whole area is no-go.
+    double expected = 0.0;
+    if (unassessed_fails) {
+      expected = bg::area(area);
+      for (std::size_t k : passing) {
+        BgMultiPolygon part;
+        bg::intersection(area, zones.polys[k], part);
+        expected -= bg::area(part);
+      }
+    } else {
+      for (std::size_t k : failing) {
+        BgMultiPolygon part;
+        bg::intersection(area, zones.polys[k], part);
+        expected += bg::area(part);
+      }
+    }
+    if (bg::area(no_go) < expected - 1.0) no_go = area;
     if (no_go.empty() || bg::area(no_go) <= 0.0) {
       ++out.passable_by_class[f.cls];
       return;
@@ -527,6 +546,16 @@ EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<Lo
     if (it == c.layer_counts.end() || it->second == 0) {
       throw InputError(printable(c.path, 240) + ": expected depth areas (DEPARE) to tell deep water from shallow, "
                        "found none (not a navigational ENC?)");
+    }
+  }
+  // One cell twice (two editions, or copies in two folders) would have one clip the other.
+  for (std::size_t i = 0; i < read.cells.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (read.cells[i].name == read.cells[j].name) {
+        throw InputError(printable(read.cells[i].path, 240) + ": expected each cell once, got " + read.cells[i].name +
+                         " (edition " + read.cells[i].edition + ") and " + printable(read.cells[j].path, 240) +
+                         " (edition " + read.cells[j].edition + "): give one of them");
+      }
     }
   }
   // Best scale first: a smaller DSPM_CSCL, then a higher usage band, then the name.

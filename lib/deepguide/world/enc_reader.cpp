@@ -236,7 +236,16 @@ void read_features(OpenCell& oc, const ToFrame& to_frame, const EncReadRequest& 
     for (auto& f : *layer) {
       ++count;
       const OGRGeometry* g = f->GetGeometryRef();
-      if (g == nullptr || g->IsEmpty()) continue;
+      if (g == nullptr || g->IsEmpty()) {
+        // A feature whose record says it has a point, line or area (PRIM 1-3) that GDAL could not
+        // assemble would vanish from the no-go: refuse the cell rather than plan on part of it.
+        const int prim = int_field(*f, "PRIM");
+        if (asked && prim >= 1 && prim <= 3) {
+          throw InputError(feature_where(c.path, cls, int_field(*f, "RCID")) +
+                           ": expected a geometry GDAL's S57 driver can assemble, got none");
+        }
+        continue;
+      }
       OGREnvelope e;
       g->getEnvelope(&e);
       all.Merge(e);

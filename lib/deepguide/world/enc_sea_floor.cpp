@@ -60,6 +60,7 @@ SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame&
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  if (mem == nullptr) throw InputError("sea floor: GDAL has no MEM driver");
   GDALDatasetUniquePtr ds(
       mem->Create("", static_cast<int>(nx), static_cast<int>(ny), 1, GDT_Float64, nullptr));
   if (!ds) throw InputError("sea floor: GDAL could not make a grid of " + std::to_string(nx * ny) + " nodes");
@@ -79,8 +80,11 @@ SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame&
     if (f.cls == "M_COVR") continue;  // unknown water stays without data
     const double value = std::isnan(f.least_depth_m) ? kLand : f.least_depth_m;
     if (f.point) {
+      // A 32-gon whose chords lie outside the disc (radius / cos(pi / 32)).
       OGRPoint c(f.point->x(), f.point->y());
-      burns.push_back({std::unique_ptr<OGRGeometry>(c.Buffer(f.radius_m, 8)), value});
+      std::unique_ptr<OGRGeometry> disc(c.Buffer(f.radius_m / std::cos(M_PI / 32.0), 8));
+      if (!disc) throw InputError("sea floor: GEOS could not make the disc of " + f.id);
+      burns.push_back({std::move(disc), value});
     } else if (!f.area.empty()) {
       burns.push_back({ogr_area(f.area), value});
     }
@@ -90,7 +94,6 @@ SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame&
   std::vector<OGRGeometryH> geoms;
   std::vector<double> values;
   for (const Burn& b : burns) {
-    if (!b.geometry) continue;
     geoms.push_back(OGRGeometry::ToHandle(b.geometry.get()));
     values.push_back(b.value);
   }

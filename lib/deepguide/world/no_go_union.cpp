@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <boost/geometry.hpp>
 #include <boost/geometry/algorithms/point_on_surface.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <memory>
 #include <stdexcept>
 
+#include "deepguide/geometry/polygon_locator.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -75,8 +78,10 @@ void from_ogr(const OGRGeometry& g, std::vector<BgPolygon>& out) {
   }
 }
 
-// The faces of the tiles' union, from the edges no two tiles share.
-void tile_faces(const std::vector<const BgPolygon*>& tiles, OGRMultiPolygon& into) {
+// The faces of the tiles' union, from the edges no two tiles share. Returns
+// false when a face cannot be told inside or out (the caller then joins the
+// tiles by a plain GEOS union).
+bool tile_faces(const std::vector<const BgPolygon*>& tiles, OGRMultiPolygon& into) {
   std::vector<Segment> edges;
   for (const BgPolygon* t : tiles) {
     add_edges(t->outer(), edges);
@@ -95,14 +100,14 @@ void tile_faces(const std::vector<const BgPolygon*>& tiles, OGRMultiPolygon& int
     }
     i = j;
   }
-  if (boundary.IsEmpty()) return;
+  if (boundary.IsEmpty()) return tiles.empty();
   // Node the edges (a tile corner lying on another tile's edge), then form
   // faces. A union with a part of itself nodes the whole (one with an empty
   // geometry may be returned as it is).
   OgrPtr noded = owned(boundary.Union(boundary.getGeometryRef(0)));
-  if (!noded) throw std::runtime_error("GEOS could not node the no-go boundary");
+  if (!noded) return false;
   OgrPtr faces = owned(noded->Polygonize());
-  if (!faces) throw std::runtime_error("GEOS could not polygonize the no-go boundary");
+  if (!faces) return false;
 
   using Item = std::pair<BgBox, std::size_t>;
   std::vector<Item> boxes;
@@ -111,20 +116,47 @@ void tile_faces(const std::vector<const BgPolygon*>& tiles, OGRMultiPolygon& int
   for (const OGRGeometry* face : *faces->toGeometryCollection()) {
     std::vector<BgPolygon> as_bg;
     from_ogr(*face, as_bg);
-    if (as_bg.size() != 1) continue;
-    // (OGR's PointOnSurface fails on GEOS's polygonizer output here; Boost's works.)
-    BgPoint q;
+    if (as_bg.size() != 1) return false;
+    // (OGR's PointOnSurface fails on GEOS's polygonizer output here; Boost's works, but
+    // may leave the point unset: it must land strictly inside the face.)
+    BgPoint q(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
     try {
       bg::point_on_surface(as_bg.front(), q);
     } catch (const std::exception&) {
-      continue;  // a degenerate face: no interior
+      return false;
     }
+    if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !bg::within(q, as_bg.front())) return false;
     std::vector<Item> hits;
     tree.query(bgi::intersects(q), std::back_inserter(hits));
     const bool kept =
         std::any_of(hits.begin(), hits.end(), [&](const Item& h) { return bg::covered_by(q, *tiles[h.second]); });
     if (kept) into.addGeometry(face);
   }
+  return true;
+}
+
+// Every tile lies in the union: a point inside each is covered by a polygon of it.
+bool covers_every_tile(const std::vector<BgPolygon>& result, const std::vector<const BgPolygon*>& tiles) {
+  std::vector<const BgPolygon*> ptrs;
+  for (const BgPolygon& p : result) ptrs.push_back(&p);
+  const PolygonLocator locator(ptrs);
+  for (const BgPolygon* t : tiles) {
+    BgPoint q(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+    try {
+      bg::point_on_surface(*t, q);
+    } catch (const std::exception&) {
+      return false;
+    }
+    if (!std::isfinite(q.x())) continue;  // a tile without interior adds no area
+    if (locator.covering(to_eigen(q)).empty()) return false;
+  }
+  return true;
+}
+
+OgrPtr cascaded(const OGRMultiPolygon& all) {
+  OgrPtr merged = owned(all.UnionCascaded());
+  if (!merged) throw std::runtime_error("GEOS could not join the no-go areas: " + gdal::QuietErrors::last_message());
+  return merged;
 }
 
 }  // namespace
@@ -133,16 +165,19 @@ std::vector<BgPolygon> union_no_go(const std::vector<const BgPolygon*>& tiles,
                                    const std::vector<const BgPolygon*>& others) {
   if (!OGRGeometryFactory::haveGEOS()) throw std::runtime_error("GDAL was built without GEOS: no polygon union");
   gdal::QuietErrors quiet;
-  OGRMultiPolygon all;
-  tile_faces(tiles, all);
-  for (const BgPolygon* p : others) add_to(all, *p);
   std::vector<BgPolygon> out;
-  if (all.IsEmpty()) return out;
-  OgrPtr merged = owned(all.UnionCascaded());
-  if (!merged) {
-    throw std::runtime_error("GEOS could not join the no-go areas: " + gdal::QuietErrors::last_message());
-  }
-  from_ogr(*merged, out);
+  OGRMultiPolygon all;
+  const bool faces_ok = tile_faces(tiles, all);
+  for (const BgPolygon* p : others) add_to(all, *p);
+  if (faces_ok && !all.IsEmpty()) from_ogr(*cascaded(all), out);
+  if (faces_ok && covers_every_tile(out, tiles)) return out;
+  // The edges did not tile cleanly (overlapping or duplicated tiles, a face of
+  // doubtful side): every area through GEOS, slower and sure.
+  OGRMultiPolygon plain;
+  for (const BgPolygon* p : tiles) add_to(plain, *p);
+  for (const BgPolygon* p : others) add_to(plain, *p);
+  out.clear();
+  if (!plain.IsEmpty()) from_ogr(*cascaded(plain), out);
   return out;
 }
 

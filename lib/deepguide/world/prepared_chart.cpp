@@ -211,6 +211,9 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
     if (n.cls != "M_COVR") ++out.no_go_by_class[n.cls];
     out.features.push_back(std::move(n));
   }
+  if (const std::string why = gdal::QuietErrors::last_message(); !why.empty()) {
+    throw InputError(shown(path) + ": expected a complete prepared chart, got: " + why);
+  }
   return out;
 }
 
@@ -226,7 +229,18 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
   if (!std::isfinite(options.operating_depth_m)) {
     throw InputError("--depth: expected the operating depth (m) the chart was prepared for");
   }
-  return read_prepared_chart(charts.front(), frame, options.operating_depth_m, options.vertical_clearance_m);
+  PreparedChartInfo info;
+  EncNoGo out =
+      read_prepared_chart(charts.front(), frame, options.operating_depth_m, options.vertical_clearance_m, &info);
+  if (info.zone_of_confidence != options.zone_of_confidence || info.restricted_areas != options.restricted_areas) {
+    auto flags = [](bool zoc, bool restricted) {
+      return std::string(zoc ? "zones of confidence" : "--no-zoc") + (restricted ? " and --restricted" : "");
+    };
+    throw InputError(shown(charts.front()) + ": prepared with " + flags(info.zone_of_confidence, info.restricted_areas) +
+                     ", expected " + flags(options.zone_of_confidence, options.restricted_areas) +
+                     ": prepare it again with these options");
+  }
+  return out;
 }
 
 }  // namespace deepguide
