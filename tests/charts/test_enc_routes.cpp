@@ -20,9 +20,12 @@
 #include <ogr_geometry.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <memory>
 #include <random>
 
 #include "deepguide/core/error.hpp"
