@@ -4,9 +4,9 @@
 # every route checked by the test's own OGR reading and GEOS geometry, none
 # refused while the test's own raster of free water connects the ends.
 # CI runs the same test with 15 pairs each (tests/charts/test_enc_routes.cpp).
-#   scripts/enc_routes.sh [PAIRS_PER_CASE]
+#   scripts/enc_routes.sh [PAIRS_PER_CASE [SEED_SHIFT]]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 build="$DEEPGUIDE_ROOT/build"
 deepguide_setup "$build"
-DEEPGUIDE_ENC_PAIRS="${1:-50}" "$build/tests/test_charts" --gtest_filter='EncRoutes.*'
+DEEPGUIDE_ENC_PAIRS="${1:-50}" DEEPGUIDE_ENC_SEED="${2:-0}" "$build/tests/test_charts" --gtest_filter='EncRoutes.*'

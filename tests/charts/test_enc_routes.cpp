@@ -12,7 +12,8 @@
 // depth as no-go), and water outside the coverage.
 //
 // Pairs: DEEPGUIDE_ENC_PAIRS per chart and depth (default 15; the issue's
-// 200-pair run is scripts/enc_routes.sh), a fifth under the sanitizers.
+// 200-pair run is scripts/enc_routes.sh), a fifth under the sanitizers;
+// DEEPGUIDE_ENC_SEED shifts the seeds.
 
 #include <gdal_alg.h>
 #include <gtest/gtest.h>
@@ -260,7 +261,9 @@ void run_case(const Case& c, unsigned seed) {
   const FreeRaster raster = free_raster(own, c.cell_m, kMargin + 2.5);
   const OwnCheck check(own);
 
-  std::mt19937 rng(seed);
+  // DEEPGUIDE_ENC_SEED shifts every case's seed: a claim holds only if a fresh seed confirms it.
+  const char* shift = std::getenv("DEEPGUIDE_ENC_SEED");
+  std::mt19937 rng(seed + (shift != nullptr ? static_cast<unsigned>(std::atoi(shift)) : 0u));
   std::vector<int> free_cells;
   for (int k = 0; k < raster.w * raster.h; ++k) {
     if (!raster.blocked[k]) free_cells.push_back(k);
