@@ -195,6 +195,7 @@ void register_plan(CLI::App& app) {
     for (const std::string& f : {o->render, o->render_profile}) {
       if (!f.empty()) image_format_for(f);  // before the work, not after
     }
+    if (!o->output.empty()) route_file_format_for(o->output);  // a route is GeoJSON: never under another name
     PlannerOptions options;
     options.margin = o->margin;
     options.tolerance = o->tolerance;
@@ -213,13 +214,14 @@ void register_plan(CLI::App& app) {
     if (o->obstacles.empty() && o->charts.empty()) {
       throw CLI::ValidationError("plan", "give --obstacles FILE... or --chart FILE... (or both)");
     }
-    // The local frame: --crs, else the UTM zone of the obstacles, else of the start.
+    // The local frame: --crs, else the UTM zone of the obstacles (when there are any), else of the start.
     std::optional<LocalFrame> frame_in_use;
     if (!o->frame.crs.empty()) frame_in_use = LocalFrame::from_user_crs(o->frame.crs);
     ObstacleSet obstacles;
     if (!o->obstacles.empty()) {
       LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
-      frame_in_use = loaded.frame;
+      // Files without an obstacle fix no frame: the start's zone does (below).
+      if (!loaded.obstacles.empty() || !o->frame.crs.empty()) frame_in_use = loaded.frame;
       obstacles = std::move(loaded.obstacles);
     }
     if (!frame_in_use) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -462,4 +463,63 @@ TEST(CliPlanOctree, BadInputIsOneLineAndExitOne) {
   const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --depth-band 5,50");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("--graph octree"), std::string::npos) << r.err;
+}
+
+// Vincenty's inverse on WGS 84 (m): the geodesic the frame's length is compared with.
+static double vincenty_m(double lon1, double lat1, double lon2, double lat2) {
+  const double a = 6378137.0, f = 1.0 / 298.257223563, b = a * (1.0 - f);
+  const double d2r = M_PI / 180.0;
+  const double L = (lon2 - lon1) * d2r;
+  const double U1 = std::atan((1.0 - f) * std::tan(lat1 * d2r)), U2 = std::atan((1.0 - f) * std::tan(lat2 * d2r));
+  double lambda = L, sin_s = 0, cos_s = 0, sigma = 0, cos2a = 0, cos2sm = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double sl = std::sin(lambda), cl = std::cos(lambda);
+    sin_s = std::hypot(std::cos(U2) * sl, std::cos(U1) * std::sin(U2) - std::sin(U1) * std::cos(U2) * cl);
+    cos_s = std::sin(U1) * std::sin(U2) + std::cos(U1) * std::cos(U2) * cl;
+    sigma = std::atan2(sin_s, cos_s);
+    const double sin_a = std::cos(U1) * std::cos(U2) * sl / sin_s;
+    cos2a = 1.0 - sin_a * sin_a;
+    cos2sm = cos_s - 2.0 * std::sin(U1) * std::sin(U2) / cos2a;
+    const double C = f / 16.0 * cos2a * (4.0 + f * (4.0 - 3.0 * cos2a));
+    const double next = L + (1.0 - C) * f * sin_a * (sigma + C * sin_s * (cos2sm + C * cos_s * (-1.0 + 2.0 * cos2sm * cos2sm)));
+    if (std::abs(next - lambda) < 1e-13) {
+      lambda = next;
+      break;
+    }
+    lambda = next;
+  }
+  const double u2 = cos2a * (a * a - b * b) / (b * b);
+  const double A = 1.0 + u2 / 16384.0 * (4096.0 + u2 * (-768.0 + u2 * (320.0 - 175.0 * u2)));
+  const double B = u2 / 1024.0 * (256.0 + u2 * (-128.0 + u2 * (74.0 - 47.0 * u2)));
+  const double ds = B * sin_s * (cos2sm + B / 4.0 * (cos_s * (-1.0 + 2.0 * cos2sm * cos2sm) -
+                                                    B / 6.0 * cos2sm * (-3.0 + 4.0 * sin_s * sin_s) *
+                                                        (-3.0 + 4.0 * cos2sm * cos2sm)));
+  return b * A * (sigma - ds);
+}
+
+// An obstacle file with nothing in it fixes no frame: the start's UTM zone does (issue 24).
+TEST(CliPlan, EmptyObstacleFileLeavesTheFrameToTheStart) {
+  ScratchDir dir;
+  const std::string empty = dir.write("empty.geojson", R"({"type":"FeatureCollection","features":[]})");
+  const auto r = run_cli("plan --obstacles '" + empty + "' --from 100.0,10.0 --to 100.05,10.02 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["crs"], "EPSG:32647");
+  const double geodesic = vincenty_m(100.0, 10.0, 100.05, 10.02);
+  // By hand: 0.02 deg of latitude is 2212 m and 0.05 deg of longitude at 10 N is 5482 m, 5911 m together.
+  EXPECT_NEAR(geodesic, 5911.3, 0.5);
+  EXPECT_NEAR(j["length_m"].get<double>(), geodesic, 1e-3 * geodesic);
+}
+
+// plan writes GeoJSON routes only: another extension is refused before the work, with no file.
+TEST(CliPlan, RouteFileOfAnotherFormatIsRefused) {
+  ScratchDir dir;
+  for (const char* name : {"route.gpx", "route.txt", "route.kml", "route"}) {
+    const std::string out = dir.file(name);
+    const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + out + "'");
+    EXPECT_EQ(r.exit_code, 1) << name << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("expected a route file named .geojson"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << name;
+  }
 }
