@@ -21,7 +21,6 @@
 #include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_sea_floor.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -72,27 +71,29 @@ void run_plan_in_depth(const DepthCommand& c) {
   ObstacleSet obstacles = c.obstacles;
   std::shared_ptr<const SeaFloor> floor;
   std::vector<std::string> vector_charts, enc_charts;
+  const auto [lo, hi] = depth_planning_area(c.start, c.goal, options);
+  const double slope = std::tan(options.octree.max_dive_deg * M_PI / 180.0);
+  const double spacing = options.octree.min_cell_m / std::min(1.0, slope);  // the smallest cell's width
   for (const std::string& path : c.charts) {
-    if (names_enc(path) || (!is_prepared_chart(path) && chart_kind(path) == ChartKind::s57)) {
+    if (names_enc(path)) {
       enc_charts.push_back(path);
       continue;
     }
-    if (chart_kind(path) != ChartKind::raster) {
+    const ChartKind kind = chart_kind(path);
+    if (kind == ChartKind::s57) {
+      enc_charts.push_back(path);
+      continue;
+    }
+    if (kind != ChartKind::raster) {
       vector_charts.push_back(path);
       continue;
     }
     if (floor) throw InputError(path + ": --graph octree: expected one bathymetry raster, got a second one");
-    const auto [lo, hi] = depth_planning_area(c.start, c.goal, options);
-    const double slope = std::tan(options.octree.max_dive_deg * M_PI / 180.0);
-    const double spacing = options.octree.min_cell_m / std::min(1.0, slope);  // the smallest cell's width
     floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(path, frame, lo, hi, spacing));
   }
   if (!enc_charts.empty()) {
     // S-57 cells: a floor never deeper than their depth areas, dangers and soundings (enc_sea_floor.hpp).
     if (floor) throw InputError(enc_charts.front() + ": --graph octree: expected one sea floor, got a raster and S-57 cells");
-    const auto [lo, hi] = depth_planning_area(c.start, c.goal, options);
-    const double slope = std::tan(options.octree.max_dive_deg * M_PI / 180.0);
-    const double spacing = options.octree.min_cell_m / std::min(1.0, slope);
     floor = std::make_shared<const SeaFloor>(enc_sea_floor(enc_charts, frame, lo, hi, std::max(spacing, 5.0)));
   }
   if (!vector_charts.empty()) {

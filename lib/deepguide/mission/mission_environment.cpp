@@ -8,7 +8,6 @@
 #include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_sea_floor.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/water_volume.hpp"
@@ -23,9 +22,10 @@ MissionEnvironment load_environment(const Mission& mission) {
   std::vector<std::string> vectors, enc;
   std::string raster;
   for (const std::string& path : mission.charts) {
-    if (names_enc(path) || (!is_prepared_chart(path) && chart_kind(path) == ChartKind::s57)) {
+    const ChartKind kind = names_enc(path) ? ChartKind::s57 : chart_kind(path);
+    if (kind == ChartKind::s57) {
       enc.push_back(path);  // S-57 cells: the sea floor they chart (enc_sea_floor.hpp)
-    } else if (chart_kind(path) != ChartKind::raster) {
+    } else if (kind != ChartKind::raster) {
       vectors.push_back(path);
     } else if (raster.empty()) {
       raster = path;
@@ -46,17 +46,7 @@ MissionEnvironment load_environment(const Mission& mission) {
     throw InputError(mission.source + ": environment.charts: expected one sea floor, got a bathymetry raster and S-57 "
                      "cells");
   }
-  if (!enc.empty()) {
-    Vec2 lo = mission.start, hi = mission.start;
-    for (const TrackPoint& p : plan_polyline(expand_mission(mission, env.obstacles))) {
-      lo = lo.cwiseMin(p.xy);
-      hi = hi.cwiseMax(p.xy);
-    }
-    const Vec2 pad = Vec2::Constant(200.0);
-    EncNoGoOptions options;
-    env.floor = std::make_shared<const SeaFloor>(enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0, options));
-  }
-  if (!raster.empty()) {
+  if (!enc.empty() || !raster.empty()) {
     // The box around everything the plan visits (survey turns reach past
     // the area, laps round an object), 200 m wider.
     Vec2 lo = mission.start, hi = mission.start;
@@ -65,7 +55,9 @@ MissionEnvironment load_environment(const Mission& mission) {
       hi = hi.cwiseMax(p.xy);
     }
     const Vec2 pad = Vec2::Constant(200.0);
-    env.floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0));
+    env.floor = std::make_shared<const SeaFloor>(
+        enc.empty() ? SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0)
+                    : enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0));
   }
   return env;
 }

@@ -268,10 +268,11 @@ struct Builder {
     EncNoGoFeature n = base(c, f);
     n.charted_depth_m = z;
     n.least_depth_m = z;
+    const std::vector<std::size_t> met = o.zone_of_confidence ? zones.meeting(area) : std::vector<std::size_t>{};
     if (o.zone_of_confidence && std::isfinite(z) && z >= 0.0) {
       // The worst zone the area meets (water no zone covers counts as unassessed).
       double u = o.unassessed.depth_fixed_m + o.unassessed.depth_fraction * z;
-      for (std::size_t k : zones.meeting(area)) {
+      for (std::size_t k : met) {
         const ZocFigures f2 = zoc_figures(zones.catzoc[k], o);
         u = std::max(u, f2.depth_fixed_m + f2.depth_fraction * z);
       }
@@ -289,7 +290,7 @@ struct Builder {
     }
     const bool unassessed_fails = too_shallow(z, o.unassessed);
     std::vector<std::size_t> failing, passing;
-    for (std::size_t k : zones.meeting(area)) {
+    for (std::size_t k : met) {
       (too_shallow(z, zoc_figures(zones.catzoc[k], o)) ? failing : passing).push_back(k);
     }
     if (passing.empty() && unassessed_fails) {
