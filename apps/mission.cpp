@@ -261,7 +261,7 @@ void register_mission(CLI::App& app) {
   });
 
   struct ExportCli {
-    std::string output, format;
+    std::string output, format, route_name;
     bool overwrite = false, as_written = false;
     double tolerance = 0.5;
   };
@@ -274,6 +274,7 @@ void register_mission(CLI::App& app) {
   exp->add_option("--format", e->format, "yaml (basic manoeuvres), geojson, gpx, kml, csv, plan (QGroundControl), "
                                          "moos (pHelmIvP .bhv), rtz (IEC 61174)");
   exp->add_flag("--overwrite", e->overwrite, "Replace the output file if it exists");
+  exp->add_option("--route-name", e->route_name, "RTZ routeName (default: the file's name without extension)");
   exp->add_flag("--as-written", e->as_written, "Export the plan as written, without mission control's changes");
   exp->add_option("--arc-tolerance", e->tolerance, "How far waypoints along arcs may cut inside them (m)")
       ->capture_default_str()
@@ -291,7 +292,7 @@ void register_mission(CLI::App& app) {
                    planned.resolutions.size());
     }
     const MissionPlan& plan = e->as_written ? l.plan : planned.plan;
-    export_plan(l.mission, plan, e->output, format, {e->tolerance, e->overwrite});
+    export_plan(l.mission, plan, e->output, format, {e->tolerance, e->overwrite, e->route_name});
     const std::size_t waypoints = export_waypoints(l.mission, plan, e->tolerance).size();
     std::printf("wrote %s (%s): %zu basic manoeuvres, %zu waypoints, %.0f m\n", e->output.c_str(),
                 to_string(format).c_str(), plan.basics.size(), waypoints, plan.length_m);

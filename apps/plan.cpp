@@ -1,5 +1,5 @@
 // deepguide plan --obstacles FILE... --from X,Y --to X,Y [--cost length|time|energy]
-//                [--current FILE | --current-const SPEED,DIR] [...] -o ROUTE.geojson [--json]
+//                [--current FILE | --current-const SPEED,DIR] [...] -o ROUTE.geojson|gpx|kml|rtz|csv|plan|bhv [--json]
 
 #include <cmath>
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
 #include "deepguide/planning/single_query.hpp"
+#include "deepguide/mission/route_export.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_on_chart.hpp"
 #include "deepguide/render/route_scene.hpp"
@@ -61,7 +62,7 @@ struct PlanOptions {
   std::string render_profile;
 };
 
-// ROUTE.geojson -> ROUTE_repair_K.geojson
+// ROUTE.gpx -> ROUTE_repair_K.gpx
 std::string repair_path(const std::string& output, std::size_t k) {
   const std::filesystem::path p(output);
   return (p.parent_path() / (p.stem().string() + "_repair_" + std::to_string(k) + p.extension().string())).string();
@@ -69,8 +70,10 @@ std::string repair_path(const std::string& output, std::size_t k) {
 
 // The cost model the options ask for: the vehicle's speeds and energy, the
 // current bound to the frame over the start-goal box, the departure time.
+VehicleParams vehicle_of(const PlanOptions& o) { return o.vehicle.empty() ? VehicleParams{} : read_vehicle_file(o.vehicle); }
+
 CostModel cost_model_of(const PlanOptions& o, const LocalFrame& frame, const PlanningProblem& problem) {
-  const VehicleParams vehicle = o.vehicle.empty() ? VehicleParams{} : read_vehicle_file(o.vehicle);
+  const VehicleParams vehicle = vehicle_of(o);
   CostModel m;
   m.kind = parse_cost_kind(o.cost);
   m.leg.energy = vehicle.energy;
@@ -126,7 +129,7 @@ void register_plan(CLI::App& app) {
       ->expected(1, -1);
   cmd->add_option("--from", o->from, "Start: lon,lat, or x,y in the --crs frame")->required();
   cmd->add_option("--to", o->to, "Goal: lon,lat, or x,y in the --crs frame")->required();
-  cmd->add_option("-o,--output", o->output, "Route file to write (GeoJSON)");
+  cmd->add_option("-o,--output", o->output, "Route file to write; its extension picks the format: .geojson, .gpx, .kml, .rtz, .csv, .plan, .bhv");
   add_frame_options(*cmd, o->frame);
   cmd->add_option("--margin", o->margin, "Safety margin to every obstacle (m)")->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
@@ -195,7 +198,9 @@ void register_plan(CLI::App& app) {
     for (const std::string& f : {o->render, o->render_profile}) {
       if (!f.empty()) image_format_for(f);  // before the work, not after
     }
-    if (!o->output.empty()) route_file_format_for(o->output);  // a route is GeoJSON: never under another name
+    // The route file's format from its name, before the work (a mission's .yaml is not a route).
+    const std::optional<ExportFormat> out_format =
+        o->output.empty() ? std::nullopt : std::optional<ExportFormat>(route_file_format(o->output));
     PlannerOptions options;
     options.margin = o->margin;
     options.tolerance = o->tolerance;
@@ -312,8 +317,12 @@ void register_plan(CLI::App& app) {
         if (r.found) row["length_m"] = r.cost;
         if (r.found && !o->output.empty()) {
           row["file"] = repair_path(o->output, k + 1);
-          write_route_geojson(row["file"], Route{r.route}, frame,
-                              {{"repair", k + 1}, {"along_m", r.along_m}, {"length_m", r.cost}});
+          RouteExportSettings settings;
+          settings.name = std::filesystem::path(row["file"].get<std::string>()).stem().string();
+          settings.margin_m = o->margin;
+          ExportRoute exported = export_route(Route{r.route}, frame, vehicle_of(*o), settings);
+          exported.properties = {{"repair", k + 1}, {"along_m", r.along_m}, {"length_m", r.cost}};
+          write_route_file(exported, row["file"], *out_format, {.overwrite = true});
         }
         repairs.push_back(row);
       }
@@ -406,7 +415,22 @@ void register_plan(CLI::App& app) {
       waypoints[i]["cum_energy_j"] = cum_energy;
       if (timed) waypoints[i]["eta"] = format_utc(model->depart_s + cum_time);
     }
-    if (!o->output.empty()) write_route_geojson(o->output, route, frame, summary, waypoints);
+    if (out_format) {
+      RouteExportSettings settings;
+      settings.name = std::filesystem::path(o->output).stem().string();
+      settings.depth_m = std::isnan(o->depth) ? 0.0 : o->depth;
+      for (const PricedLeg& leg : priced.legs) settings.leg_speeds_mps.push_back(leg.cost.speed_mps);
+      if (priced.feasible) {
+        for (const PricedLeg& leg : priced.legs) settings.leg_times_s.push_back(leg.cost.time_s);
+      }
+      settings.margin_m = o->margin;
+      if (!std::isnan(o->depth)) settings.safety_depth_m = o->depth + o->vertical_clearance;
+      if (timed) settings.depart_utc_s = model->depart_s;
+      ExportRoute exported = export_route(route, frame, vehicle_of(*o), settings);
+      exported.properties = summary;
+      exported.waypoint_properties = waypoints;
+      write_route_file(exported, o->output, *out_format, {.overwrite = true});
+    }
     summary["legs"] = legs;
     if (replay) {
       summary["repairs"] = repairs;

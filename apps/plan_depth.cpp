@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -13,7 +14,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/depth_planning.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/planning/route_io.hpp"
+#include "deepguide/mission/route_export.hpp"
 #include "deepguide/render/depth_profile.hpp"
 #include "deepguide/render/route_scene.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
@@ -139,7 +140,16 @@ void run_plan_in_depth(const DepthCommand& c) {
     if (floor) w["floor_depth_m"] = floor->depth_at(route.points[i]);
     waypoints.push_back(w);
   }
-  if (!c.output.empty()) write_route_geojson(c.output, route, frame, summary, waypoints);
+  if (!c.output.empty()) {
+    RouteExportSettings settings;
+    settings.name = std::filesystem::path(c.output).stem().string();
+    settings.margin_m = c.margin;
+    ExportRoute exported =
+        export_route(route, frame, c.vehicle.empty() ? VehicleParams{} : read_vehicle_file(c.vehicle), settings);
+    exported.properties = summary;
+    exported.waypoint_properties = waypoints;
+    write_route_file(exported, c.output, route_file_format(c.output), {.overwrite = true});
+  }
   if (!c.render.empty()) {
     RouteScene scene;
     scene.obstacles = &obstacles;

@@ -188,7 +188,7 @@ TEST(PlanExport, RtzReadsBackWithLibxml2) {
   for (xmlNodePtr c = root->children; c; c = c->next) {
     if (c->type != XML_ELEMENT_NODE || name(c) != "waypoints") continue;
     for (xmlNodePtr w = c->children; w; w = w->next) {
-      if (w->type != XML_ELEMENT_NODE) continue;
+      if (w->type != XML_ELEMENT_NODE || name(w) != "waypoint") continue;  // not defaultWaypoint
       Eigen::Vector3d p(NAN, NAN, NAN);
       for (xmlNodePtr e = w->children; e; e = e->next) {
         if (e->type != XML_ELEMENT_NODE) continue;
@@ -223,12 +223,12 @@ TEST(PlanExport, MoosBehavioursReadBackInLocalCoordinates) {
       if (at == std::string::npos) return std::nullopt;
       return line.substr(line.find('=', at) + 1);
     };
+    if (line.rfind("Behavior = ", 0) == 0 && line != "Behavior = BHV_ConstantDepth") leg_start = local.size();
     if (auto v = value("LatOrigin")) lat0 = std::stod(*v);
     if (auto v = value("LongOrigin")) lon0 = std::stod(*v);
     std::optional<std::string> pts = value("  points");
     if (!pts) pts = value("  station_pt");
     if (pts) {
-      leg_start = local.size();
       std::stringstream ss(*pts);
       std::string pair;
       while (std::getline(ss, pair, ':')) {
@@ -258,13 +258,15 @@ TEST(PlanExport, MoosBehavioursReadBackInLocalCoordinates) {
     const Vec2 ll = utm.to_lonlat(origin + p.head<2>());
     got.emplace_back(ll.x(), ll.y(), p.z());
   }
-  // A leg holds the shallower depth of its ends (the vehicle dives late and
-  // climbs early); a point (a hold, a dive in place) its own.
-  const auto& w = sample().waypoints;
-  expect_waypoints(got, "moos", [&](std::size_t i) {
-    if (i == 0 || w[i].hold_s > 0.0 || (w[i].xy - w[i - 1].xy).norm() < 1e-6) return w[i].depth_m;
-    return std::min(w[i].depth_m, w[i - 1].depth_m);
-  });
+  // Each leg holds the depth at its end waypoint, as the CSV export of the same plan gives it.
+  auto csv = open_vector(exported(dir, "plan.csv"));
+  std::vector<double> csv_depth;
+  for (auto& f : csv->GetLayer(0)) csv_depth.push_back(f->GetFieldAsDouble("depth_m"));
+  ASSERT_EQ(csv_depth.size(), got.size());
+  expect_waypoints(got, "moos", [&](std::size_t i) { return csv_depth[i]; });
+  std::size_t changes = 0;  // the check means something: the plan changes depth along its legs
+  for (std::size_t i = 1; i < csv_depth.size(); ++i) changes += std::abs(csv_depth[i] - csv_depth[i - 1]) > 0.5;
+  EXPECT_GE(changes, 3u);
   // MOOSGeodesy's zones: Norway's 32V at 60 N 5 E (31 by the plain rule), Svalbard's 33X at 78 N 15 E.
   EXPECT_EQ(detail::moos_local_utm(5.0, 60.0).id(), "EPSG:32632");
   EXPECT_EQ(detail::moos_local_utm(15.0, 78.0).id(), "EPSG:32633");

@@ -49,7 +49,7 @@ void write_plan_qgc(const std::string& path, const ExportInput& in) {
   int id = 1;
   double speed = -1.0;
   double cruise = 0.0;
-  for (const ExportWaypoint& w : in.waypoints) {
+  for (const ExportWaypoint& w : in.route.waypoints) {
     if (std::abs(w.speed_mps - speed) > 1e-9) {
       speed = w.speed_mps;
       cruise = std::max(cruise, speed);
@@ -59,7 +59,7 @@ void write_plan_qgc(const std::string& path, const ExportInput& in) {
                          {w.hold_s, kAcceptanceRadius_m, 0, nullptr, w.lonlat.y(), w.lonlat.x(), altitude(w.depth_m)},
                          altitude(w.depth_m)));
   }
-  const ExportWaypoint& start = in.waypoints.front();
+  const ExportWaypoint& start = in.route.waypoints.front();
   const nlohmann::json plan = {
       {"fileType", "Plan"},
       {"version", 1},

@@ -1,27 +1,33 @@
 #pragma once
-// Library-internal: one writer per export format (mission/plan_export.hpp
+// Library-internal: one writer per export format (mission/route_export.hpp
 // picks one, and makes the write atomic). Each writes `path` whole or throws.
 
+#include <functional>
 #include <string>
-#include <vector>
 
 #include "deepguide/mission/plan_export.hpp"
+#include "deepguide/mission/route_export.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace deepguide::detail {
 
 struct ExportInput {
   std::string destination;  ///< the file the user named (messages; writers write the path they are given)
-  const Mission& mission;
-  const MissionPlan& plan;
-  const std::vector<ExportWaypoint>& waypoints;
+  const ExportRoute& route;
+  std::string route_name;   ///< RTZ routeName (the destination's stem unless told)
 };
 
-void write_plan_yaml(const std::string& path, const ExportInput& in);
+void write_plan_yaml(const std::string& path, const std::string& destination, const Mission& mission,
+                     const MissionPlan& plan);
 void write_plan_ogr(const std::string& path, ExportFormat format, const ExportInput& in);  ///< geojson, gpx, kml, csv
 void write_plan_qgc(const std::string& path, const ExportInput& in);
 void write_plan_moos(const std::string& path, const ExportInput& in);
 void write_plan_rtz(const std::string& path, const ExportInput& in);
+
+/// Runs `write(temp)` on a temporary file beside `path` and renames it onto
+/// `path` (replacing an existing file only with `overwrite`). Messages name
+/// `path`, never the temporary file, on one line.
+void write_atomically(const std::string& path, bool overwrite, const std::function<void(const std::string&)>& write);
 
 /// The frame MOOSGeodesy's LatLong2LocalUTM works in for an origin: its UTM
 /// zone as the classic LLtoUTM picks it (Norway's 32V and Svalbard's zones included).

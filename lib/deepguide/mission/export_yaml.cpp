@@ -47,15 +47,16 @@ Vec2 read_xy(const Mapping& m, const char* key, const std::string& source) {
 
 namespace detail {
 
-void write_plan_yaml(const std::string& path, const ExportInput& in) {
+void write_plan_yaml(const std::string& path, const std::string& destination, const Mission& mission,
+                     const MissionPlan& plan) {
   YAML::Emitter e;
   e << YAML::Comment("deepguide plan of basic manoeuvres (docs/MISSIONS.md, \"Export\"); x, y in crs, depths positive down");
   e << YAML::BeginMap;
-  e << YAML::Key << "name" << YAML::Value << in.mission.name;
-  e << YAML::Key << "crs" << YAML::Value << in.mission.frame.id();
-  e << YAML::Key << "length_m" << YAML::Value << fixed(in.plan.length_m, 4);
+  e << YAML::Key << "name" << YAML::Value << mission.name;
+  e << YAML::Key << "crs" << YAML::Value << mission.frame.id();
+  e << YAML::Key << "length_m" << YAML::Value << fixed(plan.length_m, 4);
   e << YAML::Key << "basic_manoeuvres" << YAML::Value << YAML::BeginSeq;
-  for (const BasicManoeuvre& b : in.plan.basics) {
+  for (const BasicManoeuvre& b : plan.basics) {
     e << YAML::Flow << YAML::BeginMap;
     e << YAML::Key << "kind" << YAML::Value << kind_name(b.kind);
     emit_xy(e, "from", b.from);
@@ -71,17 +72,17 @@ void write_plan_yaml(const std::string& path, const ExportInput& in) {
     e << YAML::Key << "speed_mps" << YAML::Value << fixed(b.speed_mps, 4);
     if (b.kind == BasicManoeuvre::Kind::point) e << YAML::Key << "hold_s" << YAML::Value << fixed(b.hold_s, 4);
     e << YAML::Key << "role" << YAML::Value << role_name(b.role);
-    if (b.source < in.mission.manoeuvres.size()) {
-      e << YAML::Key << "manoeuvre" << YAML::Value << in.mission.manoeuvres[b.source].name;
+    if (b.source < mission.manoeuvres.size()) {
+      e << YAML::Key << "manoeuvre" << YAML::Value << mission.manoeuvres[b.source].name;
     }
     e << YAML::EndMap;
   }
   e << YAML::EndSeq << YAML::EndMap;
-  if (!e.good()) throw InputError(in.destination + ": could not write the plan (" + e.GetLastError() + ")");
+  if (!e.good()) throw InputError(destination + ": could not write the plan (" + e.GetLastError() + ")");
   std::ofstream out(path, std::ios::binary);
   out << e.c_str() << "\n";
   out.close();
-  if (!out) throw InputError(in.destination + ": could not write the plan file");
+  if (!out) throw InputError(destination + ": could not write the plan file");
 }
 
 }  // namespace detail

@@ -141,12 +141,4 @@ Route read_route(const std::string& path, const LocalFrame& frame) {
   throw InputError(path + ": expected a LineString feature (the route line), found none");
 }
 
-void route_file_format_for(const std::string& path) {
-  const std::string ext = ascii_lower(std::filesystem::path(path).extension().string());
-  if (ext != ".geojson" && ext != ".json") {
-    throw InputError(printable(path, 240) + ": expected a route file named .geojson (plan writes GeoJSON; "
-                     "mission export writes .gpx, .kml, .rtz, .plan, .bhv, .csv), got '" + printable(ext) + "'");
-  }
-}
-
 }  // namespace deepguide

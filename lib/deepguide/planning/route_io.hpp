@@ -20,11 +20,6 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
                          const nlohmann::json& properties = nlohmann::json::object(),
                          const std::vector<nlohmann::json>& waypoint_properties = {});
 
-/// Throws InputError unless `path` names a GeoJSON route file (.geojson or
-/// .json, any case): the only route format `write_route_geojson` writes (a
-/// mission's plan goes to GPX, KML, RTZ and others through `mission export`).
-void route_file_format_for(const std::string& path);
-
 /// Reads the first LineString of the file (layers in order) into the local
 /// frame. Throws InputError naming the file when there is none or it is broken.
 Route read_route(const std::string& path, const LocalFrame& frame);

@@ -1,0 +1,328 @@
+// Route files as the operator's tools read them (mission/route_export.hpp):
+// the sample mission's plan written as GPX, KML and RTZ validates against the
+// official schemas (tests/data/schemas, libxml2, no network), and each format
+// read back by a reader that is not its writer (libxml2 XPath for the XML
+// formats GDAL or we wrote, GDAL without open options for CSV, nlohmann/json
+// for GeoJSON) gives every waypoint's name, position, depth, speed, hold and
+// turn radius.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <libxml/parser.h>
+#include <libxml/xmlschemas.h>
+#include <libxml/xpath.h>
+#include <libxml/xpathInternals.h>
+#include <ogrsf_frmts.h>
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <functional>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "deepguide/mission/mission_control.hpp"
+#include "deepguide/mission/plan_export.hpp"
+#include "deepguide/vehicle/vehicle_params.hpp"
+#include "test_support.hpp"
+
+using namespace deepguide;
+using deepguide::test::ScratchDir;
+
+namespace {
+
+constexpr double kDeg = 1e-7;
+constexpr double kCm = 0.01;
+constexpr double kNauticalMile = 1852.0;
+
+struct Sample {
+  Mission mission;
+  MissionPlan plan;
+  ExportRoute route;
+};
+
+const Sample& sample() {
+  static const Sample s = [] {
+    Mission mission = read_mission(test::source_file("data/missions/sample_mission.yaml"));
+    const MissionEnvironment env = load_environment(mission);
+    MissionPlan plan = plan_mission(mission, env, expand_mission(mission, env.obstacles)).plan;
+    ExportRoute route = export_route(mission, plan);
+    return Sample{std::move(mission), std::move(plan), std::move(route)};
+  }();
+  return s;
+}
+
+const std::vector<ExportWaypoint>& want() { return sample().route.waypoints; }
+
+std::string exported(ScratchDir& dir, const std::string& name) {
+  const std::string path = dir.file(name);
+  export_plan(sample().mission, sample().plan, path, export_format_for(path));
+  return path;
+}
+
+void collect(void* ctx, const char* fmt, ...) {
+  char text[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(text, sizeof text, fmt, args);
+  va_end(args);
+  *static_cast<std::string*>(ctx) += text;
+}
+
+// libxml2 without network: the schema's errors and the file's, as text.
+std::string schema_errors(const std::string& xsd, const std::string& file) {
+  std::string errors;
+  xmlSchemaParserCtxtPtr pctx = xmlSchemaNewParserCtxt(xsd.c_str());
+  xmlSchemaSetParserErrors(pctx, collect, collect, &errors);
+  xmlSchemaPtr schema = xmlSchemaParse(pctx);
+  xmlSchemaFreeParserCtxt(pctx);
+  if (schema == nullptr) return "schema " + xsd + " did not parse: " + errors;
+  xmlSchemaValidCtxtPtr vctx = xmlSchemaNewValidCtxt(schema);
+  xmlSchemaSetValidErrors(vctx, collect, collect, &errors);
+  xmlDocPtr doc = xmlReadFile(file.c_str(), nullptr, XML_PARSE_NONET);
+  const int rc = doc ? xmlSchemaValidateDoc(vctx, doc) : -1;
+  if (doc) xmlFreeDoc(doc);
+  xmlSchemaFreeValidCtxt(vctx);
+  xmlSchemaFree(schema);
+  return rc == 0 ? std::string() : "invalid (" + std::to_string(rc) + "): " + errors;
+}
+
+std::string schema(const std::string& rel) { return test::source_file("tests/data/schemas/" + rel); }
+
+// An XML file queried with XPath, namespaces bound to prefixes.
+class Xml {
+ public:
+  Xml(const std::string& path, const std::map<std::string, std::string>& ns)
+      : doc_(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET), &xmlFreeDoc),
+        ctx_(doc_ ? xmlXPathNewContext(doc_.get()) : nullptr, &xmlXPathFreeContext) {
+    for (const auto& [prefix, uri] : ns) {
+      xmlXPathRegisterNs(ctx_.get(), reinterpret_cast<const xmlChar*>(prefix.c_str()),
+                         reinterpret_cast<const xmlChar*>(uri.c_str()));
+    }
+  }
+  bool ok() const { return ctx_ != nullptr; }
+  // The string values of the nodes `xpath` selects, in document order.
+  std::vector<std::string> all(const std::string& xpath) const {
+    std::vector<std::string> out;
+    xmlXPathObjectPtr r = xmlXPathEvalExpression(reinterpret_cast<const xmlChar*>(xpath.c_str()), ctx_.get());
+    if (r != nullptr && r->nodesetval != nullptr) {
+      for (int i = 0; i < r->nodesetval->nodeNr; ++i) {
+        xmlChar* v = xmlNodeGetContent(r->nodesetval->nodeTab[i]);
+        out.emplace_back(v ? reinterpret_cast<const char*>(v) : "");
+        xmlFree(v);
+      }
+    }
+    xmlXPathFreeObject(r);
+    return out;
+  }
+  std::vector<double> numbers(const std::string& xpath) const {
+    std::vector<double> out;
+    for (const std::string& s : all(xpath)) out.push_back(std::stod(s));
+    return out;
+  }
+
+ private:
+  std::unique_ptr<xmlDoc, decltype(&xmlFreeDoc)> doc_;
+  std::unique_ptr<xmlXPathContext, decltype(&xmlXPathFreeContext)> ctx_;
+};
+
+void expect_each(const std::vector<double>& got, const std::function<double(const ExportWaypoint&)>& value,
+                 double tolerance, const char* what) {
+  ASSERT_EQ(got.size(), want().size()) << what;
+  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_NEAR(got[i], value(want()[i]), tolerance) << what << " " << i;
+}
+
+void expect_names(const std::vector<std::string>& got, const char* what) {
+  ASSERT_EQ(got.size(), want().size()) << what;
+  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], want()[i].name) << what << " " << i;
+}
+
+}  // namespace
+
+TEST(ExportSchemas, TheSampleHasWhatTheChecksNeed) {
+  // Holds, arcs and several depths: else the read-backs below could pass on zeros.
+  double holds = 0.0, deepest = 0.0;
+  std::size_t arcs = 0;
+  for (const ExportWaypoint& w : want()) {
+    holds += w.hold_s;
+    arcs += w.radius_m > 0.0;
+    deepest = std::max(deepest, w.depth_m);
+  }
+  EXPECT_DOUBLE_EQ(holds, 120.0);
+  EXPECT_GT(arcs, 20u);
+  EXPECT_GE(deepest, 8.0);
+  EXPECT_EQ(want().front().name, "001");
+  EXPECT_EQ(want()[249].name, "250");
+  EXPECT_GT(sample().route.turn_radius_m, 10.0);
+}
+
+TEST(ExportSchemas, GpxIsGpx11WithNamesElevationsAndExtensions) {
+  ScratchDir dir;
+  const std::string path = exported(dir, "sample.gpx");
+  EXPECT_EQ(schema_errors(schema("gpx/gpx.xsd"), path), "");
+  const Xml x(path, {{"g", "http://www.topografix.com/GPX/1/1"}, {"dg", "https://deepguide.dev/gpx/1"}});
+  ASSERT_TRUE(x.ok());
+  EXPECT_EQ(x.all("/g:gpx/g:rte/g:name"), std::vector<std::string>{sample().mission.name});
+  expect_names(x.all("//g:rtept/g:name"), "gpx name");
+  expect_each(x.numbers("//g:rtept/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "gpx lon");
+  expect_each(x.numbers("//g:rtept/@lat"), [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "gpx lat");
+  expect_each(x.numbers("//g:rtept/g:ele"), [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "gpx ele");
+  expect_each(x.numbers("//g:rtept/g:extensions/dg:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm,
+              "gpx depth");
+  expect_each(x.numbers("//g:rtept/g:extensions/dg:speed_mps"), [](const ExportWaypoint& w) { return w.speed_mps; },
+              1e-6, "gpx speed");
+  expect_each(x.numbers("//g:rtept/g:extensions/dg:hold_s"), [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6,
+              "gpx hold");
+  expect_each(x.numbers("//g:rtept/g:extensions/dg:radius_m"), [](const ExportWaypoint& w) { return w.radius_m; },
+              kCm, "gpx radius");
+}
+
+TEST(ExportSchemas, KmlIsKml22BelowTheSurfaceWithExtendedData) {
+  ScratchDir dir;
+  const std::string path = exported(dir, "sample.kml");
+  EXPECT_EQ(schema_errors(schema("kml22/ogckml22.xsd"), path), "");
+  const Xml x(path, {{"k", "http://www.opengis.net/kml/2.2"}});
+  ASSERT_TRUE(x.ok());
+  // Every geometry is absolute (metres above sea level), so viewers put it under water.
+  const std::vector<std::string> modes = x.all("//k:Placemark/*/k:altitudeMode");
+  EXPECT_EQ(modes.size(), want().size() + 1);
+  for (const std::string& m : modes) EXPECT_EQ(m, "absolute");
+  const std::string points = "//k:Placemark[k:Point]";
+  expect_names(x.all(points + "/k:name"), "kml name");
+  std::vector<double> lon, lat, alt;
+  for (const std::string& c : x.all(points + "/k:Point/k:coordinates")) {
+    double a = NAN, b = NAN, z = NAN;
+    ASSERT_EQ(std::sscanf(c.c_str(), " %lf,%lf,%lf", &a, &b, &z), 3) << c;
+    lon.push_back(a), lat.push_back(b), alt.push_back(z);
+  }
+  expect_each(lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "kml lon");
+  expect_each(lat, [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "kml lat");
+  expect_each(alt, [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "kml altitude");
+  const auto field = [&](const char* name) {
+    return x.numbers(points + "/k:ExtendedData//k:SimpleData[@name='" + name + "']");
+  };
+  expect_each(field("depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "kml depth");
+  expect_each(field("speed_mps"), [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6, "kml speed");
+  expect_each(field("hold_s"), [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6, "kml hold");
+  expect_each(field("radius_m"), [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "kml radius");
+  // The line too is below the surface.
+  const std::vector<std::string> line = x.all("//k:Placemark/k:LineString/k:coordinates");
+  ASSERT_EQ(line.size(), 1u);
+  EXPECT_NE(line[0].find(",-8"), std::string::npos);
+}
+
+TEST(ExportSchemas, RtzIsRtz10WithDefaultsRadiiAndASchedule) {
+  ScratchDir dir;
+  const std::string path = exported(dir, "sample.rtz");
+  EXPECT_EQ(schema_errors(schema("rtz/rtz_1_0.xsd"), path), "");
+  const Xml x(path, {{"r", "http://www.cirm.org/RTZ/1/0"}});
+  ASSERT_TRUE(x.ok());
+  EXPECT_EQ(x.all("/r:route/r:routeInfo/@routeName"), std::vector<std::string>{"sample"});  // the file's name
+  // The default turn is the vehicle's; arcs keep their own radius (NM).
+  const std::vector<double> turn = x.numbers("//r:defaultWaypoint/@radius");
+  ASSERT_EQ(turn.size(), 1u);
+  EXPECT_NEAR(turn[0] * kNauticalMile, sample().route.turn_radius_m, kCm);
+  EXPECT_NEAR(x.numbers("//r:defaultWaypoint/r:leg/@speedMax").at(0) * kMetresPerSecondPerKnot,
+              sample().mission.vehicle.max_speed_mps, 1e-3);
+  expect_names(x.all("//r:waypoint/@name"), "rtz name");
+  std::vector<double> radius;
+  for (std::size_t i = 1; i <= want().size(); ++i) {
+    const std::vector<double> r = x.numbers("//r:waypoint[@id='" + std::to_string(i) + "']/@radius");
+    radius.push_back(r.empty() ? 0.0 : r[0] * kNauticalMile);
+  }
+  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "rtz radius");
+  expect_each(x.numbers("//r:waypoint/r:position/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg,
+              "rtz lon");
+  expect_each(x.numbers("//r:waypoint//r:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm,
+              "rtz depth");
+  // The planned speed is the schedule's (knots), not a leg's speedMax.
+  EXPECT_TRUE(x.all("//r:waypoint/r:leg/@speedMax").empty());
+  const std::string element = "//r:schedules/r:schedule/r:calculated/r:sheduleElement";
+  expect_each(x.numbers(element + "/@speed"),
+              [](const ExportWaypoint& w) { return w.speed_mps / kMetresPerSecondPerKnot; }, 1e-3, "rtz speed");
+  std::vector<double> stays(want().size(), 0.0);
+  for (std::size_t i = 1; i <= want().size(); ++i) {
+    for (const std::string& s : x.all(element + "[@waypointId='" + std::to_string(i) + "']/@stay")) {
+      int h = 0, m = 0, sec = 0;
+      ASSERT_EQ(std::sscanf(s.c_str(), "%d:%d:%d", &h, &m, &sec), 3) << s;
+      stays[i - 1] = h * 3600.0 + m * 60.0 + sec;
+    }
+  }
+  expect_each(stays, [](const ExportWaypoint& w) { return std::round(w.hold_s); }, 1e-9, "rtz stay");
+}
+
+TEST(ExportSchemas, CsvOpensInGdalWithoutOptions) {
+  ScratchDir dir;
+  const std::string path = exported(dir, "sample.csv");
+  GDALAllRegister();
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+  ASSERT_TRUE(ds);
+  std::vector<double> lon, lat, alt, speed, hold, radius;
+  std::vector<std::string> names;
+  for (auto& f : ds->GetLayer(0)) {
+    const OGRGeometry* g = f->GetGeometryRef();
+    ASSERT_NE(g, nullptr) << "GDAL made no geometry of the WKT column";
+    const OGRPoint* p = g->toPoint();
+    lon.push_back(p->getX()), lat.push_back(p->getY()), alt.push_back(p->getZ());
+    names.emplace_back(f->GetFieldAsString("name"));
+    speed.push_back(f->GetFieldAsDouble("speed_mps"));
+    hold.push_back(f->GetFieldAsDouble("hold_s"));
+    radius.push_back(f->GetFieldAsDouble("radius_m"));
+    EXPECT_STREQ(f->GetFieldAsString("crs"), sample().mission.frame.id().c_str());
+  }
+  expect_names(names, "csv name");
+  expect_each(lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "csv lon");
+  expect_each(lat, [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "csv lat");
+  expect_each(alt, [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "csv altitude");
+  expect_each(speed, [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6, "csv speed");
+  expect_each(hold, [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6, "csv hold");
+  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "csv radius");
+}
+
+TEST(ExportSchemas, GeoJsonCarriesEveryField) {
+  ScratchDir dir;
+  std::ifstream in(exported(dir, "sample.geojson"));
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::vector<double> lon, depth, speed, hold, radius;
+  std::vector<std::string> names;
+  for (const auto& f : j.at("features")) {
+    const auto& p = f.at("properties");
+    if (p.at("kind") != "waypoint") {
+      EXPECT_EQ(p.at("name"), sample().mission.name);
+      EXPECT_NEAR(p.at("turn_radius_m").get<double>(), sample().route.turn_radius_m, 1e-9);
+      continue;
+    }
+    lon.push_back(f.at("geometry").at("coordinates")[0].get<double>());
+    names.push_back(p.at("name"));
+    depth.push_back(p.at("depth_m"));
+    speed.push_back(p.at("speed_mps"));
+    hold.push_back(p.at("hold_s"));
+    radius.push_back(p.at("radius_m"));
+  }
+  expect_names(names, "geojson name");
+  expect_each(lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "geojson lon");
+  expect_each(depth, [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "geojson depth");
+  expect_each(speed, [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-9, "geojson speed");
+  expect_each(hold, [](const ExportWaypoint& w) { return w.hold_s; }, 1e-9, "geojson hold");
+  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, 1e-9, "geojson radius");
+}
+
+TEST(ExportSchemas, ABrokenFileFailsTheSchemaCheck) {
+  // The validator is not a rubber stamp: a GPX point without its lat, an RTZ with one waypoint.
+  ScratchDir dir;
+  const std::string gpx = dir.write("bad.gpx",
+                                    "<?xml version=\"1.0\"?><gpx version=\"1.1\" creator=\"t\" "
+                                    "xmlns=\"http://www.topografix.com/GPX/1/1\"><rte><rtept lon=\"1\"/></rte></gpx>");
+  EXPECT_NE(schema_errors(schema("gpx/gpx.xsd"), gpx), "");
+  const std::string rtz = dir.write("bad.rtz",
+                                    "<?xml version=\"1.0\"?><route xmlns=\"http://www.cirm.org/RTZ/1/0\" version=\"1.0\">"
+                                    "<routeInfo routeName=\"x\"/><waypoints><waypoint id=\"1\"><position lat=\"1\" "
+                                    "lon=\"2\"/></waypoint></waypoints></route>");
+  EXPECT_NE(schema_errors(schema("rtz/rtz_1_0.xsd"), rtz), "");
+  const std::string kml = dir.write("bad.kml",
+                                    "<?xml version=\"1.0\"?><kml xmlns=\"http://www.opengis.net/kml/2.2\"><Placemark>"
+                                    "<Point><altitudeMode>underwater</altitudeMode><coordinates>1,2,-3</coordinates>"
+                                    "</Point></Placemark></kml>");
+  EXPECT_NE(schema_errors(schema("kml22/ogckml22.xsd"), kml), "");
+}
