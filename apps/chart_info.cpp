@@ -1,4 +1,4 @@
-// deepguide chart info FILE... [--depth M] [--clearance M] [--crs EPSG:n] [--json]
+// deepguide chart info FILE... [--depth M] [--clearance M] [--crs EPSG:n] [--src-crs CRS] [--json]
 
 #include <cmath>
 #include <cstdio>
@@ -14,7 +14,7 @@ namespace {
 
 struct ChartInfoCliOptions {
   std::vector<std::string> files;
-  std::string crs;
+  std::string crs, src_crs;
   double depth = 0.0;
   double clearance = 2.0;
   bool json = false;
@@ -95,9 +95,12 @@ void register_chart_info(CLI::App& chart) {
   cmd->add_option("--clearance", o->clearance, "Vertical clearance above the sea floor and hazards (m)")
       ->capture_default_str();
   cmd->add_option("--crs", o->crs, "Local frame for areas, a projected CRS (default: UTM zone of the chart)");
+  cmd->add_option("--src-crs", o->src_crs,
+                  "CRS of a chart that carries none, e.g. EPSG:4326 for an ESRI ASCII or GMT grid in lon/lat");
   cmd->add_flag("--json", o->json, "Print JSON (an array, one object per file) instead of text");
   cmd->callback([o, depth] {
     ChartInfoOptions options;
+    options.source_crs = o->src_crs;
     options.clearance_m = o->clearance;
     options.local_crs = o->crs;
     if (depth->count() > 0) {

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/world/enc_route_check.hpp"
@@ -45,7 +46,7 @@ nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& wh
   why = check.describe(no_go.frame);
   nlohmann::json j = {{"safe", check.safe},        {"crossed_features", check.crossed_features},
                       {"margin_m", o.margin},      {"required_depth_m", no_go.required_depth_m},
-                      {"length_m", route.length()}};
+                      {"waypoints", route.points.size()}, {"length_m", route.length()}};
   if (check.first) {
     const ChartCrossing& c = *check.first;
     const Vec2 ll = no_go.frame.to_lonlat(c.at);
@@ -66,7 +67,8 @@ void register_check_route(CLI::App& check) {
   CLI::App* cmd = check.add_subcommand(
       "route", "Check a route against obstacles (exact clearance) or S-57 charts at a depth (the first crossing "
                "named); exit 1 when the route is unsafe");
-  cmd->add_option("ROUTE", o->route, "Route file (GeoJSON, GPX, KML, ... with a LineString)")->required();
+  cmd->add_option("ROUTE", o->route, "Route file: RTZ (an ECDIS's), GPX (OpenCPN's), GeoJSON, KML, ... with a line")
+      ->required();
   cmd->add_option("--obstacles", o->obstacles, "Obstacle files")->expected(1, -1);
   cmd->add_option("--chart", o->charts,
                   "S-57 cells (*.000, updates beside them), folders of cells, or a prepared chart (.gpkg)")
@@ -91,7 +93,13 @@ void register_check_route(CLI::App& check) {
     std::string why;
     if (!o->obstacles.empty()) {
       const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
-      const Route route = read_route(o->route, loaded.frame);
+      // Files without an obstacle fix no frame: the route's start does (its UTM zone).
+      LocalFrame frame = loaded.frame;
+      if (loaded.obstacles.empty() && o->frame.crs.empty()) {
+        const Vec2 start = read_route_waypoints(o->route).front().lonlat;
+        frame = LocalFrame::utm_for(start.x(), start.y());
+      }
+      const Route route = read_route(o->route, frame);
       const ObstacleField field(loaded.obstacles, o->margin);
       const RouteCheck check = check_route(route.points, field);
       out = {{"safe", check.safe},
@@ -99,7 +107,9 @@ void register_check_route(CLI::App& check) {
              {"worst_segment", check.worst_segment},
              {"worst_obstacle", check.worst_obstacle},
              {"margin_m", o->margin},
-             {"length_m", route.length()}};
+             {"waypoints", route.points.size()},
+             {"length_m", route.length()},
+             {"crs", frame.id()}};
       safe = check.safe;
       why = check.describe();
     }
@@ -120,7 +130,8 @@ void register_check_route(CLI::App& check) {
     if (o->json) {
       std::cout << out.dump(2) << "\n";
     } else if (safe) {
-      std::cout << "safe: " << why << "\n";
+      std::cout << "safe: " << why << " (" << out.value("waypoints", std::size_t{0}) << " waypoints, "
+                << fixed(out.value("length_m", 0.0), 1) << " m)\n";
     }
     if (!safe) throw InputError(o->route + ": " + why);
   });

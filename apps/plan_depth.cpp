@@ -90,7 +90,9 @@ void run_plan_in_depth(const DepthCommand& c) {
       continue;
     }
     if (floor) throw InputError(path + ": --graph octree: expected one bathymetry raster, got a second one");
-    floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(path, frame, lo, hi, spacing));
+    BathymetryOptions read;
+    read.assumed_crs = c.src_crs;  // a grid without a CRS (--src-crs)
+    floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(path, frame, lo, hi, spacing, read));
   }
   if (!enc_charts.empty()) {
     // S-57 cells: a floor never deeper than their depth areas, dangers and soundings (enc_sea_floor.hpp).

@@ -32,6 +32,8 @@ void register_render_chart(CLI::App& render) {
   cmd->add_option("--obstacles", o->chart.obstacles, "Further obstacle files to draw (GeoJSON, GeoPackage, ...)")
       ->expected(1, -1);
   cmd->add_option("--crs", o->chart.local_crs, "Local frame, a projected CRS (default: UTM zone of the first chart)");
+  cmd->add_option("--src-crs", o->chart.source_crs,
+                  "CRS of a raster that carries none, e.g. EPSG:4326 for an ESRI ASCII or GMT grid in lon/lat");
   cmd->add_option("--width", o->chart.width_px, "Image width in pixels")
       ->capture_default_str()
       ->check(CLI::Range(kMinImageWidth, kMaxImageWidth));

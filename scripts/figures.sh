@@ -16,7 +16,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 if [ -z "${DEEPGUIDE_CLI:-}" ]; then
-  deepguide_setup "$DEEPGUIDE_ROOT/build"
+  deepguide_setup_cli "$DEEPGUIDE_ROOT/build"
   DEEPGUIDE_CLI="$DEEPGUIDE_ROOT/build/apps/deepguide"
 fi
 cd "$DEEPGUIDE_ROOT"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sets up, builds (Release) and runs deepguide's main job on the bundled sample
+# Sets up, builds (Release; only the `deepguide` command, not the tests) and runs deepguide's main job on the bundled sample
 # chart (charts/, made by `deepguide chart synth`): the sample mission
 # (data/missions/sample_mission.yaml) checked, planned with every conflict
 # resolved, and drawn; then the chart's summary and a route out of the harbour
@@ -7,7 +7,7 @@
 # the sample obstacles, checked. Results go to out/.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
-deepguide_setup "$DEEPGUIDE_ROOT/build"
+deepguide_setup_cli "$DEEPGUIDE_ROOT/build"
 cd "$DEEPGUIDE_ROOT"
 mkdir -p out
 MISSION=data/missions/sample_mission.yaml

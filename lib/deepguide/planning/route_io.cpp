@@ -1,9 +1,14 @@
 #include "deepguide/planning/route_io.hpp"
 
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <libxml/xmlerror.h>
 #include <ogrsf_frmts.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <memory>
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
@@ -97,13 +102,76 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
   out.commit();
 }
 
-Route read_route(const std::string& path, const LocalFrame& frame) {
+namespace {
+
+const xmlChar* xml_text(const char* s) { return reinterpret_cast<const xmlChar*>(s); }
+
+void xml_quiet(void*, const char*, ...) {}
+
+bool named(xmlNodePtr n, const char* local_name) {
+  return n->type == XML_ELEMENT_NODE && xmlStrcmp(n->name, xml_text(local_name)) == 0;
+}
+
+// An RTZ attribute as a number in [lo, hi]; InputError naming the waypoint otherwise.
+double rtz_number(xmlNodePtr n, const char* attribute, double lo, double hi, const std::string& where) {
+  xmlChar* v = xmlGetProp(n, xml_text(attribute));
+  const std::string text = v ? reinterpret_cast<const char*>(v) : "";
+  xmlFree(v);
+  char* end = nullptr;
+  const double d = std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0' || !(d >= lo && d <= hi)) {
+    throw InputError(where + ": field '" + attribute + "': expected a number in [" + general(lo) + ", " + general(hi) +
+                     "], got '" + printable(text) + "'");
+  }
+  return d;
+}
+
+// RTZ 1.0-1.2: <route><waypoints><waypoint id name><position lat lon/>. Real files use several
+// namespaces (http://www.cirm.org/RTZ/1/0, https://cirm.org/rtz-xml-schemas): elements are matched
+// by their local names.
+std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
+  xmlSetGenericErrorFunc(nullptr, xml_quiet);
+  std::unique_ptr<xmlDoc, decltype(&xmlFreeDoc)> doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET),
+                                                     &xmlFreeDoc);
+  xmlSetGenericErrorFunc(nullptr, nullptr);
+  if (!doc) {
+    const xmlError* e = xmlGetLastError();
+    throw InputError(path + (e ? ": line " + std::to_string(e->line) : std::string()) +
+                     ": expected an RTZ route (XML), could not parse it");
+  }
+  xmlNodePtr root = xmlDocGetRootElement(doc.get());
+  if (root == nullptr || !named(root, "route")) throw InputError(path + ": expected an RTZ <route> element at the top");
+  std::vector<RouteFileWaypoint> out;
+  for (xmlNodePtr list = root->children; list; list = list->next) {
+    if (!named(list, "waypoints")) continue;
+    for (xmlNodePtr w = list->children; w; w = w->next) {
+      if (!named(w, "waypoint")) continue;
+      xmlChar* id = xmlGetProp(w, xml_text("id"));
+      xmlChar* name = xmlGetProp(w, xml_text("name"));
+      const std::string where = path + ": line " + std::to_string(xmlGetLineNo(w)) + ": waypoint " +
+                                (id ? printable(reinterpret_cast<const char*>(id)) : std::to_string(out.size() + 1));
+      RouteFileWaypoint p;
+      if (name) p.name = reinterpret_cast<const char*>(name);
+      xmlFree(id);
+      xmlFree(name);
+      xmlNodePtr pos = w->children;
+      while (pos && !named(pos, "position")) pos = pos->next;
+      if (pos == nullptr) throw InputError(where + ": expected a <position lat lon>");
+      p.lonlat = Vec2(rtz_number(pos, "lon", -180.0, 180.0, where), rtz_number(pos, "lat", -90.0, 90.0, where));
+      out.push_back(std::move(p));
+    }
+  }
+  if (out.size() < 2) throw InputError(path + ": expected an RTZ route with at least 2 waypoints, got " +
+                                       std::to_string(out.size()));
+  return out;
+}
+
+// The first LineString of an OGR source, in WGS 84.
+std::vector<RouteFileWaypoint> read_ogr_line(const std::string& path) {
   gdal::ensure_registered();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": expected an existing route file, found none");
   gdal::QuietErrors quiet;
   GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  if (!ds) fail(path, "open it as a vector file (GeoJSON, GPX, KML, ...)");
+  if (!ds) fail(path, "open it as a vector file (GeoJSON, GPX, KML, RTZ, ...)");
   const auto geo = gdal::wgs84();
   for (OGRLayer* layer : ds->GetLayers()) {
     std::unique_ptr<OGRSpatialReference> srs;
@@ -119,26 +187,46 @@ Route read_route(const std::string& path, const LocalFrame& frame) {
       const OGRGeometry* g = feature->GetGeometryRef();
       if (g == nullptr || wkbFlatten(g->getGeometryType()) != wkbLineString) continue;
       const OGRLineString* line = g->toLineString();
-      Route route;
+      std::vector<RouteFileWaypoint> out;
       for (int i = 0; i < line->getNumPoints(); ++i) {
         double x = line->getX(i), y = line->getY(i);
-        const std::string where = path + ": feature " + std::to_string(feature->GetFID()) + ": vertex " +
-                                  std::to_string(i) + ": field 'geometry'";
         if (!std::isfinite(x) || !std::isfinite(y) || !ct->Transform(1, &x, &y)) {
-          throw InputError(where + ": expected finite coordinates");
+          throw InputError(path + ": feature " + std::to_string(feature->GetFID()) + ": vertex " + std::to_string(i) +
+                           ": field 'geometry': expected finite coordinates");
         }
-        const Vec2 p = frame.from_lonlat(x, y);
-        if (!p.allFinite()) throw InputError(where + ": expected a position inside the local frame " + frame.id());
-        route.points.push_back(p);
+        out.push_back({Vec2(x, y), {}});
       }
-      if (route.points.size() < 2) {
+      if (out.size() < 2) {
         throw InputError(path + ": feature " + std::to_string(feature->GetFID()) +
                          ": expected a route line with at least 2 points");
       }
-      return route;
+      return out;
     }
   }
   throw InputError(path + ": expected a LineString feature (the route line), found none");
+}
+
+}  // namespace
+
+std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": expected an existing route file, found none");
+  if (ascii_lower(std::filesystem::path(path).extension().string()) == ".rtz") return read_rtz(path);
+  return read_ogr_line(path);
+}
+
+Route read_route(const std::string& path, const LocalFrame& frame) {
+  const std::vector<RouteFileWaypoint> waypoints = read_route_waypoints(path);
+  Route route;
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    const Vec2 p = frame.from_lonlat(waypoints[i].lonlat);
+    if (!p.allFinite()) {
+      throw InputError(path + ": waypoint " + std::to_string(i + 1) + ": expected a position inside the local frame " +
+                       frame.id());
+    }
+    route.points.push_back(p);
+  }
+  return route;
 }
 
 }  // namespace deepguide

@@ -20,8 +20,22 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
                          const nlohmann::json& properties = nlohmann::json::object(),
                          const std::vector<nlohmann::json>& waypoint_properties = {});
 
-/// Reads the first LineString of the file (layers in order) into the local
-/// frame. Throws InputError naming the file when there is none or it is broken.
+/// A route file's waypoint as the file gives it.
+struct RouteFileWaypoint {
+  Vec2 lonlat{0.0, 0.0};  ///< WGS 84 degrees
+  std::string name;       ///< RTZ waypoint names; empty where the file has none
+};
+
+/// The waypoints of a route file in WGS 84: an RTZ route (IEC 61174, any
+/// version and namespace, read with libxml2: `waypoints/waypoint/position`),
+/// or the first LineString of any OGR source (layers in order: GeoJSON, a
+/// GPX route or track from OpenCPN or a plotter, KML, ...). Throws InputError
+/// naming the file, and the feature or waypoint, for one that is missing,
+/// broken, or has fewer than 2 points.
+std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path);
+
+/// read_route_waypoints in the local frame. Throws InputError naming the
+/// waypoint for one outside the frame's area of use.
 Route read_route(const std::string& path, const LocalFrame& frame);
 
 }  // namespace deepguide

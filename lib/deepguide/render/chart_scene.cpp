@@ -88,6 +88,7 @@ std::vector<double> band_edges(double lo, double hi) {
 struct RasterSource {
   std::string path;
   BathymetryInfo info;
+  BathymetryOptions read;  ///< the assumed CRS of a raster without one
 };
 
 // Box in the local frame around a raster: its outline sampled along the edges.
@@ -102,7 +103,7 @@ WorldBox raster_box(const RasterSource& r, const LocalFrame& frame) {
   local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   if (src.IsSame(&local)) {
     gdal::QuietErrors quiet;
-    detail::OpenedBathymetry o = detail::open_bathymetry(r.path, {});
+    detail::OpenedBathymetry o = detail::open_bathymetry(r.path, r.read);
     const double* gt = o.geotransform;
     box.extend(Vec2(gt[0], gt[3]));
     box.extend(Vec2(gt[0] + gt[1] * r.info.width, gt[3] + gt[5] * r.info.height));
@@ -138,9 +139,9 @@ struct Shading {
 // Paints one raster into the map image (width x height pixels over `map`):
 // one decimated read of the window the map shows, then nearest cells.
 void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>& land, int width, int height, const PixelRect& map,
-                  const ViewTransform& view, const LocalFrame& frame, const std::string& path, const Shading& shading) {
+                  const ViewTransform& view, const LocalFrame& frame, const RasterSource& source, const Shading& shading) {
   gdal::QuietErrors quiet;
-  detail::OpenedBathymetry r = detail::open_bathymetry(path, {});
+  detail::OpenedBathymetry r = detail::open_bathymetry(source.path, source.read);
   const double* gt = r.geotransform;
   const int rw = r.info.width, rh = r.info.height;
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
@@ -157,7 +158,7 @@ void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>&
   local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   if (!local.IsSame(r.srs.get())) {
     const gdal::TransformPtr ct = gdal::make_transform(local, *r.srs);
-    if (!ct) throw InputError(path + ": expected a CRS PROJ can transform to " + frame.id() + ", got " + r.info.crs);
+    if (!ct) throw InputError(source.path + ": expected a CRS PROJ can transform to " + frame.id() + ", got " + r.info.crs);
     std::vector<int> ok(n, 0);
     ct->Transform(static_cast<int>(n), xs.data(), ys.data(), nullptr, ok.data());
     for (std::size_t k = 0; k < n; ++k) {
@@ -187,7 +188,7 @@ void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>&
   extra.eResampleAlg = GRIORA_NearestNeighbour;
   if (r.band->RasterIO(GF_Read, x0, y0, win_w, win_h, buf.data(), bw, bh, GDT_Float32, 0, 0, &extra) != CE_None) {
     const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(path + ": expected readable cells" + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+    throw InputError(source.path + ": expected readable cells" + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
   }
   for (std::size_t k = 0; k < n; ++k) {
     const double col = xs[k], row = ys[k];
@@ -273,7 +274,7 @@ struct Painter {
       water.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), pack(style.sea));
       land.assign(water.size(), 0u);
       for (const RasterSource& r : scene.rasters) {
-        shade_raster(water, land, w, h, layout.map, layout.view, frame, r.path, sh);
+        shade_raster(water, land, w, h, layout.map, layout.view, frame, r, sh);
       }
       canvas.image(layout.map, w, h, water);
     }
@@ -458,7 +459,12 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
       continue;
     }
     switch (chart_kind(f)) {
-      case ChartKind::raster: scene.rasters.push_back({f, inspect_bathymetry(f)}); break;
+      case ChartKind::raster: {
+        BathymetryOptions read;
+        read.assumed_crs = options.source_crs;
+        scene.rasters.push_back({f, inspect_bathymetry(f, read), read});
+        break;
+      }
       case ChartKind::s57: scene.enc_charts.push_back(f); break;
       case ChartKind::vector: scene.hazard_files.push_back(f); break;
     }
@@ -497,6 +503,7 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
     n.operating_depth_m = options.depth_m;
     n.vertical_clearance_m = options.clearance_m;
     for (const RasterSource& r : scene.rasters) {
+      n.bathymetry = r.read;
       NoGoArea a = compute_no_go(r.path, frame, n);
       for (auto& p : a.polygons) scene.no_go.push_back(std::move(p));
     }

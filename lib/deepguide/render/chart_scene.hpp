@@ -52,6 +52,7 @@ struct ChartRenderOptions {
   double depth_m = std::numeric_limits<double>::quiet_NaN();
   double clearance_m = 2.0;  ///< vertical clearance (m, >= 0)
   std::string local_crs;     ///< empty = UTM zone of the first chart's centre
+  std::string source_crs;    ///< CRS of rasters that carry none (e.g. "EPSG:4326"); empty = they are an error
   std::string title;         ///< empty = the files' names and the depth
   int width_px = 1200;
   ChartStyle style;

@@ -70,7 +70,9 @@ double union_area(const ObstacleSet& set) {
 }
 
 void raster_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
-  const BathymetryInfo b = inspect_bathymetry(info.path);
+  BathymetryOptions read;
+  read.assumed_crs = o.source_crs;
+  const BathymetryInfo b = inspect_bathymetry(info.path, read);
   info.crs = b.crs;
   info.extent = b.extent;
   info.min_depth_m = b.min_depth_m;
@@ -104,6 +106,7 @@ void raster_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
     NoGoOptions n;
     n.operating_depth_m = o.depth_m;
     n.vertical_clearance_m = o.clearance_m;
+    n.bathymetry = read;
     const NoGoArea area = compute_no_go(info.path, frame, n);
     NoGoSummary s;
     s.depth_m = o.depth_m;
@@ -176,7 +179,7 @@ void vector_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
     info.layers.push_back({layer->GetName(), static_cast<std::size_t>(std::max<GIntBig>(0, layer->GetFeatureCount())),
                            OGRGeometryTypeToName(layer->GetGeomType())});
   }
-  LoadedObstacles loaded = load_obstacles({info.path}, {o.local_crs, ""});
+  LoadedObstacles loaded = load_obstacles({info.path}, {o.local_crs, o.source_crs});
   const ObstacleSummary sum = summarize(loaded);
   info.crs = loaded.sources.empty() ? std::string() : loaded.sources.front().crs;
   info.local_crs = loaded.frame.id();

@@ -87,6 +87,9 @@ struct ChartInfoOptions {
   double clearance_m = 2.0;
   /// Local frame: empty = UTM zone of the chart's centre.
   std::string local_crs;
+  /// CRS of a raster or vector file that carries none (e.g. "EPSG:4326" for
+  /// an ESRI ASCII grid without .prj); empty = such a raster is an error.
+  std::string source_crs;
 };
 
 /// The kind of chart at `path` (see the decisions above). Throws InputError

@@ -45,6 +45,7 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
       no_go.operating_depth_m = options.depth_m;
       no_go.vertical_clearance_m = options.clearance_m;
       no_go.simplify_tolerance_m = options.simplify_tolerance_m;
+      no_go.bathymetry.assumed_crs = options.source_crs;
       set.polygons = compute_no_go(path, frame, no_go).polygons;
     } else {
       set = load_obstacles({path}, {frame.id(), options.source_crs}).obstacles;

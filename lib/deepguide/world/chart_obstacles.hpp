@@ -31,7 +31,8 @@ struct ChartObstacleOptions {
   double clearance_m = 2.0;
   /// How far a raster's simplified no-go boundary may lie outside the cells (m).
   double simplify_tolerance_m = 5.0;
-  /// CRS of vector files that carry none (empty: lon/lat).
+  /// CRS of files that carry none: vector files (empty: lon/lat) and rasters
+  /// such as an ESRI ASCII grid without .prj (empty: such a raster is an error).
   std::string source_crs;
   /// How S-57 cells are read (their depth and clearance are the two above).
   EncNoGoOptions enc = {};
