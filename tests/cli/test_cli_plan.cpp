@@ -538,3 +538,31 @@ TEST(CliPlan, RouteFileInEveryFormatByItsName) {
     EXPECT_FALSE(std::filesystem::exists(out)) << name;
   }
 }
+
+TEST(CliPlan, GridsWithoutACrsTakeSrcCrs) {
+  // NOAA's Coastal Relief Model as ESRI ASCII without a .prj, and GMT's cached ETOPO grid.
+  DEEPGUIDE_REAL_FILE_OR_SKIP(crm, "bathy-usml-crm/small_crm.asc");
+  DEEPGUIDE_REAL_FILE_OR_SKIP(gmt, "bathy-gmt-cache/bathy_1m.nc");
+  const auto refused = run_cli("chart info '" + crm + "'");
+  EXPECT_EQ(refused.exit_code, 1) << refused.err;
+  EXPECT_NE(refused.err.find("--src-crs"), std::string::npos) << refused.err;
+  const auto info = run_cli("chart info '" + crm + "' --src-crs EPSG:4326 --depth 700 --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const auto j = nlohmann::json::parse(info.out).at(0);
+  EXPECT_EQ(j.at("crs"), "EPSG:4326");
+  EXPECT_NEAR(j.at("extent").at("west").get<double>(), -79.900417, 1e-5);
+  EXPECT_NEAR(j.at("extent").at("north").get<double>(), 29.600417, 1e-5);
+  EXPECT_GT(j.at("no_go").at("area_m2").get<double>(), 0.0);  // depths run 622 to 771 m: some water is too shallow
+  for (const std::string& chart : {crm, gmt}) {
+    const std::string from = chart == crm ? "-79.85,29.45" : "-30,38";
+    const std::string to = chart == crm ? "-79.75,29.55" : "-29.5,38.2";
+    const auto r = run_cli("plan --chart '" + chart + "' --src-crs EPSG:4326 --depth 100 --from " + from + " --to " +
+                           to + " --json");
+    ASSERT_EQ(r.exit_code, 0) << chart << ": " << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out).at("crs"), chart == crm ? "EPSG:32617" : "EPSG:32626");
+  }
+  ScratchDir dir;
+  const auto drawn = run_cli("render chart '" + crm + "' --src-crs EPSG:4326 --depth 700 -o '" + dir.file("crm.png") + "'");
+  EXPECT_EQ(drawn.exit_code, 0) << drawn.err;
+  EXPECT_GT(std::filesystem::file_size(dir.file("crm.png")), 10000u);
+}

@@ -386,7 +386,7 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
     srs_source = "assumed (option)";
   } else {
     throw InputError(path + ": expected lon/lat axes (units degrees_east/degrees_north) or a CRS (grid_mapping), got " +
-                     "neither; pass the CRS it uses (e.g. EPSG:32632)");
+                     "neither; give the CRS it uses (--src-crs EPSG:32632 on the command line)");
   }
   if (!xvar || !yvar) {
     throw InputError(path + ": variable '" + printable(f.u_name) +
@@ -555,7 +555,7 @@ CurrentField load_two_band(GDALDataset& ds, const std::string& path, const Curre
     if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
     set_crs(f, *srs, "assumed (option)");
   } else {
-    throw InputError(path + ": expected a raster with a CRS, got none; pass the CRS it uses (e.g. EPSG:4326)");
+    throw InputError(path + ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
   }
   double gt[6];
   if (ds.GetGeoTransform(gt) != CE_None) throw InputError(path + ": expected a georeferenced raster (a geotransform), got none");
