@@ -1,13 +1,15 @@
 // deepguide suite generate DIR ...           a seeded scenario suite
-// deepguide evaluate SUITE --methods LIST -o OUTDIR [--threads N] [--shard K/N]
-// deepguide evaluate merge -o OUTDIR SHARD_DIR...
-// Exit 0 when every scenario ran; 4 when some were skipped (each is named on
-// stderr and in the outputs); 1 for bad input (an unknown method, a suite
-// that cannot be read, a folder holding another run); 2 for usage.
+// deepguide evaluate SUITE --methods LIST -o OUTDIR [--threads N] [--shard K/N|slurm] [--allow-skips]
+// deepguide evaluate merge -o OUTDIR SHARD_DIR... [--overwrite] [--allow-skips]
+// Exit 0 when every scenario ran (or some were skipped with --allow-skips);
+// 4 when some were skipped (each is named on stderr and in the outputs); 1
+// for bad input (an unknown method, a suite that cannot be read, a folder
+// holding another run or written by another process); 2 for usage.
 
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <cstdio>
 #include <iostream>
@@ -33,6 +35,8 @@ struct EvaluateArgs {
   bool no_timing = false;
   bool no_report = false;
   bool quiet = false;
+  bool allow_skips = false;
+  bool overwrite = false;
   std::vector<std::string> merge_dirs;
   std::string merge_output;
 };
@@ -84,18 +88,32 @@ struct ProgressBar {
   }
 };
 
-void report(const EvaluationRun& run, const std::string& out_dir, bool quiet) {
-  if (!quiet) std::cout << summary_markdown(run, summarize(run));
-  std::cout << "\nwrote " << out_dir << "/rows.csv, results.json, summary.md and report.html (" << run.rows.size()
-            << " rows";
+void report(const EvaluationRun& run, const std::string& out_dir, const EvaluateArgs& o) {
+  if (!o.quiet) std::cout << summary_markdown(run, summarize(run));
+  std::cout << "\nwrote " << out_dir << "/rows.csv, run.json, results.json and summary.md"
+            << (o.no_report ? "" : ", report.html and its figures") << " (" << run.rows.size() << " rows";
   if (run.resumed > 0 && run.computed > 0) std::cout << ", " << run.resumed << " kept from the earlier run";
   std::cout << ")\n";
-  if (!run.manifest.skipped.empty()) {
-    throw PartialError(std::to_string(run.manifest.skipped.size()) + " run(s) skipped, the first: " +
-                       run.manifest.skipped.front().scenario +
-                       (run.manifest.skipped.front().method.empty() ? "" : " with " + run.manifest.skipped.front().method) +
-                       ": " + run.manifest.skipped.front().error);
+  if (run.manifest.skipped.empty()) return;
+  const SkippedRun& first = run.manifest.skipped.front();
+  const std::string what = std::to_string(run.manifest.skipped.size()) + " run(s) skipped, the first: " +
+                           first.scenario + (first.method.empty() ? "" : " with " + first.method) + ": " + first.error;
+  if (o.allow_skips) {
+    std::cerr << "deepguide: warning: " << what << " (listed in summary.md; exit 0 with --allow-skips)\n";
+    return;
   }
+  throw PartialError(what);
+}
+
+// Worker threads: --threads, else the CPUs Slurm gave the task, else every core (0).
+int threads_for(int given) {
+  if (given > 0) return given;
+  if (const char* slurm = std::getenv("SLURM_CPUS_PER_TASK")) {
+    char* end = nullptr;
+    const long n = std::strtol(slurm, &end, 10);
+    if (end != slurm && *end == '\0' && n >= 1 && n <= 1024) return static_cast<int>(n);
+  }
+  return 0;
 }
 
 }  // namespace
@@ -144,8 +162,15 @@ void register_evaluate(CLI::App& app) {
                   "Comma-separated methods: geometric, dipole, potential, or GRAPH[:SEARCH][:COST] "
                   "(visibility, visibility-full, tangent, quadtree; astar, dijkstra; length, time, energy)");
   cmd->add_option("-o,--output", o->output, "Output folder (rows.csv, results.json, summary.md, report.html)");
-  cmd->add_option("--threads", o->threads, "Worker threads (default: every core)")->check(CLI::Range(1, 1024));
-  cmd->add_option("--shard", o->shard, "Run shard K of N (K/N): scenarios i with i mod N = K - 1")->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Worker threads (default: SLURM_CPUS_PER_TASK when set, else every core)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--shard", o->shard,
+                  "Run shard K of N (K/N): scenarios i with i mod N = K - 1; `slurm`: this Slurm array task's "
+                  "(SLURM_ARRAY_TASK_ID, _MIN and _COUNT)")
+      ->capture_default_str();
+  cmd->add_flag("--allow-skips", o->allow_skips,
+                "Exit 0 when broken scenarios were skipped (they are listed in the outputs), so a Slurm "
+                "afterok dependency goes on");
   cmd->add_flag("--fresh", o->fresh, "Discard the rows of an earlier run in the output folder instead of resuming");
   cmd->add_flag("--no-timing", o->no_timing, "Write compute_ms as 0, so reruns are byte-identical");
   cmd->add_flag("--no-report", o->no_report, "Skip the figures and report.html");
@@ -155,9 +180,12 @@ void register_evaluate(CLI::App& app) {
   merge->add_option("-o,--output", o->merge_output, "Output folder")->required();
   merge->add_flag("--no-report", o->no_report, "Skip the figures and report.html");
   merge->add_flag("-q,--quiet", o->quiet, "Do not print the summary");
+  merge->add_flag("--overwrite", o->overwrite, "Replace the run in an output folder that holds one");
+  merge->add_flag("--allow-skips", o->allow_skips, "Exit 0 when the shards skipped broken scenarios (listed)");
   merge->callback([o] {
-    const EvaluationRun run = merge_evaluations(o->merge_dirs, o->merge_output, !o->no_report);
-    report(run, o->merge_output, o->quiet);
+    const EvaluationRun run = merge_evaluations(o->merge_dirs, o->merge_output, !o->no_report, o->overwrite);
+    std::cout << "merged " << o->merge_dirs.size() << " shard folder(s) into " << o->merge_output << "\n";
+    report(run, o->merge_output, *o);
   });
   cmd->callback([o, cmd] {
     if (cmd->got_subcommand("merge")) return;
@@ -166,8 +194,11 @@ void register_evaluate(CLI::App& app) {
     if (o->output.empty()) throw CLI::RequiredError("--output");
     EvaluateOptions options;
     options.methods = parse_methods(o->methods);
-    options.shard = parse_shard(o->shard);
-    options.threads = o->threads;
+    options.shard = o->shard == "slurm" ? slurm_array_shard(std::getenv("SLURM_ARRAY_TASK_ID"),
+                                                            std::getenv("SLURM_ARRAY_TASK_MIN"),
+                                                            std::getenv("SLURM_ARRAY_TASK_COUNT"))
+                                        : parse_shard(o->shard);
+    options.threads = threads_for(o->threads);
     options.fresh = o->fresh;
     options.timing = !o->no_timing;
     options.report = !o->no_report;
@@ -176,7 +207,7 @@ void register_evaluate(CLI::App& app) {
     options.warn = [bar](const std::string& line) { bar->warn(line); };
     const Suite suite = read_suite(o->suite);
     const EvaluationRun run = evaluate_suite(suite, o->output, options);
-    report(run, o->output, o->quiet);
+    report(run, o->output, *o);
   });
 }
 

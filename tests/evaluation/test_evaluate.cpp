@@ -7,12 +7,16 @@
 
 #include <cmath>
 #include <filesystem>
+#include <unistd.h>
+
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "../test_support.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/folder_lock.hpp"
 #include "deepguide/evaluation/eval_summary.hpp"
 #include "deepguide/evaluation/evaluate.hpp"
 
@@ -319,4 +323,82 @@ TEST(EvaluateCli, KilledRunStartedAgainHasEveryRowOnce) {
   EXPECT_NE(r.out.find("kept from the earlier run"), std::string::npos) << r.out;
   EXPECT_EQ(slurp(rows), slurp(tmp.file("whole/rows.csv")));
   EXPECT_EQ(deepguide::parse_eval_rows(slurp(rows), "rows", false).size(), 120u);
+}
+
+TEST(EvaluateCli, TheDocumentedSlurmChainCompletesWithABrokenScenario) {
+  // docs/EVALUATION.md: an array of `evaluate --shard slurm --allow-skips`, then, afterok, `evaluate merge`.
+  ScratchDir tmp;
+  (void)small_suite(tmp, 4);
+  tmp.write("suite/scenario-0002.yaml", "start: {x: 0, y: 0}\n");  // broken: no target
+  const std::string suite = tmp.file("suite");
+  const std::string args = "evaluate '" + suite + "' --methods visibility,geometric -q --no-report --no-timing";
+  std::string warnings;
+  for (int task = 0; task < 2; ++task) {  // --array=0-1: ids 0 and 1, min 0, count 2
+    setenv("SLURM_ARRAY_TASK_ID", std::to_string(task).c_str(), 1);
+    setenv("SLURM_ARRAY_TASK_MIN", "0", 1);
+    setenv("SLURM_ARRAY_TASK_COUNT", "2", 1);
+    setenv("SLURM_CPUS_PER_TASK", "1", 1);
+    const auto r = deepguide::test::run_cli(args + " --shard slurm --allow-skips -o '" +
+                                            tmp.file("shard-" + std::to_string(task)) + "'");
+    EXPECT_EQ(r.exit_code, 0) << "task " << task << ": " << r.err;  // afterok goes on
+    warnings += r.err;
+    EXPECT_EQ(r.out.find("report.html"), std::string::npos) << r.out;  // --no-report: not claimed
+  }
+  EXPECT_NE(warnings.find("skipped scenario-0002"), std::string::npos) << warnings;  // said, and exit 0
+  for (const char* v : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_COUNT", "SLURM_CPUS_PER_TASK"}) {
+    unsetenv(v);
+  }
+  const EvaluationRun one = read_evaluation(tmp.file("shard-0")), two = read_evaluation(tmp.file("shard-1"));
+  EXPECT_EQ(one.manifest.shard, (Shard{1, 2}));
+  EXPECT_EQ(two.manifest.shard, (Shard{2, 2}));
+  const std::string shards = " '" + tmp.file("shard-0") + "' '" + tmp.file("shard-1") + "'";
+  auto r = deepguide::test::run_cli("evaluate merge -q --allow-skips -o '" + tmp.file("merged") + "'" + shards);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_evaluation(tmp.file("merged")).rows.size(), 6u);  // 3 scenarios x 2 methods; the broken one listed
+  EXPECT_NE(slurp(tmp.path() / "merged" / "summary.md").find("scenario-0002"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(tmp.path() / "merged" / "report.html"));
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "merged" / FolderLock::kFileName));  // released
+  // A folder holding a run is not merged into: exit 1, one line, nothing changed.
+  const std::string before = slurp(tmp.path() / "merged" / "rows.csv");
+  r = deepguide::test::run_cli("evaluate merge -q --allow-skips -o '" + tmp.file("merged") + "'" + shards);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("--overwrite"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(tmp.path() / "merged" / "rows.csv"), before);
+  // --overwrite replaces the run, old report included when the new one has none.
+  r = deepguide::test::run_cli("evaluate merge -q --allow-skips --no-report --overwrite -o '" + tmp.file("merged") +
+                               "'" + shards);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "merged" / "report.html"));
+  // Without --allow-skips a skip is still exit 4.
+  r = deepguide::test::run_cli("evaluate merge -q -o '" + tmp.file("merged4") + "'" + shards);
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+}
+
+TEST(EvaluateCli, AFolderAnotherProcessWritesIsRefused) {
+  ScratchDir tmp;
+  (void)small_suite(tmp, 2);
+  std::filesystem::create_directories(tmp.path() / "out");
+  const FolderLock held(tmp.path() / "out", "test");
+  const auto r = deepguide::test::run_cli("evaluate '" + tmp.file("suite") + "' --methods visibility -q -o '" +
+                                          tmp.file("out") + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("process " + std::to_string(getpid())), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "out" / "rows.csv"));
+}
+
+TEST(Evaluate, SlurmArrayTasksAreShardsInOrder) {
+  EXPECT_EQ(slurm_array_shard("0", "0", "16"), (Shard{1, 16}));
+  EXPECT_EQ(slurm_array_shard("16", "1", "16"), (Shard{16, 16}));
+  EXPECT_EQ(slurm_array_shard("3", nullptr, "8"), (Shard{4, 8}));
+  EXPECT_THROW(slurm_array_shard(nullptr, "0", "8"), InputError);
+  EXPECT_THROW(slurm_array_shard("x", "0", "8"), InputError);
+  EXPECT_THROW(slurm_array_shard("9", "0", "8"), InputError);  // ids not consecutive from the minimum
+  // Two locks on one folder: the second is refused until the first ends.
+  ScratchDir tmp;
+  {
+    const FolderLock a(tmp.path(), "a");
+    EXPECT_THROW(FolderLock(tmp.path(), "b"), InputError);
+  }
+  EXPECT_NO_THROW(FolderLock(tmp.path(), "c"));
 }

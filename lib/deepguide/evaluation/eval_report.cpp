@@ -47,9 +47,6 @@ struct Figure {
   std::function<double(const MethodRun&)> value;  // NaN: not drawn
 };
 
-std::string cell(const Distribution& d, int digits) {
-  return d.count == 0 ? "&ndash;" : fixed(d.median, digits) + " / " + fixed(d.p95, digits);
-}
 
 }  // namespace
 
@@ -128,16 +125,14 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
     for (const std::string& e : c.evidence) o << "<li>" << html(e) << "</li>\n";
     o << "</ul></li>\n";
   }
-  o << "</ul>\n<h2>Methods</h2>\n<table>\n<tr><th>method</th><th>runs</th><th>reached</th><th>collisions</th>"
-       "<th>no route</th><th>energy wins</th><th>path m</th><th>planned route m</th><th>energy kJ</th><th>time s</th>"
-       "<th>min clearance m</th><th>max r_ref &deg;/s</th><th>rms r_ref &deg;/s</th><th>compute ms</th></tr>\n";
+  o << "</ul>\n<h2>Methods</h2>\n<table>\n<tr>";
+  const std::vector<MethodColumn> columns = method_columns(run.manifest);
+  for (const MethodColumn& c : columns) o << "<th>" << html(c.header) << "</th>";
+  o << "</tr>\n";
   for (const MethodStats& m : s.methods) {
-    o << "<tr><td>" << html(m.method) << "</td><td>" << m.runs << "</td><td>" << m.reached << "</td><td>"
-      << m.collisions << "</td><td>" << m.no_route << "</td><td>" << m.wins << "</td><td>" << cell(m.path_length_m, 1)
-      << "</td><td>" << cell(m.route_length_m, 1) << "</td><td>" << cell(m.energy_kj, 1) << "</td><td>"
-      << cell(m.time_s, 1) << "</td><td>" << cell(m.min_clearance_m, 2) << "</td><td>"
-      << cell(m.max_rate_ref_deg_s, 2) << "</td><td>" << cell(m.rms_rate_ref_deg_s, 2) << "</td><td>"
-      << (run.manifest.timing ? cell(m.compute_ms, 2) : "&ndash;") << "</td></tr>\n";
+    o << "<tr>";
+    for (const MethodColumn& c : columns) o << "<td>" << html(c.cell(m)) << "</td>";
+    o << "</tr>\n";
   }
   o << "</table>\n<h2>Figures</h2>\n";
   for (const std::string& f : written) o << "<p><img src=\"" << f << "\" alt=\"" << f << "\"></p>\n";

@@ -137,6 +137,31 @@ std::string cell(const Distribution& d, int digits) {
 
 }  // namespace
 
+std::vector<MethodColumn> method_columns(const RunManifest& manifest) {
+  const auto count = [](int MethodStats::*field) {
+    return [field](const MethodStats& x) { return std::to_string(x.*field); };
+  };
+  const auto dist = [](Distribution MethodStats::*field, int digits) {
+    return [field, digits](const MethodStats& x) { return cell(x.*field, digits); };
+  };
+  const bool timing = manifest.timing;
+  return {{"method", [](const MethodStats& x) { return x.method; }, false},
+          {"runs", count(&MethodStats::runs)},
+          {"reached", count(&MethodStats::reached)},
+          {"collisions", count(&MethodStats::collisions)},
+          {"no route", count(&MethodStats::no_route)},
+          {"energy wins", count(&MethodStats::wins)},
+          {"path m", dist(&MethodStats::path_length_m, 1)},
+          {"planned route m", dist(&MethodStats::route_length_m, 1)},
+          {"energy kJ", dist(&MethodStats::energy_kj, 1)},
+          {"time s", dist(&MethodStats::time_s, 1)},
+          {"min clearance m", dist(&MethodStats::min_clearance_m, 2)},
+          {"max r_ref deg/s", dist(&MethodStats::max_rate_ref_deg_s, 2)},
+          {"rms r_ref deg/s", dist(&MethodStats::rms_rate_ref_deg_s, 2)},
+          {"compute ms", [timing](const MethodStats& x) { return timing ? cell(x.compute_ms, 2) : std::string("–"); }},
+          {"graph size", [](const MethodStats& x) { return x.graph_size.max > 0 ? cell(x.graph_size, 0) : std::string("–"); }}};
+}
+
 EvaluationSummary summarize(const EvaluationRun& run) {
   EvaluationSummary s;
   const RowsByScenario rows = by_scenario(run.rows);
@@ -207,16 +232,16 @@ std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& 
   if (!m.skipped.empty()) o << ", " << m.skipped.size() << " skipped";
   o << ".\n\nEach cell: median / 95th percentile. Path, energy, time, clearance and turning rates are the "
        "vehicle's, simulated; a planner's route is sailed by line-of-sight guidance.\n\n";
-  o << "| method | runs | reached | collisions | no route | energy wins | path m | planned route m | energy kJ | "
-       "time s | min clearance m | max r_ref deg/s | rms r_ref deg/s | compute ms | graph size |\n";
-  o << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  const std::vector<MethodColumn> columns = method_columns(m);
+  o << "|";
+  for (const MethodColumn& c : columns) o << " " << c.header << " |";
+  o << "\n|";
+  for (const MethodColumn& c : columns) o << (c.numeric ? "---:|" : "---|");
+  o << "\n";
   for (const MethodStats& x : s.methods) {
-    o << "| " << x.method << " | " << x.runs << " | " << x.reached << " | " << x.collisions << " | " << x.no_route
-      << " | " << x.wins << " | " << cell(x.path_length_m, 1) << " | " << cell(x.route_length_m, 1) << " | "
-      << cell(x.energy_kj, 1) << " | " << cell(x.time_s, 1) << " | " << cell(x.min_clearance_m, 2) << " | "
-      << cell(x.max_rate_ref_deg_s, 2) << " | " << cell(x.rms_rate_ref_deg_s, 2) << " | "
-      << (m.timing ? cell(x.compute_ms, 2) : "–") << " | "
-      << (x.graph_size.max > 0 ? cell(x.graph_size, 0) : "–") << " |\n";
+    o << "|";
+    for (const MethodColumn& c : columns) o << " " << c.cell(x) << " |";
+    o << "\n";
   }
   o << "\n## The seed's claims\n\n";
   for (const ClaimCheck& c : s.claims) {

@@ -17,6 +17,7 @@
 // Wins: per scenario, the methods that reached the target without a collision
 // and spent the least energy (within 1 J; ties win together).
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,15 @@ EvaluationSummary summarize(const EvaluationRun& run);
 
 /// The summary as Markdown (summary.md; also what the terminal shows).
 std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& summary);
+
+/// The methods table's columns: summary.md and report.html draw the same
+/// table from this one list. A cell is text ("–" where there is no value).
+struct MethodColumn {
+  std::string header;
+  std::function<std::string(const MethodStats&)> cell;
+  bool numeric = true;  ///< right-aligned
+};
+std::vector<MethodColumn> method_columns(const RunManifest& manifest);
 
 /// Writes results.json (manifest, rows, summary, claims) and summary.md into `dir`.
 void write_results(const std::string& dir, const EvaluationRun& run);

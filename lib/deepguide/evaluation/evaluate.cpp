@@ -17,6 +17,7 @@
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/folder_lock.hpp"
 #include "deepguide/evaluation/eval_report.hpp"
 #include "deepguide/evaluation/eval_summary.hpp"
 
@@ -103,6 +104,22 @@ void sort_skipped(std::vector<SkippedRun>& skipped) {
 }
 
 // The final files of a finished run: rows in order, manifest, results, summary, report.
+// What a run writes into its folder (the rest of a folder is not ours).
+bool is_run_file(const std::string& name) {
+  return name == kManifest || name == kRows || name == "results.json" || name == "summary.md" ||
+         name == "report.html" || (name.rfind("fig_", 0) == 0 && name.size() > 8 && name.substr(name.size() - 4) == ".png");
+}
+
+// Removes an earlier run's files, so a new run without a report leaves no old report beside its rows.
+void remove_run_files(const fs::path& dir) {
+  std::error_code ec;
+  std::vector<fs::path> ours;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (is_run_file(e.path().filename().string())) ours.push_back(e.path());
+  }
+  for (const fs::path& p : ours) fs::remove(p, ec);
+}
+
 void finish(const fs::path& dir, EvaluationRun& run, bool report) {
   sort_rows(run.rows, run.manifest.methods);
   sort_skipped(run.manifest.skipped);
@@ -122,6 +139,25 @@ struct JobResult {
 };
 
 }  // namespace
+
+Shard slurm_array_shard(const char* task_id, const char* task_min, const char* task_count) {
+  if (task_id == nullptr || task_count == nullptr) {
+    throw InputError("--shard slurm: expected SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it as a task of a "
+                     "Slurm job array, sbatch --array)");
+  }
+  const auto whole = [](const char* t, const char* name) {
+    const std::string s(t);
+    if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) {
+      throw InputError(std::string("--shard slurm: ") + name + ": expected a whole number, got '" + printable(s) + "'");
+    }
+    return std::stol(s);
+  };
+  const long id = whole(task_id, "SLURM_ARRAY_TASK_ID");
+  const long min = task_min ? whole(task_min, "SLURM_ARRAY_TASK_MIN") : 0;
+  const long count = whole(task_count, "SLURM_ARRAY_TASK_COUNT");
+  // Shards are the array's tasks in order: an array of consecutive ids (--array=0-15 or 1-16).
+  return parse_shard(std::to_string(id - min + 1) + "/" + std::to_string(count));
+}
 
 Shard parse_shard(const std::string& text) {
   Shard s;
@@ -158,6 +194,8 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir, ec)) throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+  const FolderLock lock(dir, "evaluate");
+  if (options.fresh) remove_run_files(dir);
 
   // Resume: keep the rows of the same run, drop a line cut off by a kill.
   EvaluationRun run;
@@ -308,8 +346,20 @@ EvaluationRun read_evaluation(const std::string& dir_text) {
   return run;
 }
 
-EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, const std::string& out_dir, bool report) {
+EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, const std::string& out_dir, bool report,
+                                bool overwrite) {
   if (shard_dirs.empty()) throw InputError("evaluate merge: expected the shards' folders");
+  // A merge makes a new run: never into a folder that holds something, unless told to replace its run.
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  if (!overwrite && fs::is_directory(dir, ec)) {
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name == FolderLock::kFileName) continue;
+      throw InputError(out_dir + ": expected a new or empty folder for the merged run, got one holding " +
+                       printable(name) + " (give --overwrite to replace the run in it)");
+    }
+  }
   EvaluationRun merged;
   std::vector<std::string> seen;  // the folder of each shard index
   std::string fingerprint_from;    // the first shard that had a suite fingerprint
@@ -378,10 +428,10 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
                        std::to_string(k + 1) + "/" + std::to_string(seen.size()) + " is missing");
     }
   }
-  const fs::path dir(out_dir);
-  std::error_code ec;
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir, ec)) throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+  const FolderLock lock(dir, "evaluate merge");
+  remove_run_files(dir);
   merged.resumed = merged.rows.size();
   finish(dir, merged, report);
   return merged;

@@ -41,6 +41,10 @@ struct Shard {
 };
 /// "K/N" with 1 <= K <= N <= 100000; InputError naming --shard otherwise.
 Shard parse_shard(const std::string& text);
+/// The shard of a Slurm array task: K = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
+/// N = SLURM_ARRAY_TASK_COUNT (the variables' values; `task_min` may be null:
+/// 0). The array's ids must be consecutive. InputError naming the variable otherwise.
+Shard slurm_array_shard(const char* task_id, const char* task_min, const char* task_count);
 
 struct SkippedRun {
   std::size_t scenario_index = 0;
@@ -92,8 +96,11 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
 /// Joins the shards' folders into `out_dir`: the same suite and methods, each
 /// shard K of N once, all N present, every shard complete. Throws InputError
 /// naming the folder and what differs or is missing.
+/// `out_dir` must be new or empty unless `overwrite` (which replaces the run
+/// files there, nothing else). Both evaluate_suite and this lock the output
+/// folder (core/folder_lock.hpp): a second process on it is an InputError.
 EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, const std::string& out_dir,
-                                bool report = true);
+                                bool report = true, bool overwrite = false);
 
 /// Reads an output folder's run.json and rows.csv (strict).
 EvaluationRun read_evaluation(const std::string& dir);
