@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -565,4 +566,25 @@ TEST(CliPlan, GridsWithoutACrsTakeSrcCrs) {
   const auto drawn = run_cli("render chart '" + crm + "' --src-crs EPSG:4326 --depth 700 -o '" + dir.file("crm.png") + "'");
   EXPECT_EQ(drawn.exit_code, 0) << drawn.err;
   EXPECT_GT(std::filesystem::file_size(dir.file("crm.png")), 10000u);
+}
+
+TEST(CliPlan, CheckRouteReadsEcdisAndOpenCpnRoutes) {
+  // The Norwegian Coastal Administration's RTZ routes and an OpenCPN GPX route: every waypoint read
+  // (counted in the files with xmllint), in the route's own UTM zone when no obstacle fixes the frame.
+  ScratchDir dir;
+  const std::string none = dir.write("none.geojson", "{\"type\": \"FeatureCollection\", \"features\": []}");
+  const std::vector<std::tuple<std::string, std::size_t, std::string>> routes = {
+      {"rtz-nca-norway/NCA_7_5m_Bergen_Stad_Krakhelle_In_20250731.rtz", 82, "EPSG:32631"},  // 5.2 E
+      {"rtz-nca-norway/NCA_Bergen_Fedjeosen_In_20250801.rtz", 18, "EPSG:32631"},
+      {"rtz-nca-norway/NCA_OsloEast_In_20250731.rtz", 18, "EPSG:32632"},
+      {"opencpn-gpx/opencpn_route_foo.gpx", 13, "EPSG:32634"}};
+  for (const auto& [rel, count, crs] : routes) {
+    DEEPGUIDE_REAL_FILE_OR_SKIP(path, rel);
+    const auto r = run_cli("check route '" + path + "' --obstacles '" + none + "' --json");
+    ASSERT_EQ(r.exit_code, 0) << rel << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("waypoints").get<std::size_t>(), count) << rel;
+    EXPECT_EQ(j.at("crs"), crs) << rel;
+    EXPECT_GT(j.at("length_m").get<double>(), 1000.0) << rel;
+  }
 }

@@ -15,6 +15,7 @@
 #include "deepguide/mission/mission_environment.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/mission/mission.hpp"
+#include "deepguide/mission/plan_export.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
 
@@ -184,6 +185,10 @@ TEST(Mission, BadFilesAreOneLineNamingThePlace) {
       {kHeader + "environment: {charts: [nowhere.tif]}\nmanoeuvres:\n  - goto: {position: {x: 1, y: 2}}\n",
        {"nowhere.tif", "existing file"}},
       {kHeader + "manoeuvres:\n  - goto: {position: {x: 1, y: 2}, depth_m: -3}\n", {"depth_m", "positive down"}},
+      {kHeader + "manoeuvres:\n  - track: {waypoints: [{x: 1, y: 2}], route_file: r.rtz}\n",
+       {"route_file", "one of them", "both"}},
+      {kHeader + "manoeuvres:\n  - track: {depth_m: 5}\n", {"waypoints or a route_file", "neither"}},
+      {kHeader + "manoeuvres:\n  - track: {route_file: nowhere.rtz}\n", {"nowhere.rtz", "existing"}},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string path = dir.write("bad" + std::to_string(k) + ".yaml", cases[k].first);
@@ -316,4 +321,23 @@ TEST(Mission, EdgeCasesTheReviewFound) {
   EXPECT_NE(error_of(dir.write("w.yaml", kHeader + "manoeuvres:\n  - track: {waypoints: {x: 1, y: 2}}\n"))
                 .find("a mapping"),
             std::string::npos);
+}
+
+TEST(Mission, ATrackFollowsARouteFileFromAnEcdisOrOpenCpn) {
+  // The sample's plan exported as RTZ and GPX, then sailed again as a track read from each file.
+  ScratchDir dir;
+  const Mission sample = read_mission(deepguide::test::source_file("data/missions/sample_mission.yaml"));
+  const MissionPlan plan = expand_mission(sample, load_environment(sample).obstacles);
+  export_plan(sample, plan, dir.file("sample.rtz"), ExportFormat::rtz);
+  export_plan(sample, plan, dir.file("sample.gpx"), ExportFormat::gpx);
+  const std::vector<ExportWaypoint> want = export_waypoints(sample, plan);
+  for (const char* file : {"sample.rtz", "sample.gpx"}) {
+    const std::string path = dir.write(std::string(file) + ".yaml",
+                                       "crs: EPSG:32632\nstart: {x: 580700, y: 6033450, depth_m: 0}\nmanoeuvres:\n"
+                                       "  - track: {depth_m: 5, route_file: " + std::string(file) + "}\n");
+    const Mission m = read_mission(path);
+    const auto& t = std::get<TrackSpec>(m.manoeuvres.at(0).spec);
+    ASSERT_EQ(t.waypoints.size(), want.size()) << file;
+    for (std::size_t i = 0; i < want.size(); ++i) ASSERT_LT((t.waypoints[i] - want[i].xy).norm(), 0.01) << file << " " << i;
+  }
 }

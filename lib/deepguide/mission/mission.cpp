@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/route_io.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/world/current_field.hpp"
 
@@ -90,7 +91,7 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
     return keys;
   };
   std::vector<const char*> keys;
-  if (c.type == "track") keys = common({"waypoints"});
+  if (c.type == "track") keys = common({"waypoints", "route_file"});
   else if (c.type == "survey") keys = common({"area", "line_spacing_m", "heading_deg", "turn_radius_m"});
   else if (c.type == "gps_update") keys = common({"hold_s"});
   else if (c.type == "identify") keys = common({"object", "mode", "distance_m"});
@@ -111,8 +112,8 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
     }
   }
   const Mapping m(body, r.source, prefix,
-                  {"name", "depth_m", "speed_kn", "speed_mps", "waypoints", "area", "line_spacing_m", "heading_deg",
-                   "turn_radius_m", "hold_s", "object", "mode", "distance_m", "position"},
+                  {"name", "depth_m", "speed_kn", "speed_mps", "waypoints", "route_file", "area", "line_spacing_m",
+                   "heading_deg", "turn_radius_m", "hold_s", "object", "mode", "distance_m", "position"},
                   "a mapping of " + c.type + " keys");
   c.name = m.has("name") ? m.text("name", "a name (text)") : c.type + " " + std::to_string(index + 1);
   c.depth_m = m.number_or("depth_m", kDepth, depth_before);
@@ -122,7 +123,29 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
   }
   c.speed_mps = r.speed(m, vehicle);
   if (c.type == "track") {
-    c.spec = TrackSpec{r.positions(m, "waypoints", 1)};
+    if (m.has("waypoints") == m.has("route_file")) {
+      throw input_error(m.where("waypoints"), "waypoints or a route_file (one of them)",
+                        m.has("waypoints") ? "both" : "neither");
+    }
+    if (m.has("route_file")) {
+      // A route from an ECDIS (RTZ), OpenCPN (GPX) or any route file: its waypoints in order.
+      TrackSpec t;
+      const std::string file = m.path("route_file", r.base_dir);
+      std::vector<RouteFileWaypoint> route;
+      try {
+        route = read_route_waypoints(file);
+      } catch (const InputError& e) {
+        throw input_error(m.where("route_file"), "a route file with its waypoints (RTZ, GPX, GeoJSON, KML)", e.what());
+      }
+      for (const RouteFileWaypoint& w : route) {
+        const Vec2 xy = r.frame->from_lonlat(w.lonlat);
+        if (!xy.allFinite()) throw input_error(m.where("route_file"), "waypoints inside the frame " + r.frame->id());
+        t.waypoints.push_back(xy);
+      }
+      c.spec = std::move(t);
+    } else {
+      c.spec = TrackSpec{r.positions(m, "waypoints", 1)};
+    }
   } else if (c.type == "goto") {
     if (!m.has("position")) throw input_error(m.where("position"), "a position {lon: DEG, lat: DEG} or {x: M, y: M}", "nothing");
     c.spec = GotoSpec{r.position(m.value("position"), m.full("position"))};
