@@ -29,6 +29,20 @@ struct CheckOptions {
   bool json = false;
 };
 
+// A part of the route file in the local frame.
+Route route_in(const RouteFilePart& part, const LocalFrame& frame, const std::string& path) {
+  Route route;
+  for (std::size_t i = 0; i < part.points.size(); ++i) {
+    const Vec2 p = frame.from_lonlat(part.points[i].lonlat);
+    if (!p.allFinite()) {
+      throw InputError(path + ": " + part.label + ": waypoint " + std::to_string(i + 1) +
+                       ": expected a position inside the local frame " + frame.id());
+    }
+    route.points.push_back(p);
+  }
+  return route;
+}
+
 // The route against S-57 cells, feature by feature (enc_route_check.hpp).
 nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& why) {
   if (std::isnan(o.depth)) throw InputError("--depth: expected the operating depth (m) to check against S-57 charts");
@@ -40,23 +54,45 @@ nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& wh
   std::optional<LocalFrame> frame;
   if (!o.frame.crs.empty()) frame = LocalFrame::from_user_crs(o.frame.crs);
   const EncNoGo no_go = chart_no_go(o.charts, frame, opts);
-  const Route route = read_route(o.route, no_go.frame);
-  const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin);
-  safe = check.safe;
-  why = check.describe(no_go.frame);
-  nlohmann::json j = {{"safe", check.safe},        {"crossed_features", check.crossed_features},
-                      {"margin_m", o.margin},      {"required_depth_m", no_go.required_depth_m},
-                      {"waypoints", route.points.size()}, {"length_m", route.length()}};
-  if (check.first) {
-    const ChartCrossing& c = *check.first;
-    const Vec2 ll = no_go.frame.to_lonlat(c.at);
-    j["first_crossing"] = {{"feature", c.feature->id},     {"cell", c.feature->cell},
-                           {"class", c.feature->cls},      {"rcid", c.feature->rcid},
-                           {"reason", c.feature->reason},  {"leg", c.leg + 1},
-                           {"along_m", c.along_m},         {"lon", ll.x()},
-                           {"lat", ll.y()}};
-    if (std::isfinite(c.feature->charted_depth_m)) j["first_crossing"]["charted_depth_m"] = c.feature->charted_depth_m;
+  // Every line and point of the file; the verdict names the first part that crosses.
+  const std::vector<RouteFilePart> parts = read_route_parts(o.route);
+  nlohmann::json j = {{"margin_m", o.margin}, {"required_depth_m", no_go.required_depth_m}};
+  std::size_t lines = 0, points = 0, crossed = 0;
+  safe = true;
+  for (const RouteFilePart& part : parts) {
+    const Route route = route_in(part, no_go.frame, o.route);
+    if (part.is_point) {
+      ++points;
+      if (const EncNoGoFeature* f = no_go_feature_at(no_go, route.points.front(), o.margin); f && safe) {
+        safe = false;
+        why = part.label + ": lies within " + fixed(o.margin, 2) + " m of " + f->id + (f->cell.empty() ? "" : " of " + f->cell) +
+              " (" + f->reason + ")";
+        j["first_crossing"] = {{"part", part.label}, {"feature", f->id}, {"cell", f->cell}, {"class", f->cls},
+                               {"rcid", f->rcid}, {"reason", f->reason}};
+      }
+      continue;
+    }
+    if (lines++ == 0) j["waypoints"] = route.points.size(), j["length_m"] = route.length();
+    const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin);
+    crossed += check.crossed_features;
+    if (!check.safe && safe) {
+      safe = false;
+      why = (parts.size() > 1 ? part.label + ": " : std::string()) + check.describe(no_go.frame);
+      const ChartCrossing& c = *check.first;
+      const Vec2 ll = no_go.frame.to_lonlat(c.at);
+      j["first_crossing"] = {{"part", part.label},          {"feature", c.feature->id}, {"cell", c.feature->cell},
+                             {"class", c.feature->cls},     {"rcid", c.feature->rcid},  {"reason", c.feature->reason},
+                             {"leg", c.leg + 1},            {"along_m", c.along_m},     {"lon", ll.x()},
+                             {"lat", ll.y()}};
+      if (std::isfinite(c.feature->charted_depth_m)) j["first_crossing"]["charted_depth_m"] = c.feature->charted_depth_m;
+    } else if (safe) {
+      why = check.describe(no_go.frame);
+    }
   }
+  j["safe"] = safe;
+  j["crossed_features"] = crossed;
+  j["lines"] = lines;
+  j["points"] = points;
   return j;
 }
 
@@ -93,25 +129,42 @@ void register_check_route(CLI::App& check) {
     std::string why;
     if (!o->obstacles.empty()) {
       const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
+      // Every line and point of the file (a second line through an obstacle is not "safe").
+      const std::vector<RouteFilePart> parts = read_route_parts(o->route);
+      if (parts.empty()) throw InputError(o->route + ": expected a route line or points, found none");
       // Files without an obstacle fix no frame: the route's start does (its UTM zone).
       LocalFrame frame = loaded.frame;
       if (loaded.obstacles.empty() && o->frame.crs.empty()) {
-        const Vec2 start = read_route_waypoints(o->route).front().lonlat;
+        const Vec2 start = parts.front().points.front().lonlat;
         frame = LocalFrame::utm_for(start.x(), start.y());
       }
-      const Route route = read_route(o->route, frame);
       const ObstacleField field(loaded.obstacles, o->margin);
-      const RouteCheck check = check_route(route.points, field);
-      out = {{"safe", check.safe},
-             {"min_clearance_m", check.min_clearance_m},
-             {"worst_segment", check.worst_segment},
-             {"worst_obstacle", check.worst_obstacle},
-             {"margin_m", o->margin},
-             {"waypoints", route.points.size()},
-             {"length_m", route.length()},
-             {"crs", frame.id()}};
-      safe = check.safe;
-      why = check.describe();
+      std::optional<RouteCheck> worst;
+      std::string worst_part;
+      std::size_t lines = 0, points = 0;
+      for (const RouteFilePart& part : parts) {
+        const Route route = route_in(part, frame, o->route);
+        if (part.is_point) ++points;
+        if (!part.is_point && lines++ == 0) out["waypoints"] = route.points.size(), out["length_m"] = route.length();
+        const RouteCheck check = check_route(route.points, field);
+        // The verdict: the first unsafe part, else the part that comes closest.
+        const bool first_unsafe = !check.safe && (!worst || worst->safe);
+        if (!worst || first_unsafe || (worst->safe && check.min_clearance_m < worst->min_clearance_m)) {
+          worst = check;
+          worst_part = part.label;
+        }
+      }
+      out["safe"] = worst->safe;
+      out["min_clearance_m"] = worst->min_clearance_m;
+      out["worst_segment"] = worst->worst_segment;
+      out["worst_obstacle"] = worst->worst_obstacle;
+      out["worst_part"] = worst_part;
+      out["margin_m"] = o->margin;
+      out["lines"] = lines;
+      out["points"] = points;
+      out["crs"] = frame.id();
+      safe = worst->safe;
+      why = (parts.size() > 1 ? worst_part + ": " : std::string()) + worst->describe();
     }
     if (!o->charts.empty()) {
       bool chart_safe = true;

@@ -588,3 +588,29 @@ TEST(CliPlan, CheckRouteReadsEcdisAndOpenCpnRoutes) {
     EXPECT_GT(j.at("length_m").get<double>(), 1000.0) << rel;
   }
 }
+
+TEST(CliPlan, CheckRouteChecksEveryLineAndPointOfTheFile) {
+  // A first line clear of every obstacle; a second through c2's centre, or a point on c5's, is not safe.
+  ScratchDir dir;
+  const std::string clear = "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"LineString\", "
+                            "\"coordinates\": [[10.230, 54.440], [10.231, 54.441]]}}";
+  const std::string through = "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"LineString\", "
+                              "\"coordinates\": [[10.250, 54.453], [10.262, 54.453]]}}";
+  const std::string on_c5 = "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", "
+                            "\"coordinates\": [10.248, 54.447]}}";
+  const auto file = [&](const std::string& name, const std::vector<std::string>& features) {
+    std::string text = "{\"type\": \"FeatureCollection\", \"features\": [";
+    for (std::size_t i = 0; i < features.size(); ++i) text += (i ? ", " : "") + features[i];
+    return dir.write(name, text + "]}");
+  };
+  auto r = run_cli("check route '" + file("one.geojson", {clear}) + "' --obstacles '" + kSample + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("lines"), 1);
+  r = run_cli("check route '" + file("two.geojson", {clear, through}) + "' --obstacles '" + kSample + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.err.find("feature 1"), std::string::npos) << r.err;  // the second line, named
+  EXPECT_NE(r.err.find("c2"), std::string::npos) << r.err;
+  r = run_cli("check route '" + file("point.geojson", {clear, on_c5}) + "' --obstacles '" + kSample + "' --json");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.err.find("c5"), std::string::npos) << r.err;
+}

@@ -166,13 +166,14 @@ std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
   return out;
 }
 
-// The first LineString of an OGR source, in WGS 84.
-std::vector<RouteFileWaypoint> read_ogr_line(const std::string& path) {
+// Every line and point of an OGR source, in WGS 84, in the order of its layers and features.
+std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
   GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
   if (!ds) fail(path, "open it as a vector file (GeoJSON, GPX, KML, RTZ, ...)");
   const auto geo = gdal::wgs84();
+  std::vector<RouteFilePart> parts;
   for (OGRLayer* layer : ds->GetLayers()) {
     std::unique_ptr<OGRSpatialReference> srs;
     if (layer->GetSpatialRef() != nullptr) {
@@ -185,34 +186,63 @@ std::vector<RouteFileWaypoint> read_ogr_line(const std::string& path) {
     if (!ct) fail(path, "transform its CRS to WGS 84");
     for (auto& feature : *layer) {
       const OGRGeometry* g = feature->GetGeometryRef();
-      if (g == nullptr || wkbFlatten(g->getGeometryType()) != wkbLineString) continue;
-      const OGRLineString* line = g->toLineString();
-      std::vector<RouteFileWaypoint> out;
-      for (int i = 0; i < line->getNumPoints(); ++i) {
-        double x = line->getX(i), y = line->getY(i);
-        if (!std::isfinite(x) || !std::isfinite(y) || !ct->Transform(1, &x, &y)) {
-          throw InputError(path + ": feature " + std::to_string(feature->GetFID()) + ": vertex " + std::to_string(i) +
-                           ": field 'geometry': expected finite coordinates");
+      if (g == nullptr) continue;
+      const std::string where = std::string(layer->GetName()) + " feature " + std::to_string(feature->GetFID());
+      // A part from a line string or a point; `k` numbers the members of a multi-geometry.
+      const auto add = [&](const OGRGeometry* member, const std::string& label) {
+        RouteFilePart part{label, {}, wkbFlatten(member->getGeometryType()) == wkbPoint};
+        const auto take = [&](double x, double y, int i) {
+          if (!std::isfinite(x) || !std::isfinite(y) || !ct->Transform(1, &x, &y)) {
+            throw InputError(path + ": " + label + ": vertex " + std::to_string(i) +
+                             ": field 'geometry': expected finite coordinates");
+          }
+          part.points.push_back({Vec2(x, y), {}});
+        };
+        if (part.is_point) {
+          const OGRPoint* pt = member->toPoint();
+          if (pt->IsEmpty()) return;
+          take(pt->getX(), pt->getY(), 0);
+        } else {
+          const OGRLineString* line = member->toLineString();
+          for (int i = 0; i < line->getNumPoints(); ++i) take(line->getX(i), line->getY(i), i);
+          if (part.points.size() < 2) {
+            throw InputError(path + ": " + label + ": expected a route line with at least 2 points");
+          }
         }
-        out.push_back({Vec2(x, y), {}});
+        parts.push_back(std::move(part));
+      };
+      switch (wkbFlatten(g->getGeometryType())) {
+        case wkbLineString:
+        case wkbPoint: add(g, where); break;
+        case wkbMultiLineString:
+        case wkbMultiPoint: {
+          const OGRGeometryCollection* c = g->toGeometryCollection();
+          for (int k = 0; k < c->getNumGeometries(); ++k) {
+            add(c->getGeometryRef(k), where + " part " + std::to_string(k + 1));
+          }
+          break;
+        }
+        default: break;  // areas are not routes
       }
-      if (out.size() < 2) {
-        throw InputError(path + ": feature " + std::to_string(feature->GetFID()) +
-                         ": expected a route line with at least 2 points");
-      }
-      return out;
     }
   }
-  throw InputError(path + ": expected a LineString feature (the route line), found none");
+  return parts;
 }
 
 }  // namespace
 
-std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path) {
+std::vector<RouteFilePart> read_route_parts(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": expected an existing route file, found none");
-  if (ascii_lower(std::filesystem::path(path).extension().string()) == ".rtz") return read_rtz(path);
-  return read_ogr_line(path);
+  if (ascii_lower(std::filesystem::path(path).extension().string()) == ".rtz") return {{"route", read_rtz(path), false}};
+  return read_ogr_parts(path);
+}
+
+std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path) {
+  for (RouteFilePart& part : read_route_parts(path)) {
+    if (!part.is_point) return std::move(part.points);
+  }
+  throw InputError(path + ": expected a LineString feature (the route line), found none");
 }
 
 Route read_route(const std::string& path, const LocalFrame& frame) {

@@ -28,11 +28,23 @@ struct RouteFileWaypoint {
 
 /// The waypoints of a route file in WGS 84: an RTZ route (IEC 61174, any
 /// version and namespace, read with libxml2: `waypoints/waypoint/position`),
-/// or the first LineString of any OGR source (layers in order: GeoJSON, a
+/// or the first line of any OGR source (layers in order: GeoJSON, a
 /// GPX route or track from OpenCPN or a plotter, KML, ...). Throws InputError
 /// naming the file, and the feature or waypoint, for one that is missing,
 /// broken, or has fewer than 2 points.
 std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path);
+
+/// A line or a point of a route file, with where it is in the file ("route
+/// feature 3", "tracks feature 0 part 2"): what `check route` checks, all of them.
+struct RouteFilePart {
+  std::string label;
+  std::vector<RouteFileWaypoint> points;  ///< one for a point, at least two for a line
+  bool is_point = false;
+};
+
+/// Every line and point of the file in order (an RTZ file: its route). Throws
+/// as read_route_waypoints.
+std::vector<RouteFilePart> read_route_parts(const std::string& path);
 
 /// read_route_waypoints in the local frame. Throws InputError naming the
 /// waypoint for one outside the frame's area of use.
