@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/output_paths.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/collision_observation.hpp"
 #include "deepguide/mission/mission_control.hpp"
@@ -24,6 +25,14 @@
 
 namespace deepguide::app {
 namespace {
+
+// The files a mission reads: none of them may be an output.
+std::vector<NamedPath> mission_inputs(const std::string& file, const Mission& m) {
+  std::vector<NamedPath> in{{"MISSION", file}, {"current_file", m.current_file}};
+  for (const std::string& f : m.charts) in.push_back({"charts", f});
+  for (const std::string& f : m.obstacles) in.push_back({"obstacles", f});
+  return in;
+}
 
 struct MissionOptions {
   std::string mission;
@@ -282,6 +291,7 @@ void register_mission(CLI::App& app) {
   exp->callback([o, e] {
     const ExportFormat format = e->format.empty() ? export_format_for(e->output) : parse_export_format(e->format);
     const LoadedMission l = load_mission(o->mission);
+    check_outputs_apart(mission_inputs(o->mission, l.mission), {{"-o", e->output}});
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
     if (!e->as_written) {
       throw_if_unresolved(o->mission, l, planned);
@@ -325,6 +335,7 @@ void register_mission_simulate(CLI::App& mission) {
   cmd->add_flag("--json", o->json, "Print the result as JSON");
   cmd->callback([o] {
     const LoadedMission l = load_mission(o->mission);
+    check_outputs_apart(mission_inputs(o->mission, l.mission), {{"--render", o->render}});
     if (!o->render.empty() && l.mission.charts.empty() && l.mission.obstacles.empty()) {
       throw InputError("--render: expected a mission with charts or obstacle files to draw it over");
     }

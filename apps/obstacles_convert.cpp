@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "deepguide/core/output_paths.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide::app {
@@ -28,6 +29,9 @@ void register_obstacles_convert(CLI::App& obstacles) {
     const std::string output = opts->paths.back();
     const std::vector<std::string> inputs(opts->paths.begin(), opts->paths.end() - 1);
     obstacle_format_for(output);  // reject a bad extension before reading anything
+    std::vector<NamedPath> named;
+    for (const std::string& f : inputs) named.push_back({"input", f});
+    check_outputs_apart(named, {{"output", output}});
     const LoadedObstacles loaded = load_obstacles(inputs, {opts->frame.crs, opts->frame.src_crs});
     write_obstacles(output, loaded.obstacles, loaded.frame);
     std::cerr << "wrote " << loaded.obstacles.size() << " obstacles to " << output << "\n";

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "plan_depth.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/output_paths.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
@@ -197,6 +198,15 @@ void register_plan(CLI::App& app) {
     }
     for (const std::string& f : {o->render, o->render_profile}) {
       if (!f.empty()) image_format_for(f);  // before the work, not after
+    }
+    {
+      std::vector<NamedPath> inputs;
+      for (const std::string& f : o->obstacles) inputs.push_back({"--obstacles", f});
+      for (const std::string& f : o->charts) inputs.push_back({"--chart", f});
+      inputs.push_back({"--current", o->current_file});
+      inputs.push_back({"--vehicle", o->vehicle});
+      inputs.push_back({"--replan-events", o->replan_events});
+      check_outputs_apart(inputs, {{"-o", o->output}, {"--render", o->render}, {"--render-profile", o->render_profile}});
     }
     // The route file's format from its name, before the work (a mission's .yaml is not a route).
     const std::optional<ExportFormat> out_format =

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "deepguide/core/output_paths.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"
 #include "deepguide/simulation/trajectory_io.hpp"
@@ -37,6 +38,7 @@ void register_simulate(CLI::App& app) {
   cmd->add_flag("--json", o->json, "Print the statistics as JSON");
   cmd->callback([o] {
     const ReactiveMethod method = reactive_method_option("--method", o->method);
+    check_outputs_apart({{"SCENARIO", o->scenario}}, {{"-o", o->output}});
     Scenario scenario = read_scenario_file(o->scenario);
     if (o->seed) scenario.sonar.seed = *o->seed;
     const SimulationResult result = simulate(scenario, method, {!o->output.empty()});

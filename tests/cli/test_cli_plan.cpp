@@ -614,3 +614,46 @@ TEST(CliPlan, CheckRouteChecksEveryLineAndPointOfTheFile) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.err.find("c5"), std::string::npos) << r.err;
 }
+
+TEST(CliPlan, AnOutputNeverDestroysAnInput) {
+  // The same file by device and inode, under its own name, a hard link or another spelling.
+  ScratchDir dir;
+  const auto copy = [&](const std::string& from, const std::string& name) {
+    std::filesystem::copy_file(from, dir.file(name));
+    return dir.file(name);
+  };
+  const auto text = [](const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string obstacles = copy(kSample, "obstacles.geojson");
+  const std::string kept = text(obstacles);
+  std::filesystem::create_hard_link(obstacles, dir.file("link.geojson"));
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"plan --obstacles '" + obstacles + "'" + kFromTo + " -o '" + obstacles + "'", "--obstacles"},
+      {"plan --obstacles '" + obstacles + "'" + kFromTo + " -o '" + dir.file("link.geojson") + "'", "--obstacles"},
+      {"plan --obstacles '" + obstacles + "'" + kFromTo + " -o '" + dir.file("r.png") + "' --render '" +
+           dir.file("sub/../r.png") + "'",
+       "expected"},
+      {"obstacles convert '" + obstacles + "' '" + dir.file("./obstacles.geojson") + "'", "input"},
+      {"mission export '" + deepguide::test::source_file("data/missions/sample_mission.yaml") + "' --format yaml --overwrite -o '" +
+           deepguide::test::source_file("data/missions/sample_mission.yaml") + "'",
+       "MISSION"},
+  };
+  std::filesystem::create_directories(dir.path() / "sub");
+  const std::string mission_text = text(deepguide::test::source_file("data/missions/sample_mission.yaml"));
+  for (const auto& [args, names] : cases) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(names), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(text(obstacles), kept);
+  EXPECT_EQ(text(deepguide::test::source_file("data/missions/sample_mission.yaml")), mission_text);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.png")));
+  const std::string scenario = copy(deepguide::test::source_file("data/scenarios/one_obstacle.yaml"), "s.yaml");
+  const std::string scenario_text = text(scenario);
+  const auto r = run_cli("simulate '" + scenario + "' --method geometric -o '" + scenario + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(text(scenario), scenario_text);
+}
