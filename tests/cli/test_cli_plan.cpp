@@ -657,3 +657,47 @@ TEST(CliPlan, AnOutputNeverDestroysAnInput) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(text(scenario), scenario_text);
 }
+
+TEST(CliPlan, AFullDiskIsAnErrorAndLeavesNoFile) {
+  // RLIMIT_FSIZE (with SIGXFSZ ignored, so writes fail with EFBIG as on a full disk): every writer
+  // says it could not write, exits 1 and leaves neither the file nor a temporary one behind.
+  ScratchDir dir;
+  const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
+  const auto limited = [&](int kib, const std::string& args) {
+    const std::string cmd = "bash -c \"ulimit -f " + std::to_string(kib) + "; trap '' XFSZ; exec '" +
+                            std::string(DEEPGUIDE_CLI) + "' " + args + "\" >'" + dir.file("out.txt") + "' 2>'" +
+                            dir.file("err.txt") + "'";
+    const int status = std::system(cmd.c_str());
+    std::ifstream err(dir.file("err.txt"));
+    return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                          std::string(std::istreambuf_iterator<char>(err), {}));
+  };
+  std::filesystem::create_directories(dir.path() / "w");
+  const auto w = [&](const std::string& name) { return (dir.path() / "w" / name).string(); };
+  const std::vector<std::pair<int, std::string>> cases = {
+      {1, "obstacles convert '" + kSample + "' '" + w("o.geojson") + "'"},
+      {1, "plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + w("r.geojson") + "'"},
+      {1, "plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + w("r.gpx") + "'"},
+      {16, "mission export '" + mission + "' -o '" + w("m.gpx") + "'"},
+      {16, "mission export '" + mission + "' -o '" + w("m.kml") + "'"},
+      {16, "mission export '" + mission + "' -o '" + w("m.geojson") + "'"},
+      {16, "mission export '" + mission + "' -o '" + w("m.csv") + "'"},
+      {16, "mission export '" + mission + "' -o '" + w("m.rtz") + "'"},
+      {16, "mission export '" + mission + "' -o '" + w("m.plan") + "'"},
+      {4, "mission export '" + mission + "' -o '" + w("m.bhv") + "'"},
+  };
+  for (const auto& [kib, args] : cases) {
+    const auto [code, err] = limited(kib, args);
+    EXPECT_EQ(code, 1) << args << ": " << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_NE(err.find("could not"), std::string::npos) << err;
+    std::vector<std::string> left;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path() / "w")) left.push_back(e.path().string());
+    EXPECT_TRUE(left.empty()) << args << ": left " << left.front();
+    for (const std::string& f : left) std::filesystem::remove(f);
+  }
+  // Without the limit the same commands write their files (the limit, not the command, failed them).
+  const auto [code, err] = limited(100000, "mission export '" + mission + "' -o '" + w("m.kml") + "'");
+  EXPECT_EQ(code, 0) << err;
+  EXPECT_TRUE(std::filesystem::exists(w("m.kml")));
+}

@@ -2,9 +2,11 @@
 
 #include <fstream>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 
 #include <atomic>
 #include <string>
@@ -42,6 +44,17 @@ AtomicOutput::~AtomicOutput() {
 
 void AtomicOutput::commit(bool replace) {
   std::error_code ec;
+  // On the disk before it takes the name: a write the file system reports only at fsync (a full
+  // disk with delayed allocation, NFS) fails here, not after "wrote".
+  if (fs::is_regular_file(temp_, ec)) {
+    const int fd = ::open(temp_.c_str(), O_RDONLY | O_CLOEXEC);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    const int err = errno;
+    if (fd >= 0) ::close(fd);
+    if (!synced) {
+      throw InputError(destination_.string() + ": could not write the file (" + std::strerror(err) + ")");
+    }
+  }
   if (!replace) {
     if (::link(temp_.c_str(), destination_.c_str()) == 0) {
       fs::remove(temp_, ec);

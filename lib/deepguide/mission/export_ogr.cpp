@@ -189,14 +189,16 @@ void write_csv(const std::string& path, const ExportInput& in) {
 
 void write_plan_ogr(const std::string& path, ExportFormat format, const ExportInput& in) {
   gdal::QuietErrors quiet;
+  if (format == ExportFormat::geojson) return write_geojson(path, in);  // route_io writes through memory itself
+  // GDAL writes in memory; every byte to disk is then checked (gdal_support.hpp).
+  const gdal::MemoryOutput mem(path);
   switch (format) {
-    case ExportFormat::geojson: write_geojson(path, in); return;
-    case ExportFormat::gpx: write_gpx(path, in); return;
-    case ExportFormat::kml: write_kml(path, in); return;
-    case ExportFormat::csv: write_csv(path, in); return;
-    default: break;
+    case ExportFormat::gpx: write_gpx(mem.path(), in); break;
+    case ExportFormat::kml: write_kml(mem.path(), in); break;
+    case ExportFormat::csv: write_csv(mem.path(), in); break;
+    default: throw InputError(in.destination + ": " + to_string(format) + " is not a GDAL format");
   }
-  throw InputError(in.destination + ": " + to_string(format) + " is not a GDAL format");
+  mem.save(path, in.destination);
 }
 
 }  // namespace deepguide::detail

@@ -49,8 +49,9 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
   gdal::QuietErrors quiet;
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GeoJSON");
   if (driver == nullptr) fail(path, "find GDAL's GeoJSON driver");
+  const gdal::MemoryOutput mem(path);  // every byte to disk checked (gdal_support.hpp)
   {
-    GDALDatasetUniquePtr ds(driver->Create(out.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    GDALDatasetUniquePtr ds(driver->Create(mem.path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) fail(path, "create the file");
     const auto geo = gdal::wgs84();
     // 12 decimals (~0.1 um): routes touch the zones exactly, and a route read
@@ -99,6 +100,7 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
       if (layer->CreateFeature(&f) != OGRERR_NONE) fail(path, "write waypoint " + std::to_string(i));
     }
   }
+  mem.save(out.temp_path().string(), path);
   out.commit();
 }
 

@@ -2,6 +2,16 @@
 
 #include <mutex>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "deepguide/core/error.hpp"
+
 namespace deepguide::gdal {
 
 void ensure_registered() {
@@ -53,6 +63,40 @@ TransformPtr make_transform(const OGRSpatialReference& from, const OGRSpatialRef
   QuietErrors quiet;
   return TransformPtr(OGRCreateCoordinateTransformation(&from, &to),
                       [](OGRCoordinateTransformation* t) { OGRCoordinateTransformation::DestroyCT(t); });
+}
+
+MemoryOutput::MemoryOutput(const std::string& file_name) {
+  static std::atomic<unsigned> counter{0};
+  dir_ = "/vsimem/deepguide-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  path_ = dir_ + "/" + std::filesystem::path(file_name).filename().string();
+  VSIMkdir(dir_.c_str(), 0755);  // drivers such as CSV look at the folder they write into
+}
+
+MemoryOutput::~MemoryOutput() { VSIRmdirRecursive(dir_.c_str()); }
+
+void MemoryOutput::save(const std::string& disk_path, const std::string& destination) const {
+  vsi_l_offset size = 0;
+  const GByte* bytes = VSIGetMemFileBuffer(path_.c_str(), &size, FALSE);
+  if (bytes == nullptr) throw InputError(destination + ": could not write the file: GDAL wrote nothing");
+  const int fd = ::open(disk_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(destination + ": could not write the file: " + std::strerror(errno));
+  std::size_t done = 0;
+  int err = 0;
+  while (done < size) {
+    const ssize_t n = ::write(fd, bytes + done, static_cast<std::size_t>(size - done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      err = n < 0 ? errno : EIO;
+      break;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (err == 0 && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err != 0) {
+    throw InputError(destination + ": could not write the file (" + std::to_string(done) + " of " +
+                     std::to_string(size) + " bytes): " + std::strerror(err));
+  }
 }
 
 }  // namespace deepguide::gdal

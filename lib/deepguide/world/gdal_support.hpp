@@ -37,4 +37,25 @@ using TransformPtr = std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCo
 /// Transformation between two references; null when PROJ cannot make one.
 TransformPtr make_transform(const OGRSpatialReference& from, const OGRSpatialReference& to);
 
+/// A dataset GDAL writes in memory (/vsimem/) and we then write to disk with
+/// every write, the fsync and the close checked. GDAL's text drivers
+/// (GeoJSON, GPX, KML, CSV) ignore a failed write, so on a full disk they
+/// left a short file that looked whole; this cannot.
+class MemoryOutput {
+ public:
+  /// `file_name` gives the in-memory file its name and extension (drivers look at it).
+  explicit MemoryOutput(const std::string& file_name);
+  ~MemoryOutput();  ///< frees the memory
+  MemoryOutput(const MemoryOutput&) = delete;
+  MemoryOutput& operator=(const MemoryOutput&) = delete;
+
+  /// Where GDAL creates the dataset (close it before save()).
+  const std::string& path() const { return path_; }
+  /// Writes the bytes to `disk_path`; InputError naming `destination` on any failure.
+  void save(const std::string& disk_path, const std::string& destination) const;
+
+ private:
+  std::string dir_, path_;
+};
+
 }  // namespace deepguide::gdal

@@ -452,8 +452,9 @@ void write_obstacles(const std::string& path, const ObstacleSet& obstacles, cons
                                                                    : "CSV";
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name);
   if (driver == nullptr) fail_write(path, std::string("find GDAL's ") + driver_name + " driver");
+  const gdal::MemoryOutput mem(path);  // every byte to disk checked (gdal_support.hpp)
   {
-    GDALDatasetUniquePtr ds(driver->Create(out.temp_path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    GDALDatasetUniquePtr ds(driver->Create(mem.path().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     if (!ds) fail_write(path, "create the file");
     const auto geo = gdal::wgs84();
     std::vector<const char*> layer_options;
@@ -516,6 +517,7 @@ void write_obstacles(const std::string& path, const ObstacleSet& obstacles, cons
   if (CPLGetLastErrorType() >= CE_Failure && !gdal::QuietErrors::last_message().empty()) {
     fail_write(path, "finish the file");
   }
+  mem.save(out.temp_path().string(), path);
   out.commit();
 }
 
