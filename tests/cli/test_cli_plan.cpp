@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cerrno>
 #include <filesystem>
 #include <tuple>
 #include <fstream>
@@ -700,4 +702,24 @@ TEST(CliPlan, AFullDiskIsAnErrorAndLeavesNoFile) {
   const auto [code, err] = limited(100000, "mission export '" + mission + "' -o '" + w("m.kml") + "'");
   EXPECT_EQ(code, 0) << err;
   EXPECT_TRUE(std::filesystem::exists(w("m.kml")));
+}
+
+TEST(CliPlan, TemporariesAKilledRunLeftAreRemovedByTheNextWrite) {
+  // A run killed mid-write leaves ".NAME.tmpPID-N.EXT" (a file, or a folder for a suite); the next
+  // write into that folder removes those whose process is gone, and keeps a live process's.
+  ScratchDir dir;
+  int dead = 4000000;  // a pid no process has (pid_max is at most 2^22)
+  while (kill(dead, 0) == 0 || errno != ESRCH) ++dead;
+  const std::string stale_file = dir.write(".route.tmp" + std::to_string(dead) + "-0.geojson", "{\"type\":");
+  std::filesystem::create_directories(dir.path() / (".suite.tmp" + std::to_string(dead) + "-3"));
+  dir.write(".suite.tmp" + std::to_string(dead) + "-3/scenario-0001.yaml", "start:");
+  const std::string live = dir.write(".other.tmp" + std::to_string(getppid()) + "-0.gpx", "<gpx");
+  const std::string mine = dir.write("notes.tmp" + std::to_string(dead) + "-0.txt", "not ours: no leading dot");
+  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + dir.file("route.geojson") + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(stale_file));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / (".suite.tmp" + std::to_string(dead) + "-3")));
+  EXPECT_TRUE(std::filesystem::exists(live));
+  EXPECT_TRUE(std::filesystem::exists(mine));
+  EXPECT_TRUE(std::filesystem::exists(dir.file("route.geojson")));
 }

@@ -3,12 +3,15 @@
 #include <fstream>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 
 #include <atomic>
+#include <regex>
+#include <vector>
 #include <string>
 #include <system_error>
 
@@ -28,11 +31,31 @@ AtomicOutput::AtomicOutput(fs::path destination) : destination_(std::move(destin
   if (fs::is_directory(destination_, ec)) {
     throw InputError(destination_.string() + ": expected a file path, got a folder");
   }
-  static std::atomic<unsigned> counter{0};
-  const std::string name = "." + destination_.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                           "-" + std::to_string(counter++) + destination_.extension().string();
-  temp_ = dir / name;
+  remove_stale_temporaries(dir);
+  temp_ = temporary_path(dir, destination_.filename().string());
   fs::remove_all(temp_, ec);
+}
+
+fs::path temporary_path(const fs::path& folder, const std::string& name) {
+  static std::atomic<unsigned> counter{0};
+  const fs::path n(name);
+  return folder / ("." + n.stem().string() + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                   n.extension().string());
+}
+
+void remove_stale_temporaries(const fs::path& folder) {
+  static const std::regex ours(R"(^\..*\.tmp([0-9]{1,9})-[0-9]+(\.[^.]*)?$)");
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& e : fs::directory_iterator(folder, ec)) {
+    const std::string name = e.path().filename().string();
+    std::smatch m;
+    if (!std::regex_match(name, m, ours)) continue;
+    const long pid = std::stol(m[1].str());
+    // Gone: no such process. (A live process under a reused pid keeps its files; they are few.)
+    if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) stale.push_back(e.path());
+  }
+  for (const fs::path& p : stale) fs::remove_all(p, ec);
 }
 
 AtomicOutput::~AtomicOutput() {

@@ -32,6 +32,15 @@ class AtomicOutput {
   bool committed_ = false;
 };
 
+/// A temporary name in `folder` for `name` that a later run can tell is ours
+/// and whose writer is gone: ".NAME_STEM.tmpPID-N.EXT" (the extension kept).
+std::filesystem::path temporary_path(const std::filesystem::path& folder, const std::string& name);
+
+/// Removes our temporaries in `folder` (files or folders named as
+/// temporary_path names them) whose process no longer runs: what a killed
+/// run left behind. Every AtomicOutput calls it for its folder.
+void remove_stale_temporaries(const std::filesystem::path& folder);
+
 /// Writes `text` to `path` atomically; `what` names the file in the error
 /// ("could not write the WHAT"). With replace false an existing file is kept
 /// (AtomicOutput::commit).

@@ -240,8 +240,8 @@ void write_suite(const std::string& dir, const std::string& name, const MonteCar
   if (!fs::is_directory(target.parent_path(), ec)) {
     throw InputError(dir + ": expected an existing folder '" + target.parent_path().string() + "' to write into");
   }
-  std::random_device entropy;
-  const fs::path temp = target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(entropy()));
+  remove_stale_temporaries(target.parent_path());
+  const fs::path temp = temporary_path(target.parent_path(), target.filename().string());
   struct Cleanup {
     fs::path p;
     ~Cleanup() {

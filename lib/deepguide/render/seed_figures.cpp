@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <random>
 #include <system_error>
 
 #include "deepguide/core/angles.hpp"
+#include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_control.hpp"
@@ -323,8 +323,8 @@ std::vector<WrittenSeedFigure> write_seed_figures(const SeedFigureOptions& optio
   // the output folder (so the renames stay on one file system) and moved out
   // only when every one has been drawn. On an error that folder goes, and so
   // does the output folder when this call made it.
-  std::random_device random;
-  const fs::path staging = out / (".deepguide-figures-" + std::to_string(random()) + std::to_string(random()));
+  remove_stale_temporaries(out);
+  const fs::path staging = temporary_path(out, "deepguide-figures");
   struct Cleanup {
     fs::path staging, out;
     bool made;
