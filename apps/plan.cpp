@@ -341,6 +341,17 @@ void register_plan(CLI::App& app) {
     const Route route = replay ? Route{replay->initial_route} : out.result.route;
     const RouteCheck check = replay ? check_route(route.points, plan.planner->field()) : out.check;
     if (!check.safe) throw std::runtime_error("the replanned route failed the independent check: " + check.describe());
+    // Outside a bathymetry raster the depth is not known: a route that leaves it is not safe.
+    if (const auto exit = route_leaves_coverage(route.points, charted.raster_coverage)) {
+      const Vec2 ll = frame.to_lonlat(exit->at);
+      const std::string charts = charted.raster_paths.front() +
+                                 (charted.raster_paths.size() > 1 ? " and the other rasters" : std::string());
+      const bool start = exit->leg == 0 && (exit->at - route.points.front()).norm() < 1e-9;
+      throw NoRouteError((start ? "the start lies outside the coverage of " + charts
+                                : "the route leaves the coverage of " + charts + " on leg " + std::to_string(exit->leg + 1)) +
+                         " at " + fixed(ll.x(), 6) + "," + fixed(ll.y(), 6) +
+                         ": the depth there is not known (give a chart that covers the way)");
+    }
     // Time and energy of the route as planned, leg by leg (also for a length route).
     const RoutePricing priced = price_route(*model, route.points);
     const bool timed = !model->steady || !o->depart.empty();

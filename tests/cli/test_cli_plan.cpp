@@ -723,3 +723,20 @@ TEST(CliPlan, TemporariesAKilledRunLeftAreRemovedByTheNextWrite) {
   EXPECT_TRUE(std::filesystem::exists(mine));
   EXPECT_TRUE(std::filesystem::exists(dir.file("route.geojson")));
 }
+
+TEST(CliPlan, ARouteOffTheChartIsNotSafe) {
+  // Outside a bathymetry raster the depth is not known (NoData inside it is no-go already).
+  const std::string chart = deepguide::test::source_file("charts/sample_chart.tif");
+  auto r = run_cli("plan --chart '" + chart + "' --depth 10 --from 10.0,54.0 --to 10.05,54.02");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("start lies outside the coverage of"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  // From inside the chart (the harbour) to a goal 3 km east of its edge: the route leaves it.
+  r = run_cli("plan --chart '" + chart + "' --depth 10 --from 10.2446,54.4413 --to 10.32,54.45");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("leaves the coverage"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("leg"), std::string::npos) << r.err;
+  // Inside, as before.
+  r = run_cli("plan --chart '" + chart + "' --depth 10 --from 10.2446,54.4413 --to 10.2626,54.4606 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+}

@@ -1,5 +1,6 @@
 #include "deepguide/world/chart_obstacles.hpp"
 
+#include <boost/geometry.hpp>
 #include <cmath>
 
 #include "deepguide/core/error.hpp"
@@ -47,6 +48,10 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
       no_go.simplify_tolerance_m = options.simplify_tolerance_m;
       no_go.bathymetry.assumed_crs = options.source_crs;
       set.polygons = compute_no_go(path, frame, no_go).polygons;
+      BgMultiPolygon merged;
+      boost::geometry::union_(out.raster_coverage, raster_coverage(path, frame, no_go.bathymetry), merged);
+      out.raster_coverage = std::move(merged);
+      out.raster_paths.push_back(path);
     } else {
       set = load_obstacles({path}, {frame.id(), options.source_crs}).obstacles;
       if (has_depth) file.passed_over = remove_passable(set, options.depth_m, options.clearance_m);
@@ -77,6 +82,28 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
     out.enc = std::make_shared<EncNoGo>(std::move(no_go));
   }
   return out;
+}
+
+std::optional<CoverageExit> route_leaves_coverage(const std::vector<Vec2>& route, const BgMultiPolygon& coverage) {
+  namespace bg = boost::geometry;
+  if (coverage.empty() || route.empty()) return std::nullopt;
+  const auto inside = [&](const Vec2& p) { return bg::covered_by(BgPoint(p.x(), p.y()), coverage); };
+  if (!inside(route.front())) return CoverageExit{0, route.front()};
+  for (std::size_t i = 1; i < route.size(); ++i) {
+    bg::model::linestring<BgPoint> leg{{route[i - 1].x(), route[i - 1].y()}, {route[i].x(), route[i].y()}};
+    if (bg::covered_by(leg, coverage)) continue;
+    // Where it leaves: the crossing of the outline nearest the leg's start.
+    std::vector<BgPoint> crossings;
+    for (const BgPolygon& p : coverage) bg::intersection(leg, p.outer(), crossings);
+    Vec2 at = route[i];
+    double best = INFINITY;
+    for (const BgPoint& c : crossings) {
+      const Vec2 q(c.x(), c.y());
+      if (const double d = (q - route[i - 1]).norm(); d < best) best = d, at = q;
+    }
+    return CoverageExit{i - 1, at};
+  }
+  return std::nullopt;
 }
 
 }  // namespace deepguide

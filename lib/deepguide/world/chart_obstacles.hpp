@@ -15,9 +15,11 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
@@ -50,7 +52,20 @@ struct ChartObstacles {
   std::vector<ChartFileObstacles> files;
   /// The S-57 cells' no-go, feature by feature (null without cells): what names a crossing.
   std::shared_ptr<const EncNoGo> enc;
+  /// Where the bathymetry rasters know the depth (their outlines, local frame;
+  /// empty without rasters). A route must stay inside: route_leaves_coverage.
+  BgMultiPolygon raster_coverage;
+  std::vector<std::string> raster_paths;
 };
+
+/// Where a route first leaves the rasters' coverage: the leg (0-based) and
+/// the point where it leaves (a waypoint, or where the leg crosses the
+/// outline); nullopt when it stays inside (or there is no raster).
+struct CoverageExit {
+  std::size_t leg = 0;
+  Vec2 at{0.0, 0.0};
+};
+std::optional<CoverageExit> route_leaves_coverage(const std::vector<Vec2>& route, const BgMultiPolygon& coverage);
 
 /// Reads every chart into `frame`. Throws InputError (one line naming the
 /// file, or the option) for an unreadable chart, or a raster without depth_m.

@@ -208,6 +208,37 @@ LocalFrame raster_local_frame(const std::string& path, const BathymetryOptions& 
   return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
 }
 
+BgPolygon raster_coverage(const std::string& path, const LocalFrame& frame, const BathymetryOptions& options) {
+  gdal::QuietErrors quiet;
+  const detail::OpenedBathymetry raster = detail::open_bathymetry(path, options);
+  const double* gt = raster.geotransform;
+  const int w = raster.info.width, h = raster.info.height;
+  OGRSpatialReference local;
+  local.importFromWkt(frame.wkt().c_str());
+  local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  const gdal::TransformPtr ct = gdal::make_transform(*raster.srs, local);
+  if (!ct) throw InputError(path + ": expected a CRS PROJ can transform to " + frame.id());
+  // Corners in pixel space, anticlockwise; each side sampled in up to 64 steps (a side in lon/lat bends in UTM).
+  const double corners[5][2] = {{0, 0}, {0, double(h)}, {double(w), double(h)}, {double(w), 0}, {0, 0}};
+  BgPolygon poly;
+  for (int side = 0; side < 4; ++side) {
+    const int steps = std::max(1, std::min(64, std::max(w, h)));
+    for (int k = 0; k < steps; ++k) {
+      const double f = static_cast<double>(k) / steps;
+      const double px = corners[side][0] + f * (corners[side + 1][0] - corners[side][0]);
+      const double py = corners[side][1] + f * (corners[side + 1][1] - corners[side][1]);
+      double x = gt[0] + px * gt[1] + py * gt[2], y = gt[3] + px * gt[4] + py * gt[5];
+      if (!ct->Transform(1, &x, &y) || !std::isfinite(x) || !std::isfinite(y)) {
+        throw InputError(path + ": expected the chart's corners inside the local frame " + frame.id());
+      }
+      poly.outer().emplace_back(x, y);
+    }
+  }
+  poly.outer().push_back(poly.outer().front());
+  boost::geometry::correct(poly);
+  return poly;
+}
+
 NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const NoGoOptions& options) {
   check_option(path, "operating_depth_m", options.operating_depth_m, "operating depth");
   check_option(path, "vertical_clearance_m", options.vertical_clearance_m, "vertical clearance");

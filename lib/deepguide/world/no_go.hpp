@@ -83,6 +83,12 @@ struct NoGoArea {
 /// Throws InputError as compute_no_go does for an unreadable raster or one without CRS.
 LocalFrame raster_local_frame(const std::string& path, const BathymetryOptions& options = {});
 
+/// The raster's coverage in `frame`: its outline (the cells' outer edges, in
+/// its own CRS) sampled every few cells along each side and transformed, as a
+/// polygon. Routes over a raster must stay inside it: outside the chart the
+/// depth is not known (plan refuses such a route; docs/PLANNING.md).
+BgPolygon raster_coverage(const std::string& path, const LocalFrame& frame, const BathymetryOptions& options = {});
+
 /// Reads the raster at `path` window by window and returns its no-go polygons
 /// in `frame`. Throws InputError (one line naming the file and the option)
 /// for an unreadable raster, a raster without CRS, or bad options.
