@@ -15,6 +15,9 @@
 #include "deepguide/mission/mission_environment.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/mission/mission.hpp"
+#include "deepguide/evaluation/suite.hpp"
+#include "deepguide/simulation/scenario.hpp"
+#include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/mission/plan_export.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
@@ -340,4 +343,21 @@ TEST(Mission, ATrackFollowsARouteFileFromAnEcdisOrOpenCpn) {
     ASSERT_EQ(t.waypoints.size(), want.size()) << file;
     for (std::size_t i = 0; i < want.size(); ++i) ASSERT_LT((t.waypoints[i] - want[i].xy).norm(), 0.01) << file << " " << i;
   }
+}
+
+TEST(Mission, ASecondYamlDocumentIsRefusedNotIgnored) {
+  // YAML::Load reads the first document and drops the rest: a mission, scenario, vehicle or suite
+  // file with a second one behind `---` is an error naming the line; a trailing empty one is not.
+  ScratchDir dir;
+  const std::string mission = kHeader + "manoeuvres:\n  - goto: {position: {x: 500100, y: 6000000}}\n";
+  EXPECT_NO_THROW(read_mission(dir.write("one.yaml", mission + "---\n")));
+  const std::string two = dir.write("two.yaml", mission + "---\nmanoeuvres: []\n");
+  const std::string e = error_of(two);
+  EXPECT_NE(e.find("line 6"), std::string::npos) << e;
+  EXPECT_NE(e.find("one YAML document"), std::string::npos) << e;
+  EXPECT_THROW(parse_vehicle_yaml("name: a\n---\nname: b\n", "v.yaml"), InputError);
+  EXPECT_THROW(parse_scenario_yaml("start: {x: 0, y: 0}\n---\nstart: {x: 1, y: 1}\n", "s.yaml", "."), InputError);
+  std::filesystem::create_directories(dir.path() / "suite");
+  dir.write("suite/suite.yaml", "name: s\n---\nname: t\n");
+  EXPECT_THROW(read_suite(dir.file("suite")), InputError);
 }

@@ -27,6 +27,17 @@ std::string line_of(const YAML::Node& node) {
   return m.line >= 0 ? "line " + std::to_string(m.line + 1) : std::string();
 }
 
+YAML::Node load_one_document(const std::string& text, const std::string& source) {
+  const std::vector<YAML::Node> docs = YAML::LoadAll(text);
+  for (std::size_t i = 1; i < docs.size(); ++i) {
+    if (!docs[i].IsNull()) {
+      throw input_error({source, line_of(docs[i]), ""}, "one YAML document",
+                        "a second one (after ---), which would be ignored");
+    }
+  }
+  return docs.empty() ? YAML::Node() : docs.front();
+}
+
 bool Range::holds(double v) const { return std::isfinite(v) && (lo_closed ? v >= lo : v > lo) && v <= hi; }
 
 std::string Range::text() const {

@@ -18,6 +18,11 @@ namespace deepguide {
 
 /// "line N" (1-based) of a node, or "" when yaml-cpp has no mark.
 std::string line_of(const YAML::Node& node);
+/// The file's one YAML document. YAML::Load takes the first and drops the
+/// rest without a word; a later document that holds anything is an
+/// InputError naming `source` and its line (a trailing empty one is not).
+/// Malformed text throws YAML::Exception as YAML::Load does.
+YAML::Node load_one_document(const std::string& text, const std::string& source);
 /// A number as messages show it (up to 10 significant digits).
 std::string yaml_number(double v);
 /// A number as files written to be read back write it: the shortest text

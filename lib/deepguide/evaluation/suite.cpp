@@ -134,7 +134,7 @@ void read_suite_file(const fs::path& file, Suite& suite) {
   if (text.str().size() > (1u << 20)) throw input_error({file.string(), "", ""}, "a suite file under 1 MiB");
   YAML::Node doc;
   try {
-    doc = YAML::Load(text.str());
+    doc = load_one_document(text.str(), file.string());
   } catch (const YAML::Exception& e) {
     throw input_error({file.string(), e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) : std::string(), ""}, "a YAML suite file", printable(e.msg, 100));
   }

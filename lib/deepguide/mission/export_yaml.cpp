@@ -92,7 +92,8 @@ MissionPlan read_plan_yaml(const std::string& path) {
   if (!std::filesystem::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing plan file");
   YAML::Node doc;
   try {
-    doc = YAML::LoadFile(path);
+    std::ifstream in(path, std::ios::binary);
+    doc = load_one_document(std::string(std::istreambuf_iterator<char>(in), {}), path);
   } catch (const YAML::Exception& e) {
     const std::string at = e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) + ", column " +
                                                   std::to_string(e.mark.column + 1)

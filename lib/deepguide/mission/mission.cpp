@@ -302,7 +302,7 @@ Mission read_mission(const std::string& path) {
   text << in.rdbuf();
   YAML::Node doc;
   try {
-    doc = YAML::Load(text.str());
+    doc = load_one_document(text.str(), path);
   } catch (const YAML::Exception& e) {
     const std::string at = e.mark.line >= 0
                                ? "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1)

@@ -501,7 +501,7 @@ void validate(const Scenario& sc) {
 Scenario parse_scenario_yaml(const std::string& text, const std::string& source, const std::string& base_dir) {
   YAML::Node doc;
   try {
-    doc = YAML::Load(text);
+    doc = load_one_document(text, source);
   } catch (const YAML::Exception& e) {
     throw input_error({source, e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) : std::string(), ""},
                       "a YAML scenario file", printable(e.msg, 100));

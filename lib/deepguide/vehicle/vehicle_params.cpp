@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/yaml_mapping.hpp"
 
 namespace deepguide {
 namespace {
@@ -233,7 +234,7 @@ void validate(const VehicleParams& params, const std::string& source) {
 VehicleParams parse_vehicle_yaml(const std::string& text, const std::string& source) {
   YAML::Node root;
   try {
-    root = YAML::Load(text);
+    root = load_one_document(text, source);
   } catch (const YAML::Exception& e) {
     throw input_error({source, line_of(e.mark), ""}, "a YAML vehicle file", printable(e.msg, 100));
   }
