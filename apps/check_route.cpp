@@ -29,20 +29,6 @@ struct CheckOptions {
   bool json = false;
 };
 
-// A part of the route file in the local frame.
-Route route_in(const RouteFilePart& part, const LocalFrame& frame, const std::string& path) {
-  Route route;
-  for (std::size_t i = 0; i < part.points.size(); ++i) {
-    const Vec2 p = frame.from_lonlat(part.points[i].lonlat);
-    if (!p.allFinite()) {
-      throw InputError(path + ": " + part.label + ": waypoint " + std::to_string(i + 1) +
-                       ": expected a position inside the local frame " + frame.id());
-    }
-    route.points.push_back(p);
-  }
-  return route;
-}
-
 // The route against S-57 cells, feature by feature (enc_route_check.hpp).
 nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& why) {
   if (std::isnan(o.depth)) throw InputError("--depth: expected the operating depth (m) to check against S-57 charts");
@@ -60,7 +46,7 @@ nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& wh
   std::size_t lines = 0, points = 0, crossed = 0;
   safe = true;
   for (const RouteFilePart& part : parts) {
-    const Route route = route_in(part, no_go.frame, o.route);
+    const Route route = route_in_frame(part.points, no_go.frame, o.route + ": " + part.label);
     if (part.is_point) {
       ++points;
       if (const EncNoGoFeature* f = no_go_feature_at(no_go, route.points.front(), o.margin); f && safe) {
@@ -140,12 +126,15 @@ void register_check_route(CLI::App& check) {
       }
       const ObstacleField field(loaded.obstacles, o->margin);
       std::optional<RouteCheck> worst;
-      std::string worst_part;
+      std::string worst_part, first_line;  // the verdict names a part other than the route line
       std::size_t lines = 0, points = 0;
       for (const RouteFilePart& part : parts) {
-        const Route route = route_in(part, frame, o->route);
+        const Route route = route_in_frame(part.points, frame, o->route + ": " + part.label);
         if (part.is_point) ++points;
-        if (!part.is_point && lines++ == 0) out["waypoints"] = route.points.size(), out["length_m"] = route.length();
+        if (!part.is_point && lines++ == 0) {
+          out["waypoints"] = route.points.size(), out["length_m"] = route.length();
+          first_line = part.label;
+        }
         const RouteCheck check = check_route(route.points, field);
         // The verdict: the first unsafe part, else the part that comes closest.
         const bool first_unsafe = !check.safe && (!worst || worst->safe);
@@ -164,7 +153,7 @@ void register_check_route(CLI::App& check) {
       out["points"] = points;
       out["crs"] = frame.id();
       safe = worst->safe;
-      why = (parts.size() > 1 ? worst_part + ": " : std::string()) + worst->describe();
+      why = (worst_part != first_line ? worst_part + ": " : std::string()) + worst->describe();
     }
     if (!o->charts.empty()) {
       bool chart_safe = true;

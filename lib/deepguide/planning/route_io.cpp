@@ -247,18 +247,21 @@ std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path) {
   throw InputError(path + ": expected a LineString feature (the route line), found none");
 }
 
-Route read_route(const std::string& path, const LocalFrame& frame) {
-  const std::vector<RouteFileWaypoint> waypoints = read_route_waypoints(path);
+Route route_in_frame(const std::vector<RouteFileWaypoint>& waypoints, const LocalFrame& frame, const std::string& where) {
   Route route;
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
     const Vec2 p = frame.from_lonlat(waypoints[i].lonlat);
     if (!p.allFinite()) {
-      throw InputError(path + ": waypoint " + std::to_string(i + 1) + ": expected a position inside the local frame " +
+      throw InputError(where + ": waypoint " + std::to_string(i + 1) + ": expected a position inside the local frame " +
                        frame.id());
     }
     route.points.push_back(p);
   }
   return route;
+}
+
+Route read_route(const std::string& path, const LocalFrame& frame) {
+  return route_in_frame(read_route_waypoints(path), frame, path);
 }
 
 }  // namespace deepguide
