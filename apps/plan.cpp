@@ -2,6 +2,7 @@
 //                [--current FILE | --current-const SPEED,DIR] [...] -o ROUTE.geojson|gpx|kml|rtz|csv|plan|bhv [--json]
 
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <cstdio>
 #include <iostream>
@@ -37,6 +38,7 @@ struct PlanOptions {
   FrameOptions frame;
   double margin = 5.0;
   double tolerance = PlannerOptions{}.tolerance;
+  std::optional<double> turn_radius;
   double depth = std::nan("");
   double vertical_clearance = 2.0;
   std::string graph = "visibility";
@@ -133,6 +135,9 @@ void register_plan(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Route file to write; its extension picks the format: .geojson, .gpx, .kml, .rtz, .csv, .plan, .bhv");
   add_frame_options(*cmd, o->frame);
   cmd->add_option("--margin", o->margin, "Safety margin to every obstacle (m)")->capture_default_str();
+  cmd->add_option("--turn-radius", o->turn_radius,
+                  "The vehicle's least turning radius (m): every arc of the route is at least this wide "
+                  "(--graph tangent)");
   cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
       ->capture_default_str();
   cmd->add_option("--depth", o->depth,
@@ -214,6 +219,12 @@ void register_plan(CLI::App& app) {
     PlannerOptions options;
     options.margin = o->margin;
     options.tolerance = o->tolerance;
+    if (o->turn_radius) {
+      if (!std::isfinite(*o->turn_radius) || *o->turn_radius <= 0.0) {
+        throw InputError("--turn-radius: expected a radius > 0 m, got " + general(*o->turn_radius));
+      }
+      options.turn_radius_m = *o->turn_radius;
+    }
     options.graph = in_depth ? GraphKind::quadtree : parse_graph_kind(o->graph);
     options.search = parse_search(o->search);
     options.quadtree.min_cell_m = o->min_cell;
@@ -341,6 +352,9 @@ void register_plan(CLI::App& app) {
     const Route route = replay ? Route{replay->initial_route} : out.result.route;
     const RouteCheck check = replay ? check_route(route.points, plan.planner->field()) : out.check;
     if (!check.safe) throw std::runtime_error("the replanned route failed the independent check: " + check.describe());
+    if (out.legs_check && !out.legs_check->safe) {
+      throw std::runtime_error("the route's lines and arcs failed the independent check: " + out.legs_check->describe());
+    }
     // Outside a bathymetry raster the depth is not known: a route that leaves it is not safe.
     if (const auto exit = route_leaves_coverage(route.points, charted.raster_coverage)) {
       const Vec2 ll = frame.to_lonlat(exit->at);
@@ -413,6 +427,10 @@ void register_plan(CLI::App& app) {
       for (const RouteLeg& leg : out.result.legs) arcs += leg.kind == RouteLeg::Kind::arc;
       summary["arcs"] = arcs;
       summary["lines"] = out.result.legs.size() - arcs;
+      double tightest = std::numeric_limits<double>::infinity();
+      for (const RouteLeg& leg : out.result.legs) tightest = std::min(tightest, min_turn_radius(leg));
+      if (arcs > 0) summary["min_turn_radius_m"] = tightest;
+      if (options.turn_radius_m > 0.0) summary["turn_radius_m"] = options.turn_radius_m;
     }
     // Per waypoint: the speed of the leg it starts, and time and energy so far.
     std::vector<nlohmann::json> waypoints(route.points.size(), nlohmann::json::object());
@@ -541,6 +559,13 @@ void register_plan(CLI::App& app) {
     if (!out.result.legs.empty()) {
       std::printf("exact length     %.3f m in %zu lines and arcs (the polyline keeps outside the arcs)\n",
                   out.result.exact_length_m, out.result.legs.size());
+      double tightest = std::numeric_limits<double>::infinity();
+      for (const RouteLeg& leg : out.result.legs) tightest = std::min(tightest, min_turn_radius(leg));
+      if (std::isfinite(tightest)) {
+        std::printf("tightest turn    %.2f m radius%s\n", tightest,
+                    options.turn_radius_m > 0.0 ? (" (turning radius " + general(options.turn_radius_m) + " m)").c_str()
+                                                : "");
+      }
     }
     std::printf("min clearance    %.2f m (margin %.2f m)\n", check.min_clearance_m, o->margin);
     std::printf("graph            %s over %zu of %zu obstacles, %zu vertices, %zu edges; %s expanded %zu\n",

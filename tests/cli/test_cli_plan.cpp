@@ -740,3 +740,48 @@ TEST(CliPlan, ARouteOffTheChartIsNotSafe) {
   r = run_cli("plan --chart '" + chart + "' --depth 10 --from 10.2446,54.4413 --to 10.2626,54.4606 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
 }
+
+TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
+  ScratchDir dir;
+  const std::string route = dir.file("wide.geojson");
+  // Round c2 on a 60 m radius where the free route turns on 35 m.
+  const std::string base = "plan --obstacles '" + kSample + "' --from 10.2405,54.4470 --to 10.2640,54.4560 --graph tangent --margin 10";
+  const auto free = run_cli(base + " --json");
+  ASSERT_EQ(free.exit_code, 0) << free.err;
+  EXPECT_NEAR(nlohmann::json::parse(free.out).at("min_turn_radius_m").get<double>(), 35.0, 1e-6);
+  const auto r = run_cli(base + " --turn-radius 60 -o '" + route + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j.at("min_turn_radius_m").get<double>(), 60.0, 1e-6);
+  EXPECT_EQ(j.at("turn_radius_m").get<double>(), 60.0);
+  EXPECT_GT(j.at("exact_length_m").get<double>(), nlohmann::json::parse(free.out).at("exact_length_m").get<double>());
+  const auto ok = run_cli("check route '" + route + "' --obstacles '" + kSample + "' --margin 10 --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(nlohmann::json::parse(ok.out).at("safe").get<bool>());
+
+  // A pocket left only over the end of a 10 m wall: a 5 m turn fits, 19.6 m does not.
+  const std::string pocket = dir.write("pocket.geojson", R"({"type": "FeatureCollection",
+    "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32632"}}, "features": [
+    {"type": "Feature", "properties": {"id": "wall"}, "geometry": {"type": "Polygon", "coordinates": [[[499995, 5999800], [500005, 5999800], [500005, 6000000], [499995, 6000000], [499995, 5999800]]]}},
+    {"type": "Feature", "properties": {"id": "roof"}, "geometry": {"type": "Polygon", "coordinates": [[[499890, 6000012], [500100, 6000012], [500100, 6000040], [499890, 6000040], [499890, 6000012]]]}},
+    {"type": "Feature", "properties": {"id": "floor"}, "geometry": {"type": "Polygon", "coordinates": [[[499890, 5999780], [500100, 5999780], [500100, 5999800], [499890, 5999800], [499890, 5999780]]]}},
+    {"type": "Feature", "properties": {"id": "back"}, "geometry": {"type": "Polygon", "coordinates": [[[499890, 5999780], [499900, 5999780], [499900, 6000040], [499890, 6000040], [499890, 5999780]]]}}]})");
+  const std::string in_pocket = "plan --obstacles '" + pocket + "' --crs EPSG:32632 --from 499950,5999900 --to 500050,5999900 --margin 5";
+  EXPECT_EQ(run_cli(in_pocket + " --graph tangent").exit_code, 0);
+  const auto tight = run_cli(in_pocket + " --graph tangent --turn-radius 19.6");
+  EXPECT_EQ(tight.exit_code, 3) << tight.err;
+  EXPECT_EQ(std::count(tight.err.begin(), tight.err.end(), '\n'), 1) << tight.err;
+  for (const char* word : {"19.6 m", "'wall'", "5.0 m radius"}) EXPECT_NE(tight.err.find(word), std::string::npos) << tight.err;
+
+  // Bad radii and graphs that cannot keep one: one line, exit 1.
+  for (const auto& [args, word] : std::vector<std::pair<std::string, std::string>>{
+           {" --graph tangent --turn-radius 0", "--turn-radius"},
+           {" --graph tangent --turn-radius -5", "--turn-radius"},
+           {" --graph tangent --turn-radius nan", "--turn-radius"},
+           {" --turn-radius 20", "--graph tangent"}}) {
+    const auto bad = run_cli(in_pocket + args);
+    EXPECT_EQ(bad.exit_code, 1) << args << ": " << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find(word), std::string::npos) << args << ": " << bad.err;
+  }
+}

@@ -6,8 +6,10 @@
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
+#include "deepguide/planning/turn_rounding.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 
@@ -44,11 +46,16 @@ constexpr double kMinGraphMargin = 1e-6;
 }  // namespace
 
 struct Planner::Impl {
+  explicit Impl(ObstacleField f) : field(std::move(f)) {}
   ObstacleField field;
   BgMultiPolygon zones;                      // visibility graphs only
   std::unique_ptr<VisibilityGraph> visibility;
   std::unique_ptr<TangentGraph> tangent;
   std::unique_ptr<QuadtreeGraph> quadtree;
+  // With a turning radius: the graph without it, built when no route is
+  // found, to say where the radius closes the way.
+  ObstacleSet unrounded;
+  std::unique_ptr<TangentGraph> plain;
 };
 
 namespace {
@@ -85,7 +92,13 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the tangent graph has no "
                      "open-water vertices)");
   }
-  impl_ = std::make_unique<Impl>(Impl{ObstacleField(obstacles, options.margin), {}, nullptr, nullptr, nullptr});
+  if (!std::isfinite(options.turn_radius_m) || options.turn_radius_m < 0.0) {
+    throw InputError("turn radius: expected a radius > 0 m (or 0 for none), got " + general(options.turn_radius_m));
+  }
+  if (options.turn_radius_m > 0.0 && options.graph != GraphKind::tangent) {
+    throw InputError("turn radius: expected --graph tangent (the other graphs' routes have corners)");
+  }
+  impl_ = std::make_unique<Impl>(ObstacleField(obstacles, options.margin));
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
   if (options.graph == GraphKind::quadtree) {
     if (options.grid.active()) {
@@ -95,7 +108,9 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     impl_->quadtree = std::make_unique<QuadtreeGraph>(impl_->field, quadtree_area(obstacles, options.quadtree,
                                                                                      options.margin));
   } else if (options.graph == GraphKind::tangent) {
-    impl_->tangent = std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus);
+    impl_->tangent =
+        std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus, options.turn_radius_m);
+    if (options.turn_radius_m > 0.0) impl_->unrounded = obstacles;
   } else {
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
     impl_->visibility = std::make_unique<VisibilityGraph>(
@@ -180,6 +195,28 @@ Vec2 escape_point(const ObstacleField& field, const Vec2& p, std::string& obstac
 
 }  // namespace
 
+// Where the turning radius closes the way: the first turn of the shortest
+// route without it that is tighter than the radius.
+std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
+  const std::string radius = general(options_.turn_radius_m) + " m";
+  const std::string none = "no route keeps the " + general(options_.margin) + " m margin turning no tighter than " +
+                           radius;
+  if (!impl_->plain) {
+    impl_->plain = std::make_unique<TangentGraph>(impl_->unrounded, std::max(options_.margin, kMinGraphMargin),
+                                                  options_.tolerance);
+  }
+  const PlanResult plain = impl_->plain->solve(problem, options_.search);
+  if (!plain.found) return plain.message;
+  for (const RouteLeg& leg : plain.legs) {
+    if (min_turn_radius(leg) < options_.turn_radius_m) {
+      return none + "; the shortest route without that limit turns round obstacle '" + printable(leg.obstacle) +
+             "' at " + point_text(0.5 * (leg.from + leg.to), 1) + " on a " + fixed(min_turn_radius(leg), 1) +
+             " m radius";
+    }
+  }
+  return none;
+}
+
 PlanOutcome Planner::solve(const PlanningProblem& problem) {
   if (!problem.start.allFinite() || !problem.goal.allFinite()) {
     throw InputError("start and goal: expected finite coordinates");
@@ -223,6 +260,10 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   }
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
                           impl_->field);
+  if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
+  if (!out.result.found && options_.turn_radius_m > options_.margin) {
+    out.result.message = why_no_turning_route(problem);
+  }
   return out;
 }
 

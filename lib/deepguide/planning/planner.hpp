@@ -6,6 +6,7 @@
 // passed the independent route checker.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "deepguide/planning/cost_model.hpp"
@@ -44,6 +45,11 @@ struct PlannerOptions {
   /// is the obstacles' zones' box, widened by a tenth (plan_single_query
   /// gives the start-goal box instead).
   QuadtreeOptions quadtree = {};
+  /// The vehicle's least turning radius (m); 0 = routes may turn on the spot.
+  /// Above the margin, zone corners tighter than it are rounded
+  /// (turn_rounding.hpp) so every arc of the route has at least this radius;
+  /// tangent graph only for now.
+  double turn_radius_m = 0.0;
 };
 
 /// Parses "visibility", "visibility-full", "tangent", "quadtree" / "astar", "dijkstra"; InputError otherwise.
@@ -56,6 +62,8 @@ std::string to_string(SearchAlgorithm algorithm);
 struct PlanOutcome {
   PlanResult result;
   RouteCheck check;  ///< the independent checker's verdict on result.route (after the escape leg)
+  /// The same on the exact lines and arcs (check_route_legs), when the graph gives them.
+  std::optional<RouteCheck> legs_check;
   std::string escaped_from;  ///< obstacle whose zone the start left first (PlanningProblem::escape)
 };
 
@@ -86,6 +94,7 @@ class Planner {
   QuadtreeGraph* quadtree();
 
  private:
+  std::string why_no_turning_route(const PlanningProblem& problem);
   struct Impl;
   PlannerOptions options_;
   std::unique_ptr<Impl> impl_;

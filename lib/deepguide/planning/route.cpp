@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace deepguide {
 
@@ -23,6 +25,38 @@ Vec2 Route::point_at(double s) const {
     s -= len;
   }
   return points.back();
+}
+
+double offset_ellipse_radius(const Ellipse& e, double offset, double phi) {
+  const double c = std::cos(phi - e.theta), s = std::sin(phi - e.theta);
+  const double h = std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s);
+  if (h <= 0.0) return offset;
+  return e.a * e.a * e.b * e.b / (h * h * h) + offset;
+}
+
+Vec2 arc_point(const RouteLeg& leg, double phi) {
+  const Vec2 u(std::cos(phi), std::sin(phi));
+  const Ellipse& e = leg.core;
+  // The core's support point: centre + A u / sqrt(u^T A u), zero for a point core.
+  const Vec2 major = e.major_dir(), minor = e.minor_dir();
+  const double ul = u.dot(major), vl = u.dot(minor);
+  const double h = std::sqrt(e.a * e.a * ul * ul + e.b * e.b * vl * vl);
+  Vec2 p = e.center;
+  if (h > 0.0) p += (e.a * e.a * ul / h) * major + (e.b * e.b * vl / h) * minor;
+  return p + leg.offset_m * u;
+}
+
+double least_offset_ellipse_radius(const Ellipse& e, double offset, double lo, double hi) {
+  double best = std::min(offset_ellipse_radius(e, offset, lo), offset_ellipse_radius(e, offset, hi));
+  const double first_tip = e.theta + std::numbers::pi * std::ceil((lo - e.theta) / std::numbers::pi);
+  if (first_tip <= hi) best = std::min(best, offset_ellipse_radius(e, offset, first_tip));
+  return best;
+}
+
+double min_turn_radius(const RouteLeg& leg) {
+  if (leg.kind != RouteLeg::Kind::arc) return std::numeric_limits<double>::infinity();
+  return least_offset_ellipse_radius(leg.core, leg.offset_m, std::min(leg.phi_from, leg.phi_to),
+                                     std::max(leg.phi_from, leg.phi_to));
 }
 
 }  // namespace deepguide

@@ -31,7 +31,26 @@ struct RouteLeg {
   int turn = 0;             ///< arcs: +1 anticlockwise (turning left), -1 clockwise
   double radius_m = 0.0;    ///< arcs: largest radius of curvature along the arc
   std::string obstacle;     ///< arcs: the obstacle whose zone the arc follows
+  /// Arcs: the curve itself, the boundary of core (+) disc(offset_m) from the
+  /// point whose outward normal has angle phi_from to the one at phi_to
+  /// (phi_to - phi_from has the sign of turn). A circle when core.a == core.b:
+  /// centre core.center, radius core.a + offset_m.
+  Ellipse core{{0.0, 0.0}, 0.0, 0.0, 0.0};
+  double offset_m = 0.0;
+  double phi_from = 0.0, phi_to = 0.0;
 };
+
+/// An arc leg's point with outward normal angle phi (between phi_from and phi_to).
+Vec2 arc_point(const RouteLeg& leg, double phi);
+/// Radius of curvature of the boundary of ellipse (+) disc(offset) at the
+/// point whose outward normal has angle phi: a^2 b^2 / h^3 + offset with
+/// h = sqrt(a^2 cos^2 psi + b^2 sin^2 psi), psi = phi - theta (h = 0: offset).
+double offset_ellipse_radius(const Ellipse& e, double offset, double phi);
+/// Its least value over normal angles [lo, hi]: at an end or at a tip
+/// (psi = 0 or pi) inside, as it grows monotonically from the tips to the sides.
+double least_offset_ellipse_radius(const Ellipse& e, double offset, double lo, double hi);
+/// An arc leg's least radius of curvature (m); +inf for a line.
+double min_turn_radius(const RouteLeg& leg);
 
 /// What a planner measured while solving; every planner fills what applies.
 struct PlanStats {

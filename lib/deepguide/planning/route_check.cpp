@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "deepguide/core/error.hpp"
@@ -24,7 +25,8 @@ std::string RouteCheck::describe() const {
          fixed(min_clearance_m, digits) == fixed(margin_m, digits)) {
     ++digits;
   }
-  std::string s = segments == 0 ? "waypoint 0 " : "segment " + std::to_string(worst_segment) + " ";
+  std::string s =
+      segments == 0 ? "waypoint 0 " : (of_legs ? "leg " : "segment ") + std::to_string(worst_segment) + " ";
   const std::string obstacle = "obstacle '" + printable(worst_obstacle) + "'";
   if (min_clearance_m > 0.0) {
     s += (segments == 0 ? "lies " : "passes ") + fixed(min_clearance_m, digits) + " m from " + obstacle;
@@ -69,6 +71,83 @@ RouteCheck check_route(const std::vector<Vec2>& polyline, const ObstacleField& f
     }
   }
   check.safe = check.min_clearance_m >= field.margin() - tolerance;
+  return check;
+}
+
+RouteCheck check_route_legs(const std::vector<RouteLeg>& legs, const ObstacleField& field, double tolerance) {
+  if (!std::isfinite(tolerance) || tolerance < 0.0) {
+    throw std::invalid_argument("check_route_legs: tolerance must be finite and >= 0, got " + general(tolerance));
+  }
+  if (legs.empty()) throw input_error({"route", "", ""}, "at least one leg", "none");
+  RouteCheck check;
+  check.of_legs = true;
+  check.margin_m = field.margin();
+  check.segments = legs.size();
+  check.min_clearance_m = std::numeric_limits<double>::infinity();
+  check.worst_point = legs.front().from;
+  auto note = [&](std::size_t k, const ObstacleField::Nearest& n) {
+    if (n.distance < check.min_clearance_m) {
+      check.min_clearance_m = n.distance;
+      check.worst_segment = k;
+      check.worst_obstacle = field.obstacle_name(n.obstacle);
+      check.worst_point = n.point_on_segment;
+    }
+  };
+  const double need = field.margin() - tolerance;
+  for (std::size_t k = 0; k < legs.size(); ++k) {
+    const RouteLeg& leg = legs[k];
+    for (const Vec2& p : {leg.from, leg.to}) {
+      if (!p.allFinite()) {
+        throw input_error({"route", "leg " + std::to_string(k), ""}, "finite coordinates",
+                          "(" + general(p.x()) + ", " + general(p.y()) + ")");
+      }
+    }
+    if (k > 0 && (legs[k - 1].to - leg.from).norm() > 1e-6) {
+      throw input_error({"route", "leg " + std::to_string(k), "from"}, "the end of leg " + std::to_string(k - 1),
+                        point_text(leg.from, 6) + " vs " + point_text(legs[k - 1].to, 6));
+    }
+    if (leg.kind == RouteLeg::Kind::line) {
+      note(k, field.segment_clearance(leg.from, leg.to));
+      continue;
+    }
+    // A stretch of a convex arc turning by dphi < pi lies between its chord
+    // and the tangents at its ends, at most chord * tan(dphi / 2) / 2 off the
+    // chord: its clearance is at least the chord's (exact) less that. A
+    // stretch is split until this bound decides it, or until it is within
+    // a quarter of `tolerance`, when the bound itself is its clearance (never
+    // above the truth, and within half the tolerance of it).
+    std::vector<std::pair<double, double>> todo{{leg.phi_from, leg.phi_to}};
+    note(k, field.segment_clearance(leg.to, leg.to));
+    std::size_t chords = 0;
+    while (!todo.empty() && chords < 1000000) {
+      const auto [phi0, phi1] = todo.back();
+      todo.pop_back();
+      const double dphi = std::abs(phi1 - phi0);
+      const Vec2 p0 = arc_point(leg, phi0), p1 = arc_point(leg, phi1);
+      note(k, field.segment_clearance(p0, p0));  // points of the arc: what the report names
+      bool split = dphi > 0.5 * std::numbers::pi;
+      if (!split) {
+        const double off = 0.5 * (p1 - p0).norm() * std::tan(0.5 * dphi);
+        ObstacleField::Nearest n = field.segment_clearance(p0, p1);
+        ++chords;
+        n.distance -= off;
+        if (n.distance < std::min(need, check.min_clearance_m)) {
+          if (off > 0.25 * tolerance) {  // the chord of an arc on a zone lies inside it by up to `off` too
+            split = true;
+          } else {
+            note(k, n);
+          }
+        }
+      }
+      if (split) {
+        const double mid = 0.5 * (phi0 + phi1);
+        todo.push_back({phi0, mid});
+        todo.push_back({mid, phi1});
+      }
+    }
+    if (!todo.empty()) note(k, {-std::numeric_limits<double>::infinity(), 0, arc_point(leg, todo.back().first)});
+  }
+  check.safe = check.min_clearance_m >= need;
   return check;
 }
 

@@ -29,6 +29,7 @@ struct RouteCheck {
   Vec2 worst_point{0.0, 0.0};     ///< point of that segment closest to it
   double margin_m = 0.0;          ///< the field's safety margin, for the report
   std::size_t segments = 0;       ///< segments checked; 0 for a single-point route
+  bool of_legs = false;           ///< check_route_legs: worst_segment counts lines and arcs ("leg N")
 
   /// One line without a verdict word, e.g. "segment 3 passes 1.27 m from
   /// obstacle 'c5' at (120.00, 45.50) (margin 5 m)", "segment 0 enters obstacle
@@ -41,6 +42,15 @@ struct RouteCheck {
 /// with NaN/inf coordinates (naming its index), std::invalid_argument for a
 /// tolerance that is not finite and >= 0.
 RouteCheck check_route(const std::vector<Vec2>& polyline, const ObstacleField& field, double tolerance = 1e-6);
+
+/// Checks a route given as exact lines and arcs (RouteLeg): lines exactly,
+/// arcs from their own curve (RouteLeg::core, offset_m, phi_from, phi_to),
+/// sampled where needed: clearance is 1-Lipschitz, so between two samples s
+/// apart it is at least their mean less s / 2, and a stretch is split until
+/// that bound decides it to within `tolerance`. Also checks that consecutive
+/// legs join (1 um). Throws InputError for no legs, non-finite points, or legs
+/// that do not join.
+RouteCheck check_route_legs(const std::vector<RouteLeg>& legs, const ObstacleField& field, double tolerance = 1e-6);
 
 /// The checker for routes in depth (the octree graph's): every leg against
 /// the water volume (the band, the sea floor exactly, each obstacle's zone and

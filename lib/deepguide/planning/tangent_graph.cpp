@@ -14,6 +14,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/periodic_roots.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
+#include "deepguide/planning/turn_rounding.hpp"
 #include "deepguide/planning/zone_pieces.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
@@ -43,7 +44,12 @@ struct Node {
   std::size_t piece;  // kNoPiece for start and goal
   double phi;         // outward normal angle on the piece, in [0, 2 pi)
   Vec2 p;
+  int orient = 0;     // the way round the piece a route passes here: +1 anticlockwise, -1 clockwise
 };
+
+// The way round a piece of a route moving along `d` where the piece's outward
+// normal is `u`: anticlockwise when d is u turned left.
+int orientation(const Vec2& u, const Vec2& d) { return u.x() * d.y() - u.y() * d.x() > 0.0 ? +1 : -1; }
 
 struct Segment {
   Node a, b;
@@ -96,13 +102,30 @@ struct TangentGraph::Impl {
   std::vector<ZonePiece> pieces;
   std::vector<std::string> piece_names;
   std::vector<bool> needs_arc_check;  // another zone reaches into the piece's box
+  double turn_radius = 0.0;           // routes turn on no boundary tighter than this (m)
+  // Whether a route may turn at the piece's point with normal phi, and along
+  // its arc from phi0 to phi1 (phi0 < phi1): only where the radius is >= turn_radius.
+  bool turns_at(std::size_t piece, double phi) const { return turns_along(piece, phi, phi); }
+  bool turns_along(std::size_t piece, double phi0, double phi1) const {
+    const ZonePiece& z = pieces[piece];
+    if (turn_radius <= 0.0) return true;
+    const double least = z.kind == ZonePiece::Kind::ellipse
+                             ? least_offset_ellipse_radius(z.ellipse, z.margin, phi0, phi1)
+                             : z.margin;
+    return least >= turn_radius * (1.0 - 1e-12);
+  }
   std::unique_ptr<ObstacleField> field;  // shifted frame, accepts margin - kTouchEps
   std::vector<Segment> tangents;      // collision-free common tangents
   double build_ms = 0.0;
 
   // The environment's graph, built once: vertex 0 and 1 are reserved for
-  // start and goal, then one vertex per tangent point. Arcs are stored
-  // anticlockwise (from u to v) and looked up by their ends.
+  // start and goal, then one vertex per tangent point and way round its piece
+  // (anticlockwise, clockwise). A tangent leaves its first point and reaches
+  // its second going one way round each; it is an edge between those
+  // vertices and, backwards, between the other two. Arcs join vertices of one
+  // way round: a route never reverses along a piece (with pieces that are not
+  // obstacles, the turning circles, a reversal could otherwise look short).
+  // Arcs are stored in the direction of travel (from u to v).
   struct Arc {
     std::size_t u, v;
     double w;
@@ -112,12 +135,12 @@ struct TangentGraph::Impl {
   std::vector<std::vector<std::size_t>> on_piece;  // vertex ids per piece, by phi
   PlanningGraph base;
   std::vector<Arc> arcs;
-  std::unordered_map<std::uint64_t, std::size_t> arc_of;  // (u, v) and (v, u) -> cheapest arc
+  std::unordered_map<std::uint64_t, std::size_t> arc_of;  // (u, v) -> cheapest arc
   std::size_t base_edges = 0;
 
   static std::uint64_t key(std::size_t u, std::size_t v) { return (static_cast<std::uint64_t>(u) << 32) | v; }
   // Adds the arcs between cyclically consecutive vertices of `ids` (sorted by
-  // phi) for which `want(a, b)` holds.
+  // phi) of one way round for which `want(a, b)` holds.
   template <class Want>
   void add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all, Want want,
                 PlanningGraph& graph, std::vector<Arc>& out, std::unordered_map<std::uint64_t, std::size_t>& index) const;
@@ -144,9 +167,17 @@ struct TangentGraph::Impl {
   void add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low,
                           double bound) const;
   std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
+  // The route's legs along a piece from normal angle phi0 to phi1 (turn: the
+  // sign of phi1 - phi0), in the unshifted frame: one arc on an ellipse's
+  // zone; on a capsule, arcs round its ends and lines along its flat sides.
+  // from_p and to_p are the route's points there (at a flat side's normal
+  // they tell which end the route is at).
+  std::vector<RouteLeg> arc_legs(std::size_t piece, double phi0, double phi1, int turn, const Vec2& from_p,
+                                 const Vec2& to_p) const;
 };
 
-TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus)
+TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus,
+                           double turn_radius)
     : impl_(std::make_unique<Impl>()) {
   const auto t0 = std::chrono::steady_clock::now();
   Impl& m = *impl_;
@@ -156,6 +187,22 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   m.focus = focus.shifted(m.origin);
   const ObstacleSet local = shifted(obstacles, m.origin);
   m.pieces = zone_pieces(local, m.margin);
+  std::size_t first_circle = m.pieces.size();
+  if (turn_radius > m.margin) {
+    // Polygon corners turn at d: routes turn round them on their circles only,
+    // and the polygons' zones stay in the field for every segment and arc.
+    m.turn_radius = turn_radius;
+    std::erase_if(m.pieces, [](const ZonePiece& p) { return p.kind == ZonePiece::Kind::capsule; });
+    first_circle = m.pieces.size();
+    for (const TurningCircle& c : turning_circles(local, m.margin, turn_radius)) {
+      ZonePiece p;
+      p.kind = ZonePiece::Kind::capsule;
+      p.a = p.b = c.centre;
+      p.margin = turn_radius;
+      p.obstacle = c.obstacle;
+      m.pieces.push_back(p);
+    }
+  }
   if (m.focus.active()) {
     // A piece no route within the bound can come near adds nothing (single_query.hpp): on a chart's
     // coast this keeps the few hundred edges near the ellipse of thousands.
@@ -183,6 +230,8 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   for (std::size_t i = 0; i < m.pieces.size(); ++i) boxes.emplace_back(piece_box(m.pieces[i]), i);
   const bgi::rtree<Item, bgi::rstar<16>> tree(boxes);
   m.needs_arc_check.assign(m.pieces.size(), false);
+  // A turning circle's arcs leave the circle's own obstacle's zone only near its corner.
+  for (std::size_t i = first_circle; i < m.pieces.size(); ++i) m.needs_arc_check[i] = true;
   for (const Item& it : boxes) {
     std::vector<Item> hits;
     tree.query(bgi::intersects(it.first), std::back_inserter(hits));
@@ -220,7 +269,8 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
         phi_j = wrap_two_pi(phi_j);
         const Node a{i, phi_i, zi.point_at_normal(phi_i)};
         const Node b{j, phi_j, zj.point_at_normal(phi_j)};
-        if ((a.p - b.p).norm() > 0.0 && m.focus.keeps_segment(a.p, b.p) && m.segment_free(a.p, b.p, i, j)) {
+        if ((a.p - b.p).norm() > 0.0 && m.turns_at(i, phi_i) && m.turns_at(j, phi_j) &&
+            m.focus.keeps_segment(a.p, b.p) && m.segment_free(a.p, b.p, i, j)) {
           m.tangents.push_back({a, b});
         }
       };
@@ -236,25 +286,26 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   m.on_piece.assign(m.pieces.size(), {});
   std::vector<std::pair<std::size_t, std::size_t>> segment_ends;
   for (const Segment& seg : m.tangents) {
-    std::size_t ends[2];
-    int k = 0;
-    for (const Node& n : {seg.a, seg.b}) {
+    const Vec2 d = seg.b.p - seg.a.p;
+    const int oa = orientation(unit(seg.a.phi), d), ob = orientation(unit(seg.b.phi), d);
+    auto vertex = [&](Node n, int orient) {
+      n.orient = orient;
       m.nodes.push_back(n);
       m.on_piece[n.piece].push_back(m.nodes.size() - 1);
-      ends[k++] = m.nodes.size() - 1;
-    }
-    segment_ends.emplace_back(ends[0], ends[1]);
+      return m.nodes.size() - 1;
+    };
+    const std::size_t a_out = vertex(seg.a, oa), b_in = vertex(seg.b, ob);
+    const std::size_t b_out = vertex(seg.b, -ob), a_in = vertex(seg.a, -oa);
+    segment_ends.emplace_back(a_out, b_in);
+    segment_ends.emplace_back(b_out, a_in);
   }
   // Spare vertices for the queries' tangent points (at most two per piece
-  // from each of start and goal): a query adds edges, never vertices, so the
-  // graph is searched in place instead of copied.
+  // from each of start and goal, or a boundary point's two ways round): a
+  // query adds edges, never vertices, so the graph is searched in place
+  // instead of copied.
   m.env_nodes = m.nodes.size();
   m.base = PlanningGraph(m.env_nodes + 4 * m.pieces.size());
-  for (const auto& [a, b] : segment_ends) {
-    const double w = (m.nodes[a].p - m.nodes[b].p).norm();
-    boost::add_edge(a, b, w, m.base);
-    boost::add_edge(b, a, w, m.base);
-  }
+  for (const auto& [a, b] : segment_ends) boost::add_edge(a, b, (m.nodes[a].p - m.nodes[b].p).norm(), m.base);
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
     auto& ids = m.on_piece[i];
     std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return m.nodes[x].phi < m.nodes[y].phi; });
@@ -263,7 +314,7 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
         i, ids, m.nodes, [&](std::size_t a, std::size_t b) { return m.focus.keeps_segment(m.nodes[a].p, m.nodes[b].p); },
         m.base, m.arcs, m.arc_of);
   }
-  m.base_edges = m.tangents.size() + m.arcs.size();
+  m.base_edges = segment_ends.size() + m.arcs.size();
   m.build_ms = elapsed_ms(t0);
 }
 
@@ -271,20 +322,31 @@ template <class Want>
 void TangentGraph::Impl::add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all,
                                   Want want, PlanningGraph& graph, std::vector<Arc>& out,
                                   std::unordered_map<std::uint64_t, std::size_t>& index) const {
-  if (ids.size() < 2) return;
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    const std::size_t a = ids[k], b = ids[(k + 1) % ids.size()];
-    if (!want(a, b)) continue;
-    const double phi0 = all[a].phi;
-    const double phi1 = k + 1 < ids.size() ? all[b].phi : all[b].phi + kTwoPi;
-    if (needs_arc_check[piece] && !arc_free(piece, phi0, phi1)) continue;
-    const double w = pieces[piece].arc_length(phi0, phi1);
-    boost::add_edge(a, b, w, graph);
-    boost::add_edge(b, a, w, graph);
-    out.push_back({a, b, w});
-    for (const auto& kk : {key(a, b), key(b, a)}) {
-      auto it = index.find(kk);
-      if (it == index.end() || out[it->second].w > w) index[kk] = out.size() - 1;
+  for (int orient : {+1, -1}) {
+    std::vector<std::size_t> way;
+    for (std::size_t v : ids) {
+      if (all[v].orient == orient) way.push_back(v);
+    }
+    if (way.size() < 2) continue;
+    for (std::size_t k = 0; k < way.size(); ++k) {
+      const std::size_t a = way[k], b = way[(k + 1) % way.size()];
+      if (!want(a, b)) continue;
+      const double phi0 = all[a].phi;
+      const double phi1 = k + 1 < way.size() ? all[b].phi : all[b].phi + kTwoPi;
+      if (!turns_along(piece, phi0, phi1)) continue;
+      if (needs_arc_check[piece] && !arc_free(piece, phi0, phi1)) continue;
+      const double w = pieces[piece].arc_length(phi0, phi1);
+      // Anticlockwise is from a (smaller phi) to b; clockwise the other way.
+      // Two vertices at one point (the sort's order between them is
+      // arbitrary) are joined both ways.
+      const bool same_point = k + 1 < way.size() && phi1 == phi0;
+      for (int dir : same_point ? std::vector<int>{+1, -1} : std::vector<int>{orient}) {
+        const std::size_t from = dir > 0 ? a : b, to = dir > 0 ? b : a;
+        boost::add_edge(from, to, w, graph);
+        out.push_back({from, to, w});
+        auto it = index.find(key(from, to));
+        if (it == index.end() || out[it->second].w > w) index[key(from, to)] = out.size() - 1;
+      }
     }
   }
 }
@@ -339,7 +401,7 @@ void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>&
     if (periodic_two_roots(f, r[0], r[1], std::atan2(out_dir.y(), out_dir.x()))) {
       for (double phi : r) {
         const Node t{i, wrap_two_pi(phi), z.point_at_normal(wrap_two_pi(phi))};
-        if (segment_free(p, t.p, kNoPiece, i)) out.push_back({Node{kNoPiece, 0.0, p}, t});
+        if (turns_at(i, t.phi) && segment_free(p, t.p, kNoPiece, i)) out.push_back({Node{kNoPiece, 0.0, p}, t});
       }
       continue;
     }
@@ -349,7 +411,7 @@ void TangentGraph::Impl::add_point_tangents(const Vec2& p, std::vector<Segment>&
     const Vec2 d = p - z.inner_point();
     const double guess = std::atan2(d.y(), d.x());
     auto best = boost::math::tools::brent_find_minima(neg, guess - std::numbers::pi, guess + std::numbers::pi, 52);
-    if (std::abs(best.second) <= kTouchEps) {
+    if (std::abs(best.second) <= kTouchEps && turns_at(i, wrap_two_pi(best.first))) {
       const double phi = wrap_two_pi(best.first);
       out.push_back({Node{kNoPiece, 0.0, p}, Node{i, phi, p}});
     }
@@ -411,6 +473,69 @@ std::vector<Vec2> TangentGraph::Impl::arc_polyline(std::size_t piece, double phi
   return out;
 }
 
+std::vector<RouteLeg> TangentGraph::Impl::arc_legs(std::size_t piece, double phi0, double phi1, int turn,
+                                                   const Vec2& from_p, const Vec2& to_p) const {
+  const ZonePiece& z = pieces[piece];
+  std::vector<RouteLeg> out;
+  auto arc = [&](const Ellipse& core, double from, double to, double length, double radius) {
+    if (!(length > 1e-12)) return;
+    RouteLeg leg;
+    leg.kind = RouteLeg::Kind::arc;
+    leg.turn = turn;
+    leg.core = core;
+    leg.core.center += origin;
+    leg.offset_m = z.margin;
+    leg.phi_from = from;
+    leg.phi_to = to;
+    // From the core, not the piece: at a flat side's normal the piece's point is either end.
+    leg.from = arc_point(leg, from);
+    leg.to = arc_point(leg, to);
+    leg.length_m = length;
+    leg.radius_m = radius;
+    leg.obstacle = piece_names[piece];
+    out.push_back(std::move(leg));
+  };
+  if (z.kind == ZonePiece::Kind::ellipse) {
+    arc(z.ellipse, phi0, phi1, z.arc_length(std::min(phi0, phi1), std::max(phi0, phi1)), z.max_curvature_radius());
+    return out;
+  }
+  // A capsule: the flat sides crossed split the span into turns round one
+  // end each, with a line along each side. A side's normal within rounding of
+  // either end of the span is no cut: the points say which end the route is at.
+  const double lo = std::min(phi0, phi1), hi = std::max(phi0, phi1);
+  std::vector<double> cuts;
+  for (double f : z.flat_normals()) {
+    for (double g = f + kTwoPi * std::ceil((lo - f) / kTwoPi); g < hi; g += kTwoPi) {
+      if (g > lo + 1e-12 && g < hi - 1e-12) cuts.push_back(g);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  if (turn < 0) std::reverse(cuts.begin(), cuts.end());
+  auto end_at = [&](const Vec2& p, double phi) {
+    const Vec2 q = p - z.margin * unit(phi);
+    return (q - z.a).norm() <= (q - z.b).norm() ? z.a : z.b;
+  };
+  auto side = [&](const Vec2& from_end, const Vec2& to_end, double normal) {
+    RouteLeg line;
+    line.from = from_end + z.margin * unit(normal) + origin;
+    line.to = to_end + z.margin * unit(normal) + origin;
+    line.length_m = (line.to - line.from).norm();
+    out.push_back(std::move(line));
+  };
+  Vec2 end = end_at(from_p, phi0);
+  double from = phi0;
+  for (double g : cuts) {
+    arc(Ellipse{end, 0.0, 0.0, 0.0}, from, g, z.margin * std::abs(g - from), z.margin);
+    const Vec2 other = end == z.a ? z.b : z.a;
+    side(end, other, g);
+    end = other;
+    from = g;
+  }
+  arc(Ellipse{end, 0.0, 0.0, 0.0}, from, phi1, z.margin * std::abs(phi1 - from), z.margin);
+  if (const Vec2 last = end_at(to_p, phi1); last != end) side(end, last, phi1);
+  return out;
+}
+
 PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm) {
   const auto t0 = std::chrono::steady_clock::now();
   Impl& m = *impl_;
@@ -463,20 +588,28 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
       std::vector<Segment> tangents;
       m.add_point_tangents(end == 0 ? s : g, tangents, low, bound);
       for (const Segment& seg : tangents) {
-        const std::size_t v = nodes.size();
-        if (v >= boost::num_vertices(graph)) throw std::logic_error("tangent graph: spare vertices exhausted");
-        nodes.push_back(seg.b);
-        used.push_back(v);
-        added[seg.b.piece].push_back(v);
-        const double w = (seg.b.p - seg.a.p).norm();
-        boost::add_edge(end, v, w, graph);
-        boost::add_edge(v, end, w, graph);
+        // Away from the start, towards the goal; a point on the boundary
+        // itself may go either way round.
+        const Vec2 d = end == 0 ? Vec2(seg.b.p - seg.a.p) : Vec2(seg.a.p - seg.b.p);
+        const double w = d.norm();
+        const std::vector<int> ways = w > 0.0 ? std::vector<int>{orientation(unit(seg.b.phi), d)}
+                                              : std::vector<int>{+1, -1};
+        for (int orient : ways) {
+          const std::size_t v = nodes.size();
+          if (v >= boost::num_vertices(graph)) throw std::logic_error("tangent graph: spare vertices exhausted");
+          nodes.push_back(seg.b);
+          nodes.back().orient = orient;
+          used.push_back(v);
+          added[seg.b.piece].push_back(v);
+          if (end == 0) {
+            boost::add_edge(0, v, w, graph);
+          } else {
+            boost::add_edge(v, 1, w, graph);
+          }
+        }
       }
     }
-    if (direct) {
-      boost::add_edge(0, 1, (g - s).norm(), graph);
-      boost::add_edge(1, 0, (g - s).norm(), graph);
-    }
+    if (direct) boost::add_edge(0, 1, (g - s).norm(), graph);
     // New tangent points split the pieces' arcs: join them to their neighbours.
     for (std::size_t i = 0; i < m.pieces.size(); ++i) {
       if (added[i].empty()) continue;
@@ -523,27 +656,44 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
       }
     }
     if (arc != nullptr) {
-      const ZonePiece& z = m.pieces[a.piece];
-      leg.kind = RouteLeg::Kind::arc;
-      leg.length_m = arc->w;
-      leg.turn = arc->u == u ? +1 : -1;  // arcs run anticlockwise from u to v
-      leg.radius_m = z.max_curvature_radius();
-      leg.obstacle = m.piece_names[a.piece];
+      const int turn = a.orient;
       const double phi_from = a.phi;
       double phi_to = b.phi;
-      if (leg.turn > 0) {
+      if (turn > 0) {
         while (phi_to < phi_from) phi_to += kTwoPi;
       } else {
         while (phi_to > phi_from) phi_to -= kTwoPi;
       }
-      for (const Vec2& q : m.arc_polyline(a.piece, phi_from, phi_to, leg.turn)) pts.push_back(q + m.origin);
+      for (RouteLeg& part : m.arc_legs(a.piece, phi_from, phi_to, turn, a.p, b.p)) {
+        result.exact_length_m += part.length_m;
+        result.legs.push_back(std::move(part));
+      }
+      for (const Vec2& q : m.arc_polyline(a.piece, phi_from, phi_to, turn)) pts.push_back(q + m.origin);
     } else {
       leg.length_m = (b.p - a.p).norm();
+      result.exact_length_m += leg.length_m;
+      result.legs.push_back(leg);
     }
-    result.exact_length_m += leg.length_m;
-    result.legs.push_back(leg);
     pts.push_back(b.p + m.origin);
   }
+  // One arc per turn round one curve: the tangent points a route passes on a
+  // piece split its turn into arcs that continue one another.
+  std::vector<RouteLeg> legs;
+  for (RouteLeg& leg : result.legs) {
+    if (!legs.empty() && leg.kind == RouteLeg::Kind::arc && legs.back().kind == RouteLeg::Kind::arc) {
+      RouteLeg& prev = legs.back();
+      const Ellipse &c0 = prev.core, &c1 = leg.core;
+      if (prev.turn == leg.turn && c0.center == c1.center && c0.a == c1.a && c0.b == c1.b && c0.theta == c1.theta &&
+          prev.offset_m == leg.offset_m && std::abs(prev.phi_to - leg.phi_from) < 1e-9) {
+        prev.to = leg.to;
+        prev.phi_to = prev.phi_from + (leg.phi_to - leg.phi_from) + (prev.phi_to - prev.phi_from);
+        prev.length_m += leg.length_m;
+        continue;
+      }
+    }
+    legs.push_back(std::move(leg));
+  }
+  result.legs = std::move(legs);
   // Drop repeated points (zero-length legs at touching pieces).
   pts.erase(std::unique(pts.begin(), pts.end(), [](const Vec2& x, const Vec2& y) { return (x - y).norm() < 1e-12; }),
             pts.end());

@@ -31,7 +31,13 @@ class TangentGraph {
   /// With an active `focus` only what a route from its start to its goal no
   /// longer than its bound can use is built (query_focus.hpp); solve() then
   /// answers that query.
-  TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus = {});
+  ///
+  /// With `turn_radius` R above the margin, routes turn only where the
+  /// boundary's radius is at least R: on the ellipses' zones away from sharp
+  /// tips, and on the turning circles of radius R over tighter corners
+  /// (turn_rounding.hpp), which are places to turn, not obstacles.
+  TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus = {},
+               double turn_radius = 0.0);
   ~TangentGraph();
   TangentGraph(TangentGraph&&) noexcept;
   TangentGraph& operator=(TangentGraph&&) noexcept;
