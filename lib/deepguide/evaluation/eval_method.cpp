@@ -7,6 +7,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/single_query.hpp"
+#include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/simulation/route_following.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
@@ -42,6 +43,12 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
   options.margin = sc.reactive.margin_m;
   options.graph = m.graph;
   options.search = m.search;
+  // The tangent graph's routes turn no tighter than the vehicle can (at the
+  // speed it sails them); the polygon graphs' routes still have corners.
+  if (m.graph == GraphKind::tangent) {
+    options.turn_radius_m = route_turn_radius(sc.vehicle, sc.reactive.speed_mps, sc.current.norm());
+    options.margin += kPathTrackingAllowance_m;
+  }
   if (m.cost != CostKind::length) {
     auto cost = std::make_shared<CostModel>();
     cost->kind = m.cost;
@@ -75,7 +82,7 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
   run.route_length_m = r.route.length();
   RouteFollowing follow;
   follow.simulation.record_trajectory = false;
-  fill_from(run, follow_route(sc, r.route, follow));
+  fill_from(run, r.legs.empty() ? follow_route(sc, r.route, follow) : follow_route(sc, r.legs, follow));
   return run;
 }
 

@@ -678,8 +678,20 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
   }
   // One arc per turn round one curve: the tangent points a route passes on a
   // piece split its turn into arcs that continue one another.
+  // Arcs of no length (a tangent that only touches a piece) go, and the
+  // lines on either side become one.
   std::vector<RouteLeg> legs;
   for (RouteLeg& leg : result.legs) {
+    if (leg.kind == RouteLeg::Kind::arc && leg.length_m < 1e-9) continue;
+    if (!legs.empty() && leg.kind == RouteLeg::Kind::line && legs.back().kind == RouteLeg::Kind::line) {
+      RouteLeg& prev = legs.back();
+      const Vec2 d0 = prev.to - prev.from, d1 = leg.to - leg.from;
+      if (std::abs(d0.x() * d1.y() - d0.y() * d1.x()) <= 1e-9 * d0.norm() * d1.norm() && d0.dot(d1) > 0.0) {
+        prev.to = leg.to;
+        prev.length_m = (prev.to - prev.from).norm();
+        continue;
+      }
+    }
     if (!legs.empty() && leg.kind == RouteLeg::Kind::arc && legs.back().kind == RouteLeg::Kind::arc) {
       RouteLeg& prev = legs.back();
       const Ellipse &c0 = prev.core, &c1 = leg.core;

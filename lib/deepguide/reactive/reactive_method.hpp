@@ -112,6 +112,9 @@ std::string_view to_string(ReactiveStatus status);
 struct ReactiveCommand {
   double course = 0.0;     ///< commanded course over ground (math rad)
   double speed_mps = 0.0;  ///< commanded speed through the water
+  /// Feed-forward for the autopilot: how fast `course` turns (rad/s, ccw
+  /// positive), known to guidance that follows a curved path; 0 otherwise.
+  double course_rate = 0.0;
   ReactiveStatus status = ReactiveStatus::ok;
   int sector = 0;          ///< the geometric method's sector 1, 2 or 3; 0 for the others
   std::ptrdiff_t active_object = -1;  ///< index into objects of the object steered around, -1 none

@@ -5,35 +5,45 @@
 // a planner's route and a reactive method's run are measured alike (path
 // over ground, energy, clearance, turning rates; evaluation/).
 //
-// Line-of-sight guidance leg by leg (Fossen's LOS): along the leg a -> b,
-// with e the vehicle's signed distance left of it, the course is the leg's
-// direction - atan(e / lookahead_m) (default lookahead: the turn radius at
-// the reactive speed), at the scenario's reactive speed and depth; the next
-// leg is taken once the vehicle is within the lookahead of this one's end
-// (the turn starts a turn radius early, as a vehicle rounds a waypoint) or
-// past it, measured along it; past the last leg's end it homes on the target. Every leg's field
-// leads onto the leg from anywhere, so a hairpin (a leg doubling back, as
-// quadtree routes do) is one wide turn; a carrot a fixed distance along the
-// route (mission_run.hpp) can sit inside the vehicle's turning circle there
-// and be circled for ever. No sonar: the route already avoids
-// what the planner knew. The run starts at the scenario's start and ends, by
-// the usual rules, at its target (the route's last point); but progress is
-// made along the route, which may lead away from the target for a while, so
-// the no-progress rule is off and the time limit, unless the scenario sets
-// one, is 3 x the route's time + 300 s.
+// Exact lines and arcs (PlanResult::legs, routes within the turning radius)
+// are sailed by path following (path_following.hpp: curved-path line of
+// sight with the path's turning as the autopilot's feed-forward; lookahead
+// 0.3 x the turn radius at the reactive speed, the feed-forward leading by
+// V / (2 w_r)): corners are never cut. A polyline (the polygon graphs'
+// routes, which still have corners) is sailed leg by leg by line of sight
+// with the turn radius as lookahead, the next leg taken within the lookahead
+// of this one's end, so a corner is cut as a vehicle rounds a waypoint (a
+// hairpin, as quadtree routes have, is one wide turn). Both at the scenario's
+// reactive speed and depth, homing on the target past the last leg's end.
+// No sonar: the route already avoids what the planner knew. The run starts
+// at the scenario's start and ends, by the usual rules, at its target (the
+// route's last point); but progress is made along the route, which may lead
+// away from the target for a while, so the no-progress rule is off and the
+// time limit, unless the scenario sets one, is 3 x the route's time + 300 s.
 
 #include "deepguide/planning/route.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
 namespace deepguide {
 
+/// How far the vehicle strays from a route within route_turn_radius()
+/// (basic_manoeuvres.hpp) where its curvature changes: the course reference
+/// takes a few seconds to take up or drop a turning rate. Planners whose
+/// routes are sailed by follow_route plan with the margin plus this much
+/// (measured: docs/SIMULATION.md, "Following a route").
+inline constexpr double kPathTrackingAllowance_m = 1.0;
+
 struct RouteFollowing {
-  double lookahead_m = 0.0;  ///< 0: the vehicle's turn radius at the reactive speed
+  double lookahead_m = 0.0;  ///< 0: the default above (for legs, for a polyline)
+  double lead_m = -1.0;      ///< PathFollower::lead_m; < 0: the default (route_following.cpp)
   SimulationOptions simulation = {};
 };
 
 /// Sails `route` (local frame, from the scenario's start to its target;
 /// InputError otherwise). The result's method field is meaningless.
 SimulationResult follow_route(const Scenario& scenario, const Route& route, const RouteFollowing& options = {});
+/// The same along exact lines and arcs (PlanResult::legs), which must join.
+SimulationResult follow_route(const Scenario& scenario, const std::vector<RouteLeg>& legs,
+                              const RouteFollowing& options = {});
 
 }  // namespace deepguide

@@ -137,7 +137,7 @@ SimulationResult simulate_guided(const Scenario& sc, const Guidance& guidance, c
     const auto t0 = std::chrono::steady_clock::now();
     const ReactiveCommand cmd = guidance(t, state);
     result.guidance_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const AutopilotOutput ap = plant.steer({cmd.course, cmd.speed_mps, sc.depth_m});
+    const AutopilotOutput ap = plant.steer({cmd.course, cmd.speed_mps, sc.depth_m, cmd.course_rate});
 
     const TrajectorySample x{.time_s = t,
                              .position = state.position,
