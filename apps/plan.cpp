@@ -463,6 +463,7 @@ void register_plan(CLI::App& app) {
         for (const PricedLeg& leg : priced.legs) settings.leg_times_s.push_back(leg.cost.time_s);
       }
       settings.margin_m = o->margin;
+      settings.turn_radius_m = options.turn_radius_m;
       if (!std::isnan(o->depth)) settings.safety_depth_m = o->depth + o->vertical_clearance;
       if (timed) settings.depart_utc_s = model->depart_s;
       ExportRoute exported = export_route(route, frame, vehicle_of(*o), settings);

@@ -13,6 +13,8 @@
 #include <libxml/xpathInternals.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
+#include <boost/geometry.hpp>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -24,6 +26,10 @@
 
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/plan_export.hpp"
+#include "deepguide/mission/route_export.hpp"
+#include "deepguide/planning/planner.hpp"
+#include "deepguide/world/obstacle_field.hpp"
+#include "deepguide/world/local_frame.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "test_support.hpp"
 
@@ -325,4 +331,106 @@ TEST(ExportSchemas, ABrokenFileFailsTheSchemaCheck) {
                                     "<Point><altitudeMode>underwater</altitudeMode><coordinates>1,2,-3</coordinates>"
                                     "</Point></Placemark></kml>");
   EXPECT_NE(schema_errors(schema("kml22/ogckml22.xsd"), kml), "");
+}
+
+TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
+  // A route planned within a 40 m turning radius round a box and an ellipse,
+  // written as RTZ and read back: an ECDIS turns each waypoint on the route's
+  // radius (defaultWaypoint), and those turns rebuild the planned arcs: the
+  // track they make keeps the margin and stays within the arcs' polyline
+  // tolerance of the exact route.
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
+  const Vec2 o(500000.0, 6000000.0);
+  ObstacleSet set;
+  PolygonObstacle box;
+  box.id = "box";
+  for (const Vec2& q : {Vec2(0, 0), Vec2(0, 60), Vec2(80, 60), Vec2(80, 0), Vec2(0, 0)}) box.footprint.outer().push_back(to_bg(o + q));
+  boost::geometry::correct(box.footprint);
+  set.polygons.push_back(box);
+  EllipticCylinder rock;
+  rock.id = "rock";
+  rock.footprint = Ellipse{o + Vec2(220.0, -30.0), 40.0, 6.0, 0.3};
+  set.ellipses.push_back(rock);
+  const double margin = 10.0, radius = 40.0, tolerance = 0.5;
+  PlannerOptions options;
+  options.margin = margin;
+  options.tolerance = tolerance;
+  options.graph = GraphKind::tangent;
+  options.turn_radius_m = radius;
+  Planner planner(set, options);
+  const PlanOutcome plan = planner.solve({o + Vec2(-150.0, 20.0), o + Vec2(400.0, -10.0)});
+  ASSERT_TRUE(plan.result.found);
+  int arcs = 0;
+  for (const RouteLeg& leg : plan.result.legs) arcs += leg.kind == RouteLeg::Kind::arc;
+  ASSERT_GE(arcs, 2);
+
+  ScratchDir dir;
+  const std::string path = dir.file("turning.rtz");
+  RouteExportSettings settings;
+  settings.name = "turning";
+  settings.margin_m = margin;
+  settings.turn_radius_m = radius;
+  write_route_file(export_route(plan.result.route, frame, VehicleParams{}, settings), path, ExportFormat::rtz);
+  EXPECT_EQ(schema_errors(schema("rtz/rtz_1_0.xsd"), path), "");
+  const Xml x(path, {{"r", "http://www.cirm.org/RTZ/1/0"}});
+  ASSERT_TRUE(x.ok());
+  const std::vector<double> turn = x.numbers("//r:defaultWaypoint/@radius");
+  ASSERT_EQ(turn.size(), 1u);
+  const double r = turn[0] * kNauticalMile;
+  EXPECT_NEAR(r, radius, kCm);
+  const std::vector<double> lon = x.numbers("//r:waypoint/r:position/@lon"), lat = x.numbers("//r:waypoint/r:position/@lat");
+  ASSERT_EQ(lon.size(), lat.size());
+  std::vector<Vec2> wp;
+  for (std::size_t i = 0; i < lon.size(); ++i) wp.push_back(frame.from_lonlat(lon[i], lat[i]));
+
+  // The track an ECDIS draws: straight between the turns, and at each
+  // waypoint an arc of radius r tangent to both legs.
+  std::vector<Vec2> track{wp.front()};
+  for (std::size_t i = 1; i + 1 < wp.size(); ++i) {
+    const Vec2 e1 = (wp[i] - wp[i - 1]).normalized(), e2 = (wp[i + 1] - wp[i]).normalized();
+    const double cross = e1.x() * e2.y() - e1.y() * e2.x();
+    const double theta = std::atan2(std::abs(cross), e1.dot(e2));
+    if (theta < 1e-6) {
+      track.push_back(wp[i]);
+      continue;
+    }
+    const double t = r * std::tan(0.5 * theta);
+    // The turn fits between its neighbours' (the polyline's corners are a
+    // tangent length from the arc's tangent points; positions to 1e-7
+    // degrees bend legs of a few centimetres by a few milliradians).
+    EXPECT_LE(t, (wp[i] - wp[i - 1]).norm() + 0.2) << i;
+    EXPECT_LE(t, (wp[i + 1] - wp[i]).norm() + 0.2) << i;
+    const Vec2 p1 = wp[i] - t * e1;
+    const Vec2 centre = p1 + (cross > 0 ? 1.0 : -1.0) * r * Vec2(-e1.y(), e1.x());
+    const double a0 = std::atan2(p1.y() - centre.y(), p1.x() - centre.x());
+    for (int k = 0; k <= 16; ++k) {
+      const double a = a0 + (cross > 0 ? 1.0 : -1.0) * theta * k / 16;
+      track.push_back(centre + r * Vec2(std::cos(a), std::sin(a)));
+    }
+  }
+  track.push_back(wp.back());
+  const ObstacleField field(set, margin);
+  double least = 1e9, furthest = 0.0;
+  for (std::size_t i = 0; i + 1 < track.size(); ++i) least = std::min(least, field.segment_clearance(track[i], track[i + 1]).distance);
+  for (const Vec2& q : track) {
+    double nearest = 1e9;
+    for (const RouteLeg& leg : plan.result.legs) {
+      Vec2 p = leg.from;
+      if (leg.kind == RouteLeg::Kind::line) {
+        const Vec2 d = leg.to - leg.from;
+        p = leg.from + std::clamp((q - leg.from).dot(d) / d.squaredNorm(), 0.0, 1.0) * d;
+      } else {
+        for (int k = 0; k <= 2000; ++k) {
+          const Vec2 c = arc_point(leg, leg.phi_from + (leg.phi_to - leg.phi_from) * k / 2000);
+          if ((c - q).norm() < (p - q).norm()) p = c;
+        }
+      }
+      nearest = std::min(nearest, (p - q).norm());
+    }
+    furthest = std::max(furthest, nearest);
+  }
+  EXPECT_GE(least, margin - 1e-3);
+  EXPECT_LT(furthest, 0.05);  // the turns are the arcs (to the RTZ's 1e-7 degrees and the sampling)
+  std::printf("[ export ] RTZ of a route within %.0f m: %zu waypoints, %d arcs; the ECDIS track keeps %.3f m, "
+              "at most %.3f m off the planned arcs\n", radius, wp.size(), arcs, least, furthest);
 }

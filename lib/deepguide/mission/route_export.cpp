@@ -100,7 +100,7 @@ ExportRoute export_route(const Route& route, const LocalFrame& frame, const Vehi
     r.waypoints.push_back(std::move(w));
   }
   r.length_m = route.length();
-  r.turn_radius_m = turn_radius(vehicle, fastest);
+  r.turn_radius_m = settings.turn_radius_m > 0.0 ? settings.turn_radius_m : turn_radius(vehicle, fastest);
   r.vertical_speed_mps = vehicle.max_vertical_speed_mps;
   r.max_speed_mps = vehicle.max_speed_mps;
   r.xtd_m = settings.margin_m;

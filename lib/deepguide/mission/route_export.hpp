@@ -88,6 +88,11 @@ struct RouteExportSettings {
   double margin_m = NAN;               ///< kept from every zone: the cross-track distance allowed
   double safety_depth_m = NAN;         ///< the water depth the route needs
   std::optional<double> depart_utc_s = std::nullopt;
+  /// The route's least turn (m) when it was planned within one (plan
+  /// --turn-radius); 0 = the vehicle's at its fastest leg. Every waypoint
+  /// turns on it: an arc's polyline has its corners where the arc's tangent
+  /// lines meet, and a turn of this radius at each corner is the arc itself.
+  double turn_radius_m = 0.0;
 };
 
 /// A planned route as the writers take it: names "001"..., depths, each
