@@ -251,9 +251,8 @@ void register_plan(CLI::App& app) {
       obstacles = std::move(loaded.obstacles);
     }
     if (!frame_in_use) {
-      // --from is lon,lat here; any frame reads it, and back to lon,lat it picks the zone.
-      const LocalFrame any = LocalFrame::utm_for(0.0, 0.0);
-      const Eigen::Vector2d from = any.to_lonlat(parse_position(o->from, "--from", any, false));
+      // --from is lon,lat here: it picks the zone.
+      const Eigen::Vector2d from = parse_lonlat(o->from, "--from");
       frame_in_use = LocalFrame::utm_for(from.x(), from.y());
     }
     const LocalFrame& frame = *frame_in_use;

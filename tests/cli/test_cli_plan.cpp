@@ -785,3 +785,25 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
     EXPECT_NE(bad.err.find(word), std::string::npos) << args << ": " << bad.err;
   }
 }
+
+TEST(CliPlan, FramesBeyondUtmAreRefused) {
+  // Near the pole, and half the globe away in one UTM zone: the frame would
+  // be off by far more than the margin, so neither is planned.
+  const std::string base = "plan --obstacles '" + kSample + "'";
+  const auto polar = run_cli(base + " --from 10.0,89.99 --to 10.1,89.98");
+  EXPECT_EQ(polar.exit_code, 1) << polar.err;
+  EXPECT_EQ(std::count(polar.err.begin(), polar.err.end(), '\n'), 1) << polar.err;
+  for (const char* w : {"--from", "89.99", "84 N", "EPSG:3413"}) EXPECT_NE(polar.err.find(w), std::string::npos) << polar.err;
+  const auto far = run_cli(base + " --from 10.2405,54.4470 --to 100,10");
+  EXPECT_EQ(far.exit_code, 1) << far.err;
+  EXPECT_EQ(std::count(far.err.begin(), far.err.end(), '\n'), 1) << far.err;
+  for (const char* w : {"--to", "91.00 degrees", "EPSG:32632", "6 degrees", "--crs"}) {
+    EXPECT_NE(far.err.find(w), std::string::npos) << far.err;
+  }
+  // Within a zone's width of the sample's zone (central meridian 9 E): planned.
+  const auto near = run_cli(base + " --from 10.2405,54.4470 --to 14.5,54.6");
+  EXPECT_EQ(near.exit_code, 0) << near.err;
+  const auto beyond = run_cli(base + " --from 10.2405,54.4470 --to 15.5,54.6");
+  EXPECT_EQ(beyond.exit_code, 1) << beyond.err;
+  EXPECT_NE(beyond.err.find("6.50 degrees"), std::string::npos) << beyond.err;
+}

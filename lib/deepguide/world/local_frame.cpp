@@ -2,10 +2,14 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <optional>
 #include <mutex>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -30,7 +34,28 @@ int utm_epsg_for(double lon_deg, double lat_deg) {
   return (lat_deg >= 0.0 ? 32600 : 32700) + zone;
 }
 
+namespace {
+
+// UTM is defined from 80 S to 84 N; beyond, a polar projection is the frame.
+void require_utm_latitude(double lat_deg, const std::string& what) {
+  if (lat_deg >= -80.0 && lat_deg <= 84.0) return;
+  throw InputError(what + ": latitude " + fixed(lat_deg, 4) +
+                   " lies beyond UTM's 80 S to 84 N; give --crs with a polar projection (EPSG:3413 north, "
+                   "EPSG:3031 south; positions are then x,y in it)");
+}
+
+// The central meridian of a WGS 84 UTM frame (EPSG:326zz / 327zz); none for other frames.
+std::optional<double> utm_central_meridian(const std::string& id) {
+  if (id.size() != 10 || id.compare(0, 7, "EPSG:32") != 0 || (id[7] != '6' && id[7] != '7')) return std::nullopt;
+  const int zone = std::atoi(id.c_str() + 8);
+  if (zone < 1 || zone > 60) return std::nullopt;
+  return -183.0 + 6.0 * zone;
+}
+
+}  // namespace
+
 LocalFrame LocalFrame::utm_for(double lon_deg, double lat_deg) {
+  require_utm_latitude(lat_deg, "UTM zone");
   return from_user_crs("EPSG:" + std::to_string(utm_epsg_for(lon_deg, lat_deg)), "UTM zone");
 }
 
@@ -101,26 +126,61 @@ double LocalFrame::local_to_heading(double math_rad, const Eigen::Vector2d& xy) 
   return wrap_360(rad_to_deg(true_north_angle(xy) - math_rad));
 }
 
-Eigen::Vector2d parse_position(const std::string& text, const std::string& what, const LocalFrame& frame,
-                               bool frame_coordinates) {
-  const std::string expected = frame_coordinates ? "x,y in " + frame.id() + " metres" : "lon,lat in degrees";
+namespace {
+
+// "A,B": two finite numbers, or nothing.
+std::optional<Eigen::Vector2d> number_pair(const std::string& text) {
   const auto comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) return std::nullopt;
   double v[2] = {0.0, 0.0};
-  bool ok = comma != std::string::npos && text.find(',', comma + 1) == std::string::npos;
-  for (int i = 0; ok && i < 2; ++i) {
+  for (int i = 0; i < 2; ++i) {
     const std::string part = i == 0 ? text.substr(0, comma) : text.substr(comma + 1);
     const char* first = part.data();
     const char* last = part.data() + part.size();
     while (first < last && *first == ' ') ++first;
     if (first < last && *first == '+') ++first;
     auto [ptr, ec] = std::from_chars(first, last, v[i]);
-    ok = ec == std::errc() && ptr == last && std::isfinite(v[i]);
+    if (ec != std::errc() || ptr != last || !std::isfinite(v[i])) return std::nullopt;
   }
-  if (!ok) throw InputError(what + ": expected " + expected + ", got '" + text + "'");
-  if (frame_coordinates) return {v[0], v[1]};
-  if (std::abs(v[1]) > 90.0 || std::abs(v[0]) > 180.0) {
+  return Eigen::Vector2d(v[0], v[1]);
+}
+
+}  // namespace
+
+Eigen::Vector2d parse_lonlat(const std::string& text, const std::string& what) {
+  const std::optional<Eigen::Vector2d> v = number_pair(text);
+  if (!v) throw InputError(what + ": expected lon,lat in degrees, got '" + text + "'");
+  if (std::abs(v->y()) > 90.0 || std::abs(v->x()) > 180.0) {
     throw InputError(what + ": expected lon,lat in degrees within +-180,+-90, got '" + text +
                      "' (give --crs to use projected coordinates)");
+  }
+  return *v;
+}
+
+Eigen::Vector2d parse_position(const std::string& text, const std::string& what, const LocalFrame& frame,
+                               bool frame_coordinates) {
+  if (frame_coordinates) {
+    const std::optional<Eigen::Vector2d> v = number_pair(text);
+    if (!v) throw InputError(what + ": expected x,y in " + frame.id() + " metres, got '" + text + "'");
+    return *v;
+  }
+  const Eigen::Vector2d ll = parse_lonlat(text, what);
+  const double v[2] = {ll.x(), ll.y()};
+  // In a UTM frame: within its latitudes, and within a zone's width (6 deg)
+  // of its central meridian, where its scale is off by at most 0.55 %.
+  if (const std::optional<double> cm = utm_central_meridian(frame.id())) {
+    require_utm_latitude(v[1], what);
+    const double off = std::abs(std::remainder(v[0] - *cm, 360.0));
+    if (off > 6.0) {
+      const double b = std::cos(v[1] * std::numbers::pi / 180.0) * std::sin(off * std::numbers::pi / 180.0);
+      const double scale = 0.9996 / std::sqrt(std::max(1.0 - b * b, 1e-12)) - 1.0;
+      throw InputError(what + ": " + fixed(off, 2) + " degrees of longitude from the central meridian (" +
+                       fixed(*cm, 0) + ") of the local frame " + frame.id() +
+                       ", more than a UTM zone's width (6 degrees), where its distances are off by " +
+                       (scale < 1.0 ? fixed(100.0 * scale, 1) + " %" : std::string("more than 100 %")) +
+                       "; plan in shorter parts, or give --crs with a projection that covers the whole route "
+                       "(--from and --to are then x,y in it)");
+    }
   }
   const Eigen::Vector2d xy = frame.from_lonlat(v[0], v[1]);
   if (!xy.allFinite()) throw InputError(what + ": expected a position inside the local frame " + frame.id());

@@ -51,9 +51,15 @@ class LocalFrame {
   std::shared_ptr<const Impl> impl_;
 };
 
+/// Parses "lon,lat" in degrees given as `what` (e.g. "--from"); InputError
+/// for anything else (not two numbers, NaN, beyond +-180, +-90).
+Eigen::Vector2d parse_lonlat(const std::string& text, const std::string& what);
+
 /// Parses a position "A,B" given on the command line as `what` (e.g. "--from"):
 /// lon,lat in degrees, or, when `frame_coordinates`, x,y in the frame's CRS.
-/// Throws InputError for anything else (not two numbers, NaN, lat beyond 90).
+/// Throws InputError for anything else (not two numbers, NaN, lat beyond 90),
+/// and, in a UTM frame, for a latitude beyond 80 S to 84 N or a longitude
+/// more than a zone's width (6 degrees) from its central meridian.
 Eigen::Vector2d parse_position(const std::string& text, const std::string& what, const LocalFrame& frame,
                                bool frame_coordinates);
 
