@@ -53,7 +53,7 @@ struct PlanOptions {
   std::string vehicle;
   std::string speed = "cruise";
   std::string depart;
-  double waypoint_grid = 0.0;
+  std::optional<double> waypoint_grid;
   double min_cell = QuadtreeOptions{}.min_cell_m;
   bool smooth = false;
   std::string replan_events;
@@ -196,7 +196,7 @@ void register_plan(CLI::App& app) {
                        "--graph octree");
     }
     if (in_depth && (o->cost != "length" || !o->current_file.empty() || !o->current_const.empty() ||
-                     o->waypoint_grid != 0.0 || o->escape || !o->replan_events.empty() || !o->depart.empty() ||
+                     o->waypoint_grid || o->escape || !o->replan_events.empty() || !o->depart.empty() ||
                      o->render_graph)) {
       throw InputError("--graph octree: plans by length; --cost, --current, --waypoint-grid, --escape, "
                        "--replan-events, --depart and --render-graph are for the 2-D graphs");
@@ -313,7 +313,7 @@ void register_plan(CLI::App& app) {
     }
     const auto model = std::make_shared<const CostModel>(cost_model_of(*o, frame, problem));
     if (model->kind != CostKind::length) options.cost = model;
-    if (o->waypoint_grid != 0.0) options.grid = waypoint_grid_for(problem.start, problem.goal, o->waypoint_grid);
+    if (o->waypoint_grid) options.grid = waypoint_grid_for(problem.start, problem.goal, *o->waypoint_grid);
     // One query: the graph only over the obstacles that can matter (single_query.hpp).
     const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);
     const PlanOutcome& out = plan.outcome;
@@ -573,7 +573,7 @@ void register_plan(CLI::App& app) {
                 out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);
     if (out.result.stats.open_water_vertices > 0) {
       std::printf("waypoint grid    %zu open-water vertices %.0f m apart\n", out.result.stats.open_water_vertices,
-                  o->waypoint_grid);
+                  *o->waypoint_grid);
     }
     std::printf("time             build %.2f ms, query %.2f ms (%d round%s)\n", plan.build_ms, plan.query_ms, plan.rounds,
                 plan.rounds == 1 ? "" : "s");

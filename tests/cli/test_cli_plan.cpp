@@ -240,6 +240,9 @@ TEST(CliPlanCost, BadCostOptionsAreOneLineErrors) {
       {" --cost time --graph tangent", {"--cost time", "visibility"}},
       {" --cost time --current-const 1,north", {"--current-const"}},
       {" --cost time --current /nonexistent/tide.nc", {"/nonexistent/tide.nc"}},
+      {" --cost time --current-const 1,0 --waypoint-grid 0", {"--waypoint-grid", "> 0", "got 0"}},
+      {" --margin 1e308", {"--margin", "100 km", "1e+308"}},
+      {" --margin -1", {"--margin", "100 km", "-1"}},
   };
   for (const auto& [args, words] : cases) {
     const auto r = run_cli(base + args);

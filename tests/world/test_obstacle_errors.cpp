@@ -80,6 +80,22 @@ TEST(ObstacleErrors, ZeroOrNegativeAxis) {
   expect_error(error_of({neg}), {neg.c_str(), "feature 1", "semi_minor_m", "> 0", "got -1"});
 }
 
+TEST(ObstacleErrors, HugeAxesAndHeadingsAreRefused) {
+  // Finite but absurd: they printed inf/nan extents with exit 0.
+  ScratchDir dir;
+  const std::string big = dir.write("b.geojson", collection({kGood, point_feature(R"("id":"big","semi_major_m":1e308)")}));
+  expect_error(error_of({big}), {big.c_str(), "feature 1", "'big'", "semi_major_m", "100 km", "got 1e+308"});
+  const std::string just = dir.write("j.geojson", collection({point_feature(R"("id":"j","semi_major_m":100001)")}));
+  expect_error(error_of({just}), {just.c_str(), "semi_major_m", "100 km", "got 100001"});
+  const std::string spin = dir.write(
+      "s.geojson", collection({point_feature(R"("id":"spin","semi_major_m":20,"semi_minor_m":10,"orientation_deg":1e308)")}));
+  expect_error(error_of({spin}), {spin.c_str(), "feature 0", "orientation_deg", "+-360", "got 1e+308"});
+  // At the bounds: read.
+  const std::string edge = dir.write(
+      "e.geojson", collection({point_feature(R"("id":"e","semi_major_m":100000,"semi_minor_m":10,"orientation_deg":-360)")}));
+  EXPECT_EQ(error_of({edge}), "");
+}
+
 TEST(ObstacleErrors, SemiMinorLargerThanSemiMajor) {
   ScratchDir dir;
   const std::string p = dir.write("m.csv", "lon,lat,id,semi_major_m,semi_minor_m\n10,54,a,5,2\n10,54.1,b,3,4\n");

@@ -75,8 +75,10 @@ QuadtreeOptions quadtree_area(const ObstacleSet& obstacles, QuadtreeOptions q, d
 }  // namespace
 
 Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const QueryFocus& focus) : options_(options) {
-  if (!std::isfinite(options.margin) || options.margin < 0.0) {
-    throw InputError("--margin: expected a safety margin >= 0 m, got " + std::to_string(options.margin));
+  // 100 km is far beyond any safety margin, and keeps the zones' polygons
+  // (corners ~ sqrt(margin / tolerance)) within what can be built.
+  if (!std::isfinite(options.margin) || options.margin < 0.0 || options.margin > 1e5) {
+    throw InputError("--margin: expected a safety margin from 0 m to 100 km, got " + general(options.margin));
   }
   if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
     throw InputError("--tolerance: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));

@@ -139,7 +139,10 @@ void read_ellipse_fields(const OGRFeature& f, const InputLocation& where, GeoRec
   const auto a = numeric_field(f, "semi_major_m", where);
   w.field = "semi_major_m";
   if (!a) throw input_error(w, "a semi-major axis in metres for a Point obstacle", "no value");
-  if (*a <= 0.0) throw input_error(w, "a semi-major axis > 0 m", fmt(*a));
+  // An obstacle's axes are metres to kilometres; 100 km is far beyond any
+  // (and beyond what a UTM frame holds to the metre).
+  constexpr double kMaxAxis_m = 1e5;
+  if (!(*a > 0.0 && *a <= kMaxAxis_m)) throw input_error(w, "a semi-major axis > 0 m and at most 100 km", fmt(*a));
   const auto b = numeric_field(f, "semi_minor_m", where);
   w.field = "semi_minor_m";
   if (b && *b <= 0.0) throw input_error(w, "a semi-minor axis > 0 m", fmt(*b));
@@ -147,6 +150,10 @@ void read_ellipse_fields(const OGRFeature& f, const InputLocation& where, GeoRec
     throw input_error(w, "semi_minor_m <= semi_major_m (" + fmt(*a) + " m)", fmt(*b));
   }
   const auto heading = numeric_field(f, "orientation_deg", where);
+  w.field = "orientation_deg";
+  if (heading && !(std::abs(*heading) <= 360.0)) {
+    throw input_error(w, "a heading in degrees within +-360", fmt(*heading));
+  }
   rec.is_ellipse = true;
   rec.a = *a;
   rec.b = b.value_or(*a);
