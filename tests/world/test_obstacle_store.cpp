@@ -3,6 +3,8 @@
 #include <fcntl.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
 #include <ogrsf_frmts.h>
 #include <signal.h>
 #include <spawn.h>
@@ -166,6 +168,18 @@ TEST(ObstacleStore, NewStoreFromOneMission) {
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 2u);
+}
+
+TEST(ObstacleStore, ANewStoreMustBeNamedGpkg) {
+  // A GeoPackage named .geojson would mislead every other reader; nothing is created.
+  ScratchDir dir;
+  const std::string a = dir.write("a.csv", mission_a());
+  for (const char* name : {"store.geojson", "store", "store.gpkg.tmp"}) {
+    const std::string store = dir.file(name);
+    deepguide::test::expect_one_line_error([&] { (void)import_detections(store, {a}, utm_options()); }, ".gpkg");
+    EXPECT_FALSE(std::filesystem::exists(store)) << name;
+  }
+  EXPECT_TRUE(import_detections(dir.file("STORE.GPKG"), {a}, utm_options()).created);
 }
 
 TEST(ObstacleStore, SecondMissionMergesByHandDerivedValues) {

@@ -25,6 +25,7 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/atomic_file.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -529,6 +530,12 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
 
   ImportSummary summary;
   if (!fs::exists(store_path, ec)) {
+    // The store is a GeoPackage: a new one named .geojson (or anything but
+    // .gpkg) would be a GeoPackage that every other tool misreads.
+    if (ascii_lower(fs::path(store_path).extension().string()) != ".gpkg") {
+      throw InputError(store_path + ": expected a new obstacle store's name to end in .gpkg (it is a GeoPackage), got '" +
+                       printable(fs::path(store_path).extension().string()) + "'");
+    }
     // Check every detection before a new store appears on disk.
     parse_detections(load_obstacles(detection_paths, read), 0, import_ms);
     summary.created = create_store(store_path);
