@@ -18,6 +18,7 @@
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
 #include "deepguide/planning/single_query.hpp"
+#include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/route_export.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_on_chart.hpp"
@@ -137,7 +138,7 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--margin", o->margin, "Safety margin to every obstacle (m)")->capture_default_str();
   cmd->add_option("--turn-radius", o->turn_radius,
                   "The vehicle's least turning radius (m): every arc of the route is at least this wide "
-                  "(--graph tangent)");
+                  "(--graph tangent; default with --vehicle: what the vehicle can follow at the planned speed)");
   cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
       ->capture_default_str();
   cmd->add_option("--depth", o->depth,
@@ -313,6 +314,11 @@ void register_plan(CLI::App& app) {
     }
     const auto model = std::make_shared<const CostModel>(cost_model_of(*o, frame, problem));
     if (model->kind != CostKind::length) options.cost = model;
+    // A vehicle given to the tangent graph: routes it can follow at the planned
+    // speed in the strongest current (route_turn_radius), unless --turn-radius says otherwise.
+    if (!o->turn_radius && !o->vehicle.empty() && options.graph == GraphKind::tangent) {
+      options.turn_radius_m = route_turn_radius(vehicle_of(*o), model->speed_mps, model->max_current_mps);
+    }
     if (o->waypoint_grid) options.grid = waypoint_grid_for(problem.start, problem.goal, *o->waypoint_grid);
     // One query: the graph only over the obstacles that can matter (single_query.hpp).
     const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);

@@ -776,6 +776,13 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
   EXPECT_EQ(std::count(tight.err.begin(), tight.err.end(), '\n'), 1) << tight.err;
   for (const char* word : {"19.6 m", "'wall'", "5.0 m radius"}) EXPECT_NE(tight.err.find(word), std::string::npos) << tight.err;
 
+  // A vehicle sets the radius it can follow: 1.15 x 2.06 m/s / 5 deg/s at DeepC's cruise.
+  const auto deepc = run_cli(base + " --vehicle '" + deepguide::test::source_file("data/vehicles/deepc.yaml") + "' --json");
+  ASSERT_EQ(deepc.exit_code, 0) << deepc.err;
+  const auto dj = nlohmann::json::parse(deepc.out);
+  EXPECT_NEAR(dj.at("turn_radius_m").get<double>(), 1.15 * 4 * 1852.0 / 3600.0 / (5.0 * M_PI / 180.0), 0.01);
+  EXPECT_GE(dj.at("min_turn_radius_m").get<double>(), dj.at("turn_radius_m").get<double>() - 1e-9);
+
   // Bad radii and graphs that cannot keep one: one line, exit 1.
   for (const auto& [args, word] : std::vector<std::pair<std::string, std::string>>{
            {" --graph tangent --turn-radius 0", "--turn-radius"},
