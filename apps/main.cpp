@@ -56,6 +56,10 @@ int main(int argc, char** argv) {
   app::register_render_identification(*render);
   app::register_render_mission(*render);
 
+  // Every message is one line a terminal shows as it is: what a file put in
+  // an id or a name (a newline, an escape sequence, U+202E) is escaped here
+  // whatever the message that carries it.
+  const auto one_line = [](const char* what) { return printable(what, 4000); };
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -68,22 +72,22 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   } catch (const InputError& e) {
-    std::cerr << "deepguide: error: " << e.what() << "\n";
+    std::cerr << "deepguide: error: " << one_line(e.what()) << "\n";
     return 1;
   } catch (const NoRouteError& e) {
-    std::cerr << "deepguide: no safe route: " << e.what() << "\n";
+    std::cerr << "deepguide: no safe route: " << one_line(e.what()) << "\n";
     return 3;
   } catch (const ManoeuvreError& e) {
-    std::cerr << "deepguide: manoeuvre failed: " << e.what() << "\n";
+    std::cerr << "deepguide: manoeuvre failed: " << one_line(e.what()) << "\n";
     return 3;
   } catch (const PartialError& e) {
-    std::cerr << "deepguide: incomplete: " << e.what() << "\n";
+    std::cerr << "deepguide: incomplete: " << one_line(e.what()) << "\n";
     return 4;
   } catch (const std::bad_alloc&) {
     std::cerr << "deepguide: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "deepguide: internal error: " << e.what() << "\n";
+    std::cerr << "deepguide: internal error: " << one_line(e.what()) << "\n";
     return 1;
   }
   return 0;

@@ -817,3 +817,16 @@ TEST(CliPlan, FramesBeyondUtmAreRefused) {
   EXPECT_EQ(beyond.exit_code, 1) << beyond.err;
   EXPECT_NE(beyond.err.find("6.50 degrees"), std::string::npos) << beyond.err;
 }
+
+TEST(CliPlan, HostileObstacleIdsArePrintedEscapedOnOneLine) {
+  ScratchDir dir;
+  const std::string evil = dir.write("evil.geojson",
+      "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\",\"properties\":{\"id\":"
+      "\"evil\\n\\u001b[31mred\\u202e\",\"semi_major_m\":5},\"geometry\":{\"type\":\"Point\",\"coordinates\":[10.25,54.45]}}]}");
+  const auto r = run_cli("plan --obstacles '" + evil + "' --from 10.2499,54.45 --to 10.26,54.45");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("\u202e"), std::string::npos) << r.err;
+  for (const char* w : {"evil\\x0a\\x1b[31mred\\u202e", "safety zone"}) EXPECT_NE(r.err.find(w), std::string::npos) << r.err;
+}

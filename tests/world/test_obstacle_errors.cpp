@@ -200,3 +200,18 @@ TEST(ObstacleErrors, HostileLongAndOddStrings) {
   expect_error(msg, {p.c_str(), "semi_major_m", "xxx..."});
   EXPECT_LT(msg.size(), 400u) << "the id must be cut in the message";
 }
+
+TEST(Printable, EscapesWhatWouldChangeHowALineIsShown) {
+  EXPECT_EQ(printable("c2"), "c2");
+  EXPECT_EQ(printable("a\nb\x1b[31mc"), "a\\x0ab\\x1b[31mc");
+  // Bidirectional and invisible controls are escaped, other UTF-8 is kept.
+  EXPECT_EQ(printable("wreck\u202e1gnp.exe"), "wreck\\u202e1gnp.exe");
+  EXPECT_EQ(printable("a\u200bb\u2066c\ufeff"), "a\\u200bb\\u2066c\\ufeff");
+  EXPECT_EQ(printable("Wrack S\u00fcdmole 54\u00b0"), "Wrack S\u00fcdmole 54\u00b0");
+  EXPECT_EQ(printable("\xc2\x85"), "\\x85");  // C1 control NEL
+  // Bytes that are not UTF-8: a stray continuation, a cut sequence, an overlong '/'.
+  EXPECT_EQ(printable("a\x80z"), "a\\x80z");
+  EXPECT_EQ(printable("a\xe2\x80"), "a\\xe2\\x80");
+  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");
+  EXPECT_EQ(printable(std::string(100, 'x'), 10), std::string(10, 'x') + "...");
+}

@@ -44,8 +44,10 @@ struct InputLocation {
   std::string describe() const;
 };
 
-/// Text from a file (an id, a name) made safe for a one-line message:
-/// control characters escaped as \xNN, cut after `max_chars` with "...".
+/// Text from a file (an id, a name) made safe for a one-line message: C0 and
+/// C1 control characters and bytes that are not UTF-8 escaped as \xNN, the
+/// invisible format and bidirectional controls (U+200B-U+200F, U+2028-U+202E,
+/// U+2060-U+2069, U+061C, U+FEFF) as \uNNNN; cut after `max_chars` bytes with "...".
 std::string printable(const std::string& text, std::size_t max_chars = 60);
 
 /// Builds an InputError "LOCATION: expected EXPECTED[, got GOT]".

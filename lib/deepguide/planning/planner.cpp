@@ -149,7 +149,7 @@ void require_free(const ObstacleField& field, const Vec2& p, const char* which) 
   // A point exactly on the zone boundary is free; rounding gets a micrometre.
   if (n.distance >= field.margin() - 1e-6) return;
   throw NoRouteError(std::string(which) + " lies " + fmt(n.distance) + " m from obstacle '" +
-                     field.obstacle_name(n.obstacle) + "', inside its " + fmt(field.margin()) +
+                     printable(field.obstacle_name(n.obstacle)) + "', inside its " + fmt(field.margin()) +
                      " m safety zone");
 }
 
@@ -181,7 +181,7 @@ Vec2 escape_point(const ObstacleField& field, const Vec2& p, std::string& obstac
   const Vec2 q = closest_boundary_point(field.obstacles(), n.obstacle, p);
   Vec2 out = p - q;
   if (out.norm() == 0.0) {
-    throw NoRouteError("the start lies on the boundary of obstacle '" + obstacle_name +
+    throw NoRouteError("the start lies on the boundary of obstacle '" + printable(obstacle_name) +
                        "' where no way out can be told; move it off the boundary");
   }
   out.normalize();
@@ -189,8 +189,9 @@ Vec2 escape_point(const ObstacleField& field, const Vec2& p, std::string& obstac
   const Vec2 e = q + (field.margin() + 1e-6) * out;
   if (!field.is_free(e)) {
     const ObstacleField::Nearest other = field.segment_clearance(e, e);
-    throw NoRouteError("the shortest way out of obstacle '" + obstacle_name + "''s safety zone ends in obstacle '" +
-                       field.obstacle_name(other.obstacle) + "''s zone");
+    throw NoRouteError("the shortest way out of obstacle '" + printable(obstacle_name) +
+                       "''s safety zone ends in obstacle '" + printable(field.obstacle_name(other.obstacle)) +
+                       "''s zone");
   }
   return e;
 }
