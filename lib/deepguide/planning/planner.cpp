@@ -54,7 +54,6 @@ struct Planner::Impl {
   std::unique_ptr<QuadtreeGraph> quadtree;
   // With a turning radius: the graph without it, built when no route is
   // found, to say where the radius closes the way.
-  ObstacleSet unrounded;
   std::unique_ptr<TangentGraph> plain;
 };
 
@@ -112,7 +111,6 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   } else if (options.graph == GraphKind::tangent) {
     impl_->tangent =
         std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus, options.turn_radius_m);
-    if (options.turn_radius_m > 0.0) impl_->unrounded = obstacles;
   } else {
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
     impl_->visibility = std::make_unique<VisibilityGraph>(
@@ -205,7 +203,7 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   const std::string none = "no route keeps the " + general(options_.margin) + " m margin turning no tighter than " +
                            radius;
   if (!impl_->plain) {
-    impl_->plain = std::make_unique<TangentGraph>(impl_->unrounded, std::max(options_.margin, kMinGraphMargin),
+    impl_->plain = std::make_unique<TangentGraph>(impl_->field.obstacles(), std::max(options_.margin, kMinGraphMargin),
                                                   options_.tolerance);
   }
   const PlanResult plain = impl_->plain->solve(problem, options_.search);

@@ -36,14 +36,9 @@ double offset_ellipse_radius(const Ellipse& e, double offset, double phi) {
 
 Vec2 arc_point(const RouteLeg& leg, double phi) {
   const Vec2 u(std::cos(phi), std::sin(phi));
-  const Ellipse& e = leg.core;
-  // The core's support point: centre + A u / sqrt(u^T A u), zero for a point core.
-  const Vec2 major = e.major_dir(), minor = e.minor_dir();
-  const double ul = u.dot(major), vl = u.dot(minor);
-  const double h = std::sqrt(e.a * e.a * ul * ul + e.b * e.b * vl * vl);
-  Vec2 p = e.center;
-  if (h > 0.0) p += (e.a * e.a * ul / h) * major + (e.b * e.b * vl / h) * minor;
-  return p + leg.offset_m * u;
+  // A point core (a polygon corner's) is its own support point.
+  const Vec2 core = leg.core.a > 0.0 ? leg.core.support_point(u) : leg.core.center;
+  return core + leg.offset_m * u;
 }
 
 double least_offset_ellipse_radius(const Ellipse& e, double offset, double lo, double hi) {

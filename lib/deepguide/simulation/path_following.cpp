@@ -46,20 +46,6 @@ PathPoint nearest_on_leg(const RouteLeg& leg, const Vec2& p) {
   return q;
 }
 
-std::vector<RouteLeg> line_legs(const std::vector<Vec2>& points) {
-  std::vector<RouteLeg> legs;
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const Vec2 from = legs.empty() ? points.front() : legs.back().to;
-    if ((points[i] - from).norm() <= 1e-9) continue;
-    RouteLeg leg;
-    leg.from = from;
-    leg.to = points[i];
-    leg.length_m = (leg.to - leg.from).norm();
-    legs.push_back(leg);
-  }
-  return legs;
-}
-
 PathFollower::Command PathFollower::steer(const Vec2& position, const Vec2& ground_velocity) {
   Command cmd;
   PathPoint q = nearest_on_leg(legs[leg], position);

@@ -15,12 +15,10 @@
 // course over ground, so the autopilot crabs into a current (autopilot.hpp):
 // that is the current compensation.
 //
-// P is searched on the leg being followed and the next; the next leg is
-// taken once the vehicle is abeam of the current leg's end or beyond. A
-// polyline's corner is thus turned at the corner, not a turning radius before
-// it: the vehicle overshoots outwards, away from the zone the route wraps,
-// instead of cutting towards it. Routes within the turning radius
-// (planning/turn_rounding.hpp) have no corners to overshoot.
+// P is searched on the leg being followed; the next leg is taken once the
+// vehicle is abeam of the current leg's end or beyond, so nothing is cut.
+// The legs must join without a corner (routes within the turning radius,
+// planning/turn_rounding.hpp): at a corner the vehicle would overshoot.
 
 #include <cstddef>
 #include <vector>
@@ -39,9 +37,6 @@ struct PathPoint {
   bool past_end = false;    ///< p lies beyond the leg's end (abeam or after)
 };
 PathPoint nearest_on_leg(const RouteLeg& leg, const Vec2& p);
-
-/// Line legs through the points (legs of zero length dropped).
-std::vector<RouteLeg> line_legs(const std::vector<Vec2>& points);
 
 
 /// The follower's state: which leg it is on.
