@@ -49,7 +49,7 @@ nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& wh
     const Route route = route_in_frame(part.points, no_go.frame, o.route + ": " + part.label);
     if (part.is_point) {
       ++points;
-      if (const EncNoGoFeature* f = no_go_feature_at(no_go, route.points.front(), o.margin); f && safe) {
+      if (const EncNoGoFeature* f = no_go_feature_at(no_go, route.points.front(), o.margin, kRouteFileTolerance_m); f && safe) {
         safe = false;
         why = part.label + ": lies within " + fixed(o.margin, 2) + " m of " + f->id + (f->cell.empty() ? "" : " of " + f->cell) +
               " (" + f->reason + ")";
@@ -59,7 +59,7 @@ nlohmann::json check_on_chart(const CheckOptions& o, bool& safe, std::string& wh
       continue;
     }
     if (lines++ == 0) j["waypoints"] = route.points.size(), j["length_m"] = route.length();
-    const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin);
+    const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin, kRouteFileTolerance_m);
     crossed += check.crossed_features;
     if (!check.safe && safe) {
       safe = false;
@@ -117,7 +117,6 @@ void register_check_route(CLI::App& check) {
       const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
       // Every line and point of the file (a second line through an obstacle is not "safe").
       const std::vector<RouteFilePart> parts = read_route_parts(o->route);
-      if (parts.empty()) throw InputError(o->route + ": expected a route line or points, found none");
       // Files without an obstacle fix no frame: the route's start does (its UTM zone).
       LocalFrame frame = loaded.frame;
       if (loaded.obstacles.empty() && o->frame.crs.empty()) {
@@ -135,7 +134,7 @@ void register_check_route(CLI::App& check) {
           out["waypoints"] = route.points.size(), out["length_m"] = route.length();
           first_line = part.label;
         }
-        const RouteCheck check = check_route(route.points, field);
+        const RouteCheck check = check_route(route.points, field, kRouteFileTolerance_m);
         // The verdict: the first unsafe part, else the part that comes closest.
         const bool first_unsafe = !check.safe && (!worst || worst->safe);
         if (!worst || first_unsafe || (worst->safe && check.min_clearance_m < worst->min_clearance_m)) {

@@ -153,6 +153,55 @@ TEST(EncRules, ZonesOfConfidenceAreTheIhoFigures) {
   EXPECT_EQ(zoc_name(6), "U");
 }
 
+// A square of land (0..100 m) in a hand-made no-go: the check's verdict on
+// routes a known distance from it.
+EncNoGo square_land() {
+  EncNoGo no_go{LocalFrame::utm_for(-76.4, 38.8), 0.0, {}, {}, {}, {}, {}, {}, 0};
+  EncNoGoFeature land;
+  land.id = "LNDARE/1";
+  land.cls = "LNDARE";
+  land.reason = "land";
+  BgPolygon square;
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, {0.0, 100.0}, {100.0, 100.0}, {100.0, 0.0}, {0.0, 0.0}}) {
+    square.outer().emplace_back(x, y);
+  }
+  boost::geometry::correct(square);
+  land.area.push_back(square);
+  no_go.features.push_back(land);
+  return no_go;
+}
+
+TEST(EncRouteCheck, TheToleranceAbsorbsRoundingNotTheMargin) {
+  const EncNoGo no_go = square_land();
+  // Legs along y = 105 - e: e short of the 5 m margin.
+  const auto along = [](double e) { return std::vector<Vec2>{{-50.0, 105.0 - e}, {150.0, 105.0 - e}}; };
+  EXPECT_TRUE(check_route_on_chart(along(0.0), no_go, 5.0).safe);
+  EXPECT_FALSE(check_route_on_chart(along(1e-4), no_go, 5.0).safe) << "the default tolerance is 1 um";
+  EXPECT_TRUE(check_route_on_chart(along(1e-4), no_go, 5.0, 1e-3).safe) << "0.1 mm is rounding at 1 mm";
+  const ChartRouteCheck near = check_route_on_chart(along(0.2), no_go, 5.0, 1e-3);
+  ASSERT_FALSE(near.safe);
+  EXPECT_NEAR(near.first->least_distance_m, 4.8, 1e-9);
+  // Where it enters the margin less the tolerance round the corner, bisected to 1 cm.
+  EXPECT_NEAR(near.first->at.x(), -std::sqrt(4.999 * 4.999 - 4.8 * 4.8), 0.011);
+  const std::string text = near.describe(no_go.frame);
+  EXPECT_NE(text.find("passes 4.80 m from LNDARE/1 (land; margin 5 m)"), std::string::npos) << text;
+  EXPECT_EQ(text.find("crosses"), std::string::npos) << text;
+  // Into the land: "crosses", at its edge.
+  const ChartRouteCheck into = check_route_on_chart({{-50.0, 50.0}, {50.0, 50.0}}, no_go, 5.0, 1e-3);
+  ASSERT_FALSE(into.safe);
+  EXPECT_EQ(into.first->least_distance_m, 0.0);
+  EXPECT_NE(into.describe(no_go.frame).find("crosses LNDARE/1 (land)"), std::string::npos);
+  // Touching the land with no margin is a crossing whatever the tolerance.
+  EXPECT_FALSE(check_route_on_chart({{-50.0, 100.0}, {150.0, 100.0}}, no_go, 0.0, 1e-3).safe);
+  EXPECT_TRUE(check_route_on_chart({{-50.0, 100.01}, {150.0, 100.01}}, no_go, 0.0, 1e-3).safe);
+  // Points alone.
+  EXPECT_EQ(no_go_feature_at(no_go, {50.0, 105.0 - 1e-4}, 5.0, 1e-3), nullptr);
+  EXPECT_NE(no_go_feature_at(no_go, {50.0, 105.0 - 1e-2}, 5.0, 1e-3), nullptr);
+  EXPECT_NE(no_go_feature_at(no_go, {50.0, 50.0}, 0.0, 1e-3), nullptr) << "inside the land";
+  EXPECT_THROW(check_route_on_chart(along(0.0), no_go, 5.0, -1.0), std::invalid_argument);
+  EXPECT_THROW(check_route_on_chart(along(0.0), no_go, 5.0, std::nan("")), std::invalid_argument);
+}
+
 // ------------------------------------------------------------------ real cells
 
 TEST(EncNoGo, StraightRouteOfTheIssueIsFlaggedWithItsFirstCrossing) {
@@ -668,6 +717,33 @@ TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
   const auto passed = test::run_cli("check route '" + route + "' " + chart + "--depth 5 --json");
   EXPECT_EQ(passed.exit_code, 0) << passed.err;
   EXPECT_TRUE(nlohmann::json::parse(passed.out)["safe"].get<bool>());
+}
+
+// The README's channel trip, planned to every format check route reads: the
+// planner routes along the 5 m margin round a point of land, and each file
+// read back passes (it once said "crosses LNDARE/6685"), while a margin 1 cm
+// larger fails there, naming the land 5.00 m off.
+TEST(EncCli, EveryRouteFilePlanWritesPassesTheCheckAtItsMargin) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
+  ScratchDir tmp;
+  const std::string chart = "--chart '" + path + "' --depth 5 ";
+  for (const char* ext : {"geojson", "gpx", "kml", "rtz", "csv"}) {
+    const std::string route = tmp.file(std::string("trip.") + ext);
+    const auto planned = test::run_cli("plan " + chart + "--from -76.41,38.87 --to -76.38,38.80 -o '" + route + "'");
+    ASSERT_EQ(planned.exit_code, 0) << ext << ": " << planned.err;
+    const auto passed = test::run_cli("check route '" + route + "' " + chart + "--json");
+    EXPECT_EQ(passed.exit_code, 0) << ext << ": " << passed.err;
+    if (passed.exit_code == 0) {
+      const auto j = nlohmann::json::parse(passed.out);
+      EXPECT_TRUE(j["safe"].get<bool>()) << ext;
+      EXPECT_EQ(j["waypoints"].get<int>(), 10) << ext << ": the legs, not only the points";
+      EXPECT_NEAR(j["length_m"].get<double>(), 8232.6, 0.1) << ext;
+    }
+    const auto tighter = test::run_cli("check route '" + route + "' " + chart + "--margin 5.01");
+    EXPECT_EQ(tighter.exit_code, 1) << ext;
+    EXPECT_NE(tighter.err.find("passes 5.00 m from LNDARE/6685 of US4MD81M (land; margin 5.01 m)"), std::string::npos)
+        << ext << ": " << tighter.err;
+  }
 }
 
 TEST(EncCli, BadChartsAreOneLineAndExitOne) {

@@ -618,6 +618,16 @@ TEST(CliPlan, CheckRouteChecksEveryLineAndPointOfTheFile) {
   r = run_cli("check route '" + file("point.geojson", {clear, on_c5}) + "' --obstacles '" + kSample + "' --json");
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.err.find("c5"), std::string::npos) << r.err;
+  // The ends of the line through c2 as points alone (a file of waypoints): each
+  // is clear, the leg between them is not, and the legs are what is checked.
+  const auto point = [](const char* lonlat) {
+    return std::string("{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", "
+                       "\"coordinates\": [") + lonlat + "]}}";
+  };
+  const std::string ends = file("ends.geojson", {point("10.250, 54.453"), point("10.262, 54.453")});
+  r = run_cli("check route '" + ends + "' --obstacles '" + kSample + "' --margin 0");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.err.find("segment 0 enters obstacle 'c2'"), std::string::npos) << r.err;
 }
 
 TEST(CliPlan, AnOutputNeverDestroysAnInput) {

@@ -5,6 +5,7 @@
 #include <libxml/xmlerror.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -237,7 +238,17 @@ std::vector<RouteFilePart> read_route_parts(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": expected an existing route file, found none");
   if (ascii_lower(std::filesystem::path(path).extension().string()) == ".rtz") return {{"route", read_rtz(path), false}};
-  return read_ogr_parts(path);
+  std::vector<RouteFilePart> parts = read_ogr_parts(path);
+  if (parts.empty()) throw InputError(path + ": expected a route line or points, found none");
+  // Waypoints without a line (a CSV of waypoints, a GPX of marks) are a route
+  // in file order: checking each point alone would call its legs safe unseen.
+  const bool has_line = std::any_of(parts.begin(), parts.end(), [](const RouteFilePart& p) { return !p.is_point; });
+  if (!has_line && parts.size() >= 2) {
+    RouteFilePart line{"the " + std::to_string(parts.size()) + " points in file order", {}, false};
+    for (RouteFilePart& p : parts) line.points.push_back(std::move(p.points.front()));
+    return {std::move(line)};
+  }
+  return parts;
 }
 
 std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path) {

@@ -20,6 +20,13 @@ void write_route_geojson(const std::string& path, const Route& route, const Loca
                          const nlohmann::json& properties = nlohmann::json::object(),
                          const std::vector<nlohmann::json>& waypoint_properties = {});
 
+/// What a route read back from a file may lose to rounding and still be
+/// judged by the margin it was planned to: 1 mm. Files round positions (RTZ
+/// keeps nine decimals of a degree, 0.1 mm; others fewer), and a route planned
+/// to touch the margin comes back a hair inside it; "crosses land" for 0.1 mm
+/// would be untrue. Charts and sonar are not metre-exact, so 1 mm hides nothing.
+inline constexpr double kRouteFileTolerance_m = 1e-3;
+
 /// A route file's waypoint as the file gives it.
 struct RouteFileWaypoint {
   Vec2 lonlat{0.0, 0.0};  ///< WGS 84 degrees
@@ -42,8 +49,9 @@ struct RouteFilePart {
   bool is_point = false;
 };
 
-/// Every line and point of the file in order (an RTZ file: its route). Throws
-/// as read_route_waypoints.
+/// Every line and point of the file in order (an RTZ file: its route). A file
+/// of points and no line (a CSV of waypoints) is one line through its points
+/// in file order. Throws as read_route_waypoints, and for a file with neither.
 std::vector<RouteFilePart> read_route_parts(const std::string& path);
 
 /// Waypoints in the local frame; `where` names them in the error for one

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <set>
+#include <stdexcept>
 
 #include "deepguide/core/error.hpp"
 
@@ -108,6 +109,10 @@ double entry(const EncNoGoFeature& f, const Vec2& a, const Vec2& b, double margi
   return best_t;  // a graze between two samples: its closest sample
 }
 
+// Whether distance d breaks the margin: closer than margin - tolerance, or in
+// (or on) the feature whatever the margin.
+bool breaks(double d, double margin, double tolerance) { return d <= 0.0 || d < margin - tolerance; }
+
 std::string lonlat_text(const LocalFrame& frame, const Vec2& p) {
   const Vec2 ll = frame.to_lonlat(p);
   char buf[64];
@@ -117,7 +122,11 @@ std::string lonlat_text(const LocalFrame& frame, const Vec2& p) {
 
 }  // namespace
 
-ChartRouteCheck check_route_on_chart(const std::vector<Vec2>& route, const EncNoGo& no_go, double margin_m) {
+ChartRouteCheck check_route_on_chart(const std::vector<Vec2>& route, const EncNoGo& no_go, double margin_m,
+                                     double tolerance_m) {
+  if (!std::isfinite(tolerance_m) || tolerance_m < 0.0) {
+    throw std::invalid_argument("check_route_on_chart: tolerance must be finite and >= 0");
+  }
   if (!std::isfinite(margin_m) || margin_m < 0.0) {
     throw InputError("--margin: expected a safety margin >= 0 m, got " + std::to_string(margin_m));
   }
@@ -136,9 +145,9 @@ ChartRouteCheck check_route_on_chart(const std::vector<Vec2>& route, const EncNo
     for (const auto& h : hits) {
       const EncNoGoFeature& f = no_go.features[h.second];
       const double d = distance_to(f, a, b);
-      if (!(d < margin_m) && !(margin_m == 0.0 && d == 0.0)) continue;
+      if (!breaks(d, margin_m, tolerance_m)) continue;
       crossed.insert(h.second);
-      const double t = entry(f, a, b, std::max(margin_m, 1e-9));
+      const double t = entry(f, a, b, std::max(margin_m - tolerance_m, 1e-9));
       const double at_along = along + t * (b - a).norm();
       if (!out.first || at_along < out.first->along_m) {
         out.first = ChartCrossing{leg, at_along, a + t * (b - a), &f, d};
@@ -162,16 +171,22 @@ std::string ChartRouteCheck::describe(const LocalFrame& frame) const {
   char buf[160];
   std::snprintf(buf, sizeof buf, " at %s, %.1f m along the route (leg %zu)", lonlat_text(frame, c.at).c_str(),
                 c.along_m, c.leg + 1);
-  std::string s = "crosses " + printable(f.id) + (f.cell.empty() ? std::string() : " of " + printable(f.cell)) + " (" +
-                  f.reason + ")" + buf;
-  if (crossed_features > 1) s += "; " + std::to_string(crossed_features - 1) + " more no-go feature(s) crossed";
+  char how[64] = "crosses ";
+  if (c.least_distance_m > 0.0) std::snprintf(how, sizeof how, "passes %.2f m from ", c.least_distance_m);
+  char margin[48] = "";
+  if (c.least_distance_m > 0.0) std::snprintf(margin, sizeof margin, "; margin %g m", margin_m);
+  std::string s = how + printable(f.id) + (f.cell.empty() ? std::string() : " of " + printable(f.cell)) + " (" +
+                  f.reason + margin + ")" + buf;
+  if (crossed_features > 1) {
+    s += "; " + std::to_string(crossed_features - 1) + " more no-go feature(s) within the margin";
+  }
   return s;
 }
 
-const EncNoGoFeature* no_go_feature_at(const EncNoGo& no_go, const Vec2& p, double margin_m) {
+const EncNoGoFeature* no_go_feature_at(const EncNoGo& no_go, const Vec2& p, double margin_m, double tolerance_m) {
   for (const EncNoGoFeature& f : no_go.features) {
     if (!f.point && f.area.empty()) continue;
-    if (distance_to(f, p) < std::max(margin_m, 0.0) || (f.point ? false : bg::covered_by(to_bg(p), f.area))) return &f;
+    if (breaks(distance_to(f, p), margin_m, tolerance_m)) return &f;
   }
   return nullptr;
 }
