@@ -138,7 +138,7 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--margin", o->margin, "Safety margin to every obstacle (m)")->capture_default_str();
   cmd->add_option("--turn-radius", o->turn_radius,
                   "The vehicle's least turning radius (m): every arc of the route is at least this wide "
-                  "(--graph tangent; default with --vehicle: what the vehicle can follow at the planned speed)");
+                  "(not --graph quadtree; default with --vehicle: what the vehicle can follow at the planned speed)");
   cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
       ->capture_default_str();
   cmd->add_option("--depth", o->depth,
@@ -314,9 +314,10 @@ void register_plan(CLI::App& app) {
     }
     const auto model = std::make_shared<const CostModel>(cost_model_of(*o, frame, problem));
     if (model->kind != CostKind::length) options.cost = model;
-    // A vehicle given to the tangent graph: routes it can follow at the planned
-    // speed in the strongest current (route_turn_radius), unless --turn-radius says otherwise.
-    if (!o->turn_radius && !o->vehicle.empty() && options.graph == GraphKind::tangent) {
+    // A vehicle given: routes it can follow at the planned speed in the
+    // strongest current (route_turn_radius), unless --turn-radius says
+    // otherwise; the quadtree's smoothed routes cannot promise a radius.
+    if (!o->turn_radius && !o->vehicle.empty() && options.graph != GraphKind::quadtree) {
       options.turn_radius_m = route_turn_radius(vehicle_of(*o), model->speed_mps, model->max_current_mps);
     }
     if (o->waypoint_grid) options.grid = waypoint_grid_for(problem.start, problem.goal, *o->waypoint_grid);
@@ -360,6 +361,9 @@ void register_plan(CLI::App& app) {
     if (out.legs_check && !out.legs_check->safe) {
       throw std::runtime_error("the route's lines and arcs failed the independent check: " + out.legs_check->describe());
     }
+    // What the vehicle sails: the lines and arcs where the planner gives them
+    // (a polygon route's fillets lie inside its corners), else the polyline.
+    const double min_clearance = out.legs_check && !replay ? out.legs_check->min_clearance_m : check.min_clearance_m;
     // Outside a bathymetry raster the depth is not known: a route that leaves it is not safe.
     if (const auto exit = route_leaves_coverage(route.points, charted.raster_coverage)) {
       const Vec2 ll = frame.to_lonlat(exit->at);
@@ -390,7 +394,7 @@ void register_plan(CLI::App& app) {
     nlohmann::json summary = {
         {"length_m", route.length()},
         {"waypoints", route.points.size()},
-        {"min_clearance_m", check.min_clearance_m},
+        {"min_clearance_m", min_clearance},
         {"margin_m", o->margin},
         {"graph", o->graph},
         {"search", o->search},
@@ -573,7 +577,7 @@ void register_plan(CLI::App& app) {
                                                 : "");
       }
     }
-    std::printf("min clearance    %.2f m (margin %.2f m)\n", check.min_clearance_m, o->margin);
+    std::printf("min clearance    %.2f m (margin %.2f m)\n", min_clearance, o->margin);
     std::printf("graph            %s over %zu of %zu obstacles, %zu vertices, %zu edges; %s expanded %zu\n",
                 o->graph.c_str(), plan.obstacles_used, plan.obstacles_total, out.result.stats.graph_vertices,
                 out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);

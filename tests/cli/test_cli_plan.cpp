@@ -771,6 +771,19 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
   const auto ok = run_cli("check route '" + route + "' --obstacles '" + kSample + "' --margin 10 --json");
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_TRUE(nlohmann::json::parse(ok.out).at("safe").get<bool>());
+  // The visibility graph keeps the radius too, by rounding its corners; it
+  // cannot be shorter than the tangent graph's exact route within the radius
+  // by more than the tolerance its polygons allow.
+  std::string vis_base = base;
+  vis_base.replace(vis_base.find("--graph tangent"), 15, "--graph visibility");
+  const std::string vis_route = dir.file("vis60.geojson");
+  const auto vis = run_cli(vis_base + " --turn-radius 60 -o '" + vis_route + "' --json");
+  ASSERT_EQ(vis.exit_code, 0) << vis.err;
+  const auto vj = nlohmann::json::parse(vis.out);
+  EXPECT_NEAR(vj.at("min_turn_radius_m").get<double>(), 60.0, 1e-6);
+  EXPECT_GE(vj.at("min_clearance_m").get<double>(), 10.0 - 1e-6);
+  EXPECT_GT(vj.at("exact_length_m").get<double>(), j.at("exact_length_m").get<double>() - 0.5);
+  EXPECT_EQ(run_cli("check route '" + vis_route + "' --obstacles '" + kSample + "' --margin 10").exit_code, 0);
 
   // A pocket left only over the end of a 10 m wall: a 5 m turn fits, 19.6 m does not.
   const std::string pocket = dir.write("pocket.geojson", R"({"type": "FeatureCollection",
@@ -798,7 +811,7 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
            {" --graph tangent --turn-radius 0", "--turn-radius"},
            {" --graph tangent --turn-radius -5", "--turn-radius"},
            {" --graph tangent --turn-radius nan", "--turn-radius"},
-           {" --turn-radius 20", "--graph tangent"}}) {
+           {" --graph quadtree --turn-radius 20", "--graph tangent, visibility"}}) {
     const auto bad = run_cli(in_pocket + args);
     EXPECT_EQ(bad.exit_code, 1) << args << ": " << bad.err;
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << args << ": " << bad.err;

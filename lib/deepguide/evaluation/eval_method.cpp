@@ -43,9 +43,11 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
   options.margin = sc.reactive.margin_m;
   options.graph = m.graph;
   options.search = m.search;
-  // The tangent graph's routes turn no tighter than the vehicle can (at the
-  // speed it sails them); the polygon graphs' routes still have corners.
-  if (m.graph == GraphKind::tangent) {
+  // Routes that turn no tighter than the vehicle can at the speed it sails
+  // them (the tangent graph along rounded zones, the visibility graphs with
+  // rounded corners), planned with room for tracking; the quadtree's smoothed
+  // routes still have corners.
+  if (m.graph != GraphKind::quadtree) {
     options.turn_radius_m = route_turn_radius(sc.vehicle, sc.reactive.speed_mps, sc.current.norm());
     options.margin += kPathTrackingAllowance_m;
   }

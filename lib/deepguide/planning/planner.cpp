@@ -8,6 +8,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
+#include "deepguide/planning/corner_fillets.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
@@ -96,8 +97,9 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   if (!std::isfinite(options.turn_radius_m) || options.turn_radius_m < 0.0) {
     throw InputError("turn radius: expected a radius > 0 m (or 0 for none), got " + general(options.turn_radius_m));
   }
-  if (options.turn_radius_m > 0.0 && options.graph != GraphKind::tangent) {
-    throw InputError("turn radius: expected --graph tangent (the other graphs' routes have corners)");
+  if (options.turn_radius_m > 0.0 && options.graph == GraphKind::quadtree) {
+    throw InputError("turn radius: expected --graph tangent, visibility or visibility-full (the quadtree's "
+                     "smoothed routes turn anywhere)");
   }
   impl_ = std::make_unique<Impl>(ObstacleField(obstacles, options.margin));
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
@@ -113,6 +115,10 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
         std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus, options.turn_radius_m);
   } else {
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
+    if (options.turn_radius_m > 0.0) {
+      impl_->zones = rounded_zone_polygons(impl_->zones, obstacles, graph_margin, options.turn_radius_m,
+                                           options.tolerance);
+    }
     impl_->visibility = std::make_unique<VisibilityGraph>(
         impl_->zones,
         options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced, focus,
@@ -218,6 +224,49 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   return none;
 }
 
+// A polygon graph's route with its corners rounded on the turning radius.
+// Close corners that wrap one zone are joined first. A corner that still
+// turns too tightly for its fillet (an S-bend through a gap the turning
+// polygons narrow) is cut when the straight line past it keeps the margin
+// from the exact zones. Not found when neither helps, or when the result
+// does not pass the independent check.
+bool Planner::round_corners(PlanResult& result) const {
+  const double radius = options_.turn_radius_m;
+  const ObstacleField& field = impl_->field;
+  const auto fail = [&](const Vec2& at, const std::string& why) {
+    result.found = false;
+    result.message = "the " + to_string(options_.graph) + " route cannot turn at " + general(radius) + " m at " +
+                     point_text(at, 1) + ": " + why + " (try --graph tangent)";
+    return false;
+  };
+  std::vector<Vec2> points = result.route.points;
+  FilletedRoute rounded;
+  for (std::size_t cuts = 0;; ++cuts) {
+    points = join_tight_corners(points, radius);
+    rounded = fillet_corners(points, radius);
+    if (!rounded.too_tight) break;
+    const std::size_t k = *rounded.too_tight;
+    const bool inner = k > 0 && k + 1 < points.size();
+    if (!inner || cuts >= result.route.points.size() ||
+        field.segment_clearance(points[k - 1], points[k + 1]).distance < field.margin()) {
+      return fail(points[k], "its corners there are too close to round");
+    }
+    points.erase(points.begin() + static_cast<std::ptrdiff_t>(k));
+  }
+  if (points.size() != result.route.points.size()) {
+    const RouteCheck check = check_route(points, field);
+    if (!check.safe) return fail(check.worst_point, "rounding its corners comes within the margin of another zone");
+  }
+  if (const RouteCheck legs = check_route_legs(rounded.legs, field); !legs.safe) {
+    return fail(legs.worst_point, "its rounded corners come within the margin of another zone");
+  }
+  result.route.points = points;
+  result.legs = rounded.legs;
+  result.exact_length_m = 0.0;
+  for (const RouteLeg& leg : result.legs) result.exact_length_m += leg.length_m;
+  return true;
+}
+
 PlanOutcome Planner::solve(const PlanningProblem& problem) {
   if (!problem.start.allFinite() || !problem.goal.allFinite()) {
     throw InputError("start and goal: expected finite coordinates");
@@ -239,6 +288,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   require_free(impl_->field, problem.goal, "the goal");
 
   PlanOutcome out;
+  bool rounding_failed = false;
   if (impl_->quadtree) {
     out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get());
   } else if (impl_->tangent) {
@@ -258,11 +308,12 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
       if (start_in_band) pts.insert(pts.begin(), problem.start);
       if (goal_in_band) pts.push_back(problem.goal);
     }
+    if (out.result.found && options_.turn_radius_m > 0.0) rounding_failed = !round_corners(out.result);
   }
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
                           impl_->field);
   if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
-  if (!out.result.found && options_.turn_radius_m > options_.margin) {
+  if (!out.result.found && !rounding_failed && options_.turn_radius_m > options_.margin) {
     out.result.message = why_no_turning_route(problem);
   }
   return out;

@@ -47,8 +47,11 @@ struct PlannerOptions {
   QuadtreeOptions quadtree = {};
   /// The vehicle's least turning radius (m); 0 = routes may turn on the spot.
   /// Above the margin, zone corners tighter than it are rounded
-  /// (turn_rounding.hpp) so every arc of the route has at least this radius;
-  /// tangent graph only for now.
+  /// (turn_rounding.hpp) so every arc of the route has at least this radius.
+  /// The tangent graph wraps the rounded zones along their arcs; the
+  /// visibility graphs plan round polygons holding the turning circles
+  /// (rounded_zone_polygons) and round each corner of the route on a circle
+  /// of this radius (corner_fillets.hpp). Not the quadtree.
   double turn_radius_m = 0.0;
 };
 
@@ -95,6 +98,7 @@ class Planner {
 
  private:
   std::string why_no_turning_route(const PlanningProblem& problem);
+  bool round_corners(PlanResult& result) const;
   struct Impl;
   PlannerOptions options_;
   std::unique_ptr<Impl> impl_;

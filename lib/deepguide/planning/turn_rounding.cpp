@@ -1,6 +1,9 @@
 #include "deepguide/planning/turn_rounding.hpp"
 
 #include <cmath>
+#include <numbers>
+
+#include "deepguide/geometry/polygon_ops.hpp"
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
@@ -57,6 +60,27 @@ std::vector<TurningCircle> turning_circles(const ObstacleSet& obstacles, double 
     ring(obstacles.polygons[k].footprint.outer());
     for (const auto& inner : obstacles.polygons[k].footprint.inners()) ring(inner);
   }
+  return out;
+}
+
+BgMultiPolygon rounded_zone_polygons(const BgMultiPolygon& zones, const ObstacleSet& obstacles, double margin,
+                                     double turn_radius, double tolerance) {
+  const std::vector<TurningCircle> circles = turning_circles(obstacles, margin, turn_radius);
+  if (circles.empty()) return zones;
+  std::vector<BgPolygon> parts(zones.begin(), zones.end());
+  // The circumradius that puts the sides on the circle of R + tolerance.
+  const double step = 2.0 * std::numbers::pi / kTurningPolygonSides;
+  const double corner = (turn_radius + tolerance) / std::cos(0.5 * step);
+  for (const TurningCircle& c : circles) {
+    BgPolygon ring;
+    for (int k = 0; k <= kTurningPolygonSides; ++k) {  // clockwise, closed
+      const double a = -step * (k % kTurningPolygonSides);
+      ring.outer().push_back(to_bg(c.centre + corner * Vec2(std::cos(a), std::sin(a))));
+    }
+    parts.push_back(std::move(ring));
+  }
+  BgMultiPolygon out;
+  for (BgPolygon& p : merge_overlapping(std::move(parts))) out.push_back(std::move(p));
   return out;
 }
 

@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/obstacle.hpp"
 
 namespace deepguide {
@@ -39,5 +40,21 @@ struct TurningCircle {
 /// turns at R or wider (none at all when R <= d). Throws InputError when R is
 /// not finite and > 0, or d not finite and >= 0.
 std::vector<TurningCircle> turning_circles(const ObstacleSet& obstacles, double margin, double turn_radius);
+
+/// Sides of the polygon round each turning circle in rounded_zone_polygons.
+inline constexpr int kTurningPolygonSides = 32;
+
+/// The polygon graphs' zones for a vehicle that turns no tighter than R:
+/// `zones` (the enclosing zone polygons, vertices at most `tolerance` outside
+/// the zones) joined with the regular 32-gon round each turning circle
+/// widened to R + tolerance, which then holds those vertices about its corner
+/// too. A route wrapping these polygons turns at a 32-gon's vertex by at most
+/// 2 pi / 32, so its fillet of radius R there (corner_fillets.hpp) takes at
+/// most R tan(pi / 32) of each side, less than half the side, and stays
+/// outside the circle; elsewhere the zone turns no tighter than R. Unlike the
+/// tangent graph's circles, these are obstacles: a leg may not cross one, so a
+/// channel narrower than the circles leave open is closed to these graphs.
+BgMultiPolygon rounded_zone_polygons(const BgMultiPolygon& zones, const ObstacleSet& obstacles, double margin,
+                                     double turn_radius, double tolerance);
 
 }  // namespace deepguide
