@@ -151,7 +151,12 @@ SuiteCounts turn_radius_suite(unsigned seed, int scenarios, int lo, int hi, Grap
     const double margin = uni(1, 10);
     const double radius = scenario % 7 == 0 ? uni(40, 70) : margin + uni(2, 30);
     const PlanningProblem problem{{-260.0, uni(-150, 150)}, {260.0, uni(-150, 150)}};
-    Planner turning(set, {margin, 0.2, graph, SearchAlgorithm::astar, nullptr, {}, {}, radius});
+    PlannerOptions options{margin, 0.2, graph, SearchAlgorithm::astar, nullptr, {}, {}, radius};
+    options.quadtree.smooth = true;  // the quadtree keeps a radius only with its route smoothed
+    options.quadtree.area_min = Vec2(-300, -300);
+    options.quadtree.area_max = Vec2(300, 300);
+    options.quadtree.min_cell_m = 1.0;
+    Planner turning(set, options);
     Planner free_turning(set, {margin, 0.2, GraphKind::tangent, SearchAlgorithm::astar});
     PlanOutcome out, plain, exact;
     try {
@@ -257,6 +262,16 @@ TEST(TurnRadius, VisibilityRoutesRoundTheirCornersWithinTheRadius) {
   EXPECT_GT(dense.found, dense.scenarios / 2);
 }
 
+TEST(TurnRadius, SmoothedQuadtreeRoutesRoundTheirCornersWithinTheRadius) {
+  // Cells kept out of the turning circles, the route pulled taut and its
+  // corners rounded: fewer routes than the exact graphs find, every one checked.
+  const SuiteCounts sparse = turn_radius_suite(2311, test::cases(300), 2, 6, GraphKind::quadtree);
+  EXPECT_GT(sparse.found, sparse.scenarios * 3 / 4);
+  EXPECT_EQ(sparse.on_circles, sparse.arcs);
+  const SuiteCounts dense = turn_radius_suite(90210, test::cases(100), 8, 14, GraphKind::quadtree);
+  EXPECT_GT(dense.found, dense.scenarios / 2);
+}
+
 TEST(TurnRadius, AStraightChannelStaysOpen) {
   // A 25 m gap between two long walls, margin 10: 5 m of water a straight
   // route crosses without turning, though the corners' circles bulge into it.
@@ -286,7 +301,7 @@ TEST(TurnRadius, NoWayRoundSaysWhichTurnIsTooTight) {
   EXPECT_NE(out.result.message.find("turning no tighter than 19.6 m"), std::string::npos) << out.result.message;
   EXPECT_NE(out.result.message.find("'wall'"), std::string::npos) << out.result.message;
   EXPECT_NE(out.result.message.find("5.0 m radius"), std::string::npos) << out.result.message;
-  // The quadtree's smoothed routes turn anywhere: it takes no turning radius.
+  // The quadtree's cell-to-cell steps cannot be rounded: a radius needs its smoothing.
   EXPECT_THROW(Planner(set, {5.0, 0.2, GraphKind::quadtree, SearchAlgorithm::astar, nullptr, {}, {}, 19.6}),
                InputError);
   EXPECT_THROW(Planner(set, {5.0, 0.2, GraphKind::tangent, SearchAlgorithm::astar, nullptr, {}, {}, -1.0}),

@@ -44,13 +44,11 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
   options.graph = m.graph;
   options.search = m.search;
   // Routes that turn no tighter than the vehicle can at the speed it sails
-  // them (the tangent graph along rounded zones, the visibility graphs with
-  // rounded corners), planned with room for tracking; the quadtree's smoothed
-  // routes still have corners.
-  if (m.graph != GraphKind::quadtree) {
-    options.turn_radius_m = route_turn_radius(sc.vehicle, sc.reactive.speed_mps, sc.current.norm());
-    options.margin += kPathTrackingAllowance_m;
-  }
+  // them (the tangent graph along rounded zones, the visibility graphs and
+  // the smoothed quadtree with rounded corners), planned with room for tracking.
+  options.turn_radius_m = route_turn_radius(sc.vehicle, sc.reactive.speed_mps, sc.current.norm());
+  options.margin += kPathTrackingAllowance_m;
+  options.quadtree.smooth = true;
   if (m.cost != CostKind::length) {
     auto cost = std::make_shared<CostModel>();
     cost->kind = m.cost;

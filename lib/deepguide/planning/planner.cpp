@@ -53,6 +53,7 @@ struct Planner::Impl {
   std::unique_ptr<VisibilityGraph> visibility;
   std::unique_ptr<TangentGraph> tangent;
   std::unique_ptr<QuadtreeGraph> quadtree;
+  std::unique_ptr<ObstacleField> turning_field;  // the quadtree's, within a turning radius
   // With a turning radius: the graph without it, built when no route is
   // found, to say where the radius closes the way.
   std::unique_ptr<TangentGraph> plain;
@@ -97,9 +98,9 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   if (!std::isfinite(options.turn_radius_m) || options.turn_radius_m < 0.0) {
     throw InputError("turn radius: expected a radius > 0 m (or 0 for none), got " + general(options.turn_radius_m));
   }
-  if (options.turn_radius_m > 0.0 && options.graph == GraphKind::quadtree) {
-    throw InputError("turn radius: expected --graph tangent, visibility or visibility-full (the quadtree's "
-                     "smoothed routes turn anywhere)");
+  if (options.turn_radius_m > 0.0 && options.graph == GraphKind::quadtree && !options.quadtree.smooth) {
+    throw InputError("turn radius: expected --graph tangent, visibility or visibility-full, or quadtree with "
+                     "--smooth (the quadtree's cell-to-cell steps cannot be rounded)");
   }
   impl_ = std::make_unique<Impl>(ObstacleField(obstacles, options.margin));
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
@@ -108,8 +109,21 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
       throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the quadtree's free cells "
                        "are its open-water vertices)");
     }
-    impl_->quadtree = std::make_unique<QuadtreeGraph>(impl_->field, quadtree_area(obstacles, options.quadtree,
-                                                                                     options.margin));
+    // Within a turning radius the cells keep out of the turning circles too
+    // (discs whose zones are the circles), as the visibility graphs' 32-gons.
+    const ObstacleField* cells_field = &impl_->field;
+    if (options.turn_radius_m > options.margin) {
+      ObstacleSet turning = obstacles;
+      for (const TurningCircle& c : turning_circles(obstacles, options.margin, options.turn_radius_m)) {
+        const double r = options.turn_radius_m - options.margin + options.tolerance;
+        turning.ellipses.push_back({"turning circle of " + impl_->field.obstacle_name(c.obstacle),
+                                    Ellipse{c.centre, r, r, 0.0}, std::nullopt, std::nullopt});
+      }
+      impl_->turning_field = std::make_unique<ObstacleField>(turning, options.margin);
+      cells_field = impl_->turning_field.get();
+    }
+    impl_->quadtree = std::make_unique<QuadtreeGraph>(*cells_field, quadtree_area(obstacles, options.quadtree,
+                                                                                  options.margin));
   } else if (options.graph == GraphKind::tangent) {
     impl_->tangent =
         std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus, options.turn_radius_m);
@@ -291,6 +305,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   bool rounding_failed = false;
   if (impl_->quadtree) {
     out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get());
+    if (out.result.found && options_.turn_radius_m > 0.0) rounding_failed = !round_corners(out.result);
   } else if (impl_->tangent) {
     out.result = impl_->tangent->solve(problem, options_.search);
   } else {

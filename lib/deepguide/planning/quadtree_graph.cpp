@@ -1,6 +1,5 @@
 #include "deepguide/planning/quadtree_graph.hpp"
 
-#include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <chrono>
@@ -200,8 +199,11 @@ PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm 
   std::vector<Vec2> points;
   for (GraphVertex v : found.path) points.push_back(position(v));
   if (options_.smooth && points.size() > 2) {
-    const std::vector<Vec2> pulled =
-        pull_string(points, [this](const Vec2& a, const Vec2& b) { return field_->segment_free(a, b); });
+    const auto sees = [this](const Vec2& a, const Vec2& b) { return field_->segment_free(a, b); };
+    // Greedy jumps, then corners cut until the route is taut round the zones
+    // (string_pulling.hpp): a large cell's centre beyond the goal that the
+    // start sees would otherwise leave a V to the goal.
+    const std::vector<Vec2> pulled = tighten_string(pull_string(points, sees), sees);
     // Shorter is not always cheaper in a current: keep the pulled route only if it costs no more.
     const double pulled_cost = cost != nullptr ? price_route(*cost, pulled).cost : Route{pulled}.length();
     if (pulled_cost <= result.cost) {
