@@ -110,16 +110,19 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
                        "are its open-water vertices)");
     }
     // Within a turning radius the cells keep out of the turning circles too
-    // (discs whose zones are the circles), as the visibility graphs' 32-gons.
+    // (discs whose zones are the circles widened by the tolerance, as the
+    // visibility graphs' 32-gons), and the tolerance beyond every zone: the
+    // taut route then has room to lose the small zig-zags its corner cutting
+    // leaves where it wraps a zone, which no fillet could round.
     const ObstacleField* cells_field = &impl_->field;
-    if (options.turn_radius_m > options.margin) {
+    if (options.turn_radius_m > 0.0) {
       ObstacleSet turning = obstacles;
       for (const TurningCircle& c : turning_circles(obstacles, options.margin, options.turn_radius_m)) {
-        const double r = options.turn_radius_m - options.margin + options.tolerance;
+        const double r = options.turn_radius_m - options.margin;
         turning.ellipses.push_back({"turning circle of " + impl_->field.obstacle_name(c.obstacle),
                                     Ellipse{c.centre, r, r, 0.0}, std::nullopt, std::nullopt});
       }
-      impl_->turning_field = std::make_unique<ObstacleField>(turning, options.margin);
+      impl_->turning_field = std::make_unique<ObstacleField>(turning, options.margin + options.tolerance);
       cells_field = impl_->turning_field.get();
     }
     impl_->quadtree = std::make_unique<QuadtreeGraph>(*cells_field, quadtree_area(obstacles, options.quadtree,
@@ -261,11 +264,27 @@ bool Planner::round_corners(PlanResult& result) const {
     if (!rounded.too_tight) break;
     const std::size_t k = *rounded.too_tight;
     const bool inner = k > 0 && k + 1 < points.size();
-    if (!inner || cuts >= result.route.points.size() ||
-        field.segment_clearance(points[k - 1], points[k + 1]).distance < field.margin()) {
-      return fail(points[k], "its corners there are too close to round");
+    const auto keeps_margin = [&](const Vec2& a, const Vec2& b) {
+      return field.segment_clearance(a, b).distance >= field.margin();
+    };
+    if (!inner || cuts >= result.route.points.size()) return fail(points[k], "its corners there are too close to round");
+    if (keeps_margin(points[k - 1], points[k + 1])) {
+      points.erase(points.begin() + static_cast<std::ptrdiff_t>(k));
+      continue;
     }
-    points.erase(points.begin() + static_cast<std::ptrdiff_t>(k));
+    // An S-bend over a short leg: its two corners become one at the leg's middle.
+    bool merged = false;
+    for (const std::size_t j : {k, k - 1}) {
+      if (j == 0 || j + 2 >= points.size()) continue;
+      const Vec2 mid = 0.5 * (points[j] + points[j + 1]);
+      if (keeps_margin(points[j - 1], mid) && keeps_margin(mid, points[j + 2])) {
+        points[j] = mid;
+        points.erase(points.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        merged = true;
+        break;
+      }
+    }
+    if (!merged) return fail(points[k], "its corners there are too close to round");
   }
   if (points.size() != result.route.points.size()) {
     const RouteCheck check = check_route(points, field);
