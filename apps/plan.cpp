@@ -138,7 +138,7 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--margin", o->margin, "Safety margin to every obstacle (m)")->capture_default_str();
   cmd->add_option("--turn-radius", o->turn_radius,
                   "The vehicle's least turning radius (m): every arc of the route is at least this wide "
-                  "(not --graph quadtree; default with --vehicle: what the vehicle can follow at the planned speed)");
+                  "(--graph quadtree needs --smooth; default with --vehicle: what the vehicle can follow at the planned speed)");
   cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
       ->capture_default_str();
   cmd->add_option("--depth", o->depth,
@@ -316,8 +316,8 @@ void register_plan(CLI::App& app) {
     if (model->kind != CostKind::length) options.cost = model;
     // A vehicle given: routes it can follow at the planned speed in the
     // strongest current (route_turn_radius), unless --turn-radius says
-    // otherwise; the quadtree's smoothed routes cannot promise a radius.
-    if (!o->turn_radius && !o->vehicle.empty() && options.graph != GraphKind::quadtree) {
+    // otherwise; the quadtree's cell-to-cell steps only when --smooth pulls them taut.
+    if (!o->turn_radius && !o->vehicle.empty() && (options.graph != GraphKind::quadtree || o->smooth)) {
       options.turn_radius_m = route_turn_radius(vehicle_of(*o), model->speed_mps, model->max_current_mps);
     }
     if (o->waypoint_grid) options.grid = waypoint_grid_for(problem.start, problem.goal, *o->waypoint_grid);

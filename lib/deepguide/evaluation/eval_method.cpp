@@ -79,7 +79,7 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
     run.min_clearance_m = std::numeric_limits<double>::infinity();
     return run;
   }
-  run.route_length_m = r.route.length();
+  run.route_length_m = r.legs.empty() ? r.route.length() : r.exact_length_m;  // what is sailed
   RouteFollowing follow;
   follow.simulation.record_trajectory = false;
   fill_from(run, r.legs.empty() ? follow_route(sc, r.route, follow) : follow_route(sc, r.legs, follow));

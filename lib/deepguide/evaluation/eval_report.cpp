@@ -117,7 +117,7 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
   o << "<p>" << run.rows.size() << " runs of " << run.manifest.methods.size() << " methods"
     << (run.manifest.skipped.empty() ? "" : ", " + std::to_string(run.manifest.skipped.size()) + " skipped")
     << ". Each cell: median / 95th percentile. Path, energy, time, clearance and turning rates are the vehicle's, "
-       "simulated; a planner's route is sailed by line-of-sight guidance (docs/EVALUATION.md).</p>\n";
+       "simulated; a planner's route, within the vehicle's turning radius, is sailed by path following (docs/EVALUATION.md).</p>\n";
   o << "<h2>The seed's claims</h2>\n<ul>\n";
   for (const ClaimCheck& c : s.claims) {
     const char* cls = c.verdict == "holds" ? "holds" : c.verdict == "does not hold" ? "fails" : "";

@@ -231,7 +231,7 @@ std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& 
     << ", " << m.methods.size() << " methods, " << run.rows.size() << " runs";
   if (!m.skipped.empty()) o << ", " << m.skipped.size() << " skipped";
   o << ".\n\nEach cell: median / 95th percentile. Path, energy, time, clearance and turning rates are the "
-       "vehicle's, simulated; a planner's route is sailed by line-of-sight guidance.\n\n";
+       "vehicle's, simulated; a planner's route, within the vehicle's turning radius, is sailed by path following.\n\n";
   const std::vector<MethodColumn> columns = method_columns(m);
   o << "|";
   for (const MethodColumn& c : columns) o << " " << c.header << " |";
