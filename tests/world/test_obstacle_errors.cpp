@@ -173,6 +173,34 @@ TEST(ObstacleErrors, DegeneratePolygon) {
   expect_error(error_of({p}), {p.c_str(), "feature 0", "geometry"});
 }
 
+TEST(ObstacleErrors, PolygonsThatAreNotSimpleAreRefusedNotGuessed) {
+  // A bow-tie has no area of its own (its lobes cancel): planners routed
+  // through it, and the route check then failed as an internal error.
+  ScratchDir dir;
+  const auto polygon = [](const std::string& id, const std::string& rings) {
+    return R"({"type":"Feature","properties":{"id":")" + id + R"("},"geometry":{"type":"Polygon","coordinates":)" +
+           rings + "}}";
+  };
+  const std::string bow = dir.write(
+      "bow.geojson", collection({polygon("bowtie", "[[[10,54],[10.01,54.01],[10.01,54],[10,54.01],[10,54]]]")}));
+  expect_error(error_of({bow}), {bow.c_str(), "feature 0", "bowtie", "geometry", "simple polygon", "cross themselves"});
+  const std::string spike = dir.write(
+      "spike.geojson",
+      collection({polygon("spike", "[[[10,54],[10.01,54],[10.02,54],[10.01,54],[10.01,54.01],[10,54]]]")}));
+  expect_error(error_of({spike}), {spike.c_str(), "spike", "simple polygon"});
+  const std::string hole = dir.write(
+      "hole.geojson", collection({polygon("hole", "[[[10,54],[10.01,54],[10.01,54.01],[10,54.01],[10,54]],"
+                                                  "[[10.02,54],[10.03,54],[10.03,54.01],[10.02,54]]]")}));
+  expect_error(error_of({hole}), {hole.c_str(), "hole outside the outer ring"});
+  // A square with a square hole, and a ring given the other way round, are fine.
+  const std::string fine = dir.write(
+      "fine.geojson",
+      collection({polygon("ring", "[[[10,54],[10.01,54],[10.01,54.01],[10,54.01],[10,54]],"
+                                  "[[10.004,54.004],[10.006,54.004],[10.006,54.006],[10.004,54.006],[10.004,54.004]]]"),
+                  polygon("cw", "[[[10.1,54],[10.1,54.01],[10.11,54.01],[10.11,54],[10.1,54]]]")}));
+  EXPECT_EQ(error_of({fine}), "");
+}
+
 TEST(ObstacleErrors, WriteToMissingFolderOrUnknownFormat) {
   ScratchDir dir;
   const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <boost/geometry/algorithms/correct.hpp>
+#include <boost/geometry/algorithms/is_valid.hpp>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -166,6 +167,32 @@ std::vector<Eigen::Vector2d> read_ring(const OGRLinearRing& ring, OGRCoordinateT
   out.reserve(ring.getNumPoints());
   for (int i = 0; i < ring.getNumPoints(); ++i) out.push_back(to_geo(ct, ring.getX(i), ring.getY(i), where));
   return out;
+}
+
+// A footprint every planner and checker can take: rings that neither cross
+// themselves nor each other, with an area. A bow-tie has none of its own
+// (Boost.Geometry measures it as two lobes of opposite sign, area ~0) and the
+// planners would route through it; repairing it silently would choose the
+// obstacle's shape for the operator, so it is refused with what to do.
+void require_simple(const BgPolygon& footprint, const InputLocation& where) {
+  namespace bg = boost::geometry;
+  bg::validity_failure_type failure = bg::no_failure;
+  if (bg::is_valid(footprint, failure)) return;
+  const char* got = nullptr;
+  switch (failure) {
+    case bg::failure_self_intersections: got = "rings that cross themselves or each other (a bow-tie?)"; break;
+    case bg::failure_wrong_topological_dimension:
+    case bg::failure_few_points: got = "a ring without area"; break;
+    case bg::failure_spikes: got = "a ring with a spike (it runs out and back along itself)"; break;
+    case bg::failure_interior_rings_outside: got = "a hole outside the outer ring"; break;
+    case bg::failure_nested_interior_rings: got = "a hole inside another hole"; break;
+    case bg::failure_disconnected_interior: got = "holes that cut the polygon in two"; break;
+    case bg::failure_intersecting_interiors: got = "holes that overlap"; break;
+    default: return;  // orientation, closure and duplicate points are corrected or harmless
+  }
+  InputLocation w = where;
+  w.field = "geometry";
+  throw input_error(w, "a simple polygon (repair it first, e.g. ogr2ogr -makevalid)", got);
 }
 
 void read_polygon(const OGRPolygon& poly, OGRCoordinateTransformation& ct, const InputLocation& where,
@@ -415,6 +442,7 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
           for (const auto& ll : r.rings[k]) ring.push_back(to_bg(to_local_checked(*frame, ll, r.where)));
         }
         boost::geometry::correct(p.footprint);
+        require_simple(p.footprint, r.where);
         out.obstacles.polygons.push_back(std::move(p));
       }
     }
