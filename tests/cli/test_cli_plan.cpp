@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <tuple>
 #include <fstream>
+#include <sys/stat.h>
 #include <nlohmann/json.hpp>
 
 #include "nc_writer.hpp"
@@ -671,6 +672,23 @@ TEST(CliPlan, AnOutputNeverDestroysAnInput) {
   const auto r = run_cli("simulate '" + scenario + "' --method geometric -o '" + scenario + "'");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(text(scenario), scenario_text);
+}
+
+TEST(CliPlan, NamedPipesAreRefusedNotWaitedOn) {
+  // GDAL and libxml2 block on a FIFO until a writer comes: every reader
+  // refuses one at once, naming it (the test would hang otherwise).
+  ScratchDir dir;
+  const std::string fifo = dir.file("pipe.geojson"), rtz = dir.file("pipe.rtz");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  ASSERT_EQ(mkfifo(rtz.c_str(), 0600), 0);
+  for (const std::string& args :
+       {"plan --obstacles '" + fifo + "'" + kFromTo, "check route '" + fifo + "' --obstacles '" + kSample + "'",
+        "check route '" + rtz + "' --obstacles '" + kSample + "'", "obstacles info '" + fifo + "'",
+        "chart info '" + fifo + "'", "plan --chart '" + fifo + "' --depth 5" + kFromTo}) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("expected a file, got a named pipe (FIFO)"), std::string::npos) << args << ": " << r.err;
+  }
 }
 
 TEST(CliPlan, AFullDiskIsAnErrorAndLeavesNoFile) {

@@ -252,6 +252,9 @@ TEST(VehicleFile, OutOfRangeValues) {
   expect_error(error_of("nomoto_time_constant_s: 0\n"), {"line 1", "nomoto_time_constant_s", "> 0"});
   expect_error(error_of("max_rudder_deg: 120\n"), {"line 1", "max_rudder_deg", "<= 90", "got 120"});
   expect_error(error_of("step_s: 0.4\n"), {"line 1", "step_s", "half the smallest time constant (0.25 s)"});
+  // A step that only multiplies the work (1e-9 s ran for minutes and gigabytes).
+  expect_error(error_of("step_s: 1e-9\n"), {"line 1", "step_s", ">= 0.001 s", "got 1e-09"});
+  EXPECT_EQ(error_of("step_s: 0.001\n"), "");
   expect_error(error_of("autopilot:\n  max_reference_turn_rate_deg_s: 7\n"),
                {"line 2", "autopilot.max_reference_turn_rate_deg_s", "6 deg/s"});
 }

@@ -13,6 +13,7 @@
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
@@ -134,6 +135,7 @@ double rtz_number(xmlNodePtr n, const char* attribute, double lo, double hi, con
 // by their local names.
 std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
   xmlSetGenericErrorFunc(nullptr, xml_quiet);
+  refuse_special_file(path);  // libxml2 would wait on a named pipe for ever
   std::unique_ptr<xmlDoc, decltype(&xmlFreeDoc)> doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET),
                                                      &xmlFreeDoc);
   xmlSetGenericErrorFunc(nullptr, nullptr);
@@ -173,7 +175,7 @@ std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
 std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
-  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY);
   if (!ds) fail(path, "open it as a vector file (GeoJSON, GPX, KML, RTZ, ...)");
   const auto geo = gdal::wgs84();
   std::vector<RouteFilePart> parts;

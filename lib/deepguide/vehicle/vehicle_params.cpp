@@ -98,6 +98,8 @@ const Field kAutopilotFields[] = {
      "a turning rate in deg/s"},
 };
 
+constexpr double kMinStep_s = 1e-3;
+
 std::string number(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -154,6 +156,12 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
   // time constant keeps that under 1e-3 and far inside the stability bound 2.78 T.
   const double smallest = std::min({p.nomoto_time_constant_s, p.rudder_time_constant_s, p.speed_time_constant_s,
                                     p.depth_time_constant_s});
+  // Below a millisecond a step buys no accuracy (the time constants are
+  // seconds) and only multiplies the work: 1e-9 s made one run take minutes
+  // per simulated second and gigabytes of samples.
+  if (p.step_s < kMinStep_s) {
+    throw input_error(where("step_s"), "a step >= " + number(kMinStep_s) + " s", number(p.step_s));
+  }
   if (p.step_s > 0.5 * smallest) {
     throw input_error(where("step_s"), "a step <= half the smallest time constant (" + number(0.5 * smallest) + " s)",
                       number(p.step_s));

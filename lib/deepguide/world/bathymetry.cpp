@@ -32,8 +32,7 @@ GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOption
   std::vector<const char*> oo;
   for (const auto& o : options.open_options) oo.push_back(o.c_str());
   oo.push_back(nullptr);
-  GDALDatasetUniquePtr ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, oo.data(), nullptr));
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, oo.data());
   if (!ds || ds->GetRasterCount() == 0) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected a raster GDAL can open" +

@@ -230,8 +230,7 @@ GDALDatasetUniquePtr open_chart(const std::string& path) {
   if (fs::is_directory(path, ec)) throw InputError(path + ": expected a chart file, got a folder");
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
-  GDALDatasetUniquePtr ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY);
   if (!ds) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected a chart GDAL can open (raster, S-57 cell or vector file), got " +

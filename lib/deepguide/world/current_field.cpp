@@ -613,10 +613,10 @@ CurrentField load_current_field(const std::string& path, const CurrentOptions& o
     throw InputError(path + ": depth: expected a depth >= 0 m, got " + num(options.depth_m));
   }
   {
-    GDALDatasetUniquePtr md(GDALDataset::Open(path.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
+    GDALDatasetUniquePtr md = gdal::open_dataset(path, GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY);
     if (md) return load_multidim(*md, path, options);
   }
-  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY);
   if (!ds || ds->GetRasterCount() == 0) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected a current field GDAL can open (NetCDF with u/v or a two-band raster)" +

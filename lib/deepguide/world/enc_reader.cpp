@@ -26,8 +26,7 @@ GDALDatasetUniquePtr open_cell(const std::string& path, bool apply_updates) {
   const char* drivers[] = {"S57", nullptr};
   const char* open_options[] = {apply_updates ? "UPDATES=APPLY" : "UPDATES=IGNORE", "SPLIT_MULTIPOINT=OFF",
                                 "ADD_SOUNDG_DEPTH=OFF", nullptr};
-  GDALDatasetUniquePtr ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, open_options, nullptr));
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, open_options);
   if (!ds) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(shown(path) + ": expected an S-57 ENC cell GDAL's S57 driver can read" +

@@ -11,12 +11,20 @@
 #include <filesystem>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/input_files.hpp"
 
 namespace deepguide::gdal {
 
 void ensure_registered() {
   static std::once_flag once;
   std::call_once(once, [] { GDALAllRegister(); });
+}
+
+GDALDatasetUniquePtr open_dataset(const std::string& path, unsigned flags, const char* const* drivers,
+                                  const char* const* open_options) {
+  refuse_special_file(path);
+  ensure_registered();
+  return GDALDatasetUniquePtr(GDALDataset::Open(path.c_str(), flags, drivers, open_options, nullptr));
 }
 
 namespace {

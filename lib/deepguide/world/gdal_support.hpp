@@ -15,6 +15,11 @@ namespace deepguide::gdal {
 /// Registers all GDAL drivers once; cheap to call again.
 void ensure_registered();
 
+/// GDALDataset::Open, after refuse_special_file (core/input_files.hpp): GDAL
+/// would wait on a named pipe for ever.
+GDALDatasetUniquePtr open_dataset(const std::string& path, unsigned flags, const char* const* drivers = nullptr,
+                                  const char* const* open_options = nullptr);
+
 /// While alive, GDAL errors and warnings are not printed; last_message() keeps the latest.
 class QuietErrors {
  public:

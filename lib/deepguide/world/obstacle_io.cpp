@@ -271,8 +271,8 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
                     "KEEP_GEOM_COLUMNS=NO"};
   }
   open_options.push_back(nullptr);
-  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr,
-                                            open_options.data(), nullptr));
+  GDALDatasetUniquePtr ds =
+      gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, open_options.data());
   if (!ds) {
     std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected a vector file GDAL can read (GeoJSON, GeoPackage, Shapefile, "

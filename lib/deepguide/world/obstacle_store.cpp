@@ -197,8 +197,8 @@ void check_layer(GDALDataset& ds, const std::string& path, const char* name, boo
 GDALDatasetUniquePtr open_store(const std::string& path, bool update) {
   gdal::QuietErrors quiet;
   const char* const drivers[] = {"GPKG", nullptr};
-  GDALDatasetUniquePtr ds(GDALDataset::Open(
-      path.c_str(), GDAL_OF_VECTOR | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY), drivers, nullptr, nullptr));
+  GDALDatasetUniquePtr ds =
+      gdal::open_dataset(path, GDAL_OF_VECTOR | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY), drivers);
   if (!ds) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected a GeoPackage obstacle store, got " +

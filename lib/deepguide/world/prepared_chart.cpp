@@ -105,8 +105,7 @@ void write_meta(GDALDataset& ds, const EncNoGo& no_go, const EncNoGoOptions& o, 
 GDALDatasetUniquePtr open_gpkg(const std::string& path) {
   gdal::ensure_registered();
   const char* drivers[] = {"GPKG", nullptr};
-  return GDALDatasetUniquePtr(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, nullptr, nullptr));
+  return gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers);
 }
 
 }  // namespace

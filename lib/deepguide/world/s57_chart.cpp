@@ -34,8 +34,7 @@ GDALDatasetUniquePtr open_cell(const std::string& path, bool apply_updates) {
   if (!fs::is_regular_file(path, ec)) throw InputError(path + ": expected an S-57 cell file (*.000), got a folder");
   const char* drivers[] = {"S57", nullptr};
   const char* open_options[] = {apply_updates ? "UPDATES=APPLY" : "UPDATES=IGNORE", nullptr};
-  GDALDatasetUniquePtr ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, open_options, nullptr));
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, open_options);
   if (!ds) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected an S-57 ENC cell GDAL's S57 driver can read" +
