@@ -147,6 +147,19 @@ void throw_if_unresolved(const std::string& file, const LoadedMission& l, const 
                      first->conflict.with + where + first->problem);
 }
 
+
+// Exit 3 for a plan the current beats somewhere: the first leg, and how many.
+void throw_if_beaten(const std::string& file, const LoadedMission& l, const std::vector<BeatenLeg>& beaten) {
+  if (beaten.empty()) return;
+  const BeatenLeg& b = beaten.front();
+  const Vec2 ll = l.mission.frame.to_lonlat(b.where);
+  char where[200];
+  std::snprintf(where, sizeof where, "%.0f m along (%.5f, %.5f)", b.along_m, ll.x(), ll.y());
+  throw NoRouteError(file + ": the " + fixed(l.env.current.norm(), 2) + " m/s current beats the vehicle on " +
+                     std::to_string(beaten.size()) + " basic manoeuvre(s); the first, in '" +
+                     l.mission.manoeuvres[l.plan.basics[b.basic].source].name + "' " + where + ", at " +
+                     fixed(l.plan.basics[b.basic].speed_mps, 2) + " m/s through the water: no heading holds it");
+}
 }  // namespace
 
 void register_mission_simulate(CLI::App& mission);
@@ -169,6 +182,7 @@ void register_mission(CLI::App& app) {
     const double time_s = plan_duration(plan);
     // Whether mission control can resolve each: what it cannot is reported here already.
     const PlannedMission planned = plan_mission(m, env, plan);
+    const std::vector<BeatenLeg> beaten = legs_beaten_by_current(plan, env.current);
     std::vector<const Resolution*> unavoidable;
     for (const Resolution& r : planned.resolutions) {
       if (!r.resolved) unavoidable.push_back(&r);
@@ -202,8 +216,16 @@ void register_mission(CLI::App& app) {
                           {"depth_m", r->conflict.depth_m}, {"problem", r->problem}});
       }
       j["unavoidable"] = cannot;
+      nlohmann::json against = nlohmann::json::array();
+      for (const BeatenLeg& b : beaten) {
+        const Vec2 ll = lonlat(b.where);
+        against.push_back({{"basic", b.basic}, {"manoeuvre", m.manoeuvres[plan.basics[b.basic].source].name},
+                           {"along_m", b.along_m}, {"lon", ll.x()}, {"lat", ll.y()}});
+      }
+      j["beaten_by_current"] = against;
       std::cout << j.dump(2) << "\n";
       throw_if_unresolved(o->mission, l, planned);
+      throw_if_beaten(o->mission, l, beaten);
       return;
     }
     std::printf("mission          %s (%s, %s)\n", m.name.c_str(), o->mission.c_str(), m.frame.id().c_str());
@@ -224,8 +246,24 @@ void register_mission(CLI::App& app) {
       std::printf("%4zu %-40s %6zu %10.0f %9.0f\n", i + 1, (m.manoeuvres[i].type + " '" + m.manoeuvres[i].name + "'").substr(0, 40).c_str(),
                   count, from, length);
     }
+    if (!m.current_file.empty()) {
+      std::printf("current          %s: not checked against the vehicle's speed (a constant current is)\n",
+                  printable(m.current_file).c_str());
+    }
+    for (const BeatenLeg& b : beaten) {
+      if (&b - beaten.data() == 10) {
+        std::printf("CURRENT          ... and %zu more basic manoeuvre(s) (--json lists them all)\n", beaten.size() - 10);
+        break;
+      }
+      const Vec2 ll = lonlat(b.where);
+      std::printf("CURRENT          %.0f m along, %s (basic %zu) at %.5f, %.5f: the %.2f m/s current beats the vehicle's "
+                  "%.2f m/s; no heading holds it\n",
+                  b.along_m, m.manoeuvres[plan.basics[b.basic].source].name.c_str(), b.basic, ll.x(), ll.y(),
+                  env.current.norm(), plan.basics[b.basic].speed_mps);
+    }
     if (conflicts.empty()) {
       std::printf("conflicts        none: no obstacle or shoal endangers the plan\n");
+      throw_if_beaten(o->mission, l, beaten);
       return;
     }
     std::printf("conflicts        %zu (corridor %.1f m = margin + half the width; %.1f m over tops and the floor)\n",
@@ -248,6 +286,7 @@ void register_mission(CLI::App& app) {
                   r->conflict.with.c_str(), ll.x(), ll.y(), r->conflict.depth_m, r->problem.c_str());
     }
     throw_if_unresolved(o->mission, l, planned);
+    throw_if_beaten(o->mission, l, beaten);
   });
 
   CLI::App* plan = mission->add_subcommand(
@@ -297,9 +336,15 @@ void register_mission(CLI::App& app) {
       throw_if_unresolved(o->mission, l, planned);
       const MissionPlanCheck verdict = check_mission_plan(planned.plan, l.env, observation_options(l.mission));
       if (!verdict.safe) throw NoRouteError(o->mission + ": the planned mission fails the plan checker: " + verdict.problem);
-    } else if (!planned.resolutions.empty()) {
-      std::fprintf(stderr, "warning: exporting the plan as written with %zu conflict(s) unresolved\n",
-                   planned.resolutions.size());
+    } else {
+      if (!planned.resolutions.empty()) {
+        std::fprintf(stderr, "warning: exporting the plan as written with %zu conflict(s) unresolved\n",
+                     planned.resolutions.size());
+      }
+      if (const std::size_t n = legs_beaten_by_current(l.plan, l.env.current).size(); n > 0) {
+        std::fprintf(stderr, "warning: exporting the plan as written; the current beats the vehicle on %zu basic "
+                     "manoeuvre(s)\n", n);
+      }
     }
     const MissionPlan& plan = e->as_written ? l.plan : planned.plan;
     export_plan(l.mission, plan, e->output, format, {e->tolerance, e->overwrite, e->route_name});
@@ -341,6 +386,7 @@ void register_mission_simulate(CLI::App& mission) {
     }
     const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
     throw_if_unresolved(o->mission, l, planned);
+    throw_if_beaten(o->mission, l, legs_beaten_by_current(planned.plan, l.env.current));
     ObstacleSet unknown;
     if (!o->unknown.empty()) unknown = load_obstacles(o->unknown, {l.mission.frame.id(), ""}).obstacles;
     MissionRunOptions options;

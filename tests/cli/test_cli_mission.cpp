@@ -106,6 +106,40 @@ TEST(CliMission, AConflictThatCannotBeResolvedExitsThreeWithTimeAndPlace) {
   EXPECT_NE(c.err.find("could not be resolved"), std::string::npos) << c.err;
 }
 
+TEST(CliMission, ACurrentStrongerThanTheVehicleIsNotCalledSafe) {
+  // A 10 m/s current, the vehicle doing 2 m/s: check, plan, export and
+  // simulate said "safe: 363 legs" or collided; each now exits 3 naming where.
+  ScratchDir dir;
+  const auto mission_with = [&](const std::string& current) {
+    return dir.write("m" + current.substr(0, current.find(',')) + ".yaml",
+                     "crs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\nenvironment: {current: '" + current +
+                         "'}\nmanoeuvres:\n  - track: {depth_m: 5, speed_kn: 4, waypoints: [{x: 500400, y: 6000000}, "
+                         "{x: 500400, y: 6000400}]}\n");
+  };
+  // Towards north: the east leg cannot be held, nor the turn's first part
+  // (an arc heading east of north), while the north leg can.
+  const std::string strong = mission_with("10,0");
+  const auto c = run_cli("mission check '" + strong + "' --json");
+  EXPECT_EQ(c.exit_code, 3) << c.err;
+  EXPECT_NE(c.err.find("the 10.00 m/s current beats the vehicle on 2 basic manoeuvre(s)"), std::string::npos) << c.err;
+  EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+  ASSERT_NE(c.out.find("beaten_by_current"), std::string::npos) << c.out;
+  const auto j = nlohmann::json::parse(c.out);
+  ASSERT_EQ(j.at("beaten_by_current").size(), 2u);
+  EXPECT_EQ(j.at("beaten_by_current")[1].at("basic").get<int>(), 1);
+  EXPECT_NEAR(j.at("beaten_by_current")[0].at("along_m").get<double>(), 0.0, 1e-6);
+  for (const std::string& cmd : {"mission plan '" + strong + "'", "mission simulate '" + strong + "'",
+                                 "mission export '" + strong + "' -o '" + dir.file("m.plan") + "'"}) {
+    const auto r = run_cli(cmd);
+    EXPECT_EQ(r.exit_code, 3) << cmd << ": " << r.err;
+    EXPECT_NE(r.err.find("current beats the vehicle"), std::string::npos) << cmd << ": " << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.plan")));
+  // 1.5 m/s across a 2.06 m/s vehicle: it crabs, and all is well.
+  const auto held = run_cli("mission plan '" + mission_with("1.5,0") + "'");
+  EXPECT_EQ(held.exit_code, 0) << held.err;
+}
+
 TEST(CliMission, ExportWritesEachFormatOnceAndRefusesToReplaceWithoutOverwrite) {
   ScratchDir dir;
   const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");

@@ -377,3 +377,56 @@ TEST(MissionControl, AShoalIsEvadedAroundTheSeaFloorsNoGoCells) {
   }
   EXPECT_EQ(abeam, 1);
 }
+
+TEST(PlanCheck, ACurrentStrongerThanTheVehicleFailsTheLegsItBeats) {
+  // East 100 m, then north 100 m, at 2 m/s through the water.
+  MissionPlan plan;
+  BasicManoeuvre east;
+  east.to = Vec2(100.0, 0.0);
+  east.speed_mps = 2.0;
+  east.length_m = 100.0;
+  BasicManoeuvre north = east;
+  north.from = east.to;
+  north.to = Vec2(100.0, 100.0);
+  north.start_m = 100.0;
+  plan.basics = {east, north};
+  plan.length_m = 200.0;
+  // 2.5 m/s north: no heading holds the east leg (|d x c| = 2.5 > 2); north is a following current.
+  std::vector<BeatenLeg> beaten = legs_beaten_by_current(plan, {0.0, 2.5});
+  ASSERT_EQ(beaten.size(), 1u);
+  EXPECT_EQ(beaten[0].basic, 0u);
+  EXPECT_NEAR(beaten[0].along_m, 0.0, 1e-9);
+  // 2.5 m/s south: the east leg again, and the north leg goes backwards (s = 2 - 2.5 < 0).
+  beaten = legs_beaten_by_current(plan, {0.0, -2.5});
+  ASSERT_EQ(beaten.size(), 2u);
+  EXPECT_EQ(beaten[1].basic, 1u);
+  EXPECT_NEAR(beaten[1].along_m, 100.0, 1e-9);
+  // 1.9 m/s across, or 1.4 m/s diagonally: held (crabbing).
+  EXPECT_TRUE(legs_beaten_by_current(plan, {0.0, 1.9}).empty());
+  EXPECT_TRUE(legs_beaten_by_current(plan, {1.0, -1.0}).empty());
+  EXPECT_TRUE(legs_beaten_by_current(plan, {0.0, 0.0}).empty());
+  // The plan checker fails the plan there, saying why.
+  MissionEnvironment env;
+  env.current = Vec2(0.0, -2.5);
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 100, y: 0}]}\n");
+  const MissionPlanCheck verdict = check_mission_plan(plan, env, observation_options(m));
+  EXPECT_FALSE(verdict.safe);
+  EXPECT_EQ(verdict.basic, 0u);
+  EXPECT_NE(verdict.problem.find("the 2.50 m/s current beats the vehicle's 2.00 m/s"), std::string::npos)
+      << verdict.problem;
+  EXPECT_NE(verdict.problem.find("2 basic manoeuvre(s)"), std::string::npos) << verdict.problem;
+  env.current = Vec2(0.0, 1.9);
+  EXPECT_TRUE(check_mission_plan(plan, env, observation_options(m)).safe);
+}
+
+TEST(PlanCheck, TheMissionsCurrentIsTurnedIntoTheLocalFrame) {
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "environment: {current: '3,90'}\n"
+                                      "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 100, y: 0}]}\n");
+  const Vec2 c = constant_current(m);
+  EXPECT_NEAR(c.norm(), 3.0, 1e-9);
+  // Towards true east; the grid is turned from true north by the convergence at the start.
+  const Vec2 true_east = m.frame.from_lonlat(m.frame.to_lonlat(m.start) + Vec2(1e-4, 0.0)) - m.start;
+  EXPECT_NEAR(std::atan2(c.y(), c.x()), std::atan2(true_east.y(), true_east.x()), 1e-3);
+}

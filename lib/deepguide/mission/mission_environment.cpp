@@ -1,5 +1,9 @@
 #include "deepguide/mission/mission_environment.hpp"
 
+#include <cmath>
+
+#include "deepguide/world/current_field.hpp"
+
 #include <cstdio>
 #include <limits>
 
@@ -14,8 +18,19 @@
 
 namespace deepguide {
 
+Vec2 constant_current(const Mission& mission) {
+  if (mission.current.empty()) return Vec2::Zero();
+  const CurrentField c = parse_constant_current(mission.current, mission.source + ": environment.current");
+  const double speed = c.constant_velocity.norm();
+  if (speed == 0.0) return Vec2::Zero();
+  const double dir_deg = std::atan2(c.constant_velocity.x(), c.constant_velocity.y()) * 180.0 / M_PI;
+  const double a = mission.frame.heading_to_local(dir_deg, mission.start);
+  return speed * Vec2(std::cos(a), std::sin(a));
+}
+
 MissionEnvironment load_environment(const Mission& mission) {
   MissionEnvironment env;
+  env.current = constant_current(mission);
   if (!mission.obstacles.empty()) {
     env.obstacles = load_obstacles(mission.obstacles, {mission.frame.id(), ""}).obstacles;
   }

@@ -19,7 +19,15 @@ namespace deepguide {
 struct MissionEnvironment {
   ObstacleSet obstacles;
   std::shared_ptr<const SeaFloor> floor;  ///< null without a bathymetry raster
+  /// The constant current (m/s, local frame; `current: SPEED,DIR`), zero
+  /// without one. A current_file is not in it (see constant_current).
+  Vec2 current{0.0, 0.0};
 };
+
+/// The mission's constant current in its local frame (the direction turned
+/// from true north at the start); zero without one. A current_file gives
+/// zero here: what reads it says so.
+Vec2 constant_current(const Mission& mission);
 
 /// Throws InputError (naming the file) for an unreadable file or more than one raster.
 MissionEnvironment load_environment(const Mission& mission);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "deepguide/core/format.hpp"
+#include "deepguide/vehicle/autopilot.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/water_volume.hpp"
 
@@ -32,6 +34,32 @@ MissionPlanCheck check_mission_plan(const MissionPlan& plan, const MissionEnviro
       out.where = v.where;
       out.problem = v.reason;
     }
+  }
+  const std::vector<BeatenLeg> beaten = legs_beaten_by_current(plan, env.current);
+  if (out.safe && !beaten.empty()) {
+    const BeatenLeg& b = beaten.front();
+    out.safe = false;
+    out.along_m = b.along_m;
+    out.basic = b.basic;
+    out.where = Vec3(b.where.x(), b.where.y(), plan.basics[b.basic].depth_m);
+    out.problem = "the " + fixed(env.current.norm(), 2) + " m/s current beats the vehicle's " +
+                  fixed(plan.basics[b.basic].speed_mps, 2) + " m/s through the water: no heading holds this leg (" +
+                  std::to_string(beaten.size()) + " basic manoeuvre(s) so)";
+  }
+  return out;
+}
+
+std::vector<BeatenLeg> legs_beaten_by_current(const MissionPlan& plan, const Vec2& current) {
+  std::vector<BeatenLeg> out;
+  if (current.norm() == 0.0) return out;
+  const std::vector<TrackPoint> track = plan_polyline(plan, kChordTolerance);
+  for (std::size_t k = 0; k + 1 < track.size(); ++k) {
+    const TrackPoint& p = track[k];
+    const TrackPoint& q = track[k + 1];
+    const Vec2 d = q.xy - p.xy;
+    const double speed = plan.basics[q.basic].speed_mps;
+    if (d.norm() == 0.0 || speed <= 0.0 || (!out.empty() && out.back().basic == q.basic)) continue;
+    if (!ground_speed_along(d.normalized(), current, speed)) out.push_back({q.basic, p.along_m, p.xy});
   }
   return out;
 }

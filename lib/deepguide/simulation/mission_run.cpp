@@ -66,13 +66,7 @@ Vec2 local_current(const Mission& mission) {
     throw InputError(mission.source + ": environment.current_file: the mission simulation takes a constant current "
                                       "(current: SPEED_MPS,DIR_DEG) for now");
   }
-  if (mission.current.empty()) return Vec2::Zero();
-  const CurrentField c = parse_constant_current(mission.current, mission.source + ": environment.current");
-  const double speed = c.constant_velocity.norm();
-  if (speed == 0.0) return Vec2::Zero();
-  const double dir_deg = std::atan2(c.constant_velocity.x(), c.constant_velocity.y()) * 180.0 / M_PI;
-  const double a = mission.frame.heading_to_local(dir_deg, mission.start);
-  return speed * Vec2(std::cos(a), std::sin(a));
+  return constant_current(mission);
 }
 
 }  // namespace
