@@ -578,6 +578,11 @@ void register_plan(CLI::App& app) {
       }
     }
     std::printf("min clearance    %.2f m (margin %.2f m)\n", min_clearance, o->margin);
+    if (!out.escaped_from.empty() && route.points.size() > 1) {
+      std::printf("escape           the first leg, %.1f m, leaves obstacle '%s''s zone from inside it; the clearance "
+                  "is the rest's\n",
+                  (route.points[1] - route.points[0]).norm(), printable(out.escaped_from).c_str());
+    }
     std::printf("graph            %s over %zu of %zu obstacles, %zu vertices, %zu edges; %s expanded %zu\n",
                 o->graph.c_str(), plan.obstacles_used, plan.obstacles_total, out.result.stats.graph_vertices,
                 out.result.stats.graph_edges, o->search.c_str(), out.result.stats.expanded);

@@ -674,6 +674,20 @@ TEST(CliPlan, AnOutputNeverDestroysAnInput) {
   EXPECT_EQ(text(scenario), scenario_text);
 }
 
+TEST(CliPlan, EscapeFromInsideAnObstacleLeavesItAndSaysSo) {
+  // The start at c1's centre (semi-minor 15 m, margin 5): was "internal error:
+  // the planned route failed the independent check" for every graph.
+  ScratchDir dir;
+  for (const char* graph : {"visibility", "tangent", "quadtree"}) {
+    const auto r = run_cli("plan --obstacles '" + kSample + "' --from 10.2500,54.4500 --to 10.265,54.462 --escape "
+                           "--graph " + std::string(graph) + " -o '" + dir.file(std::string(graph) + ".geojson") + "'");
+    ASSERT_EQ(r.exit_code, 0) << graph << ": " << r.err;
+    EXPECT_NE(r.out.find("escape           the first leg, 20.0 m, leaves obstacle 'c1''s zone from inside it"),
+              std::string::npos) << graph << ": " << r.out;
+    EXPECT_NE(r.out.find("min clearance    5.00 m"), std::string::npos) << graph << ": " << r.out;
+  }
+}
+
 TEST(CliPlan, NamedPipesAreRefusedNotWaitedOn) {
   // GDAL and libxml2 block on a FIFO until a writer comes: every reader
   // refuses one at once, naming it (the test would hang otherwise).

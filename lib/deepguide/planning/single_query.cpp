@@ -134,9 +134,16 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     // The route lies in E(bound), so the check against all obstacles agrees;
     // it is run anyway: every route a planner returns is checked against the
     // obstacles the user gave.
+    // The escape leg (from a start inside a zone, out of it) is the way out,
+    // not part of the checked route, as in Planner::solve.
     const ObstacleField all(obstacles, options.margin);
+    const std::vector<Vec2>& points = plan.outcome.result.route.points;
+    const bool escaped = !plan.outcome.escaped_from.empty() && points.size() > 2;
     plan.outcome.check = check_route(
-        plan.outcome.result.found ? plan.outcome.result.route.points : std::vector<Vec2>{problem.start}, all);
+        !plan.outcome.result.found ? std::vector<Vec2>{problem.start}
+        : escaped                  ? std::vector<Vec2>(points.begin() + 1, points.end())
+                                   : points,
+        all);
   }
   return plan;
 }
