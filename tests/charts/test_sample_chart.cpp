@@ -4,6 +4,8 @@
 // JSON, and bad input through the CLI (one-line errors, exit 1).
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <gdal_priv.h>
 
 #include <nlohmann/json.hpp>
@@ -344,6 +346,26 @@ TEST(ChartCli, InfoJson) {
   EXPECT_EQ(j[1]["hazards"], 9);
   EXPECT_EQ(j[1]["layers"][0]["name"], "hazards");
   EXPECT_TRUE(j[1]["extent"]["west"].is_number());
+}
+
+TEST(ChartCli, ACutShortBagIsOneLineWithoutHdf5sDiagnostics) {
+  // HDF5 printed its error stack (11-20 lines) before our message.
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, "bag-ons/JD211_public_Release_1-4_UTM.bag");
+  ScratchDir dir;
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.resize(100000);
+    in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  const std::string cut = dir.write("cut.bag", bytes);
+  for (const std::string& cmd : {"chart info '" + cut + "'", "plan --chart '" + cut + "' --depth 5 --from 0,0 --to 0.01,0.01"}) {
+    const auto r = run_cli(cmd);
+    EXPECT_EQ(r.exit_code, 1) << cmd << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << cmd << ": " << r.err;
+    EXPECT_EQ(r.err.find("HDF5"), std::string::npos) << cmd << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("deepguide: error: ", 0), 0u) << cmd << ": " << r.err;
+  }
 }
 
 TEST(ChartCli, InfoText) {

@@ -2,11 +2,13 @@
 
 #include <mutex>
 
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 
@@ -15,9 +17,31 @@
 
 namespace deepguide::gdal {
 
+namespace {
+
+// HDF5 (under GDAL's BAG, HDF5 and netCDF-4 readers) prints its own error
+// stack to stderr, 10 to 20 lines before our one-line error, while GDAL
+// reports the failure to us anyway. Its printing is switched off through the
+// HDF5 library GDAL already loaded (H5Eset_auto2(H5E_DEFAULT, NULL, NULL)),
+// found at run time so that deepguide needs no HDF5 headers; without HDF5
+// there is nothing to silence.
+void silence_hdf5_diagnostics() {
+  using SetAuto = int (*)(std::int64_t, void*, void*);
+  void* symbol = dlsym(RTLD_DEFAULT, "H5Eset_auto2");
+  if (symbol == nullptr) return;
+  SetAuto set_auto = nullptr;
+  std::memcpy(&set_auto, &symbol, sizeof set_auto);
+  set_auto(0, nullptr, nullptr);
+}
+
+}  // namespace
+
 void ensure_registered() {
   static std::once_flag once;
-  std::call_once(once, [] { GDALAllRegister(); });
+  std::call_once(once, [] {
+    GDALAllRegister();
+    silence_hdf5_diagnostics();
+  });
 }
 
 GDALDatasetUniquePtr open_dataset(const std::string& path, unsigned flags, const char* const* drivers,
