@@ -22,6 +22,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
+#include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/enc_route_check.hpp"
@@ -486,6 +487,8 @@ TEST(EncCells, BrokenInputIsOneLineEach) {
   for (const char* ext : {".000", ".001", ".003"}) fs::copy_file(src / ("US4MD81M" + std::string(ext)), gap / ("US4MD81M" + std::string(ext)));
   expect_one_line_error([&] { find_enc_cells({(gap / "US4MD81M.000").string()}); }, "US4MD81M.003",
                         "expected update 2");
+  // chart info too (GDAL alone applied .001, stopped at the gap and said nothing).
+  expect_one_line_error([&] { chart_info((gap / "US4MD81M.000").string()); }, "US4MD81M.003", "expected update 2");
   // A damaged update: GDAL stops applying there.
   const fs::path cut = tmp.path() / "cut";
   fs::create_directories(cut);

@@ -1,5 +1,7 @@
 #include "deepguide/world/chart_info.hpp"
 
+#include "deepguide/world/enc_cells.hpp"
+
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
@@ -120,6 +122,9 @@ void raster_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
 }
 
 void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
+  // GDAL applies a cell's updates up to the first one missing and says
+  // nothing: a broken sequence is refused here as where the cells are planned on.
+  if (names_enc(info.path)) (void)find_enc_cells({info.path});
   const S57Summary sum = summarize_s57(info.path);
   info.crs = "EPSG:4326";  // S-57 positions are WGS 84 lon/lat by the standard
   info.extent = sum.extent;
