@@ -348,7 +348,8 @@ void register_mission(CLI::App& app) {
     }
     const MissionPlan& plan = e->as_written ? l.plan : planned.plan;
     export_plan(l.mission, plan, e->output, format, {e->tolerance, e->overwrite, e->route_name});
-    const std::size_t waypoints = export_waypoints(l.mission, plan, e->tolerance).size();
+    const std::size_t waypoints =
+        export_route(l.mission, plan, e->tolerance, format == ExportFormat::rtz).waypoints.size();
     std::printf("wrote %s (%s): %zu basic manoeuvres, %zu waypoints, %.0f m\n", e->output.c_str(),
                 to_string(format).c_str(), plan.basics.size(), waypoints, plan.length_m);
   });

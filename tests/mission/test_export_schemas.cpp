@@ -46,6 +46,7 @@ struct Sample {
   Mission mission;
   MissionPlan plan;
   ExportRoute route;
+  ExportRoute corners;  ///< RTZ's: arcs as the corners an ECDIS turns them from
 };
 
 const Sample& sample() {
@@ -54,7 +55,8 @@ const Sample& sample() {
     const MissionEnvironment env = load_environment(mission);
     MissionPlan plan = plan_mission(mission, env, expand_mission(mission, env.obstacles)).plan;
     ExportRoute route = export_route(mission, plan);
-    return Sample{std::move(mission), std::move(plan), std::move(route)};
+    ExportRoute corners = export_route(mission, plan, 0.5, true);
+    return Sample{std::move(mission), std::move(plan), std::move(route), std::move(corners)};
   }();
   return s;
 }
@@ -134,14 +136,44 @@ class Xml {
 };
 
 void expect_each(const std::vector<double>& got, const std::function<double(const ExportWaypoint&)>& value,
-                 double tolerance, const char* what) {
-  ASSERT_EQ(got.size(), want().size()) << what;
-  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_NEAR(got[i], value(want()[i]), tolerance) << what << " " << i;
+                 double tolerance, const char* what, const std::vector<ExportWaypoint>& w = want()) {
+  ASSERT_EQ(got.size(), w.size()) << what;
+  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_NEAR(got[i], value(w[i]), tolerance) << what << " " << i;
 }
 
-void expect_names(const std::vector<std::string>& got, const char* what) {
-  ASSERT_EQ(got.size(), want().size()) << what;
-  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], want()[i].name) << what << " " << i;
+void expect_names(const std::vector<std::string>& got, const char* what,
+                  const std::vector<ExportWaypoint>& w = want()) {
+  ASSERT_EQ(got.size(), w.size()) << what;
+  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], w[i].name) << what << " " << i;
+}
+
+// The track an ECDIS sails through waypoints `wp`: straight between the
+// turns, and at waypoint i an arc of radius `radius[i]` tangent to both legs
+// (arcs sampled every 1/64 of their turn). `fits`, when given, is told for
+// each turn whether its tangent length fits both legs (within `slack` m).
+std::vector<Vec2> ecdis_track(const std::vector<Vec2>& wp, const std::vector<double>& radius,
+                              const std::function<void(std::size_t, bool)>& fits = {}, double slack = 0.0) {
+  std::vector<Vec2> track{wp.front()};
+  for (std::size_t i = 1; i + 1 < wp.size(); ++i) {
+    const Vec2 e1 = (wp[i] - wp[i - 1]).normalized(), e2 = (wp[i + 1] - wp[i]).normalized();
+    const double cross = e1.x() * e2.y() - e1.y() * e2.x();
+    const double theta = std::atan2(std::abs(cross), e1.dot(e2));
+    if (theta < 1e-6) {
+      track.push_back(wp[i]);
+      continue;
+    }
+    const double r = radius[i], t = r * std::tan(0.5 * theta);
+    if (fits) fits(i, t <= (wp[i] - wp[i - 1]).norm() + slack && t <= (wp[i + 1] - wp[i]).norm() + slack);
+    const Vec2 p1 = wp[i] - t * e1;
+    const Vec2 centre = p1 + (cross > 0 ? 1.0 : -1.0) * r * Vec2(-e1.y(), e1.x());
+    const double a0 = std::atan2(p1.y() - centre.y(), p1.x() - centre.x());
+    for (int k = 0; k <= 64; ++k) {
+      const double a = a0 + (cross > 0 ? 1.0 : -1.0) * theta * k / 64;
+      track.push_back(centre + r * Vec2(std::cos(a), std::sin(a)));
+    }
+  }
+  track.push_back(wp.back());
+  return track;
 }
 
 }  // namespace
@@ -221,6 +253,9 @@ TEST(ExportSchemas, KmlIsKml22BelowTheSurfaceWithExtendedData) {
 TEST(ExportSchemas, RtzIsRtz10WithDefaultsRadiiAndASchedule) {
   ScratchDir dir;
   const std::string path = exported(dir, "sample.rtz");
+  // RTZ carries each arc as the corners an ECDIS turns it from.
+  const std::vector<ExportWaypoint>& want = sample().corners.waypoints;
+  ASSERT_LT(want.size(), sample().route.waypoints.size());
   EXPECT_EQ(schema_errors(schema("rtz/rtz_1_0.xsd"), path), "");
   const Xml x(path, {{"r", "http://www.cirm.org/RTZ/1/0"}});
   ASSERT_TRUE(x.ok());
@@ -231,31 +266,72 @@ TEST(ExportSchemas, RtzIsRtz10WithDefaultsRadiiAndASchedule) {
   EXPECT_NEAR(turn[0] * kNauticalMile, sample().route.turn_radius_m, kCm);
   EXPECT_NEAR(x.numbers("//r:defaultWaypoint/r:leg/@speedMax").at(0) * kMetresPerSecondPerKnot,
               sample().mission.vehicle.max_speed_mps, 1e-3);
-  expect_names(x.all("//r:waypoint/@name"), "rtz name");
+  expect_names(x.all("//r:waypoint/@name"), "rtz name", want);
   std::vector<double> radius;
-  for (std::size_t i = 1; i <= want().size(); ++i) {
+  for (std::size_t i = 1; i <= want.size(); ++i) {
     const std::vector<double> r = x.numbers("//r:waypoint[@id='" + std::to_string(i) + "']/@radius");
     radius.push_back(r.empty() ? 0.0 : r[0] * kNauticalMile);
   }
-  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "rtz radius");
+  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "rtz radius", want);
   expect_each(x.numbers("//r:waypoint/r:position/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg,
-              "rtz lon");
+              "rtz lon", want);
   expect_each(x.numbers("//r:waypoint//r:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm,
-              "rtz depth");
+              "rtz depth", want);
   // The planned speed is the schedule's (knots), not a leg's speedMax.
   EXPECT_TRUE(x.all("//r:waypoint/r:leg/@speedMax").empty());
   const std::string element = "//r:schedules/r:schedule/r:calculated/r:sheduleElement";
   expect_each(x.numbers(element + "/@speed"),
-              [](const ExportWaypoint& w) { return w.speed_mps / kMetresPerSecondPerKnot; }, 1e-3, "rtz speed");
-  std::vector<double> stays(want().size(), 0.0);
-  for (std::size_t i = 1; i <= want().size(); ++i) {
+              [](const ExportWaypoint& w) { return w.speed_mps / kMetresPerSecondPerKnot; }, 1e-3, "rtz speed", want);
+  std::vector<double> stays(want.size(), 0.0);
+  for (std::size_t i = 1; i <= want.size(); ++i) {
     for (const std::string& s : x.all(element + "[@waypointId='" + std::to_string(i) + "']/@stay")) {
       int h = 0, m = 0, sec = 0;
       ASSERT_EQ(std::sscanf(s.c_str(), "%d:%d:%d", &h, &m, &sec), 3) << s;
       stays[i - 1] = h * 3600.0 + m * 60.0 + sec;
     }
   }
-  expect_each(stays, [](const ExportWaypoint& w) { return std::round(w.hold_s); }, 1e-9, "rtz stay");
+  expect_each(stays, [](const ExportWaypoint& w) { return std::round(w.hold_s); }, 1e-9, "rtz stay", want);
+}
+
+TEST(ExportSchemas, TheMissionsRtzTurnsOnItsArcsWithFewerWaypoints) {
+  // The sample mission's RTZ read back and sailed as an ECDIS sails it (at
+  // each waypoint a turn on its radius, the route's default where it has
+  // none, tangent to both legs): every arc of the plan lies on that track.
+  ScratchDir dir;
+  const std::string path = exported(dir, "sample.rtz");
+  const Xml x(path, {{"r", "http://www.cirm.org/RTZ/1/0"}});
+  ASSERT_TRUE(x.ok());
+  const double fallback = x.numbers("//r:defaultWaypoint/@radius").at(0) * kNauticalMile;
+  const std::vector<double> lon = x.numbers("//r:waypoint/r:position/@lon"), lat = x.numbers("//r:waypoint/r:position/@lat");
+  const LocalFrame& frame = sample().mission.frame;
+  std::vector<Vec2> wp;
+  std::vector<double> radius;
+  for (std::size_t i = 0; i < lon.size(); ++i) {
+    wp.push_back(frame.from_lonlat(lon[i], lat[i]));
+    const std::vector<double> r = x.numbers("//r:waypoint[@id='" + std::to_string(i + 1) + "']/@radius");
+    radius.push_back(r.empty() ? fallback : r[0] * kNauticalMile);
+  }
+  // 250 waypoints as chords, 205 legs under 10 m: each arc is now its corners.
+  EXPECT_LT(wp.size(), sample().route.waypoints.size() * 3 / 4);
+  const std::vector<Vec2> track = ecdis_track(wp, radius);
+  const auto off_track = [&](const Vec2& q) {
+    double best = 1e9;
+    for (std::size_t i = 0; i + 1 < track.size(); ++i) {
+      const Vec2 d = track[i + 1] - track[i];
+      const double f = d.squaredNorm() > 0 ? std::clamp((q - track[i]).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      best = std::min(best, (track[i] + f * d - q).norm());
+    }
+    return best;
+  };
+  int arcs = 0;
+  double worst = 0.0;
+  for (const BasicManoeuvre& b : sample().plan.basics) {
+    if (b.kind != BasicManoeuvre::Kind::arc) continue;
+    ++arcs;
+    for (int k = 0; k <= 8; ++k) worst = std::max(worst, off_track(b.point_at(b.length_m * k / 8)));
+  }
+  ASSERT_GT(arcs, 10);
+  EXPECT_LT(worst, 0.02) << "an arc's point is this far (m) from the track an ECDIS sails";
 }
 
 TEST(ExportSchemas, CsvOpensInGdalWithoutOptions) {
@@ -384,31 +460,12 @@ TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
   for (std::size_t i = 0; i < lon.size(); ++i) wp.push_back(frame.from_lonlat(lon[i], lat[i]));
 
   // The track an ECDIS draws: straight between the turns, and at each
-  // waypoint an arc of radius r tangent to both legs.
-  std::vector<Vec2> track{wp.front()};
-  for (std::size_t i = 1; i + 1 < wp.size(); ++i) {
-    const Vec2 e1 = (wp[i] - wp[i - 1]).normalized(), e2 = (wp[i + 1] - wp[i]).normalized();
-    const double cross = e1.x() * e2.y() - e1.y() * e2.x();
-    const double theta = std::atan2(std::abs(cross), e1.dot(e2));
-    if (theta < 1e-6) {
-      track.push_back(wp[i]);
-      continue;
-    }
-    const double t = r * std::tan(0.5 * theta);
-    // The turn fits between its neighbours' (the polyline's corners are a
-    // tangent length from the arc's tangent points; positions to 1e-7
-    // degrees bend legs of a few centimetres by a few milliradians).
-    EXPECT_LE(t, (wp[i] - wp[i - 1]).norm() + 0.2) << i;
-    EXPECT_LE(t, (wp[i + 1] - wp[i]).norm() + 0.2) << i;
-    const Vec2 p1 = wp[i] - t * e1;
-    const Vec2 centre = p1 + (cross > 0 ? 1.0 : -1.0) * r * Vec2(-e1.y(), e1.x());
-    const double a0 = std::atan2(p1.y() - centre.y(), p1.x() - centre.x());
-    for (int k = 0; k <= 16; ++k) {
-      const double a = a0 + (cross > 0 ? 1.0 : -1.0) * theta * k / 16;
-      track.push_back(centre + r * Vec2(std::cos(a), std::sin(a)));
-    }
-  }
-  track.push_back(wp.back());
+  // waypoint an arc of radius r tangent to both legs. Each turn fits
+  // between its neighbours' (the polyline's corners are a tangent length
+  // from the arc's tangent points; positions to 1e-7 degrees bend legs of a
+  // few centimetres by a few milliradians).
+  const std::vector<Vec2> track = ecdis_track(wp, std::vector<double>(wp.size(), r),
+                                              [](std::size_t i, bool fits) { EXPECT_TRUE(fits) << i; }, 0.2);
   const ObstacleField field(set, margin);
   double least = 1e9, furthest = 0.0;
   for (std::size_t i = 0; i + 1 < track.size(); ++i) least = std::min(least, field.segment_clearance(track[i], track[i + 1]).distance);

@@ -1,6 +1,7 @@
 #include "deepguide/mission/plan_export.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/mission/export_writers.hpp"
@@ -44,8 +45,55 @@ std::vector<ExportWaypoint> export_waypoints(const Mission& mission, const Missi
   return out;
 }
 
-ExportRoute export_route(const Mission& mission, const MissionPlan& plan, double arc_tolerance_m) {
-  ExportRoute r{mission.name, mission.frame, export_waypoints(mission, plan, arc_tolerance_m)};
+std::vector<ExportWaypoint> export_corner_waypoints(const Mission& mission, const MissionPlan& plan) {
+  std::vector<ExportWaypoint> out;
+  const auto add = [&](const BasicManoeuvre& b, const Vec2& xy, double depth, double along, double time,
+                       double radius) {
+    ExportWaypoint w;
+    w.xy = xy;
+    w.lonlat = mission.frame.to_lonlat(xy);
+    w.depth_m = depth;
+    w.speed_mps = b.speed_mps;
+    w.along_m = along;
+    w.time_s = time;
+    w.radius_m = radius;
+    w.role = role_name(b.role);
+    w.manoeuvre = b.source < mission.manoeuvres.size() ? mission.manoeuvres[b.source].name : std::string();
+    out.push_back(std::move(w));
+  };
+  double time = 0.0;  // at the start of the basic manoeuvre being read
+  for (std::size_t i = 0; i < plan.basics.size(); ++i) {
+    const BasicManoeuvre& b = plan.basics[i];
+    if (i == 0) add(b, b.from, b.from_depth_m, b.start_m, 0.0, 0.0);
+    const double sailing = b.speed_mps > 0.0 ? b.length_m / b.speed_mps : 0.0;
+    const bool last = i + 1 == plan.basics.size();
+    if (b.kind == BasicManoeuvre::Kind::point) {
+      out.back().hold_s += b.hold_s;  // held where the vehicle is
+    } else if (b.kind == BasicManoeuvre::Kind::line) {
+      const bool arc_next = !last && plan.basics[i + 1].kind == BasicManoeuvre::Kind::arc;
+      if (!arc_next && b.length_m > 0.0) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
+    } else if (b.length_m > 0.0 && b.radius_m > 0.0) {
+      const double sweep = b.length_m / b.radius_m;
+      const int pieces = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * M_PI) - 1e-9)));
+      const double piece = sweep / pieces;
+      const double a0 = std::atan2((b.from - b.centre).y(), (b.from - b.centre).x());
+      for (int k = 0; k < pieces; ++k) {
+        const double mid = a0 + b.turn * (k + 0.5) * piece;
+        const Vec2 corner = b.centre + (b.radius_m / std::cos(0.5 * piece)) * Vec2(std::cos(mid), std::sin(mid));
+        const double f = (k + 0.5) / pieces;
+        add(b, corner, b.depth_m, b.start_m + f * b.length_m, time + f * sailing, b.radius_m);
+      }
+      if (last) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
+    }
+    time += sailing + (b.kind == BasicManoeuvre::Kind::point ? b.hold_s : 0.0);
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) out[k].name = waypoint_name(k, out.size());
+  return out;
+}
+
+ExportRoute export_route(const Mission& mission, const MissionPlan& plan, double arc_tolerance_m, bool corners) {
+  ExportRoute r{mission.name, mission.frame,
+                corners ? export_corner_waypoints(mission, plan) : export_waypoints(mission, plan, arc_tolerance_m)};
   r.length_m = plan.length_m;
   double fastest = 0.0;
   for (const BasicManoeuvre& b : plan.basics) fastest = std::max(fastest, b.speed_mps);
@@ -68,7 +116,8 @@ void export_plan(const Mission& mission, const MissionPlan& plan, const std::str
     });
     return;
   }
-  write_route_file(export_route(mission, plan, options.arc_tolerance_m), path, format, options);
+  write_route_file(export_route(mission, plan, options.arc_tolerance_m, format == ExportFormat::rtz), path, format,
+                   options);
 }
 
 }  // namespace deepguide

@@ -21,9 +21,22 @@ namespace deepguide {
 std::vector<ExportWaypoint> export_waypoints(const Mission& mission, const MissionPlan& plan,
                                              double arc_tolerance_m = 0.5);
 
+/// The plan's waypoints for a reader that turns at each waypoint on its
+/// radius (an ECDIS with RTZ): each arc, cut into pieces of at most 90
+/// degrees, is one waypoint per piece where the piece's tangents meet, at
+/// R / cos(phi / 2) from the centre with the arc's radius R, and a turn of R
+/// there is the arc itself (tangent points R tan(phi / 2) either side, on the
+/// arc). A line that ends where an arc begins leaves its end to the arc's
+/// corner; other line ends, and the plan's start and end, are waypoints as in
+/// export_waypoints, holds on the waypoint where they are. A corner's along_m
+/// and time_s are those of its piece's middle.
+std::vector<ExportWaypoint> export_corner_waypoints(const Mission& mission, const MissionPlan& plan);
+
 /// The plan as a route for write_route_file: its waypoints, the mission's
-/// name, and the vehicle's turn radius, vertical and top speeds.
-ExportRoute export_route(const Mission& mission, const MissionPlan& plan, double arc_tolerance_m = 0.5);
+/// name, and the vehicle's turn radius, vertical and top speeds. `corners`:
+/// export_corner_waypoints instead of chords.
+ExportRoute export_route(const Mission& mission, const MissionPlan& plan, double arc_tolerance_m = 0.5,
+                         bool corners = false);
 
 /// Writes the plan to `path` in `format`. Throws InputError naming the path
 /// for an existing file without overwrite, a missing folder, or a failed write.
