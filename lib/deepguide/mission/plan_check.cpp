@@ -10,6 +10,21 @@
 namespace deepguide {
 namespace {
 constexpr double kChordTolerance = 0.05;  // m
+
+// legs_beaten_by_current on the plan's track (arcs as chords).
+std::vector<BeatenLeg> beaten_on(const MissionPlan& plan, const std::vector<TrackPoint>& track, const Vec2& current) {
+  std::vector<BeatenLeg> out;
+  if (current.norm() == 0.0) return out;
+  for (std::size_t k = 0; k + 1 < track.size(); ++k) {
+    const TrackPoint& p = track[k];
+    const TrackPoint& q = track[k + 1];
+    const Vec2 d = q.xy - p.xy;
+    const double speed = plan.basics[q.basic].speed_mps;
+    if (d.norm() == 0.0 || speed <= 0.0 || (!out.empty() && out.back().basic == q.basic)) continue;
+    if (!ground_speed_along(d.normalized(), current, speed)) out.push_back({q.basic, p.along_m, p.xy});
+  }
+  return out;
+}
 }  // namespace
 
 MissionPlanCheck check_mission_plan(const MissionPlan& plan, const MissionEnvironment& env,
@@ -35,7 +50,7 @@ MissionPlanCheck check_mission_plan(const MissionPlan& plan, const MissionEnviro
       out.problem = v.reason;
     }
   }
-  const std::vector<BeatenLeg> beaten = legs_beaten_by_current(plan, env.current);
+  const std::vector<BeatenLeg> beaten = beaten_on(plan, track, env.current);
   if (out.safe && !beaten.empty()) {
     const BeatenLeg& b = beaten.front();
     out.safe = false;
@@ -50,18 +65,8 @@ MissionPlanCheck check_mission_plan(const MissionPlan& plan, const MissionEnviro
 }
 
 std::vector<BeatenLeg> legs_beaten_by_current(const MissionPlan& plan, const Vec2& current) {
-  std::vector<BeatenLeg> out;
-  if (current.norm() == 0.0) return out;
-  const std::vector<TrackPoint> track = plan_polyline(plan, kChordTolerance);
-  for (std::size_t k = 0; k + 1 < track.size(); ++k) {
-    const TrackPoint& p = track[k];
-    const TrackPoint& q = track[k + 1];
-    const Vec2 d = q.xy - p.xy;
-    const double speed = plan.basics[q.basic].speed_mps;
-    if (d.norm() == 0.0 || speed <= 0.0 || (!out.empty() && out.back().basic == q.basic)) continue;
-    if (!ground_speed_along(d.normalized(), current, speed)) out.push_back({q.basic, p.along_m, p.xy});
-  }
-  return out;
+  if (current.norm() == 0.0) return {};
+  return beaten_on(plan, plan_polyline(plan, kChordTolerance), current);
 }
 
 }  // namespace deepguide

@@ -53,11 +53,17 @@ std::vector<double> turns(const std::vector<Vec2>& p) {
   return turn;
 }
 
+// Each corner's tangent length R tan(|turn| / 2).
+std::vector<double> tangents(const std::vector<double>& turn, double radius) {
+  std::vector<double> t(turn.size());
+  for (std::size_t i = 0; i < turn.size(); ++i) t[i] = radius * std::tan(0.5 * std::abs(turn[i]));
+  return t;
+}
+
 // The first leg i (from p[i] to p[i + 1]) whose two fillets overlap, if any.
-std::optional<std::size_t> first_overlap(const std::vector<Vec2>& p, const std::vector<double>& turn, double radius) {
-  const auto tangent = [&](std::size_t i) { return radius * std::tan(0.5 * std::abs(turn[i])); };
+std::optional<std::size_t> first_overlap(const std::vector<Vec2>& p, const std::vector<double>& tangent) {
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-    if (tangent(i) + tangent(i + 1) > (p[i + 1] - p[i]).norm() * (1.0 + 1e-12) + 1e-12) return i;
+    if (tangent[i] + tangent[i + 1] > (p[i + 1] - p[i]).norm() * (1.0 + 1e-12) + 1e-12) return i;
   }
   return std::nullopt;
 }
@@ -69,7 +75,7 @@ std::vector<Vec2> join_tight_corners(const std::vector<Vec2>& polyline, double r
   std::vector<Vec2> p = distinct_points(polyline);
   while (p.size() > 3) {
     const std::vector<double> turn = turns(p);
-    const std::optional<std::size_t> leg = first_overlap(p, turn, radius);
+    const std::optional<std::size_t> leg = first_overlap(p, tangents(turn, radius));
     if (!leg || *leg == 0 || *leg + 2 >= p.size()) break;  // fits, or a corner beside an end
     const std::size_t i = *leg;
     if (turn[i] * turn[i + 1] <= 0.0 || std::abs(turn[i] + turn[i + 1]) >= 0.99 * std::numbers::pi) break;
@@ -89,10 +95,9 @@ FilletedRoute fillet_corners(const std::vector<Vec2>& polyline, double radius) {
   const std::vector<Vec2> p = distinct_points(polyline);
   const std::size_t n = p.size();
   const std::vector<double> turn = turns(p);
-  std::vector<double> tangent(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) tangent[i] = radius * std::tan(0.5 * std::abs(turn[i]));
+  const std::vector<double> tangent = tangents(turn, radius);
   FilletedRoute out;
-  if (const std::optional<std::size_t> leg = first_overlap(p, turn, radius)) {
+  if (const std::optional<std::size_t> leg = first_overlap(p, tangent)) {
     out.too_tight = tangent[*leg] > 0.0 ? *leg : *leg + 1;
     return out;
   }

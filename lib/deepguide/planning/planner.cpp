@@ -241,19 +241,27 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   return none;
 }
 
+// The message for a route whose corners cannot be rounded on the radius.
+std::string Planner::unrounded_message(const Vec2& at, const std::string& why) const {
+  return "the " + to_string(options_.graph) + " route cannot turn at " + general(options_.turn_radius_m) + " m at " +
+         point_text(at, 1) + ": " + why + " (try --graph tangent)";
+}
+
 // A polygon graph's route with its corners rounded on the turning radius.
 // Close corners that wrap one zone are joined first. A corner that still
 // turns too tightly for its fillet (an S-bend through a gap the turning
 // polygons narrow) is cut when the straight line past it keeps the margin
-// from the exact zones. Not found when neither helps, or when the result
-// does not pass the independent check.
+// from the exact zones, or merged with its neighbour across a short leg.
+// Not found when none of that helps; solve() then checks what was rounded.
 bool Planner::round_corners(PlanResult& result) const {
   const double radius = options_.turn_radius_m;
   const ObstacleField& field = impl_->field;
-  const auto fail = [&](const Vec2& at, const std::string& why) {
+  const auto keeps_margin = [&](const Vec2& a, const Vec2& b) {
+    return field.segment_clearance(a, b).distance >= field.margin();
+  };
+  const auto too_close = [&](const Vec2& at) {
     result.found = false;
-    result.message = "the " + to_string(options_.graph) + " route cannot turn at " + general(radius) + " m at " +
-                     point_text(at, 1) + ": " + why + " (try --graph tangent)";
+    result.message = unrounded_message(at, "its corners there are too close to round");
     return false;
   };
   std::vector<Vec2> points = result.route.points;
@@ -263,11 +271,7 @@ bool Planner::round_corners(PlanResult& result) const {
     rounded = fillet_corners(points, radius);
     if (!rounded.too_tight) break;
     const std::size_t k = *rounded.too_tight;
-    const bool inner = k > 0 && k + 1 < points.size();
-    const auto keeps_margin = [&](const Vec2& a, const Vec2& b) {
-      return field.segment_clearance(a, b).distance >= field.margin();
-    };
-    if (!inner || cuts >= result.route.points.size()) return fail(points[k], "its corners there are too close to round");
+    if (k == 0 || k + 1 >= points.size() || cuts >= result.route.points.size()) return too_close(points[k]);
     if (keeps_margin(points[k - 1], points[k + 1])) {
       points.erase(points.begin() + static_cast<std::ptrdiff_t>(k));
       continue;
@@ -284,14 +288,7 @@ bool Planner::round_corners(PlanResult& result) const {
         break;
       }
     }
-    if (!merged) return fail(points[k], "its corners there are too close to round");
-  }
-  if (points.size() != result.route.points.size()) {
-    const RouteCheck check = check_route(points, field);
-    if (!check.safe) return fail(check.worst_point, "rounding its corners comes within the margin of another zone");
-  }
-  if (const RouteCheck legs = check_route_legs(rounded.legs, field); !legs.safe) {
-    return fail(legs.worst_point, "its rounded corners come within the margin of another zone");
+    if (!merged) return too_close(points[k]);
   }
   result.route.points = points;
   result.legs = rounded.legs;
@@ -347,6 +344,15 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
                           impl_->field);
   if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
+  // A rounded polygon route whose joined corners or fillets come near another
+  // zone is refused, saying where, rather than returned to fail the check.
+  const bool rounded = out.result.found && options_.turn_radius_m > 0.0 && !impl_->tangent;
+  if (rounded && (!out.check.safe || !out.legs_check->safe)) {
+    const RouteCheck& bad = out.check.safe ? *out.legs_check : out.check;
+    out.result.found = false;
+    out.result.message = unrounded_message(bad.worst_point, "rounding its corners comes within the margin of another zone");
+    rounding_failed = true;
+  }
   if (!out.result.found && !rounding_failed && options_.turn_radius_m > options_.margin) {
     out.result.message = why_no_turning_route(problem);
   }
