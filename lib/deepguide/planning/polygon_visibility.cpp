@@ -46,6 +46,14 @@ PolygonVisibility::PolygonVisibility(BgMultiPolygon polygons, double eps)
     for (const auto& inner : polygons_[i].inners()) for_each_edge(inner, add);
   }
   edges_ = decltype(edges_)(edges);
+  std::vector<EdgeBox> edge_boxes;
+  edge_boxes.reserve(edges.size());
+  edge_ends_.reserve(edges.size());
+  for (const EdgeItem& e : edges) {
+    edge_boxes.emplace_back(bg::return_envelope<BgBox>(e.first), edge_ends_.size());
+    edge_ends_.emplace_back(to_eigen(e.first.first), to_eigen(e.first.second));
+  }
+  edge_boxes_ = decltype(edge_boxes_)(edge_boxes);
   boxes_ = decltype(boxes_)(boxes);
   std::vector<const BgPolygon*> ptrs;
   for (const BgPolygon& poly : polygons_) ptrs.push_back(&poly);
@@ -90,8 +98,8 @@ Vec2 PolygonVisibility::closest_boundary_point(const Vec2& p) const {
 bool PolygonVisibility::properly_crosses(const Vec2& p, const Vec2& q) const {
   if (p == q) return false;
   const Segment seg(to_bg(p), to_bg(q));
-  for (auto it = edges_.qbegin(bgi::intersects(seg)); it != edges_.qend(); ++it) {
-    const Vec2 a = to_eigen(it->first.first), b = to_eigen(it->first.second);
+  for (auto it = edge_boxes_.qbegin(bgi::intersects(seg)); it != edge_boxes_.qend(); ++it) {
+    const auto& [a, b] = edge_ends_[it->second];
     const double sa = side(p, q, a), sb = side(p, q, b);
     const double sp = side(a, b, p), sq = side(a, b, q);
     if (((sa > eps_ && sb < -eps_) || (sa < -eps_ && sb > eps_)) &&
@@ -111,8 +119,8 @@ bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
   // between far corners are blocked, and the first proper crossing ends it.
   std::vector<double> breaks{0.0, 1.0};
   const Segment seg(to_bg(p), to_bg(q));
-  for (auto it = edges_.qbegin(bgi::intersects(seg)); it != edges_.qend(); ++it) {
-    const Vec2 a = to_eigen(it->first.first), b = to_eigen(it->first.second);
+  for (auto it = edge_boxes_.qbegin(bgi::intersects(seg)); it != edge_boxes_.qend(); ++it) {
+    const auto& [a, b] = edge_ends_[it->second];
     const double sa = side(p, q, a), sb = side(p, q, b);
     const double sp = side(a, b, p), sq = side(a, b, q);
     const bool straddle_pq = (sa > eps_ && sb < -eps_) || (sa < -eps_ && sb > eps_);

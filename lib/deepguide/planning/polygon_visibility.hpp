@@ -51,7 +51,13 @@ class PolygonVisibility {
   using BoxItem = std::pair<BgBox, std::size_t>;
   BgMultiPolygon polygons_;
   double eps_;
-  boost::geometry::index::rtree<EdgeItem, boost::geometry::index::rstar<16>> edges_;
+  boost::geometry::index::rtree<EdgeItem, boost::geometry::index::rstar<16>> edges_;  // nearest queries
+  // The same edges by their boxes, for the segment queries: a leaf's box test
+  // is a few comparisons where Boost's segment-segment test computes the
+  // whole intersection, and the side tests that follow decide exactly anyway.
+  using EdgeBox = std::pair<BgBox, std::size_t>;  // box, index into edge_ends_
+  boost::geometry::index::rtree<EdgeBox, boost::geometry::index::rstar<16>> edge_boxes_;
+  std::vector<std::pair<Vec2, Vec2>> edge_ends_;
   boost::geometry::index::rtree<BoxItem, boost::geometry::index::rstar<16>> boxes_;
   std::unique_ptr<PolygonLocator> locator_;  // which polygon holds a point (strictly_inside)
 };
