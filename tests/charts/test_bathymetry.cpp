@@ -33,6 +33,59 @@ BathymetryOptions assumed(const std::string& crs) {
   return o;
 }
 
+// ---------------------------------------------------------------- damaged real files
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The netCDF library fills a classic file cut short with zeros: cut in half
+// it read as "100.0 % valid" with a no-go area that is not there; cut within
+// its last variable (9615 of 10628 bytes) the last rows read as 0 m.
+TEST(BathymetryDamaged, ANetcdfGridCutShortIsRefused) {
+  REAL_FILE_OR_SKIP(path, "bathy-gmt-cache/tut_bathy.nc");
+  const std::string bytes = file_bytes(path);
+  ASSERT_EQ(bytes.size(), 10628u);
+  test::ScratchDir tmp;
+  for (const std::size_t keep : {std::size_t{5314}, std::size_t{9615}, std::size_t{10625}}) {
+    const std::string cut = tmp.write("cut.nc", bytes.substr(0, keep));
+    expect_one_line_error([&] { inspect_bathymetry(cut); }, "the file is cut short");
+    expect_one_line_error([&] { inspect_bathymetry(cut); }, "up to byte 10626");
+  }
+  // The 2 bytes of padding after the last variable may go: nothing is lost.
+  const BathymetryInfo whole = inspect_bathymetry(tmp.write("cut.nc", bytes.substr(0, 10626)));
+  EXPECT_DOUBLE_EQ(whole.min_depth_m, 89);
+  EXPECT_DOUBLE_EQ(whole.max_depth_m, 5475);
+}
+
+// GDAL 3.6 rescans a cut ESRI ASCII grid for ever (more than 600 s for
+// chart info); the count of numbers against ncols x nrows refuses it at once.
+TEST(BathymetryDamaged, AnAsciiGridCutShortOrWithALetterIsRefused) {
+  REAL_FILE_OR_SKIP(path, "bathy-usml-crm/small_crm.asc");
+  const std::string bytes = file_bytes(path);
+  test::ScratchDir tmp;
+  for (const double part : {0.01, 0.5, 0.999}) {
+    const std::string cut = tmp.write("cut.asc", bytes.substr(0, static_cast<std::size_t>(part * bytes.size())));
+    // "expected 241 x 241 = 58081 numbers ..., got N", or, cut within a number, "line L: expected a number ..., got '-'"
+    const std::string msg = test::error_of([&] { inspect_bathymetry(cut, assumed("EPSG:4326")); });
+    EXPECT_TRUE(msg.find("58081 numbers") != std::string::npos || msg.find(": expected a number") != std::string::npos)
+        << msg;
+    expect_one_line_error([&] { inspect_bathymetry(cut, assumed("EPSG:4326")); }, "cut.asc: ");
+  }
+  // A digit turned into a letter on line 10 (GDAL's reader would take "-7x2" as -7).
+  std::size_t at = 0;
+  for (int line = 1; line < 10; ++line) at = bytes.find('\n', at) + 1;
+  std::string flipped = bytes;
+  const std::size_t digit = flipped.find_first_of("0123456789", at + 1);
+  ASSERT_LT(digit, flipped.find('\n', at));
+  flipped[digit] = 'x';
+  const std::string bad = tmp.write("bad.asc", flipped);
+  expect_one_line_error([&] { inspect_bathymetry(bad, assumed("EPSG:4326")); }, "line 10: expected a number");
+  // The untouched copy still reads (the check takes every number the real file holds).
+  EXPECT_NEAR(inspect_bathymetry(tmp.write("ok.asc", bytes), assumed("EPSG:4326")).max_depth_m, 771, 1e-3);
+}
+
 // ---------------------------------------------------------------- BAG
 
 TEST(BathymetryReal, JD211BagMatchesSources) {

@@ -11,6 +11,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/raster_completeness.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;
@@ -38,6 +39,7 @@ GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOption
     throw InputError(path + ": expected a raster GDAL can open" +
                      (why.empty() ? std::string(", got a file no raster driver recognises") : ", got: " + printable(why, 160)));
   }
+  if (!virtual_file) require_complete_raster(*ds, path);
   return ds;
 }
 

@@ -12,6 +12,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/raster_completeness.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;
@@ -293,33 +294,10 @@ void check_size(const std::string& path, std::size_t nx, std::size_t ny, std::si
   }
 }
 
-// The netCDF library reads a classic-format file cut short as zeros, silently
-// (measured: a HYCOM file cut to 20 kB gave v = 0 everywhere). Uncompressed
-// classic files must hold at least their variables' bytes: check that.
-void check_classic_size(const GDALGroup& root, const std::string& path) {
-  const char* format = CSLFetchNameValue(root.GetStructuralInfo(), "NC_FORMAT");
-  if (format == nullptr) return;
-  const std::string fmt = format;
-  if (fmt != "CLASSIC" && fmt != "64BIT_OFFSET" && fmt != "CDF5") return;
-  double need = 0;
-  for (const auto& name : root.GetMDArrayNames()) {
-    const auto a = root.OpenMDArray(name);
-    if (!a) continue;
-    const double bytes = static_cast<double>(a->GetTotalElementsCount()) * static_cast<double>(a->GetDataType().GetSize());
-    need += std::ceil(bytes / 4.0) * 4.0;  // classic variables are padded to 4 bytes
-  }
-  std::error_code ec;
-  const auto have = fs::file_size(path, ec);
-  if (!ec && static_cast<double>(have) < need) {
-    throw InputError(path + ": expected a complete NetCDF file (its variables need at least " + num(need, 0) +
-                     " bytes), got " + std::to_string(have) + " bytes: the file is cut short");
-  }
-}
-
 CurrentField load_multidim(GDALDataset& ds, const std::string& path, const CurrentOptions& options) {
   const auto root = ds.GetRootGroup();
   if (!root) throw InputError(path + ": expected a NetCDF file with a root group, got none");
-  check_classic_size(*root, path);
+  require_complete_netcdf(path);
   const Variables vars = find_uv(*root, path, options);
   const auto& du = vars.u->GetDimensions();
   const auto& dv = vars.v->GetDimensions();
@@ -622,6 +600,7 @@ CurrentField load_current_field(const std::string& path, const CurrentOptions& o
     throw InputError(path + ": expected a current field GDAL can open (NetCDF with u/v or a two-band raster)" +
                      (why.empty() ? std::string(", got a file no driver recognises") : ", got: " + printable(why, 160)));
   }
+  require_complete_raster(*ds, path);
   return load_two_band(*ds, path, options);
 }
 
