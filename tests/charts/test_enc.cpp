@@ -477,6 +477,57 @@ TEST(EncNoGo, ZoneOfConfidenceChangesTheVerdictOnA9p5mArea) {
 
 // ------------------------------------------------------------------ bad input
 
+// Single flipped bytes GDAL 3.6 read as data without a word (found by the
+// truncation sweep, tests/cli/test_truncation_sweep.cpp): each is one line now.
+TEST(EncCells, FlippedBytesGdalTookAsDataAreRefused) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(key_west, kKeyWest);
+  DEEPGUIDE_REAL_FILE_OR_SKIP(chesapeake, kChesapeake);
+  ScratchDir tmp;
+  auto bytes_of = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  auto write = [](const fs::path& p, const std::string& b) { std::ofstream(p, std::ios::binary) << b; };
+  const std::string kw = bytes_of(key_west);
+  {
+    // A label in the file's field descriptions: "ATTL" -> "ATTX". GDAL then
+    // read no attribute at all: every depth area lost its depths, every zone
+    // of confidence its CATZOC, and chart info said so as if the chart did.
+    std::string b = kw;
+    const std::size_t at = b.find("*ATTL!ATVL", b.find("Feature record attribute field"));
+    ASSERT_LT(at, 1582u) << "within the data descriptive record";
+    b[at + 4] = 'X';
+    write(tmp.path() / "US5FL4DQ.000", b);
+    expect_one_line_error([&] { chart_info((tmp.path() / "US5FL4DQ.000").string()); }, "US5FL4DQ.000",
+                          "field ATTF described with labels '*ATTX!ATVL'");
+  }
+  {
+    // A digit of a record's directory (record 1371, at byte 315070): GDAL dropped that feature.
+    std::string b = kw;
+    ASSERT_TRUE(std::isdigit(static_cast<unsigned char>(b[315113])));
+    b[315113] = 'x';
+    write(tmp.path() / "US5FL4DQ.000", b);
+    expect_one_line_error([&] { chart_info((tmp.path() / "US5FL4DQ.000").string()); }, "US5FL4DQ.000",
+                          "a directory entry with a letter where its length or position goes at byte 315070");
+  }
+  {
+    // An update's instruction (RUIN of the last feature record of .002, insert)
+    // turned into 250: GDAL skipped that record, one wreck fewer, exit 0.
+    const fs::path dir = tmp.path() / "ches";
+    fs::create_directories(dir);
+    const fs::path src = fs::path(chesapeake).parent_path();
+    for (const char* ext : {".000", ".001", ".002", ".003"}) {
+      fs::copy_file(src / ("US4MD81M" + std::string(ext)), dir / ("US4MD81M" + std::string(ext)));
+    }
+    std::string b = bytes_of(dir / "US4MD81M.002");
+    ASSERT_EQ(b[2096], 1) << "the insert instruction of the last feature record";
+    b[2096] = static_cast<char>(250);
+    write(dir / "US4MD81M.002", b);
+    expect_one_line_error([&] { chart_info((dir / "US4MD81M.000").string()); }, "US4MD81M.002",
+                          "update instruction 250 (S-57 has 1 insert, 2 delete, 3 modify)");
+  }
+}
+
 TEST(EncCells, BrokenInputIsOneLineEach) {
   DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
   ScratchDir tmp;
@@ -496,7 +547,7 @@ TEST(EncCells, BrokenInputIsOneLineEach) {
   fs::copy_file(src / "US4MD81M.001", cut / "US4MD81M.001");
   fs::resize_file(cut / "US4MD81M.001", fs::file_size(cut / "US4MD81M.001") / 2);
   expect_one_line_error([&] { enc_no_go({(cut / "US4MD81M.000").string()}, std::nullopt, at_depth(5.0)); },
-                        "US4MD81M.001", "expected a complete S-57 update");
+                        "US4MD81M.001", "expected an intact S-57 update");
   // A file named .000 that is not S-57.
   const fs::path fake = tmp.path() / "FAKE.000";
   std::ofstream(fake) << "{\"type\": \"FeatureCollection\", \"features\": []}\n";

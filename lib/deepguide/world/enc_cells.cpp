@@ -8,6 +8,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/world/iso8211_check.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;
@@ -26,33 +27,11 @@ int update_number(const fs::path& p, const std::string& stem) {
   return std::stoi(ext.substr(1));
 }
 
-// An S-57 file is ISO 8211: records one after another, each starting with its
-// length in five digits. A file whose last record runs past its end was cut
-// short (a broken download). Checked before GDAL applies an update, which on
-// such a file fails (and GDAL 3.6 leaks in that path). Returns why, or "".
-std::string cut_short(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "could not be opened";
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  std::streamoff pos = 0;
-  while (pos < size) {
-    char digits[5];
-    in.seekg(pos);
-    if (size - pos < 24 || !in.read(digits, 5)) return "cut short at byte " + std::to_string(pos);
-    long length = 0;
-    for (char d : digits) {
-      if (d < '0' || d > '9') return "no ISO 8211 record at byte " + std::to_string(pos);
-      length = length * 10 + (d - '0');
-    }
-    if (length < 24 || pos + length > size) return "cut short in the record at byte " + std::to_string(pos);
-    pos += length;
-  }
-  return size == 0 ? "empty" : "";
-}
-
 EncCellFiles with_updates(const fs::path& base) {
   EncCellFiles cell{base.string(), {}};
+  if (const std::string why = s57_structure_problem(base.string(), false); !why.empty()) {
+    throw InputError(printable(base.string(), 240) + ": expected an S-57 ENC cell (ISO 8211), got a file " + why);
+  }
   std::map<int, fs::path> found;
   std::error_code ec;
   const fs::path dir = base.has_parent_path() ? base.parent_path() : fs::path(".");
@@ -66,8 +45,8 @@ EncCellFiles with_updates(const fs::path& base) {
       throw InputError(printable(path.string(), 240) + ": expected update " + std::to_string(expected) + " of " +
                        printable(base.string(), 240) + " before it, found none (the update sequence is broken)");
     }
-    if (const std::string why = cut_short(path); !why.empty()) {
-      throw InputError(printable(path.string(), 240) + ": expected a complete S-57 update (ISO 8211) to apply to " +
+    if (const std::string why = s57_structure_problem(path.string(), true); !why.empty()) {
+      throw InputError(printable(path.string(), 240) + ": expected an intact S-57 update (ISO 8211) to apply to " +
                        printable(base.string(), 240) + ", got a file " + why);
     }
     cell.updates.push_back(path.string());
