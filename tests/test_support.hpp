@@ -85,12 +85,16 @@ struct RunResult {
   std::string err;
 };
 
-/// Runs the deepguide binary with ARGS (a shell-quoted string) and captures its output.
-inline RunResult run_cli(const std::string& args) {
+/// Runs the deepguide binary with ARGS (a shell-quoted string) and captures
+/// its output. With `limit_s` > 0 the run is stopped after that many seconds
+/// (coreutils timeout: exit code 124).
+inline RunResult run_cli(const std::string& args, int limit_s = 0) {
   ScratchDir tmp;
   const std::string out = tmp.file("stdout");
   const std::string err = tmp.file("stderr");
-  const std::string cmd = std::string("'") + DEEPGUIDE_CLI + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
+  const std::string limit = limit_s > 0 ? "timeout -k 2 " + std::to_string(limit_s) + " " : std::string();
+  const std::string cmd =
+      limit + "'" + DEEPGUIDE_CLI + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

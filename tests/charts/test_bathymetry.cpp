@@ -59,6 +59,18 @@ TEST(BathymetryDamaged, ANetcdfGridCutShortIsRefused) {
   EXPECT_DOUBLE_EQ(whole.max_depth_m, 5475);
 }
 
+// A flipped byte in the grid's numbers: -5475 .. -89 m is what the file says
+// it holds (actual_range); a cell outside it is damage, not a 9457 m deep.
+TEST(BathymetryDamaged, ACellOutsideTheFilesOwnRangeIsRefused) {
+  REAL_FILE_OR_SKIP(path, "bathy-gmt-cache/tut_bathy.nc");
+  std::string bytes = file_bytes(path);
+  test::ScratchDir tmp;
+  const std::size_t at = bytes.size() - 2 - 2 * 4453 + 2 * 100;  // the high byte of cell 100 of z (int16, big-endian)
+  bytes[at] = static_cast<char>(static_cast<unsigned char>(bytes[at]) ^ 0x40);
+  const std::string bad = tmp.write("bad.nc", bytes);
+  expect_one_line_error([&] { inspect_bathymetry(bad); }, "outside the file's own actual_range -5475 .. -89");
+}
+
 // GDAL 3.6 rescans a cut ESRI ASCII grid for ever (more than 600 s for
 // chart info); the count of numbers against ncols x nrows refuses it at once.
 TEST(BathymetryDamaged, AnAsciiGridCutShortOrWithALetterIsRefused) {

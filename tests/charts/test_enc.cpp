@@ -511,6 +511,28 @@ TEST(EncCells, FlippedBytesGdalTookAsDataAreRefused) {
                           "a directory entry with a letter where its length or position goes at byte 315070");
   }
   {
+    // A byte of a sounding's depth (SG3D of SOUNDG/1671): 661 914.5 m, which
+    // chart info gave as the cell's depth range. No sea is that deep.
+    std::string b = kw;
+    b[17661] = static_cast<char>(static_cast<unsigned char>(b[17661]) ^ 101);
+    write(tmp.path() / "US5FL4DQ.000", b);
+    expect_one_line_error([&] { chart_info((tmp.path() / "US5FL4DQ.000").string()); }, "SOUNDG/1671 (a sounding)",
+                          "holds a depth of 661914.5 m: expected one between -9000 and 11100 m");
+    expect_one_line_error([&] { enc_no_go({(tmp.path() / "US5FL4DQ.000").string()}, std::nullopt, at_depth(5.0)); },
+                          "US5FL4DQ.000", "holds a depth of 661914.5 m");
+  }
+  {
+    // An object class code (FRID OBJL of a coastline in US4MD81M.000): GDAL
+    // moved the feature to a layer "Generic", one coastline fewer, exit 0.
+    const fs::path dir = tmp.path() / "objl";
+    fs::create_directories(dir);
+    std::string b = bytes_of(chesapeake);
+    b[2644814] = static_cast<char>(static_cast<unsigned char>(b[2644814]) ^ 170);
+    write(dir / "US4MD81M.000", b);
+    expect_one_line_error([&] { chart_info((dir / "US4MD81M.000").string()); }, "US4MD81M.000",
+                          "expected an object class S-57 defines, got code");
+  }
+  {
     // An update's instruction (RUIN of the last feature record of .002, insert)
     // turned into 250: GDAL skipped that record, one wreck fewer, exit 0.
     const fs::path dir = tmp.path() / "ches";

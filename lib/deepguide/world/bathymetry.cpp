@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <tuple>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/plausible_depth.hpp"
 #include "deepguide/world/raster_completeness.hpp"
 
 namespace deepguide {
@@ -102,10 +104,59 @@ const char* to_string(VerticalSense sense) {
   return "?";
 }
 
+namespace {
+
+// Numbers in a netCDF attribute as GDAL shows it: "{-5475,-89}" or "-89".
+std::vector<double> numbers_in(const std::string& text) {
+  std::vector<double> out;
+  const char* p = text.c_str();
+  while (*p != 0) {
+    char* end = nullptr;
+    const double v = std::strtod(p, &end);
+    if (end != p) {
+      out.push_back(v);
+      p = end;
+    } else {
+      ++p;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 namespace detail {
+
+// The range the file states for its cells. Only where the band is not packed
+// (scale 1, offset 0): CF gives valid_range in packed and actual_range in
+// unpacked units, and GDAL hands out the packed values.
+void read_stated_range(GDALRasterBand& band, OpenedBathymetry& r) {
+  int has_scale = 0, has_offset = 0;
+  const double scale = band.GetScale(&has_scale), offset = band.GetOffset(&has_offset);
+  if ((has_scale != 0 && scale != 1.0) || (has_offset != 0 && offset != 0.0)) return;
+  for (const char* key : {"actual_range", "valid_range"}) {
+    const std::vector<double> v = numbers_in(item(band, key));
+    if (v.size() == 2 && std::isfinite(v[0]) && std::isfinite(v[1]) && v[0] <= v[1]) {
+      r.stated_min = v[0], r.stated_max = v[1], r.stated_from = key;
+      return;
+    }
+  }
+  const std::vector<double> lo = numbers_in(item(band, "valid_min")), hi = numbers_in(item(band, "valid_max"));
+  if (lo.size() == 1 && std::isfinite(lo[0])) r.stated_min = lo[0], r.stated_from = "valid_min";
+  if (hi.size() == 1 && std::isfinite(hi[0])) r.stated_max = hi[0], r.stated_from = lo.size() == 1 ? "valid_min/valid_max" : "valid_max";
+}
 
 bool OpenedBathymetry::is_nodata(double value) const {
   return std::isnan(value) || (info.has_nodata && same_as_nodata(value, info.nodata, type));
+}
+
+void OpenedBathymetry::require_plausible(double value, std::size_t column, std::size_t row) const {
+  const std::string cell = info.path + ": the cell at column " + std::to_string(column) + ", row " + std::to_string(row);
+  if (value < stated_min || value > stated_max) {
+    throw InputError(cell + " holds " + general(value) + ", outside the file's own " + stated_from + " " +
+                     general(stated_min) + " .. " + general(stated_max) + ": expected an undamaged file");
+  }
+  require_plausible_depth(value * to_depth, cell);
 }
 
 OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOptions& options) {
@@ -189,6 +240,7 @@ OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOption
   info.has_nodata = has_nodata != 0;
   if (info.has_nodata) info.nodata = nodata;
   r.type = band.GetRasterDataType();
+  read_stated_range(band, r);
 
   if (options.sense == VerticalSense::automatic) {
     std::tie(info.sense_used, info.sense_reason) = detect_sense(*ds, band);
@@ -246,6 +298,8 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
       for (std::size_t i = 0; i < n; ++i) {
         const double v = buf[i];
         if (opened.is_nodata(v)) continue;
+        opened.require_plausible(v, static_cast<std::size_t>(x) + i % static_cast<std::size_t>(w),
+                                 static_cast<std::size_t>(y) + i / static_cast<std::size_t>(w));
         ++info.valid_cells;
         lo = std::min(lo, v);
         hi = std::max(hi, v);

@@ -8,6 +8,7 @@
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -28,6 +29,17 @@ struct OpenedBathymetry {
 
   /// NaN, or the band's NoData value compared at the band's precision.
   bool is_nodata(double value) const;
+
+  /// The values the file says its cells hold (CF actual_range, valid_range,
+  /// valid_min/valid_max, read where the band is not packed); infinite when
+  /// it says nothing.
+  double stated_min = -std::numeric_limits<double>::infinity();
+  double stated_max = std::numeric_limits<double>::infinity();
+  std::string stated_from;  ///< the attribute the range came from
+  /// InputError naming the cell when a valid cell's value cannot be true: off
+  /// the file's own stated range, or a depth no sea has (deeper than 11 100 m,
+  /// higher than 9000 m). A flipped byte in uncompressed data shows only so.
+  void require_plausible(double value, std::size_t column, std::size_t row) const;
 };
 
 /// Opens and checks the raster as inspect_bathymetry does (same InputErrors).

@@ -11,6 +11,8 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/plausible_depth.hpp"
+#include "deepguide/world/s57_unknown_objects.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;
@@ -93,7 +95,10 @@ class ToFrame {
       case wkbPoint: {
         const OGRPoint& p = *g.toPoint();
         f.points.push_back(point(p.getX(), p.getY(), where));
-        if (f.cls == "SOUNDG") f.point_depths.push_back(p.getZ());
+        if (f.cls == "SOUNDG") {
+          require_plausible_depth(p.getZ(), where + " (a sounding)");
+          f.point_depths.push_back(p.getZ());
+        }
         break;
       }
       case wkbLineString:
@@ -179,6 +184,7 @@ OpenCell open_and_identify(const EncCellFiles& files, bool apply_updates, OGREnv
                      ": expected update files GDAL's S57 driver can apply to " + shown(files.base) +
                      ", got a damaged update" + (why.empty() ? std::string() : " (" + why + ")"));
   }
+  refuse_unknown_object_classes(*oc.ds, shown(files.base));
   EncCell& c = oc.cell;
   c.path = files.base;
   bool has_dsid = false;
@@ -271,6 +277,9 @@ void read_features(OpenCell& oc, const ToFrame& to_frame, const EncReadRequest& 
       ef.drval1 = real_field(*f, "DRVAL1");
       ef.drval2 = real_field(*f, "DRVAL2");
       ef.valsou = real_field(*f, "VALSOU");
+      for (const auto& [field, value] : {std::pair{"DRVAL1", ef.drval1}, {"DRVAL2", ef.drval2}, {"VALSOU", ef.valsou}}) {
+        if (!std::isnan(value)) require_plausible_depth(value, where + " " + field);
+      }
       ef.watlev = int_field(*f, "WATLEV");
       ef.catwrk = int_field(*f, "CATWRK");
       ef.expsou = int_field(*f, "EXPSOU");

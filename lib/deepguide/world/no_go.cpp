@@ -305,6 +305,8 @@ NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const N
         if (raster.is_nodata(v)) {
           no_go = options.nodata_is_no_go;
         } else {
+          raster.require_plausible(v, static_cast<std::size_t>(x) + i % static_cast<std::size_t>(w),
+                                   static_cast<std::size_t>(y) + i / static_cast<std::size_t>(w));
           const double depth = v * raster.to_depth;
           no_go = depth <= 0.0 || depth < limit;
         }

@@ -12,6 +12,8 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/plausible_depth.hpp"
+#include "deepguide/world/s57_unknown_objects.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;
@@ -40,6 +42,7 @@ GDALDatasetUniquePtr open_cell(const std::string& path, bool apply_updates) {
     throw InputError(path + ": expected an S-57 ENC cell GDAL's S57 driver can read" +
                      (why.empty() ? std::string(", got a file it does not recognise") : ", got: " + why));
   }
+  refuse_unknown_object_classes(*ds, path);
   return ds;
 }
 
@@ -108,13 +111,19 @@ S57Summary summarize_s57(const std::string& path, bool apply_updates) {
         const int k = std::atoi(zoc.c_str());
         ++s.zoc_areas[k >= 1 && k <= 6 ? letters[k - 1] : "unknown"];
       } else if (name == "DEPARE") {
-        if (const auto d1 = real_field(*f, "DRVAL1")) min_max(s.depare_min_m, s.depare_max_m, *d1);
-        if (const auto d2 = real_field(*f, "DRVAL2")) min_max(s.depare_min_m, s.depare_max_m, *d2);
+        const std::string where = path + ": " + name + "/" + string_field(*f, "RCID");
+        for (const char* field : {"DRVAL1", "DRVAL2"}) {
+          if (const auto d = real_field(*f, field)) {
+            require_plausible_depth(*d, where + " " + field);
+            min_max(s.depare_min_m, s.depare_max_m, *d);
+          }
+        }
       } else if (name == "SOUNDG" && g != nullptr) {
         // Without SPLIT_MULTIPOINT a SOUNDG feature is a 3-D multipoint whose
         // z is the sounding's depth (m, positive down).
         auto add = [&](const OGRPoint& p) {
           ++s.soundings;
+          require_plausible_depth(p.getZ(), path + ": " + name + "/" + string_field(*f, "RCID") + " (a sounding)");
           min_max(s.sounding_min_m, s.sounding_max_m, p.getZ());
         };
         if (wkbFlatten(g->getGeometryType()) == wkbMultiPoint) {
