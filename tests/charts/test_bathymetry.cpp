@@ -8,6 +8,7 @@
 #include <ogr_spatialref.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -15,6 +16,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/bathymetry.hpp"
+#include "deepguide/world/current_field.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {
@@ -69,6 +71,25 @@ TEST(BathymetryDamaged, ACellOutsideTheFilesOwnRangeIsRefused) {
   bytes[at] = static_cast<char>(static_cast<unsigned char>(bytes[at]) ^ 0x40);
   const std::string bad = tmp.write("bad.nc", bytes);
   expect_one_line_error([&] { inspect_bathymetry(bad); }, "outside the file's own actual_range -5475 .. -89");
+}
+
+// A classic header whose counts are damaged: the netCDF library, handed a
+// HYCOM file mutated so, allocated 12.8 GB and took 56 s to refuse it (found
+// by fuzz/fuzz_current_nc). The header walk refuses before GDAL opens it.
+TEST(BathymetryDamaged, ANetcdfHeaderWithAHugeCountIsRefusedBeforeGdalReadsIt) {
+  std::string header("CDF\x01", 4);
+  auto u32 = [&](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) header.push_back(static_cast<char>((v >> shift) & 0xff));
+  };
+  u32(0);                      // numrecs
+  u32(0), u32(0);              // no dimensions
+  u32(0x0C), u32(1);           // one global attribute
+  u32(1), header += std::string("a\0\0\0", 4);  // its name, padded to 4 bytes
+  u32(2), u32(0x7fffffffu);    // char, 2^31 - 1 of them (the file ends here)
+  test::ScratchDir tmp;
+  const std::string path = tmp.write("huge.nc", header);
+  expect_one_line_error([&] { inspect_bathymetry(path); }, "expected a readable NetCDF classic header");
+  expect_one_line_error([&] { load_current_field(path); }, "an attribute of 2147483647 values");
 }
 
 // GDAL 3.6 rescans a cut ESRI ASCII grid for ever (more than 600 s for

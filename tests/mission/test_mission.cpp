@@ -363,4 +363,20 @@ TEST(Mission, ASecondYamlDocumentIsRefusedNotIgnored) {
   std::filesystem::create_directories(dir.path() / "suite");
   dir.write("suite/suite.yaml", "name: s\n---\nname: t\n");
   EXPECT_THROW(read_suite(dir.file("suite")), InputError);
+  // A second document after an empty one is still found.
+  EXPECT_THROW(read_mission(dir.write("three.yaml", mission + "---\n---\nmanoeuvres: []\n")), InputError);
+}
+
+TEST(Mission, AStrayCommaIsOneLineNotAllTheMemory) {
+  // yaml-cpp 0.7's LoadAll loops on "," outside a flow collection, adding
+  // empty documents until memory runs out (found by fuzz/fuzz_suite_yaml).
+  ScratchDir dir;
+  for (const char* text : {", x", ",\n", "# a comment\n, `deepguide evaluate` makes"}) {
+    const std::string path = dir.write("comma.yaml", text);
+    const std::string e = error_of(path);
+    EXPECT_NE(e.find("comma.yaml"), std::string::npos) << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+    EXPECT_THROW(parse_vehicle_yaml(text, "v.yaml"), InputError);
+    EXPECT_THROW(parse_scenario_yaml(text, "s.yaml", "."), InputError);
+  }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <yaml-cpp/eventhandler.h>
 
 namespace deepguide {
 
@@ -27,15 +28,58 @@ std::string line_of(const YAML::Node& node) {
   return m.line >= 0 ? "line " + std::to_string(m.line + 1) : std::string();
 }
 
+namespace {
+
+// Whether a document holds anything, and where it starts.
+class DocumentProbe : public YAML::EventHandler {
+ public:
+  bool content = false;
+  YAML::Mark at;
+  void OnDocumentStart(const YAML::Mark& mark) override { at = mark; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { at = content ? at : mark; }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { hit(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t, const std::string&) override { hit(mark); }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    hit(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    hit(mark);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void hit(const YAML::Mark& mark) {
+    if (!content) at = mark;
+    content = true;
+  }
+};
+
+}  // namespace
+
 YAML::Node load_one_document(const std::string& text, const std::string& source) {
-  const std::vector<YAML::Node> docs = YAML::LoadAll(text);
-  for (std::size_t i = 1; i < docs.size(); ++i) {
-    if (!docs[i].IsNull()) {
-      throw input_error({source, line_of(docs[i]), ""}, "one YAML document",
+  // Not YAML::LoadAll: yaml-cpp 0.7 loops on a stray "," outside a flow
+  // collection, adding empty documents until memory runs out (yaml-cpp
+  // issue 1040, fixed upstream by stopping at an empty one; found by
+  // fuzz/fuzz_suite_yaml). The documents after the first are walked as
+  // events, and the walk ends at an empty document that does not move on.
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentProbe first;
+  if (!parser.HandleNextDocument(first)) return YAML::Node();
+  int last_empty_at = -1;
+  for (int k = 1; k < 100000; ++k) {
+    DocumentProbe next;
+    if (!parser.HandleNextDocument(next)) break;
+    if (next.content) {
+      throw input_error({source, "line " + std::to_string(next.at.line + 1), ""}, "one YAML document",
                         "a second one (after ---), which would be ignored");
     }
+    if (next.at.pos == last_empty_at) break;  // stuck: the parser no longer consumes the text
+    last_empty_at = next.at.pos;
   }
-  return docs.empty() ? YAML::Node() : docs.front();
+  return YAML::Load(text);
 }
 
 bool Range::holds(double v) const { return std::isfinite(v) && (lo_closed ? v >= lo : v > lo) && v <= hi; }

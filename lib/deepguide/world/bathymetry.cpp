@@ -35,6 +35,8 @@ GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOption
   std::vector<const char*> oo;
   for (const auto& o : options.open_options) oo.push_back(o.c_str());
   oo.push_back(nullptr);
+  // A netCDF classic header is walked before GDAL reads it (current_field.cpp says why).
+  if (!virtual_file) require_complete_netcdf(path);
   GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, oo.data());
   if (!ds || ds->GetRasterCount() == 0) {
     const std::string why = gdal::QuietErrors::last_message();
