@@ -129,6 +129,9 @@ void register_render_identification(CLI::App& render) {
     if (!o->title.empty()) figure.map.title = o->title;
     render_identification_figure(figure, o->output);
     std::printf("wrote            %s\n  %s\n", o->output.c_str(), identification_summary(figure.run).c_str());
+    std::fflush(stdout);
+    // The figure shows where it failed; the exit says so as identify's does.
+    if (!figure.run.failure.empty()) throw ManoeuvreError(o->scenario + ": " + figure.run.failure);
   });
 }
 

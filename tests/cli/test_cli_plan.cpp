@@ -389,6 +389,8 @@ TEST(CliPlanQuadtree, BadOptionsAndAWalledInVehicle) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
       {" --graph quadtree --min-cell 0", {"--min-cell", "> 0"}},
       {" --graph quadtree --min-cell -3", {"--min-cell", "-3"}},
+      // Cells wider than half the 1.8 km trip: it became a 314 km route through far cell centres.
+      {" --graph quadtree --min-cell 1e5", {"--min-cell", "at most half the distance from start to goal", "100000"}},
       {" --smooth", {"--smooth", "quadtree"}},
       {" --replan-events '" + no_distance + "'", {"--replan-events", "quadtree"}},
       {" --graph quadtree --replan-events '" + no_distance + "'", {"nd.csv", "line 2", "detected_at_m"}},
@@ -720,9 +722,13 @@ TEST(CliPlan, AFullDiskIsAnErrorAndLeavesNoFile) {
                           std::string(std::istreambuf_iterator<char>(err), {}));
   };
   std::filesystem::create_directories(dir.path() / "w");
+  std::filesystem::create_directories(dir.path() / "chart");
+  ASSERT_EQ(run_cli("chart synth -o '" + dir.file("chart") + "'").exit_code, 0);
+  const std::string chart = dir.file("chart/sample_chart.tif");
   const auto w = [&](const std::string& name) { return (dir.path() / "w" / name).string(); };
   const std::vector<std::pair<int, std::string>> cases = {
       {1, "obstacles convert '" + kSample + "' '" + w("o.geojson") + "'"},
+      {1, "chart nogo '" + chart + "' --depth 10 -o '" + w("n.geojson") + "'"},
       {1, "plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + w("r.geojson") + "'"},
       {1, "plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + w("r.gpx") + "'"},
       {16, "mission export '" + mission + "' -o '" + w("m.gpx") + "'"},

@@ -412,4 +412,22 @@ TEST(RenderIdentificationCli, WritesTheFigureAndRefusesBadInputInOneLine) {
   EXPECT_EQ(bad_mode.exit_code, 1);
   EXPECT_NE(bad_mode.err.find("--mode: expected align or around, got 'spin'"), std::string::npos) << bad_mode.err;
   EXPECT_FALSE(std::filesystem::exists(tmp.file("b.png")));
+  // A manoeuvre identify calls failed (a 3.5 m/s current, the vehicle's top
+  // speed 3.09 m/s) is drawn, and the exit and the line say so as identify's do.
+  std::ifstream in(source_file("data/scenarios/align_in_current.yaml"));
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t at = text.find("current: \"1.0,100\"");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("current: \"1.0,100\"").size(), "current: \"3.5,100\"");
+  const std::size_t vehicle = text.find("../vehicles/deepc.yaml");  // relative to the scenario's folder
+  ASSERT_NE(vehicle, std::string::npos);
+  text.replace(vehicle, std::string("../vehicles/deepc.yaml").size(), source_file("data/vehicles/deepc.yaml"));
+  const std::string strong = tmp.write("strong.yaml", text);
+  const auto identify = run_cli("identify '" + strong + "'");
+  const auto drawn = run_cli("render identification '" + strong + "' -o '" + tmp.file("s.png") + "'");
+  EXPECT_EQ(identify.exit_code, 3) << identify.err;
+  EXPECT_EQ(drawn.exit_code, identify.exit_code) << drawn.err;
+  EXPECT_EQ(drawn.err, identify.err);
+  EXPECT_NE(drawn.err.find("top speed (3.09 m/s)"), std::string::npos) << drawn.err;
+  EXPECT_TRUE(std::filesystem::exists(tmp.file("s.png")));
 }

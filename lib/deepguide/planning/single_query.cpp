@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
@@ -73,6 +74,14 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     // start-goal box widened by half their distance (at least ten cells).
     PlannerOptions boxed = options;
     QuadtreeOptions& q = boxed.quadtree;
+    // Cells wider than half the trip cannot tell the water between start and
+    // goal apart: the route runs through centres far off (a 1.8 km trip at
+    // --min-cell 1e5 became 314 km, every leg safe, the route absurd).
+    const double widest = 0.5 * (g - s).norm();
+    if (q.min_cell_m > widest && widest > 0.0) {
+      throw InputError("--min-cell: expected at most half the distance from start to goal (" + fixed(widest, 1) +
+                       " m), got " + general(q.min_cell_m) + " m: larger cells cannot resolve the water between them");
+    }
     if (!((q.area_max - q.area_min).minCoeff() > 0.0)) {
       const double pad = std::max(0.5 * (g - s).norm(), 10.0 * q.min_cell_m);
       q.area_min = s.cwiseMin(g) - Vec2::Constant(pad);
