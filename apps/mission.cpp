@@ -86,7 +86,7 @@ void print_plan(const LoadedMission& l, const PlannedMission& planned, const Mis
     std::cout << j.dump(2) << "\n";
     return;
   }
-  std::printf("mission          %s (%s)\n", m.name.c_str(), m.frame.id().c_str());
+  std::printf("mission          %s (%s)\n", printable(m.name, 120).c_str(), m.frame.id().c_str());
   std::printf("plan             %zu basic manoeuvres, %.0f m, %s (before: %zu, %.0f m, %s)\n",
               planned.plan.basics.size(), planned.plan.length_m, clock_text(plan_duration(planned.plan)).c_str(),
               l.plan.basics.size(), l.plan.length_m, clock_text(plan_duration(l.plan)).c_str());
@@ -157,7 +157,7 @@ void throw_if_beaten(const std::string& file, const LoadedMission& l, const std:
   std::snprintf(where, sizeof where, "%.0f m along (%.5f, %.5f)", b.along_m, ll.x(), ll.y());
   throw NoRouteError(file + ": the " + fixed(l.env.current.norm(), 2) + " m/s current beats the vehicle on " +
                      std::to_string(beaten.size()) + " basic manoeuvre(s); the first, in '" +
-                     l.mission.manoeuvres[l.plan.basics[b.basic].source].name + "' " + where + ", at " +
+                     printable(l.mission.manoeuvres[l.plan.basics[b.basic].source].name) + "' " + where + ", at " +
                      fixed(l.plan.basics[b.basic].speed_mps, 2) + " m/s through the water: no heading holds it");
 }
 }  // namespace
@@ -228,7 +228,8 @@ void register_mission(CLI::App& app) {
       throw_if_beaten(o->mission, l, beaten);
       return;
     }
-    std::printf("mission          %s (%s, %s)\n", m.name.c_str(), o->mission.c_str(), m.frame.id().c_str());
+    std::printf("mission          %s (%s, %s)\n", printable(m.name, 120).c_str(), printable(o->mission, 240).c_str(),
+                m.frame.id().c_str());
     std::printf("manoeuvres       %zu complex, %zu basic; %.0f m, %.0f s (%.1f h) at their speeds and holds\n",
                 m.manoeuvres.size(), plan.basics.size(), plan.length_m, time_s, time_s / 3600.0);
     std::printf("environment      %zu obstacle(s), %s\n", env.obstacles.size(),
@@ -243,7 +244,7 @@ void register_mission(CLI::App& app) {
         if (count++ == 0) from = b.start_m;
         length += b.length_m;
       }
-      std::printf("%4zu %-40s %6zu %10.0f %9.0f\n", i + 1, (m.manoeuvres[i].type + " '" + m.manoeuvres[i].name + "'").substr(0, 40).c_str(),
+      std::printf("%4zu %-40s %6zu %10.0f %9.0f\n", i + 1, (m.manoeuvres[i].type + " '" + printable(m.manoeuvres[i].name) + "'").substr(0, 40).c_str(),
                   count, from, length);
     }
     if (!m.current_file.empty()) {
@@ -258,7 +259,7 @@ void register_mission(CLI::App& app) {
       const Vec2 ll = lonlat(b.where);
       std::printf("CURRENT          %.0f m along, %s (basic %zu) at %.5f, %.5f: the %.2f m/s current beats the vehicle's "
                   "%.2f m/s; no heading holds it\n",
-                  b.along_m, m.manoeuvres[plan.basics[b.basic].source].name.c_str(), b.basic, ll.x(), ll.y(),
+                  b.along_m, printable(m.manoeuvres[plan.basics[b.basic].source].name).c_str(), b.basic, ll.x(), ll.y(),
                   env.current.norm(), plan.basics[b.basic].speed_mps);
     }
     if (conflicts.empty()) {
@@ -277,7 +278,7 @@ void register_mission(CLI::App& app) {
                                                         : std::string(kind_name(b.kind));
       std::printf("%9.0f %8s  %-28s %-10s %-24s %7.1f  %.5f, %.5f\n", c.along_m,
                   clock_text(position_at(plan, c.along_m).time_s).c_str(),
-                  m.manoeuvres[b.source].name.substr(0, 28).c_str(), basics.c_str(), c.with.substr(0, 24).c_str(),
+                  printable(m.manoeuvres[b.source].name, 28).c_str(), basics.c_str(), printable(c.with, 24).c_str(),
                   c.depth_m, ll.x(), ll.y());
     }
     for (const Resolution* r : unavoidable) {
@@ -409,7 +410,8 @@ void register_mission_simulate(CLI::App& mission) {
       std::cout << j.dump(2) << "\n";
     } else {
       std::printf("mission          %s: %s in %s, %.0f m sailed; %zu unknown object(s) found, %zu replan(s)\n",
-                  l.mission.name.c_str(), run.completed ? "completed" : "NOT completed", clock_text(run.time_s).c_str(),
+                  printable(l.mission.name, 120).c_str(), run.completed ? "completed" : "NOT completed",
+                  clock_text(run.time_s).c_str(),
                   run.length_m, run.detected.size(), run.replans);
       if (std::isfinite(run.min_clearance_m)) {
         std::printf("clearance        %.1f m at least to the footprints of obstacles the vehicle was not above\n", run.min_clearance_m);
@@ -461,7 +463,7 @@ void register_render_mission(CLI::App& render) {
     f.width_px = o->width;
     const MissionPlan& shown = *f.plan;
     char title[256];
-    std::snprintf(title, sizeof title, "%s: %.2f km, %s; %zu conflict(s), %zu resolved", l.mission.name.c_str(),
+    std::snprintf(title, sizeof title, "%s: %.2f km, %s; %zu conflict(s), %zu resolved", printable(l.mission.name, 120).c_str(),
                   shown.length_m / 1000.0, clock_text(plan_duration(shown)).c_str(), planned.resolutions.size(),
                   planned.resolutions.size() - f.unresolved.size());
     f.title = o->title.empty() ? std::string(title) : o->title;

@@ -179,3 +179,20 @@ TEST(CliMission, SimulateSailsTheSampleAndFindsTheObjectNobodyKnew) {
   EXPECT_NE(text.out.find("hold 120 s"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("reached the end"), std::string::npos) << text.out;
 }
+
+TEST(CliMission, HostileNamesArePrintedEscaped) {
+  // A mission and a manoeuvre named with an ANSI escape, a newline and U+202E
+  // (right-to-left override): printed raw, they recoloured the terminal, split
+  // the summary line and reversed what followed.
+  ScratchDir dir;
+  const std::string m = dir.write(
+      "m.yaml", "name: \"evil\\e[31mred\\nline\\u202E\"\ncrs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\n"
+                "manoeuvres:\n  - track: {name: \"leg\\e[2J\", depth_m: 5, speed_kn: 4, waypoints: [{x: 500400, y: 6000000}]}\n");
+  for (const std::string cmd : {"mission check", "mission plan"}) {
+    const auto r = run_cli(cmd + " '" + m + "'");
+    ASSERT_EQ(r.exit_code, 0) << cmd << ": " << r.err;
+    EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << cmd << ": " << r.out;
+    EXPECT_EQ(r.out.find("\xe2\x80\xae"), std::string::npos) << cmd << ": " << r.out;
+    EXPECT_NE(r.out.find("mission          evil\\x1b[31mred\\x0aline\\u202e ("), std::string::npos) << cmd << ": " << r.out;
+  }
+}

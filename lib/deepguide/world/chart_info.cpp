@@ -26,8 +26,6 @@ namespace bg = boost::geometry;
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 void check_options(const ChartInfoOptions& o) {
   if (!std::isnan(o.depth_m) && (!std::isfinite(o.depth_m) || o.depth_m < 0.0)) {
     throw InputError("--depth: expected an operating depth >= 0 m, got " + std::to_string(o.depth_m));

@@ -656,8 +656,9 @@ std::optional<Eigen::Vector2d> sample_native(const CurrentField& f, const Eigen:
     wt = lt->second;
   }
   const std::size_t nx = f.nx(), ny = f.ny();
-  const auto [i, fx] = *lx;
-  const auto [j, fy] = *ly;
+  // Plain names, not structured bindings: clang before 16 cannot capture those in the lambda.
+  const std::size_t i = lx->first, j = ly->first;
+  const double fx = lx->second, fy = ly->second;
   const std::size_t i1 = std::min(i + 1, nx - 1), j1 = std::min(j + 1, ny - 1);
   auto at = [&](const std::vector<double>& c, std::size_t k) -> double {
     const std::size_t b = k * ny * nx;
