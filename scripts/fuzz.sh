@@ -8,6 +8,7 @@
 # inputs, kept in build-fuzz/findings/).
 #   scripts/fuzz.sh [RUNS] [HARNESS...]        e.g. scripts/fuzz.sh 1000000
 #   scripts/fuzz.sh 20000 s57_cell mission_yaml
+#   FUZZ_SECONDS=120 scripts/fuzz.sh 1000000   (each harness stops after 120 s if not done)
 # CI does not run this (it takes hours); it replays the seeds and 1000 seeded
 # mutations per harness through ctest instead (fuzz.* tests).
 set -euo pipefail
@@ -23,7 +24,7 @@ harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
   mapfile -t harnesses < <(ls "$DEEPGUIDE_ROOT"/fuzz/fuzz_*.cpp | sed 's|.*/fuzz_||; s|\.cpp$||')
 fi
-cmake --build "$build" -j "$(nproc)" --target $(printf 'fuzz_%s ' "${harnesses[@]}")
+cmake --build "$build" -j "$(nproc)" --target $(printf 'fuzz_%s ' "${harnesses[@]}") >&2
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -40,7 +41,8 @@ for h in "${harnesses[@]}"; do
   start=$(date +%s)
   status=0
   (cd "$build" && "./fuzz/fuzz_$h" "$corpus" "$seeds" -runs="$runs" -timeout=10 -rss_limit_mb=4096 \
-     -artifact_prefix="$findings/$h-" -print_final_stats=1) >"$log" 2>&1 || status=$?
+     ${FUZZ_SECONDS:+-max_total_time=$FUZZ_SECONDS} -artifact_prefix="$findings/$h-" -print_final_stats=1) \
+     >"$log" 2>&1 || status=$?
   seconds=$(( $(date +%s) - start ))
   done_runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
   found=$(ls "$findings" 2>/dev/null | grep -c "^$h-" || true)

@@ -700,7 +700,10 @@ TEST(CliPlan, NamedPipesAreRefusedNotWaitedOn) {
   for (const std::string& args :
        {"plan --obstacles '" + fifo + "'" + kFromTo, "check route '" + fifo + "' --obstacles '" + kSample + "'",
         "check route '" + rtz + "' --obstacles '" + kSample + "'", "obstacles info '" + fifo + "'",
-        "chart info '" + fifo + "'", "plan --chart '" + fifo + "' --depth 5" + kFromTo}) {
+        "chart info '" + fifo + "'", "plan --chart '" + fifo + "' --depth 5" + kFromTo,
+        // The YAML readers (they refused a pipe before, saying "expected an existing ... file").
+        "mission check '" + fifo + "'", "simulate '" + fifo + "' --method geometric", "identify '" + fifo + "'",
+        "evaluate '" + fifo + "' --methods geometric -o '" + dir.file("ev") + "'"}) {
     const auto r = run_cli(args);
     EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
     EXPECT_NE(r.err.find("expected a file, got a named pipe (FIFO)"), std::string::npos) << args << ": " << r.err;

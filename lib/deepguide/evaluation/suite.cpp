@@ -8,6 +8,7 @@
 #include <random>
 #include <sstream>
 
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
@@ -152,6 +153,7 @@ std::string generated_scenario_id(int k, int count) {
 }
 
 Suite read_suite(const std::string& path) {
+  refuse_special_file(path);
   std::error_code ec;
   Suite suite;
   suite.source = path;

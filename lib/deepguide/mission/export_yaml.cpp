@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
@@ -89,6 +90,7 @@ void write_plan_yaml(const std::string& path, const std::string& destination, co
 
 MissionPlan read_plan_yaml(const std::string& path) {
   std::error_code ec;
+  refuse_special_file(path);
   if (!std::filesystem::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing plan file");
   YAML::Node doc;
   try {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
@@ -293,6 +294,7 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
 
 Mission read_mission(const std::string& path) {
   std::error_code ec;
+  refuse_special_file(path);
   if (!fs::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing mission file");
   const auto size = fs::file_size(path, ec);
   if (ec || size > (4u << 20)) throw input_error({path, "", ""}, "a mission file under 4 MiB", std::to_string(size) + " bytes");

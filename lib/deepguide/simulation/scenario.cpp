@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <sstream>
 
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/geometry/ellipse.hpp"
@@ -512,6 +513,7 @@ Scenario parse_scenario_yaml(const std::string& text, const std::string& source,
 
 Scenario read_scenario_file(const std::string& path) {
   std::error_code ec;
+  refuse_special_file(path);
   if (!fs::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing scenario file");
   const auto size = fs::file_size(path, ec);
   if (ec || size > kMaxScenarioFileBytes) {

@@ -11,6 +11,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 
@@ -282,6 +283,7 @@ VehicleParams parse_vehicle_yaml(const std::string& text, const std::string& sou
 
 VehicleParams read_vehicle_file(const std::string& path) {
   std::error_code ec;
+  refuse_special_file(path);
   if (!std::filesystem::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing vehicle file");
   // A vehicle file is a page of text; refuse anything that cannot be one.
   constexpr std::uintmax_t kMaxBytes = 1 << 20;

@@ -146,12 +146,6 @@ bool is_netcdf_classic(std::ifstream& in) {
   return std::memcmp(magic, "CDF", 3) == 0 && (magic[3] == 1 || magic[3] == 2 || magic[3] == 5);
 }
 
-std::string lower(std::string_view s) {
-  std::string r(s);
-  for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return r;
-}
-
 }  // namespace
 
 void require_complete_netcdf(const std::string& path) {
@@ -166,10 +160,10 @@ void require_complete_netcdf(const std::string& path) {
   }
 }
 
-void require_complete_ascii_grid(const std::string& path) {
+void require_complete_ascii_grid(const std::string& path, std::uint64_t columns, std::uint64_t rows) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return;  // GDAL opened it; whatever it is, its reads decide
-  std::uint64_t cols = 0, rows = 0, numbers = 0, line_no = 0;
+  std::uint64_t numbers = 0, line_no = 0;
   bool in_data = false;
   std::string line;
   while (std::getline(in, line)) {
@@ -182,16 +176,7 @@ void require_complete_ascii_grid(const std::string& path) {
       while (end < line.size() && !std::isspace(static_cast<unsigned char>(line[end]))) ++end;
       const std::string_view token(line.data() + at, end - at);
       at = end;
-      if (!in_data && std::isalpha(static_cast<unsigned char>(token[0]))) {
-        // A header line: KEY VALUE. Only the size matters here.
-        const std::string key = lower(token);
-        while (at < line.size() && std::isspace(static_cast<unsigned char>(line[at]))) ++at;
-        std::uint64_t value = 0;
-        std::from_chars(line.data() + at, line.data() + line.size(), value);
-        if (key == "ncols") cols = value;
-        if (key == "nrows") rows = value;
-        break;
-      }
+      if (!in_data && std::isalpha(static_cast<unsigned char>(token[0]))) break;  // a header line: KEY VALUE
       in_data = true;
       double v = 0;
       const char* first = token.data();
@@ -204,11 +189,10 @@ void require_complete_ascii_grid(const std::string& path) {
       ++numbers;
     }
   }
-  if (cols == 0 || rows == 0) return;  // not a header GDAL's driver took as one: its reads decide
-  if (numbers != cols * rows) {
-    throw InputError(path + ": expected " + std::to_string(cols) + " x " + std::to_string(rows) + " = " +
-                     std::to_string(cols * rows) + " numbers in the ESRI ASCII grid, got " + std::to_string(numbers) +
-                     (numbers < cols * rows ? ": the file is cut short" : ""));
+  if (numbers != columns * rows) {
+    throw InputError(path + ": expected " + std::to_string(columns) + " x " + std::to_string(rows) + " = " +
+                     std::to_string(columns * rows) + " numbers in the ESRI ASCII grid, got " + std::to_string(numbers) +
+                     (numbers < columns * rows ? ": the file is cut short" : ""));
   }
 }
 
@@ -217,7 +201,12 @@ void require_complete_raster(GDALDataset& dataset, const std::string& path) {
   if (driver == nullptr) return;
   const std::string name = driver->GetDescription();
   if (name == "netCDF") require_complete_netcdf(path);
-  if (name == "AAIGrid") require_complete_ascii_grid(path);
+  if (name == "AAIGrid") {
+    // The size GDAL read from the header, not ours: a header with a key twice
+    // or a damaged value must not let a short file through to GDAL's reads.
+    require_complete_ascii_grid(path, static_cast<std::uint64_t>(dataset.GetRasterXSize()),
+                                static_cast<std::uint64_t>(dataset.GetRasterYSize()));
+  }
 }
 
 }  // namespace deepguide

@@ -9,7 +9,7 @@
 //   the file must reach the end of every variable.
 // - ESRI ASCII grid: GDAL 3.6's reader, asked for a row past the end of a file
 //   cut short, rescans and reports for ever (a cut small_crm.asc ran for more
-//   than 600 s). The file must hold ncols x nrows numbers, each a whole number
+//   than 600 s). The file must hold ncols x nrows numbers (as GDAL read them), each a whole number
 //   token; a flipped byte that turns a digit into a letter is refused here.
 //
 // What no reader can see is listed in docs/RELIABILITY.md: a flipped byte in
@@ -17,6 +17,7 @@
 
 #include <gdal_priv.h>
 
+#include <cstdint>
 #include <string>
 
 namespace deepguide {
@@ -25,9 +26,10 @@ namespace deepguide {
 /// header says; other formats (netCDF-4 among them) pass.
 void require_complete_netcdf(const std::string& path);
 
-/// InputError naming the file and the line when an ESRI ASCII grid lacks
-/// numbers its header promises, or holds a token that is not a number.
-void require_complete_ascii_grid(const std::string& path);
+/// InputError naming the file and the line when an ESRI ASCII grid holds
+/// other than `columns` x `rows` numbers (the size GDAL read from its
+/// header), or a token that is not a number.
+void require_complete_ascii_grid(const std::string& path, std::uint64_t columns, std::uint64_t rows);
 
 /// The check for the dataset's driver (netCDF, AAIGrid); others pass.
 void require_complete_raster(GDALDataset& dataset, const std::string& path);
