@@ -80,6 +80,24 @@ TEST(ObstacleErrors, ZeroOrNegativeAxis) {
   expect_error(error_of({neg}), {neg.c_str(), "feature 1", "semi_minor_m", "> 0", "got -1"});
 }
 
+// Two columns for one coordinate ("x" and "lon"), or a column named twice:
+// GDAL's CSV driver crashed on the first feature (found by
+// fuzz/fuzz_obstacles_csv), and otherwise read one of them without a word.
+TEST(ObstacleErrors, CsvColumnsThatLeaveACoordinateUnclearAreRefused) {
+  ScratchDir dir;
+  const std::string both = dir.write("both.csv", "id,x,lon,lat,semi_major_m\na,10,54,11,5\n");
+  expect_error(error_of({both}), {"both.csv", "line 1", "one column of x/lon/long/longitude/easting", "x and lon"});
+  const std::string lat = dir.write("lat.csv", "id,lon,lat,Latitude,semi_major_m\na,10,54,54.1,5\n");
+  expect_error(error_of({lat}), {"lat.csv", "y/lat/latitude/northing", "lat and latitude"});
+  const std::string twice = dir.write("twice.csv", "id,lon,lat,lon,semi_major_m\na,10,54,11,5\n");
+  expect_error(error_of({twice}), {"twice.csv", "line 1", "each column once", "'lon' as columns 2 and 4"});
+  const std::string wkt = dir.write("wkt.csv", "WKT,geometry,id\n\"POINT (10 54)\",\"POINT (11 54)\",a\n");
+  expect_error(error_of({wkt}), {"wkt.csv", "one column of wkt/geometry/geom"});
+  // One of each reads.
+  const std::string ok = dir.write("ok.csv", "id,Longitude,LAT,semi_major_m\na,10,54,5\n");
+  EXPECT_EQ(load_obstacles({ok}).obstacles.ellipses.size(), 1u);
+}
+
 TEST(ObstacleErrors, HugeAxesAndHeadingsAreRefused) {
   // Finite but absurd: they printed inf/nan extents with exit 0.
   ScratchDir dir;

@@ -254,6 +254,49 @@ struct SourceRead {
   std::vector<GeoRecord> records;
 };
 
+// The CSV columns coordinates come from (GDAL's X/Y/GEOM_POSSIBLE_NAMES).
+const std::vector<std::string> kCsvX = {"x", "lon", "long", "longitude", "easting"};
+const std::vector<std::string> kCsvY = {"y", "lat", "latitude", "northing"};
+const std::vector<std::string> kCsvGeometry = {"wkt", "geometry", "geom"};
+
+std::string joined(const std::vector<std::string>& names, const char* sep) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : sep) + n;
+  return out;
+}
+
+// A CSV whose header names a column twice, or two columns of one coordinate
+// ("x" and "lon"): GDAL reads one of them without a word, and its CSV driver
+// crashed on the first feature (found by fuzz/fuzz_obstacles_csv). Read
+// plainly, without the coordinate options, the header is checked first.
+void refuse_ambiguous_csv_columns(const std::string& path) {
+  const char* const drivers[] = {"CSV", nullptr};
+  const GDALDatasetUniquePtr plain = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers);
+  if (!plain || plain->GetLayerCount() < 1) return;  // the real open says what is wrong
+  const OGRFeatureDefn* defn = plain->GetLayer(0)->GetLayerDefn();
+  std::vector<std::string> seen;
+  for (int i = 0; i < defn->GetFieldCount(); ++i) {
+    std::string name = defn->GetFieldDefn(i)->GetNameRef();
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+    const auto first = std::find(seen.begin(), seen.end(), name);
+    if (first != seen.end()) {
+      throw InputError(path + ": line 1: expected each column once, got '" + printable(name) + "' as columns " +
+                       std::to_string(first - seen.begin() + 1) + " and " + std::to_string(i + 1));
+    }
+    seen.push_back(name);
+  }
+  for (const auto* names : {&kCsvX, &kCsvY, &kCsvGeometry}) {
+    std::vector<std::string> present;
+    for (const std::string& n : seen) {
+      if (std::find(names->begin(), names->end(), n) != names->end()) present.push_back(n);
+    }
+    if (present.size() > 1) {
+      throw InputError(path + ": line 1: expected one column of " + joined(*names, "/") + ", got " +
+                       joined(present, " and ") + ": which one holds the coordinate is not known");
+    }
+  }
+}
+
 SourceRead read_source(const std::string& path, const ObstacleReadOptions& options) {
   SourceRead result;
   result.info.path = path;
@@ -261,14 +304,15 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
   if (!fs::exists(path, ec)) throw InputError(path + ": expected an existing file, found none");
 
   gdal::QuietErrors quiet;
+  std::vector<std::string> csv_options;
   std::vector<const char*> open_options;
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
-    open_options = {"X_POSSIBLE_NAMES=x,lon,long,longitude,easting",
-                    "Y_POSSIBLE_NAMES=y,lat,latitude,northing",
-                    "GEOM_POSSIBLE_NAMES=wkt,geometry,geom",
-                    "KEEP_GEOM_COLUMNS=NO"};
+    refuse_ambiguous_csv_columns(path);
+    csv_options = {"X_POSSIBLE_NAMES=" + joined(kCsvX, ","), "Y_POSSIBLE_NAMES=" + joined(kCsvY, ","),
+                   "GEOM_POSSIBLE_NAMES=" + joined(kCsvGeometry, ","), "KEEP_GEOM_COLUMNS=NO"};
+    for (const std::string& o : csv_options) open_options.push_back(o.c_str());
   }
   open_options.push_back(nullptr);
   GDALDatasetUniquePtr ds =
