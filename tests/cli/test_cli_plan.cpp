@@ -690,6 +690,23 @@ TEST(CliPlan, EscapeFromInsideAnObstacleLeavesItAndSaysSo) {
   }
 }
 
+TEST(CliPlan, GdalsOwnErrorLinesAreNeverPrinted) {
+  // GDAL printed "ERROR 1: XML parsing of JML file failed ..." to stderr
+  // wherever no quiet handler was active (a layer read after the open); the
+  // libFuzzer soak's input also showed that GDAL's OpenJUMP driver took a
+  // damaged *.000 cell, which is now read by the S57 driver alone.
+  ScratchDir dir;
+  const std::string xml = "<JCSDataFile><JCSGMLInputTemplate></JCSDataFile>\n";
+  for (const std::string name : {"bad.jml", "CELL.000"}) {
+    const auto r = run_cli("chart info '" + dir.write(name, xml) + "'");
+    EXPECT_EQ(r.err.find("ERROR"), std::string::npos) << name << ": " << r.err;
+    if (name == "CELL.000") {
+      EXPECT_EQ(r.exit_code, 1) << r.err;
+      EXPECT_NE(r.err.find("expected an S-57 ENC cell"), std::string::npos) << r.err;
+    }
+  }
+}
+
 TEST(CliPlan, NamedPipesAreRefusedNotWaitedOn) {
   // GDAL and libxml2 block on a FIFO until a writer comes: every reader
   // refuses one at once, naming it (the test would hang otherwise).

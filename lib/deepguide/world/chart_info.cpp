@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/geometry/safety_zone.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/bathymetry.hpp"
@@ -233,10 +234,17 @@ GDALDatasetUniquePtr open_chart(const std::string& path) {
   if (fs::is_directory(path, ec)) throw InputError(path + ": expected a chart file, got a folder");
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
-  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY);
+  // A *.000 file is an S-57 base cell, read by the S57 driver alone: a
+  // damaged cell must not be taken up by another driver as another format
+  // (the soak fed GDAL's OpenJUMP driver a cell with XML in it, and it leaked).
+  const char* const s57_only[] = {"S57", nullptr};
+  const bool cell_name = ascii_lower(fs::path(path).extension().string()) == ".000";
+  GDALDatasetUniquePtr ds =
+      gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, cell_name ? s57_only : nullptr);
   if (!ds) {
     const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(path + ": expected a chart GDAL can open (raster, S-57 cell or vector file), got " +
+    throw InputError(path + (cell_name ? ": expected an S-57 ENC cell GDAL's S57 driver can read, got "
+                                       : ": expected a chart GDAL can open (raster, S-57 cell or vector file), got ") +
                      (why.empty() ? std::string("a file no driver recognises") : printable(why, 160)));
   }
   return ds;

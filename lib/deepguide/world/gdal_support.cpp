@@ -36,11 +36,23 @@ void silence_hdf5_diagnostics() {
 
 }  // namespace
 
+namespace {
+thread_local std::string g_last_message;
+
+void CPL_STDCALL remember_error(CPLErr level, CPLErrorNum, const char* msg) {
+  if (level >= CE_Failure && msg != nullptr) g_last_message = msg;
+}
+}  // namespace
+
 void ensure_registered() {
   static std::once_flag once;
   std::call_once(once, [] {
     GDALAllRegister();
     silence_hdf5_diagnostics();
+    // GDAL prints "ERROR 1: ..." to stderr where no QuietErrors is active
+    // (a layer read after the open, say); ours is the one line the user
+    // sees, so GDAL's messages are only ever kept, never printed.
+    CPLSetErrorHandler(remember_error);
   });
 }
 
@@ -50,14 +62,6 @@ GDALDatasetUniquePtr open_dataset(const std::string& path, unsigned flags, const
   ensure_registered();
   return GDALDatasetUniquePtr(GDALDataset::Open(path.c_str(), flags, drivers, open_options, nullptr));
 }
-
-namespace {
-thread_local std::string g_last_message;
-
-void CPL_STDCALL remember_error(CPLErr level, CPLErrorNum, const char* msg) {
-  if (level >= CE_Failure && msg != nullptr) g_last_message = msg;
-}
-}  // namespace
 
 QuietErrors::QuietErrors() {
   g_last_message.clear();
