@@ -17,6 +17,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/raster_completeness.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {
@@ -90,6 +91,28 @@ TEST(BathymetryDamaged, ANetcdfHeaderWithAHugeCountIsRefusedBeforeGdalReadsIt) {
   const std::string path = tmp.write("huge.nc", header);
   expect_one_line_error([&] { inspect_bathymetry(path); }, "expected a readable NetCDF classic header");
   expect_one_line_error([&] { load_current_field(path); }, "an attribute of 2147483647 values");
+}
+
+// The format's one unpadded case: a single record variable of shorts. Its
+// records lie 2 bytes apart, so 10 records end 20 bytes after its start
+// (the walk once asked for 4 bytes a record and refused such a file).
+TEST(BathymetryDamaged, ASingleRecordVariableIsNotPadded) {
+  std::string nc("CDF\x01", 4);
+  auto u32 = [&](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) nc.push_back(static_cast<char>((v >> shift) & 0xff));
+  };
+  u32(10);                                   // numrecs
+  u32(0x0A), u32(1), u32(4), nc += "time", u32(0);  // the record dimension
+  u32(0), u32(0);                            // no global attributes
+  u32(0x0B), u32(1), u32(1), nc += std::string("x\0\0\0", 4);
+  u32(1), u32(0);                            // x(time)
+  u32(0), u32(0);                            // no attributes
+  u32(3), u32(4), u32(80);                   // short, vsize, begin
+  ASSERT_EQ(nc.size(), 80u);
+  nc += std::string(20, '\x01');            // 10 shorts
+  test::ScratchDir tmp;
+  EXPECT_NO_THROW(require_complete_netcdf(tmp.write("x.nc", nc)));
+  expect_one_line_error([&] { require_complete_netcdf(tmp.write("x.nc", nc.substr(0, 99))); }, "up to byte 100");
 }
 
 // GDAL 3.6 rescans a cut ESRI ASCII grid for ever (more than 600 s for

@@ -27,6 +27,7 @@
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/enc_sea_floor.hpp"
+#include "deepguide/world/iso8211_check.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
@@ -548,6 +549,24 @@ TEST(EncCells, FlippedBytesGdalTookAsDataAreRefused) {
     expect_one_line_error([&] { chart_info((dir / "US4MD81M.000").string()); }, "US4MD81M.002",
                           "update instruction 250 (S-57 has 1 insert, 2 delete, 3 modify)");
   }
+}
+
+// ISO 8211 writes "00000" for the length of a record over 99 999 bytes (a
+// long edge of a real cell); its directory gives where it ends.
+TEST(EncCells, ARecordWithLengthZeroIsWalkedByItsDirectory) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(chesapeake, kChesapeake);
+  ScratchDir tmp;
+  std::ifstream in(fs::path(chesapeake).parent_path() / "US4MD81M.003", std::ios::binary);
+  std::string b((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t second = static_cast<std::size_t>(std::stoi(b.substr(0, 5)));  // the first data record
+  ASSERT_LT(second + 5, b.size());
+  b.replace(second, 5, "00000");
+  const std::string path = (tmp.path() / "US4MD81M.003").string();
+  std::ofstream(path, std::ios::binary) << b;
+  EXPECT_EQ(s57_structure_problem(path, true), "");
+  b.resize(b.size() - 3);  // and cut short it is still seen
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << b;
+  EXPECT_NE(s57_structure_problem(path, true), "");
 }
 
 TEST(EncCells, BrokenInputIsOneLineEach) {

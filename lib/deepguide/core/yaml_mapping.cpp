@@ -76,7 +76,12 @@ YAML::Node load_one_document(const std::string& text, const std::string& source)
       throw input_error({source, "line " + std::to_string(next.at.line + 1), ""}, "one YAML document",
                         "a second one (after ---), which would be ignored");
     }
-    if (next.at.pos == last_empty_at) break;  // stuck: the parser no longer consumes the text
+    if (next.at.pos == last_empty_at) {
+      // Stuck: the parser no longer consumes the text (a stray ","), and
+      // whatever follows would be dropped without a word.
+      throw input_error({source, "line " + std::to_string(next.at.line + 1), ""}, "YAML the parser can read to the end",
+                        "text it cannot read past (a stray ',' outside [ ] or { }?)");
+    }
     last_empty_at = next.at.pos;
   }
   return YAML::Load(text);

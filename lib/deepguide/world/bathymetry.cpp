@@ -135,7 +135,9 @@ namespace detail {
 void read_stated_range(GDALRasterBand& band, OpenedBathymetry& r) {
   int has_scale = 0, has_offset = 0;
   const double scale = band.GetScale(&has_scale), offset = band.GetOffset(&has_offset);
-  if ((has_scale != 0 && scale != 1.0) || (has_offset != 0 && offset != 0.0)) return;
+  if (has_scale != 0) r.unpack_scale = scale;
+  if (has_offset != 0) r.unpack_offset = offset;
+  if (r.unpack_scale != 1.0 || r.unpack_offset != 0.0) return;
   for (const char* key : {"actual_range", "valid_range"}) {
     const std::vector<double> v = numbers_in(item(band, key));
     if (v.size() == 2 && std::isfinite(v[0]) && std::isfinite(v[1]) && v[0] <= v[1]) {
@@ -154,11 +156,14 @@ bool OpenedBathymetry::is_nodata(double value) const {
 
 void OpenedBathymetry::require_plausible(double value, std::size_t column, std::size_t row) const {
   const std::string cell = info.path + ": the cell at column " + std::to_string(column) + ", row " + std::to_string(row);
-  if (value < stated_min || value > stated_max) {
+  // The stated range went through text (GDAL's metadata) and may hold a
+  // float32 bound: compared with a margin far below any damage that matters.
+  const double slack = 1e-6 * std::max({1.0, std::abs(stated_min), std::abs(stated_max)});
+  if (value < stated_min - slack || value > stated_max + slack) {
     throw InputError(cell + " holds " + general(value) + ", outside the file's own " + stated_from + " " +
                      general(stated_min) + " .. " + general(stated_max) + ": expected an undamaged file");
   }
-  require_plausible_depth(value * to_depth, cell);
+  require_plausible_depth((value * unpack_scale + unpack_offset) * to_depth, cell);
 }
 
 OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOptions& options) {

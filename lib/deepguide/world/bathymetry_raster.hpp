@@ -36,6 +36,8 @@ struct OpenedBathymetry {
   double stated_min = -std::numeric_limits<double>::infinity();
   double stated_max = std::numeric_limits<double>::infinity();
   std::string stated_from;  ///< the attribute the range came from
+  double unpack_scale = 1.0;  ///< the band's scale and offset (a packed band's raw value * scale + offset)
+  double unpack_offset = 0.0;
   /// InputError naming the cell when a valid cell's value cannot be true: off
   /// the file's own stated range, or a depth no sea has (deeper than 11 100 m,
   /// higher than 9000 m). A flipped byte in uncompressed data shows only so.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/input_files.hpp"
 
 namespace deepguide {
 
@@ -126,9 +127,33 @@ std::string check_instruction(const std::vector<Field>& fields, bool update) {
   return "";
 }
 
+// A record longer than 99 999 bytes has "00000" for its length (ISO 8211
+// C.1.5.1; GDAL reads such records, a long SG2D edge of a real cell): its
+// length is where its last field ends, as the directory says. 0 when the
+// leader or directory cannot say.
+std::uint64_t long_record_length(std::string_view rest) {
+  if (rest.size() < 24) return 0;
+  const std::string_view leader = rest.substr(0, 24);
+  if (!digits(leader.substr(12, 5)) || !digits(leader.substr(20, 2)) || !digits(leader.substr(23, 1))) return 0;
+  const std::uint64_t base = number(leader.substr(12, 5));
+  const std::size_t len_size = static_cast<std::size_t>(leader[20] - '0');
+  const std::size_t pos_size = static_cast<std::size_t>(leader[21] - '0');
+  const std::size_t entry = static_cast<std::size_t>(leader[23] - '0') + len_size + pos_size;
+  if (len_size == 0 || pos_size == 0 || entry == 0 || base < 25 || base > rest.size()) return 0;
+  std::uint64_t end = base;
+  for (std::size_t at = 24; at + entry <= base - 1; at += entry) {
+    const std::string_view len = rest.substr(at + entry - len_size - pos_size, len_size);
+    const std::string_view field_pos = rest.substr(at + entry - pos_size, pos_size);
+    if (!digits(len) || !digits(field_pos)) return 0;
+    end = std::max(end, base + number(field_pos) + number(len));
+  }
+  return end;
+}
+
 }  // namespace
 
 std::string s57_structure_problem(const std::string& path, bool update) {
+  refuse_special_file(path);  // before opening it: a FIFO would block the open, a device never end
   std::ifstream in(path, std::ios::binary);
   if (!in) return "that could not be opened";
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -140,7 +165,8 @@ std::string s57_structure_problem(const std::string& path, bool update) {
     if (bytes.size() - pos < 24) return "cut short" + at;
     const std::string_view length = std::string_view(bytes).substr(pos, 5);
     if (!digits(length)) return "with no ISO 8211 record" + at;
-    const std::uint64_t n = number(length);
+    std::uint64_t n = number(length);
+    if (n == 0) n = long_record_length(std::string_view(bytes).substr(pos));
     if (n < 24 || pos + n > bytes.size()) return "cut short in the record" + at;
     const std::string_view rec = std::string_view(bytes).substr(pos, n);
     std::string why = read_record(rec, first, fields);

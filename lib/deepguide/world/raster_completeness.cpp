@@ -13,6 +13,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/input_files.hpp"
 
 namespace deepguide {
 
@@ -47,6 +48,7 @@ class ClassicHeader {
     };
     std::vector<Var> vars;
     std::uint64_t record_bytes = 0;  // one record of every record variable
+    std::uint64_t record_vars = 0, last_record_bytes = 0;
     if (list(0x0B)) {
       for (std::uint64_t n = count(), i = 0; i < n; ++i) {
         skip_name();
@@ -58,24 +60,30 @@ class ClassicHeader {
           if (k == 0 && dims[id] == 0) {
             v.record = true;
           } else {
-            cells = dims[id] == 0 || cells <= std::numeric_limits<std::uint64_t>::max() / dims[id] ? cells * dims[id] : 0;
+            cells = product(cells, dims[id]);
           }
         }
         attributes();
         const std::uint64_t type_size = size_of(u32());
         count();  // vsize: may be clipped to 2^32 - 1 for big variables; the shape says it exactly
         v.begin = wide() || version_ == 2 ? u64() : u32();
-        v.bytes = cells * type_size;
-        if (v.record) record_bytes += (v.bytes + 3) / 4 * 4;
+        v.bytes = product(cells, type_size);
+        if (v.record) {
+          record_bytes = sum(record_bytes, (v.bytes + 3) / 4 * 4);
+          ++record_vars;
+          last_record_bytes = v.bytes;
+        }
         vars.push_back(v);
       }
     }
+    // One record variable alone is not padded (the format's one exception).
+    if (record_vars == 1) record_bytes = last_record_bytes;
     std::uint64_t end = 0;
     for (const Var& v : vars) {
       if (!v.record) {
-        end = std::max(end, v.begin + v.bytes);
+        end = std::max(end, sum(v.begin, v.bytes));
       } else if (!streaming && numrecs > 0) {
-        end = std::max(end, v.begin + (numrecs - 1) * record_bytes + v.bytes);
+        end = std::max(end, sum(v.begin, sum(product(numrecs - 1, record_bytes), v.bytes)));
       }
     }
     return end;
@@ -83,6 +91,13 @@ class ClassicHeader {
 
  private:
   bool wide() const { return version_ == 5; }
+  // Saturating, so a hostile header cannot wrap a size round to a small one.
+  static std::uint64_t sum(std::uint64_t a, std::uint64_t b) {
+    return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
+  }
+  static std::uint64_t product(std::uint64_t a, std::uint64_t b) {
+    return b != 0 && a > std::numeric_limits<std::uint64_t>::max() / b ? std::numeric_limits<std::uint64_t>::max() : a * b;
+  }
 
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(path_ + ": expected a readable NetCDF classic header, got " + what);
@@ -149,6 +164,7 @@ bool is_netcdf_classic(std::ifstream& in) {
 }  // namespace
 
 void require_complete_netcdf(const std::string& path) {
+  refuse_special_file(path);  // before opening it: a FIFO would block the open
   std::ifstream in(path, std::ios::binary);
   if (!in || !is_netcdf_classic(in)) return;
   const std::uint64_t need = ClassicHeader(in, path).data_end();
@@ -161,6 +177,7 @@ void require_complete_netcdf(const std::string& path) {
 }
 
 void require_complete_ascii_grid(const std::string& path, std::uint64_t columns, std::uint64_t rows) {
+  refuse_special_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) return;  // GDAL opened it; whatever it is, its reads decide
   std::uint64_t numbers = 0, line_no = 0;
