@@ -239,6 +239,9 @@ GDALDatasetUniquePtr open_chart(const std::string& path) {
   // (the soak fed GDAL's OpenJUMP driver a cell with XML in it, and it leaked).
   const char* const s57_only[] = {"S57", nullptr};
   const bool cell_name = ascii_lower(fs::path(path).extension().string()) == ".000";
+  // The cell and its updates are checked before GDAL reads them: GDAL applies
+  // a damaged update half-way (and leaks doing it).
+  if (cell_name) (void)find_enc_cells({path});
   GDALDatasetUniquePtr ds =
       gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, cell_name ? s57_only : nullptr);
   if (!ds) {
