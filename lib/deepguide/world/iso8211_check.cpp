@@ -159,6 +159,7 @@ std::string s57_structure_problem(const std::string& path, bool update) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (bytes.empty()) return "that is empty";
   std::vector<Field> fields;
+  std::vector<std::string> defined;  // the tags the data descriptive record describes
   std::size_t pos = 0;
   for (bool first = true; pos < bytes.size(); first = false) {
     const std::string at = " at byte " + std::to_string(pos);
@@ -171,6 +172,18 @@ std::string s57_structure_problem(const std::string& path, bool update) {
     const std::string_view rec = std::string_view(bytes).substr(pos, n);
     std::string why = read_record(rec, first, fields);
     if (why.empty()) why = first ? check_descriptions(fields) : check_instruction(fields, update);
+    if (why.empty() && first) {
+      for (const Field& f : fields) defined.emplace_back(f.tag);
+    } else if (why.empty()) {
+      // Every field a data record holds must be one the descriptions define
+      // (a flipped tag made GDAL stop applying an update half-way).
+      for (const Field& f : fields) {
+        if (std::find(defined.begin(), defined.end(), f.tag) == defined.end()) {
+          why = "a field tag '" + printable(std::string(f.tag), 16) + "' its descriptions do not define";
+          break;
+        }
+      }
+    }
     if (!why.empty()) return "with " + why + at;
     pos += n;
   }
