@@ -74,14 +74,17 @@ TEST(BathymetryDamaged, ACellOutsideTheFilesOwnRangeIsRefused) {
   expect_one_line_error([&] { inspect_bathymetry(bad); }, "outside the file's own actual_range -5475 .. -89");
 }
 
+// Appends a big-endian 32-bit number, as netCDF classic headers hold them.
+void append_be32(std::string& bytes, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) bytes.push_back(static_cast<char>((v >> shift) & 0xff));
+}
+
 // A classic header whose counts are damaged: the netCDF library, handed a
 // HYCOM file mutated so, allocated 12.8 GB and took 56 s to refuse it (found
 // by fuzz/fuzz_current_nc). The header walk refuses before GDAL opens it.
 TEST(BathymetryDamaged, ANetcdfHeaderWithAHugeCountIsRefusedBeforeGdalReadsIt) {
   std::string header("CDF\x01", 4);
-  auto u32 = [&](std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) header.push_back(static_cast<char>((v >> shift) & 0xff));
-  };
+  const auto u32 = [&](std::uint32_t v) { append_be32(header, v); };
   u32(0);                      // numrecs
   u32(0), u32(0);              // no dimensions
   u32(0x0C), u32(1);           // one global attribute
@@ -98,9 +101,7 @@ TEST(BathymetryDamaged, ANetcdfHeaderWithAHugeCountIsRefusedBeforeGdalReadsIt) {
 // (the walk once asked for 4 bytes a record and refused such a file).
 TEST(BathymetryDamaged, ASingleRecordVariableIsNotPadded) {
   std::string nc("CDF\x01", 4);
-  auto u32 = [&](std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) nc.push_back(static_cast<char>((v >> shift) & 0xff));
-  };
+  const auto u32 = [&](std::uint32_t v) { append_be32(nc, v); };
   u32(10);                                   // numrecs
   u32(0x0A), u32(1), u32(4), nc += "time", u32(0);  // the record dimension
   u32(0), u32(0);                            // no global attributes
