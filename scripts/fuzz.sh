@@ -26,6 +26,8 @@ if [ ${#harnesses[@]} -eq 0 ]; then
 fi
 cmake --build "$build" -j "$(nproc)" --target $(printf 'fuzz_%s ' "${harnesses[@]}") >&2
 
+# Each input goes to a scratch file: keep those in memory where there is a tmpfs.
+if [ -z "${TMPDIR:-}" ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 echo "| harness | executions | seconds | exec/s | corpus files | findings |"
