@@ -57,6 +57,7 @@ struct PlanOptions {
   std::optional<double> waypoint_grid;
   double min_cell = QuadtreeOptions{}.min_cell_m;
   bool smooth = false;
+  bool no_refine = false;
   std::string replan_events;
   // --graph octree (plan_depth.cpp)
   double from_depth = std::nan("");
@@ -169,6 +170,9 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--waypoint-grid", o->waypoint_grid,
                   "Open-water vertices SPACING_M apart around start and goal, so time and energy routes can bend "
                   "where the current changes (visibility graphs)");
+  cmd->add_flag("--no-refine", o->no_refine,
+               "Time and energy routes: keep the graph's route instead of refining it to the continuous optimum "
+               "near it (docs/PLANNING.md)");
   cmd->add_option("--min-cell", o->min_cell,
                   "Quadtree: the smallest cell side (m); octree: the smallest cell's height (its width follows the "
                   "dive angle)")
@@ -321,6 +325,7 @@ void register_plan(CLI::App& app) {
       options.turn_radius_m = route_turn_radius(vehicle_of(*o), model->speed_mps, model->max_current_mps);
     }
     if (o->waypoint_grid) options.grid = waypoint_grid_for(problem.start, problem.goal, *o->waypoint_grid);
+    options.refine = !o->no_refine;
     // One query: the graph only over the obstacles that can matter (single_query.hpp).
     const SingleQueryPlan plan = plan_single_query(obstacles, problem, options);
     const PlanOutcome& out = plan.outcome;
@@ -401,6 +406,9 @@ void register_plan(CLI::App& app) {
         {"graph_vertices", out.result.stats.graph_vertices},
         {"graph_edges", out.result.stats.graph_edges},
         {"open_water_vertices", out.result.stats.open_water_vertices},
+        {"refine_sweeps", out.result.stats.refine_sweeps},
+        {"refine_gain", out.result.stats.refine_gain},
+        {"refine_ms", out.result.stats.refine_ms},
         {"expanded", out.result.stats.expanded},
         {"build_ms", plan.build_ms},
         {"query_ms", plan.query_ms},
@@ -590,8 +598,14 @@ void register_plan(CLI::App& app) {
       std::printf("waypoint grid    %zu open-water vertices %.0f m apart\n", out.result.stats.open_water_vertices,
                   *o->waypoint_grid);
     }
-    std::printf("time             build %.2f ms, query %.2f ms (%d round%s)\n", plan.build_ms, plan.query_ms, plan.rounds,
+    if (out.result.stats.refine_sweeps > 0) {
+      std::printf("refinement       %.3f %% of the graph route's %s saved off its vertices, %zu sweeps\n",
+                  100.0 * out.result.stats.refine_gain, o->cost.c_str(), out.result.stats.refine_sweeps);
+    }
+    std::printf("time             build %.2f ms, query %.2f ms (%d round%s)", plan.build_ms, plan.query_ms, plan.rounds,
                 plan.rounds == 1 ? "" : "s");
+    if (out.result.stats.refine_sweeps > 0) std::printf(", refinement %.1f ms", out.result.stats.refine_ms);
+    std::printf("\n");
     if (priced.feasible) {
       std::printf("time, energy     %.1f s (%s), %.1f kJ at %s speed\n", priced.time_s, hms(priced.time_s).c_str(), priced.energy_j / 1e3, o->speed.c_str());
       if (timed) {

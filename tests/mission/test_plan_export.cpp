@@ -148,6 +148,7 @@ TEST(PlanExport, QGroundControlPlanFollowsItsFormat) {
   ASSERT_EQ(mission.at("plannedHomePosition").size(), 3u);
   EXPECT_NEAR(mission.at("plannedHomePosition")[0].get<double>(), sample().waypoints.front().lonlat.y(), kDeg);
   std::vector<Eigen::Vector3d> got;
+  std::vector<double> acceptance;
   double speed = -1.0;
   std::size_t k = 0;
   for (const auto& item : mission.at("items")) {
@@ -166,9 +167,33 @@ TEST(PlanExport, QGroundControlPlanFollowsItsFormat) {
     // ArduSub reads an altitude of 0 as "keep the depth": the surface is 1 cm deep.
     EXPECT_LT(p[6].get<double>(), 0.0) << k;
     got.emplace_back(p[5].get<double>(), p[4].get<double>(), -p[6].get<double>());
+    acceptance.push_back(p[1].get<double>());
     ++k;
   }
   expect_waypoints(got, "plan");
+  // The acceptance radius is where the turn begins: R tan(theta / 2) before
+  // the corner, theta the course change between the legs read back from the
+  // file (lon/lat to metres locally), at least 2 m, at most half the shorter
+  // leg, 2 m at the ends and where the vehicle holds.
+  const auto& w = sample().waypoints;
+  const double route_turn = export_route(sample().mission, sample().plan, ExportOptions{}.arc_tolerance_m, false).turn_radius_m;
+  ASSERT_GT(route_turn, 5.0);
+  int turning = 0;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (i == 0 || i + 1 == got.size() || w[i].hold_s > 0.0) {
+      EXPECT_EQ(acceptance[i], 2.0) << i;
+      continue;
+    }
+    const double m_lon = 111320.0 * std::cos(got[i].y() * M_PI / 180.0), m_lat = 110540.0;
+    const Eigen::Vector2d in((got[i].x() - got[i - 1].x()) * m_lon, (got[i].y() - got[i - 1].y()) * m_lat);
+    const Eigen::Vector2d out((got[i + 1].x() - got[i].x()) * m_lon, (got[i + 1].y() - got[i].y()) * m_lat);
+    const double theta = std::acos(std::clamp(in.dot(out) / (in.norm() * out.norm()), -1.0, 1.0));
+    const double r = w[i].radius_m > 0.0 ? w[i].radius_m : route_turn;
+    const double want = std::max(2.0, std::min(r * std::tan(theta / 2), 0.5 * std::min(in.norm(), out.norm())));
+    EXPECT_NEAR(acceptance[i], want, 0.01 * want + 0.05) << i;  // the file's lon/lat against the plan's metres
+    if (acceptance[i] > 2.5) ++turning;
+  }
+  EXPECT_GT(turning, 20);
 }
 
 TEST(PlanExport, RtzReadsBackWithLibxml2) {

@@ -16,6 +16,7 @@
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "test_support.hpp"
+#include "planning/current_cases.hpp"
 #include "planning/obstacle_builders.hpp"
 
 using namespace deepguide;
@@ -182,7 +183,9 @@ TEST(CostPlanning, AWaypointGridLetsTheRouteBendAroundAJetInOpenWater) {
   };
   auto m = model_of(CostKind::energy, steady_current(jet), 1.5);
   const PlanningProblem problem{{-1500.0, 0.0}, {1500.0, 0.0}};
-  Planner straight(ObstacleSet{}, options_with(m));
+  PlannerOptions graph_only = options_with(m);
+  graph_only.refine = false;  // the graph's own route (refinement would leave the line: test_route_refinement.cpp)
+  Planner straight(ObstacleSet{}, graph_only);
   const PlanOutcome line = straight.solve(problem);
   ASSERT_TRUE(line.result.found);
   EXPECT_EQ(line.result.route.points.size(), 2u);
@@ -205,8 +208,14 @@ TEST(CostPlanning, AWaypointGridLetsTheRouteBendAroundAJetInOpenWater) {
               1.0, 1e-3);
   // A* and Dijkstra agree on the lattice too.
   gridded.search = SearchAlgorithm::dijkstra;
-  Planner lattice_dijkstra(ObstacleSet{}, gridded);
-  EXPECT_NEAR(lattice_dijkstra.solve(problem).result.cost, bent.result.cost, 1e-9 * bent.result.cost);
+  gridded.refine = false;
+  PlannerOptions gridded_astar = gridded;
+  gridded_astar.search = SearchAlgorithm::astar;
+  Planner lattice_dijkstra(ObstacleSet{}, gridded), lattice_astar(ObstacleSet{}, gridded_astar);
+  const double graph_cost = lattice_astar.solve(problem).result.cost;
+  EXPECT_NEAR(lattice_dijkstra.solve(problem).result.cost, graph_cost, 1e-9 * graph_cost);
+  // Refinement (on by default) moved the lattice route off its vertices: never costlier.
+  EXPECT_LE(bent.result.cost, graph_cost * (1.0 + 1e-12));
 }
 
 TEST(CostPlanning, WaypointGridsAreCheckedAndAvoidTheZones) {
@@ -247,43 +256,15 @@ TEST(CostPlanning, AStarEqualsDijkstraOn500RandomCases) {
   // Random ellipses, a uniform current plus an eddy, and each cost model in
   // turn (time, energy, energy at economical speeds, time in a tide).
   std::mt19937 rng(2026);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   int compared = 0;
   for (int scenario = 0; scenario < test::cases(500); ++scenario) {
-    ObstacleSet set;
-    for (int i = 0; i < 8; ++i) {
-      EllipticCylinder c;
-      c.id = "e" + std::to_string(i);
-      const double a = 15.0 + 70.0 * u(rng);
-      c.footprint = Ellipse{{1000.0 * u(rng), 1000.0 * u(rng)}, a, a * (0.3 + 0.7 * u(rng)), M_PI * u(rng)};
-      set.ellipses.push_back(c);
-    }
-    const double heading = 2.0 * M_PI * u(rng), drift = 1.0 * u(rng);
-    const Vec2 uniform = drift * Vec2(std::cos(heading), std::sin(heading));
-    const Vec2 eddy(1000.0 * u(rng), 1000.0 * u(rng));
-    const double swirl = 1.2 * (u(rng) - 0.5), radius = 150.0 + 300.0 * u(rng);
-    const int kind = scenario % 4;
-    const double period = 6.0 * 3600.0;
-    const CurrentAtTime current = [=](const Vec2& p, double t) -> std::optional<Vec2> {
-      const Vec2 r = p - eddy;
-      const double q = r.norm() / radius;
-      // Eddy speed |swirl| q exp(-q^2) <= |swirl| / sqrt(2e).
-      Vec2 c = uniform + swirl * std::exp(-q * q) / radius * Vec2(-r.y(), r.x());
-      if (kind == 3) c *= std::cos(2.0 * M_PI * t / period);
-      return c;
-    };
-    auto m = model_of(kind == 1 || kind == 2 ? CostKind::energy : CostKind::time, current,
-                      drift + std::abs(swirl) / std::sqrt(2.0 * M_E) + 1e-9);
-    m->economical = kind == 2;
-    m->leg.step_m = 20.0;
-    if (kind == 3) {
-      m->steady = false;
-      m->time_first_s = 0.0;
-      m->time_last_s = 1e6;
-      m->depart_s = period * u(rng);
-    }
-    const PlanningProblem problem{{-60.0, 1000.0 * u(rng)}, {1060.0, 1000.0 * u(rng)}};
+    const test::CurrentCase c = test::random_current_case(rng, scenario);
+    const ObstacleSet& set = c.obstacles;
+    const auto& m = c.model;
+    const PlanningProblem& problem = c.problem;
+    const int kind = c.kind;
     PlannerOptions with_astar = options_with(m, SearchAlgorithm::astar);
+    with_astar.refine = false;  // the graphs' optima compared (refinement: test_route_refinement.cpp)
     // Every seventh case also has open-water vertices (a 90 m lattice), across all four models.
     if (scenario % 7 == 3) with_astar.grid = waypoint_grid_for(problem.start, problem.goal, 90.0);
     PlannerOptions with_dijkstra = with_astar;

@@ -67,6 +67,7 @@ void attach_current(CostModel& m, std::shared_ptr<const CurrentField> field, con
                     const Vec2& area_min, const Vec2& area_max) {
   check_current_coverage(*field, frame, area_min, area_max);
   m.steady = field->steady();
+  m.uniform = field->constant;
   if (!m.steady) {
     m.time_first_s = field->times_s.front();
     m.time_last_s = field->times_s.back();

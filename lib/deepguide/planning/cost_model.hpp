@@ -51,6 +51,9 @@ struct CostModel {
   CurrentAtTime current;
   /// The current does not change in time (it is sampled at the departure time).
   bool steady = true;
+  /// The current is the same everywhere and at every time (--current-const):
+  /// straight legs between corners are then optimal for every cost.
+  bool uniform = false;
   /// The fastest current over the area and time span (m/s): the heuristics' c_max.
   double max_current_mps = 0.0;
   /// Speed through the water (m/s) unless `economical`.

@@ -1,6 +1,7 @@
 #include "deepguide/planning/planner.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/corner_fillets.hpp"
+#include "deepguide/planning/route_refinement.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
@@ -297,6 +299,30 @@ bool Planner::round_corners(PlanResult& result) const {
   return true;
 }
 
+// A time or energy route in a current that changes from place to place,
+// taken from the graph's vertices to the continuous optimum near it; every
+// leg keeps the margin from the exact zones. The graph's route stays when
+// the refined one cannot be rounded on the turning radius.
+void Planner::refine(PlanResult& result) const {
+  if (!result.found || !options_.refine || !options_.cost || !refinement_applies(*options_.cost)) return;
+  const auto started = std::chrono::steady_clock::now();
+  const ObstacleField& field = impl_->field;
+  const RefinedRoute refined = refine_route(*options_.cost, result.route.points,
+                                            [&](const Vec2& a, const Vec2& b) { return field.segment_free(a, b); });
+  result.stats.refine_sweeps = refined.sweeps;
+  result.stats.refine_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  if (!(refined.cost_after < refined.cost_before)) return;
+  if (options_.turn_radius_m > 0.0) {
+    PlanResult trial = result;
+    trial.route.points = refined.points;
+    if (!round_corners(trial)) return;
+  }
+  result.route.points = refined.points;
+  result.cost = refined.cost_after;
+  result.stats.refine_gain = 1.0 - refined.cost_after / refined.cost_before;
+}
+
 PlanOutcome Planner::solve(const PlanningProblem& problem) {
   if (!problem.start.allFinite() || !problem.goal.allFinite()) {
     throw InputError("start and goal: expected finite coordinates");
@@ -321,6 +347,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   bool rounding_failed = false;
   if (impl_->quadtree) {
     out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get());
+    refine(out.result);
     if (out.result.found && options_.turn_radius_m > 0.0) rounding_failed = !round_corners(out.result);
   } else if (impl_->tangent) {
     out.result = impl_->tangent->solve(problem, options_.search);
@@ -339,6 +366,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
       if (start_in_band) pts.insert(pts.begin(), problem.start);
       if (goal_in_band) pts.push_back(problem.goal);
     }
+    refine(out.result);
     if (out.result.found && options_.turn_radius_m > 0.0) rounding_failed = !round_corners(out.result);
   }
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},

@@ -53,6 +53,10 @@ struct PlannerOptions {
   /// (rounded_zone_polygons) and round each corner of the route on a circle
   /// of this radius (corner_fillets.hpp). Not the quadtree.
   double turn_radius_m = 0.0;
+  /// Time and energy routes in a current that changes from place to place
+  /// are refined off the graph's vertices to the continuous optimum near
+  /// them (route_refinement.hpp). Off: the graph's own optimum.
+  bool refine = true;
 };
 
 /// Parses "visibility", "visibility-full", "tangent", "quadtree" / "astar", "dijkstra"; InputError otherwise.
@@ -99,6 +103,7 @@ class Planner {
  private:
   std::string why_no_turning_route(const PlanningProblem& problem);
   bool round_corners(PlanResult& result) const;
+  void refine(PlanResult& result) const;
   std::string unrounded_message(const Vec2& at, const std::string& why) const;
   struct Impl;
   PlannerOptions options_;

@@ -60,6 +60,10 @@ struct PlanStats {
   std::size_t expanded = 0;   ///< vertices the search examined
   double build_ms = 0.0;      ///< building the environment's graph (once per environment)
   double query_ms = 0.0;      ///< attaching start and goal plus the search
+  /// Continuous refinement of a time or energy route (route_refinement.hpp).
+  std::size_t refine_sweeps = 0;
+  double refine_gain = 0.0;   ///< the fraction of the graph route's cost it saved
+  double refine_ms = 0.0;
 };
 
 /// One planning request in the local frame.
@@ -77,7 +81,7 @@ struct PlanResult {
   Route route;               ///< a polyline; curved legs are approximated from outside
   std::vector<RouteLeg> legs;  ///< exact lines and arcs, where the planner knows them
   double exact_length_m = 0.0; ///< length of the legs (0 when legs is empty)
-  double cost = 0.0;         ///< the search's cost of the graph path: metres, or the cost model's s or J
+  double cost = 0.0;         ///< the route's cost: metres, or the cost model's s or J (the search's, or the refined route's)
   PlanStats stats;
   std::string message;  ///< why no route was found, one line
 };

@@ -14,8 +14,10 @@
 // within the same radius.
 // The lattice is part of the graph's definition for a query (its box does
 // not depend on the search), so the single-query bounds stay exact: the
-// route is optimal over corners + lattice. Finer lattices approach the
-// continuous optimum at the cost of more vertices (docs/PERFORMANCE.md).
+// route is optimal over corners + lattice. A lattice of 16 directions does
+// not approach the continuous optimum as it gets finer (1.0-1.7 % slower on
+// a jet-plus-vortex field from 2000 m down to 500 m): it chooses the way, and
+// route_refinement.hpp finds the line.
 
 #include <cstddef>
 #include <vector>
