@@ -42,7 +42,48 @@ int side_for(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p,
 struct Tuning {
   double blend;    ///< exit_blend_fraction
   double passage;  ///< geometric_passage_m
+  double turn_rate = 0.0;  ///< turn_rate_limit; 0: the course line alone
+  double speed = 0.0;      ///< through the water, for the turn
+  double margin = 0.0;
 };
+
+/// The least signed distance to the zones that do not hold p along the way
+/// a vehicle at `speed`, turning at most `rate`, sails a new course from its
+/// present one: the turn at the full rate, then straight on for two turning
+/// radii. (The current's drift is left out: the autopilot makes good the
+/// course over ground, and the comparison below is between two such turns.)
+/// The hysteresis band of a vehicle that sails the construction (a turning
+/// rate known): a fifth of the margin, at least 1 m; 0 for the construction
+/// itself (the figures' gradient lines, a vehicle that turns at once).
+double sailing_band(const Tuning& tuning) {
+  return tuning.turn_rate > 0.0 ? std::max(1.0, 0.2 * tuning.margin) : 0.0;
+}
+
+constexpr double kSmallTurn = 20.0 * std::numbers::pi / 180.0;
+
+double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double course, const Vec2& direction,
+                        double speed, double rate) {
+  const double to = math_angle(direction);
+  const double radius = speed / rate;
+  const double horizon = std::abs(wrap_pi(to - course)) / rate + 2.0 * radius / speed;
+  std::vector<std::size_t> near;
+  for (std::size_t k = 0; k < zones.size(); ++k) {
+    const double reach = zones[k].a + speed * horizon;
+    if ((zones[k].center - p).squaredNorm() < reach * reach && !zones[k].contains(p)) near.push_back(k);
+  }
+  double least = std::numeric_limits<double>::infinity();
+  if (near.empty()) return least;
+  constexpr double dt = 0.2;
+  Vec2 x = p;
+  double psi = course;
+  for (double t = 0.0; t < horizon; t += dt) {
+    const double step = std::clamp(wrap_pi(to - psi), -rate * dt, rate * dt);
+    x += speed * dt * unit_vector(psi + 0.5 * step);
+    psi += step;
+    for (const std::size_t k : near) least = std::min(least, signed_distance(zones[k], x));
+  }
+  return least;
+}
 
 Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
                        ReactiveMemory* memory, const Tuning& tuning, bool outside_only = false);
@@ -126,18 +167,25 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
   }
   std::ptrdiff_t active = -1;
   if (memory) {
+    // The engaged zone stays engaged until the line of sight clears it by a
+    // band (hysteresis): a line that grazes a zone flips between blocked and
+    // free from scan to scan with the sonar's noise, and each release put
+    // the turn off until it came too late to sail.
+    const double band = sailing_band(tuning);
     for (std::size_t i = 0; i < zones.size() && active < 0; ++i) {
-      if (engaged_with(*memory, zones[i].center, match_radius(zones[i])) && segment_intersects(zones[i], p, g)) {
+      const Ellipse& z = zones[i];
+      if (engaged_with(*memory, z.center, match_radius(z)) &&
+          segment_intersects(Ellipse{z.center, z.a + band, z.b + band, z.theta}, p, g)) {
         active = static_cast<std::ptrdiff_t>(i);
       }
     }
   }
+  const std::vector<std::size_t> group = zone_groups(zones, tuning.passage);
   if (active < 0) active = first_zone_hit(zones, p, g);
   if (active < 0) {
     if (memory) release(*memory);
     return {unit_or_zero(g - p), 2, -1};
   }
-  const std::vector<std::size_t> group = zone_groups(zones, tuning.passage);
   // The tangent from p on `side` to the group of zone k: the most extreme of
   // its members' tangents (the tangent to their convex hull). Returns the
   // member touched, the tangent point and whether the group surrounds p. (From a pocket of the group, inside
@@ -162,13 +210,23 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     }
     return std::tuple{best, best_touch, alone};
   };
-  // Cascade: the tangent segment p -> T must itself be free.
+  // Cascade: the tangent segment p -> T must itself be free. Under way it
+  // must clear the other zones by the band: a tangent that grazes another
+  // zone is blocked in one scan and free in the next with the sonar's noise,
+  // and the course flips between the two ways round.
+  std::vector<Ellipse> banded;
+  if (memory && sailing_band(tuning) > 0.0) {
+    for (const Ellipse& z : zones) {
+      banded.push_back({z.center, z.a + sailing_band(tuning), z.b + sailing_band(tuning), z.theta});
+    }
+  }
+  const std::vector<Ellipse>& blocking = banded.empty() ? zones : banded;
   auto cascade = [&](int side) -> Construction {
     std::ptrdiff_t k = active;
     for (std::size_t step = 0; step < zones.size(); ++step) {
       const auto [member, touch, alone] = group_tangent(k, side);
       const Ellipse& zone = zones[static_cast<std::size_t>(member)];
-      const std::ptrdiff_t blocker = first_zone_hit(zones, p, touch, member);
+      const std::ptrdiff_t blocker = first_zone_hit(blocking, p, touch, member);
       const bool own_group =
           blocker >= 0 && group[static_cast<std::size_t>(blocker)] == group[static_cast<std::size_t>(member)] && !alone;
       if (blocker < 0 || own_group) {
@@ -179,6 +237,32 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     return {Vec2(0.0, 0.0), 1, active};
   };
   const Ellipse& engaged = zones[static_cast<std::size_t>(active)];
+  // The turn: a course whose turn, sailed at the vehicle's rate, cuts deep
+  // into a zone gives way to the other side's when that turn keeps clearer.
+  // The line alone cannot tell: a far zone's tangent that slips behind a near
+  // one asks for a turn across the near one, and the cascade's same-side rule
+  // sends the vehicle round the far side of a zone it could pass on the near.
+  const auto sailed = [&](Construction chosen, int side) -> Construction {
+    if (!memory || memory->side_from_turn || !course || !(tuning.turn_rate > 0.0) || !(tuning.speed > 0.0) ||
+        chosen.direction.squaredNorm() == 0.0) {
+      return chosen;
+    }
+    // A small turn sweeps little: the line is what the vehicle sails (and the check costs nothing then).
+    if (std::abs(wrap_pi(math_angle(chosen.direction) - *course)) < kSmallTurn) return chosen;
+    const double mine = sailed_clearance(zones, p, *course, chosen.direction, tuning.speed, tuning.turn_rate);
+    if (mine >= -0.2 * tuning.margin) return chosen;
+    const Construction other = cascade(-side);
+    if (other.direction.squaredNorm() == 0.0) return chosen;
+    const double theirs = sailed_clearance(zones, p, *course, other.direction, tuning.speed, tuning.turn_rate);
+    // Only for a turn that keeps clear: trading one cut for a smaller one
+    // late swaps a turn under way for a reversal, which sweeps more.
+    if (!(theirs >= -0.2 * tuning.margin)) return chosen;
+    memory->side = -side;
+    memory->engaged_object = active;
+    memory->engaged_center = engaged.center;
+    memory->side_from_turn = true;
+    return other;
+  };
   if (memory && course && !engaged_with(*memory, engaged.center, match_radius(engaged))) {
     // A zone engaged afresh while under way: the side whose course is the
     // smaller turn from the present one. The axis rule alone can ask for a
@@ -193,9 +277,10 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     const double tl = turn(left), tr = turn(right);
     const int side = std::abs(tl - tr) < 1e-9 ? axis_side(engaged.center, g, p, course) : tl < tr ? +1 : -1;
     latched_side(*memory, active, engaged.center, match_radius(engaged), side);
-    return side > 0 ? left : right;
+    return sailed(side > 0 ? left : right, side);
   }
-  return cascade(side_for(zones, active, p, g, course, memory, false));
+  const int side = side_for(zones, active, p, g, course, memory, false);
+  return sailed(cascade(side), side);
 }
 
 }  // namespace
@@ -208,8 +293,10 @@ ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& 
     release(memory);
     return *stop;
   }
-  const Construction c = construct(zones, input.position, target.point, input.course, &memory,
-                                   {params.exit_blend_fraction, params.geometric_passage_m});
+  const Construction c =
+      construct(zones, input.position, target.point, input.course, &memory,
+                {params.exit_blend_fraction, params.geometric_passage_m, params.turn_rate_limit.value_or(0.0),
+                 std::max(input.speed_mps, params.speed_mps), params.margin_m});
   const ReactiveStatus status = c.sector == 3 ? ReactiveStatus::leaving_zone : ReactiveStatus::ok;
   ReactiveCommand cmd = course_command(params, input, c.direction, status, c.object, target);
   cmd.sector = c.sector;

@@ -42,6 +42,23 @@
 //     a chain of overlapping zones yields the tangent to their convex hull.
 // A newly engaged object gets its own side from the axis rule (after passing
 // one object the next may be passed on the other side, the shorter way).
+//
+// Sailing (ReactiveParams::turn_rate_limit known, as in every simulation):
+// the construction of lines assumes a vehicle that takes each course at
+// once; one that turns at most r sweeps U/r (19.6 m for DeepC at cruise)
+// while it turns. Three rules, from traces of the Monte Carlo collisions:
+//   - hysteresis: the engaged zone stays engaged until the line of sight
+//     clears it by a band (a fifth of the margin, at least 1 m), and a
+//     tangent must clear the other zones by the band (else the cascade goes
+//     on); the sonar's noise flipped grazing lines between blocked and free,
+//     the turn began late or the course flipped between two ways round;
+//   - the turn checked: a course more than 20 deg off the present one is
+//     sailed ahead (the turn at the full rate, then straight for 2 U/r); if
+//     that cuts into a zone by more than a fifth of the margin, the other
+//     side's construction is taken when its turn keeps clear, once per
+//     engaged object (more would dither);
+//   - without a turning rate (0: the figures' gradient lines, a kinematic
+//     vehicle) none of this applies: the seed's construction, exactly.
 
 #include <span>
 

@@ -74,6 +74,13 @@ struct ReactiveParams {
   /// in. In 500 Monte Carlo scenarios: 17 collisions with 0 m, 1 with 10 m,
   /// none with 20 m (docs/SIMULATION.md).
   double geometric_passage_m = 20.0;
+  /// (b) The vehicle's hard turning-rate limit (rad/s). When known (> 0) the
+  /// construction is sailed (geometric_construction.hpp, "Sailing"): its
+  /// course is checked as the vehicle would turn to it, not as a line, and
+  /// its lines of sight keep a band. Unset: the vehicle's max_turn_rate in
+  /// the simulation and the mission run, none elsewhere; 0: the construction
+  /// of lines alone (the seed's; figures, comparisons).
+  std::optional<double> turn_rate_limit = std::nullopt;
   /// (c) Stalled when the resultant force is below this fraction of the unit attraction, in (0, 1).
   double potential_stall_fraction = 0.05;
 };
@@ -132,6 +139,9 @@ struct ReactiveMemory {
   int side = 0;
   std::ptrdiff_t engaged_object = -1;  ///< the object the side was latched for
   Vec2 engaged_center{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
+  /// The geometric method changed the side for this object because the turn
+  /// to the first would have cut into a zone: once per object, or it dithers.
+  bool side_from_turn = false;
 };
 
 /// One control step of `method`. Throws InputError for bad params, a

@@ -31,6 +31,10 @@ void validate(const ReactiveParams& p) {
   check(finite(p.dipole_blend_m) && p.dipole_blend_m > 0.0, "dipole_blend_m", "a distance > 0 m", p.dipole_blend_m);
   check(finite(p.geometric_passage_m) && p.geometric_passage_m >= 0.0, "geometric_passage_m", "a distance >= 0 m",
         p.geometric_passage_m);
+  if (p.turn_rate_limit) {
+    check(finite(*p.turn_rate_limit) && *p.turn_rate_limit >= 0.0, "turn_rate_limit", "a rate >= 0 rad/s",
+          *p.turn_rate_limit);
+  }
   check(finite(p.potential_stall_fraction) && p.potential_stall_fraction > 0.0 && p.potential_stall_fraction < 1.0,
         "potential_stall_fraction", "a fraction in (0, 1)", p.potential_stall_fraction);
 }
@@ -170,7 +174,7 @@ bool engaged_with(const ReactiveMemory& memory, const Vec2& center, double match
 }
 
 int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& center, double match_m, int fresh) {
-  if (!engaged_with(memory, center, match_m)) memory.side = fresh;
+  if (!engaged_with(memory, center, match_m)) memory.side = fresh, memory.side_from_turn = false;
   memory.engaged_object = index;
   memory.engaged_center = center;
   return memory.side;

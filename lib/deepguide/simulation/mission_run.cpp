@@ -320,6 +320,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     if (reactive) {
       ReactiveParams params = sc.reactive;
       params.speed_mps = std::max(here.speed_mps, 0.1);
+      if (!params.turn_rate_limit) params.turn_rate_limit = sc.vehicle.max_turn_rate;
       const double cog = s.ground_velocity.squaredNorm() > 0.0 ? std::atan2(s.ground_velocity.y(), s.ground_velocity.x())
                                                                : s.heading;
       const ReactiveCommand cmd =

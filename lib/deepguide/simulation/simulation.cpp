@@ -89,13 +89,16 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
   if (sc.sonar.range_m > 0.0) sonar.emplace(sc.sonar);
   ContactMemory contacts(sc.contacts, sc.sonar);
   ReactiveMemory memory;
+  // The method knows the vehicle's turning-rate limit unless the scenario says otherwise.
+  ReactiveParams params = sc.reactive;
+  if (!params.turn_rate_limit) params.turn_rate_limit = sc.vehicle.max_turn_rate;
   const Guidance reactive = [&](double t, const VehicleState& state) {
     if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
       contacts.update(sonar->detections(), t);
     }
     const ReactiveInput input{t,         state.position,     course_over_ground(state), state.speed_mps,
                               sc.target, contacts.ellipses()};
-    return reactive_command(method, sc.reactive, memory, input);
+    return reactive_command(method, params, memory, input);
   };
   SimulationResult result = simulate_guided(sc, reactive, options);
   result.method = method;
