@@ -96,6 +96,26 @@ TEST(BathymetryDamaged, ANetcdfHeaderWithAHugeCountIsRefusedBeforeGdalReadsIt) {
   expect_one_line_error([&] { load_current_field(path); }, "an attribute of 2147483647 values");
 }
 
+TEST(BathymetryDamaged, AHeaderStatingAGiantRasterIsRefusedBeforeGdalAllocatesIt) {
+  // The fuzzing soak's find (fuzz/corpus/bathymetry_nc): 217 bytes that
+  // GDAL's NGS geoid driver takes for a grid of 1 178 892 903 x 774 990 956
+  // cells in blocks of one row, 4.7 GB, allocated on the first read.
+  const std::string hex =
+      "43ffffffffffffffffffffffffffffffffffffffffffffff43677269645f6365"
+      "6c6c312e677a444601000000000000000a000000020000000178000000ff0000"
+      "000000ffff43444601000000000000000a000000020000000178000000ff0044"
+      "4341505f435245415445000000003d0049000000017900000000000000ffffff"
+      "ffffffff7dffffffffffffffffff3d0049000000017900000000000000ffffff"
+      "ffffffff7dffffffffffffffffffffffffffffffffffffffffffffffe1ffffff"
+      "fffffffff6ffffffffffffffffffffffffffffe1ffffffffff";
+  std::string bytes;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) bytes += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  ASSERT_EQ(bytes.size(), 217u);
+  test::ScratchDir tmp;
+  const std::string path = tmp.write("giant.nc", bytes);
+  expect_one_line_error([&] { inspect_bathymetry(path); }, "1178892903 x 774990956 cells in blocks of 4497 MiB");
+}
+
 // The format's one unpadded case: a single record variable of shorts. Its
 // records lie 2 bytes apart, so 10 records end 20 bytes after its start
 // (the walk once asked for 4 bytes a record and refused such a file).

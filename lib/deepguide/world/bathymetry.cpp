@@ -166,6 +166,13 @@ void OpenedBathymetry::require_plausible(double value, std::size_t column, std::
   require_plausible_depth((value * unpack_scale + unpack_offset) * to_depth, cell);
 }
 
+namespace {
+// GEBCO's global grid (86 400 x 43 200, 3.7e9 cells) fits; a block is a
+// strip or tile, megabytes in every real file.
+constexpr double kMaxRasterCells = 4e9;
+constexpr double kMaxRasterBlockBytes = 256.0 * 1048576.0;
+}  // namespace
+
 OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOptions& options) {
   OpenedBathymetry r;
   r.dataset = open_raster(path, options);
@@ -181,6 +188,23 @@ OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOption
   }
   r.band = ds->GetRasterBand(options.band);
   GDALRasterBand& band = *r.band;
+  {
+    // A header GDAL took for a raster (any driver may claim a damaged or
+    // foreign file) can state sizes no bathymetry has: GDAL then allocates
+    // a block of that size on the first read (the fuzzing soak: 4.7 GB for a
+    // 217-byte file the NGS geoid driver opened). Refused before reading.
+    int bx = 0, by = 0;
+    band.GetBlockSize(&bx, &by);
+    const double block_bytes = static_cast<double>(std::max(bx, 0)) * std::max(by, 0) *
+                               std::max(GDALGetDataTypeSizeBytes(band.GetRasterDataType()), 1);
+    const double cells = static_cast<double>(info.width) * static_cast<double>(info.height);
+    if (block_bytes > kMaxRasterBlockBytes || cells > kMaxRasterCells) {
+      throw InputError(path + ": expected a bathymetry raster of at most " + general(kMaxRasterCells) +
+                       " cells read in blocks of at most " + general(kMaxRasterBlockBytes / 1048576.0) +
+                       " MiB, got " + std::to_string(info.width) + " x " + std::to_string(info.height) +
+                       " cells in blocks of " + fixed(block_bytes / 1048576.0, 0) + " MiB (a damaged header?)");
+    }
+  }
   {
     // A damaged file (e.g. a GeoTIFF cut short) may open but fail on its
     // first and last cells, or report errors (not warnings) while opening:
