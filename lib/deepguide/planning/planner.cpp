@@ -299,28 +299,35 @@ bool Planner::round_corners(PlanResult& result) const {
   return true;
 }
 
-// A time or energy route in a current that changes from place to place,
-// taken from the graph's vertices to the continuous optimum near it; every
-// leg keeps the margin from the exact zones. The graph's route stays when
-// the refined one cannot be rounded on the turning radius.
-void Planner::refine(PlanResult& result) const {
-  if (!result.found || !options_.refine || !options_.cost || !refinement_applies(*options_.cost)) return;
-  const auto started = std::chrono::steady_clock::now();
-  const ObstacleField& field = impl_->field;
-  const RefinedRoute refined = refine_route(*options_.cost, result.route.points,
-                                            [&](const Vec2& a, const Vec2& b) { return field.segment_free(a, b); });
-  result.stats.refine_sweeps = refined.sweeps;
-  result.stats.refine_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  if (!(refined.cost_after < refined.cost_before)) return;
-  if (options_.turn_radius_m > 0.0) {
-    PlanResult trial = result;
-    trial.route.points = refined.points;
-    if (!round_corners(trial)) return;
+// A polygon graph's route made what is returned: a time or energy route in
+// a current that changes from place to place taken from the graph's
+// vertices to the continuous optimum near it (every leg keeps the margin
+// from the exact zones), then, within a turning radius, its corners rounded.
+// The graph's route stays when the refined one cannot be rounded. False when
+// no route can be rounded (round_corners says why).
+bool Planner::refine_and_round(PlanResult& result) const {
+  if (!result.found) return true;
+  const bool rounding = options_.turn_radius_m > 0.0;
+  if (options_.refine && options_.cost && refinement_applies(*options_.cost)) {
+    const auto started = std::chrono::steady_clock::now();
+    const ObstacleField& field = impl_->field;
+    const RefinedRoute refined = refine_route(*options_.cost, result.route.points,
+                                              [&](const Vec2& a, const Vec2& b) { return field.segment_free(a, b); });
+    result.stats.refine_sweeps = refined.sweeps;
+    result.stats.refine_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    if (refined.cost_after < refined.cost_before) {
+      PlanResult trial = result;
+      trial.route.points = refined.points;
+      trial.cost = refined.cost_after;
+      trial.stats.refine_gain = 1.0 - refined.cost_after / refined.cost_before;
+      if (!rounding || round_corners(trial)) {
+        result = std::move(trial);
+        return true;
+      }
+    }
   }
-  result.route.points = refined.points;
-  result.cost = refined.cost_after;
-  result.stats.refine_gain = 1.0 - refined.cost_after / refined.cost_before;
+  return !rounding || round_corners(result);
 }
 
 PlanOutcome Planner::solve(const PlanningProblem& problem) {
@@ -347,8 +354,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   bool rounding_failed = false;
   if (impl_->quadtree) {
     out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get());
-    refine(out.result);
-    if (out.result.found && options_.turn_radius_m > 0.0) rounding_failed = !round_corners(out.result);
+    rounding_failed = !refine_and_round(out.result);
   } else if (impl_->tangent) {
     out.result = impl_->tangent->solve(problem, options_.search);
   } else {
@@ -366,8 +372,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
       if (start_in_band) pts.insert(pts.begin(), problem.start);
       if (goal_in_band) pts.push_back(problem.goal);
     }
-    refine(out.result);
-    if (out.result.found && options_.turn_radius_m > 0.0) rounding_failed = !round_corners(out.result);
+    rounding_failed = !refine_and_round(out.result);
   }
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
                           impl_->field);

@@ -103,7 +103,7 @@ class Planner {
  private:
   std::string why_no_turning_route(const PlanningProblem& problem);
   bool round_corners(PlanResult& result) const;
-  void refine(PlanResult& result) const;
+  bool refine_and_round(PlanResult& result) const;
   std::string unrounded_message(const Vec2& at, const std::string& why) const;
   struct Impl;
   PlannerOptions options_;

@@ -59,6 +59,8 @@ double sailing_band(const Tuning& tuning) {
   return tuning.turn_rate > 0.0 ? std::max(1.0, 0.2 * tuning.margin) : 0.0;
 }
 
+Ellipse widened(const Ellipse& zone, double band) { return {zone.center, zone.a + band, zone.b + band, zone.theta}; }
+
 constexpr double kSmallTurn = 20.0 * std::numbers::pi / 180.0;
 
 double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double course, const Vec2& direction,
@@ -175,17 +177,17 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     for (std::size_t i = 0; i < zones.size() && active < 0; ++i) {
       const Ellipse& z = zones[i];
       if (engaged_with(*memory, z.center, match_radius(z)) &&
-          segment_intersects(Ellipse{z.center, z.a + band, z.b + band, z.theta}, p, g)) {
+          segment_intersects(widened(z, band), p, g)) {
         active = static_cast<std::ptrdiff_t>(i);
       }
     }
   }
-  const std::vector<std::size_t> group = zone_groups(zones, tuning.passage);
   if (active < 0) active = first_zone_hit(zones, p, g);
   if (active < 0) {
     if (memory) release(*memory);
     return {unit_or_zero(g - p), 2, -1};
   }
+  const std::vector<std::size_t> group = zone_groups(zones, tuning.passage);
   // The tangent from p on `side` to the group of zone k: the most extreme of
   // its members' tangents (the tangent to their convex hull). Returns the
   // member touched, the tangent point and whether the group surrounds p. (From a pocket of the group, inside
@@ -216,9 +218,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
   // and the course flips between the two ways round.
   std::vector<Ellipse> banded;
   if (memory && sailing_band(tuning) > 0.0) {
-    for (const Ellipse& z : zones) {
-      banded.push_back({z.center, z.a + sailing_band(tuning), z.b + sailing_band(tuning), z.theta});
-    }
+    for (const Ellipse& z : zones) banded.push_back(widened(z, sailing_band(tuning)));
   }
   const std::vector<Ellipse>& blocking = banded.empty() ? zones : banded;
   auto cascade = [&](int side) -> Construction {
