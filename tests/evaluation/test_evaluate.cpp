@@ -100,6 +100,46 @@ TEST(Evaluate, HandCheckedRowsWithoutObstacles) {
   }
 }
 
+TEST(Evaluate, ACollisionsClassAndCauseSurviveTheRowsFile) {
+  EvalRow row;
+  row.scenario_index = 7;
+  row.scenario = "scenario-0007";
+  row.method = "geometric";
+  row.run.end = "reached";
+  row.run.reached = row.run.collided = row.run.unavoidable = true;
+  row.run.min_clearance_m = -1.25;
+  row.run.note = "rock came into the sonar's view 8.0 m away at 0.0 s; a hard-over turn either way would still have "
+                 "met it: unavoidable";
+  const std::string text = eval_rows_header() + eval_row_csv(row, false);
+  const std::vector<EvalRow> back = parse_eval_rows(text, "rows", false);
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_TRUE(back[0].run.collided);
+  EXPECT_TRUE(back[0].run.unavoidable);
+  EXPECT_EQ(back[0].run.note, row.run.note);
+  EXPECT_DOUBLE_EQ(back[0].run.min_clearance_m, -1.25);
+  // Counted apart in the summary: 2 collisions, 1 unavoidable.
+  EvaluationRun run;
+  run.manifest.methods = {"geometric"};
+  run.rows = back;
+  row.scenario_index = 8;
+  row.run.unavoidable = false;
+  run.rows.push_back(row);
+  const EvaluationSummary s = summarize(run);
+  ASSERT_EQ(s.methods.size(), 1u);
+  EXPECT_EQ(s.methods[0].collisions, 2);
+  EXPECT_EQ(s.methods[0].unavoidable, 1);
+  // A rows file from before the column is refused with the header it should have.
+  std::string old = text;
+  old.replace(old.find("collided,unavoidable,"), 21, "collided,");
+  try {
+    (void)parse_eval_rows(old, "rows.csv", false);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("rows.csv: line 1: expected the evaluation rows' header"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Evaluate, OneAndTwoThreadsAndMergedShardsWriteTheSameBytes) {
   ScratchDir tmp;
   const Suite suite = small_suite(tmp);

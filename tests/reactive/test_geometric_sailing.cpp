@@ -50,3 +50,21 @@ TEST(GeometricSailing, ScenariosWhereTheLinesCollidedAreSailedClear) {
   }
   EXPECT_GE(lines_collided, count - 2);
 }
+
+TEST(GeometricSailing, TurnsSailedWithTheVehiclesLagKeepClearWhereTheInstantTurnCollided) {
+  // The 15 that still collided when the turn was checked as one that starts
+  // at once at the full rate (session of 2026-11-27: 41 -> 15), the worst of
+  // them here. Traces: the turn the check approved began 4-7 s late (DeepC's
+  // course loop building up the rate, or undoing a turn the other way) and
+  // cut the zone; or both ways round cut it from where the vehicle was. With
+  // the lag in the check, a later change of side and the fan (header), each
+  // is sailed clear (each obstacle had been in the sonar's view from about
+  // 120 m: avoidable collisions, CollisionEnvelope).
+  for (const int index : {5489, 3032, 2580}) {
+    Scenario sc = suite_scenario(index);
+    const SimulationResult sailed = simulate(sc, ReactiveMethod::geometric, {.record_trajectory = false});
+    EXPECT_FALSE(sailed.stats.collided) << "scenario " << index << ": " << sailed.stats.min_clearance_m << " m";
+    EXPECT_TRUE(sailed.stats.reached) << "scenario " << index;
+    EXPECT_GT(sailed.stats.min_clearance_m, 0.5 * sc.reactive.margin_m) << "scenario " << index;
+  }
+}

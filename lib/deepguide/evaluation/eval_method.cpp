@@ -25,6 +25,10 @@ void fill_from(MethodRun& run, const SimulationResult& sim) {
   run.end = std::string(to_string(sim.end));
   run.reached = sim.stats.reached;
   run.collided = sim.stats.collided;
+  if (sim.collision) {
+    run.unavoidable = sim.collision->unavoidable;
+    run.note = sim.collision->reason;
+  }
   run.path_length_m = sim.stats.path_length_m;
   run.energy_j = sim.stats.energy_j;
   run.time_s = sim.stats.time_s;

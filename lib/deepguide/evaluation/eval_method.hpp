@@ -47,8 +47,11 @@ EvalMethod parse_eval_method(const std::string& text);
 /// What one method did on one scenario.
 struct MethodRun {
   std::string end;  ///< reached, stalled, target_in_zone, no_progress, time_out, or no_route (planners)
-  std::string note; ///< why there is no route; empty otherwise
+  std::string note; ///< why there is no route, or what the reactive method collided with; empty otherwise
   bool reached = false, collided = false;
+  /// A reactive method's collision that no guidance could have avoided
+  /// (simulation/collision_envelope.hpp); false for every other run.
+  bool unavoidable = false;
   double route_length_m = 0.0;  ///< the planned route (planners; 0 for reactive methods)
   double path_length_m = 0.0, energy_j = 0.0, time_s = 0.0;  ///< sailed (0 without a route)
   double min_clearance_m = 0.0;  ///< +inf without obstacles

@@ -14,10 +14,10 @@ namespace deepguide {
 namespace {
 
 constexpr const char* kHeader =
-    "scenario_index,scenario,method,end,reached,collided,route_length_m,path_length_m,energy_kj,time_s,"
+    "scenario_index,scenario,method,end,reached,collided,unavoidable,route_length_m,path_length_m,energy_kj,time_s,"
     "min_clearance_m,max_rate_ref_deg_s,rms_rate_ref_deg_s,max_rate_deg_s,rms_rate_deg_s,heading_reversals,"
     "compute_ms,graph_vertices,graph_edges,note";
-constexpr std::size_t kColumns = 20;
+constexpr std::size_t kColumns = 21;
 
 // A CSV field: quoted when it holds a comma, a quote or a line break.
 std::string field(const std::string& text) {
@@ -102,11 +102,11 @@ bool parse_row(const std::vector<std::string>& f, EvalRow& row, std::string& why
     double scale;
     const char* name;
   };
-  const Num nums[] = {{6, &r.route_length_m, 1.0, "route_length_m"},   {7, &r.path_length_m, 1.0, "path_length_m"},
-                      {8, &r.energy_j, 1000.0, "energy_kj"},           {9, &r.time_s, 1.0, "time_s"},
-                      {10, &r.min_clearance_m, 1.0, "min_clearance_m"}, {11, &r.max_rate_ref, 1.0, "max_rate_ref_deg_s"},
-                      {12, &r.rms_rate_ref, 1.0, "rms_rate_ref_deg_s"}, {13, &r.max_rate, 1.0, "max_rate_deg_s"},
-                      {14, &r.rms_rate, 1.0, "rms_rate_deg_s"},         {16, &r.compute_ms, 1.0, "compute_ms"}};
+  const Num nums[] = {{7, &r.route_length_m, 1.0, "route_length_m"},   {8, &r.path_length_m, 1.0, "path_length_m"},
+                      {9, &r.energy_j, 1000.0, "energy_kj"},           {10, &r.time_s, 1.0, "time_s"},
+                      {11, &r.min_clearance_m, 1.0, "min_clearance_m"}, {12, &r.max_rate_ref, 1.0, "max_rate_ref_deg_s"},
+                      {13, &r.rms_rate_ref, 1.0, "rms_rate_ref_deg_s"}, {14, &r.max_rate, 1.0, "max_rate_deg_s"},
+                      {15, &r.rms_rate, 1.0, "rms_rate_deg_s"},         {17, &r.compute_ms, 1.0, "compute_ms"}};
   if (!to_int(f[0], row.scenario_index)) {
     why = "scenario_index: expected a whole number, got '" + printable(f[0]) + "'";
     return false;
@@ -118,7 +118,10 @@ bool parse_row(const std::vector<std::string>& f, EvalRow& row, std::string& why
     why = "scenario, method and end: expected text, got an empty field";
     return false;
   }
-  if (!flag(f[4], r.reached, "reached") || !flag(f[5], r.collided, "collided")) return false;
+  if (!flag(f[4], r.reached, "reached") || !flag(f[5], r.collided, "collided") ||
+      !flag(f[6], r.unavoidable, "unavoidable")) {
+    return false;
+  }
   for (const Num& n : nums) {
     double v = 0.0;
     if (!to_double(f[static_cast<std::size_t>(n.col)], v)) {
@@ -128,11 +131,11 @@ bool parse_row(const std::vector<std::string>& f, EvalRow& row, std::string& why
     *n.v = v * n.scale;
   }
   for (double* rate : {&r.max_rate_ref, &r.rms_rate_ref, &r.max_rate, &r.rms_rate}) *rate = deg_to_rad(*rate);
-  if (!to_int(f[15], r.heading_reversals) || !to_int(f[17], r.graph_vertices) || !to_int(f[18], r.graph_edges)) {
+  if (!to_int(f[16], r.heading_reversals) || !to_int(f[18], r.graph_vertices) || !to_int(f[19], r.graph_edges)) {
     why = "heading_reversals, graph_vertices, graph_edges: expected whole numbers";
     return false;
   }
-  r.note = f[19];
+  r.note = f[20];
   return true;
 }
 
@@ -143,7 +146,8 @@ std::string eval_rows_header() { return std::string(kHeader) + "\n"; }
 std::string eval_row_csv(const EvalRow& row, bool timing) {
   const MethodRun& r = row.run;
   std::string s = std::to_string(row.scenario_index) + "," + field(row.scenario) + "," + field(row.method) + "," +
-                  field(r.end) + "," + (r.reached ? "1" : "0") + "," + (r.collided ? "1" : "0") + ",";
+                  field(r.end) + "," + (r.reached ? "1" : "0") + "," + (r.collided ? "1" : "0") + "," +
+                  (r.unavoidable ? "1" : "0") + ",";
   s += number(r.route_length_m, 3) + "," + number(r.path_length_m, 3) + "," + number(r.energy_j / 1000.0, 3) + "," +
        number(r.time_s, 2) + "," + number(r.min_clearance_m, 3) + ",";
   s += number(rad_to_deg(r.max_rate_ref), 4) + "," + number(rad_to_deg(r.rms_rate_ref), 4) + "," +

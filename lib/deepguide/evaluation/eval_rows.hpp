@@ -4,8 +4,8 @@
 //
 // CSV columns, in this order (units in the names; rates in deg/s, their
 // magnitudes; "inf" for the clearance of a scenario without obstacles):
-//   scenario_index, scenario, method, end, reached, collided, route_length_m,
-//   path_length_m, energy_kj, time_s, min_clearance_m, max_rate_ref_deg_s,
+//   scenario_index, scenario, method, end, reached, collided, unavoidable,
+//   route_length_m, path_length_m, energy_kj, time_s, min_clearance_m, max_rate_ref_deg_s,
 //   rms_rate_ref_deg_s, max_rate_deg_s, rms_rate_deg_s, heading_reversals,
 //   compute_ms, graph_vertices, graph_edges, note
 // Numbers have fixed decimals (mm, J, ms/1000, ...), so the same run writes

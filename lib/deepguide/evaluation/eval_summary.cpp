@@ -149,6 +149,7 @@ std::vector<MethodColumn> method_columns(const RunManifest& manifest) {
           {"runs", count(&MethodStats::runs)},
           {"reached", count(&MethodStats::reached)},
           {"collisions", count(&MethodStats::collisions)},
+          {"unavoidable", count(&MethodStats::unavoidable)},
           {"no route", count(&MethodStats::no_route)},
           {"energy wins", count(&MethodStats::wins)},
           {"path m", dist(&MethodStats::path_length_m, 1)},
@@ -185,6 +186,7 @@ EvaluationSummary summarize(const EvaluationRun& run) {
       ++m.runs;
       m.reached += x.reached;
       m.collisions += x.collided;
+      m.unavoidable += x.collided && x.unavoidable;
       if (x.end == "no_route") {
         ++m.no_route;
       } else {
@@ -268,6 +270,7 @@ void write_results(const std::string& dir, const EvaluationRun& run) {
                         {"end", x.end},
                         {"reached", x.reached},
                         {"collided", x.collided},
+                        {"unavoidable", x.unavoidable},
                         {"route_length_m", x.route_length_m},
                         {"path_length_m", x.path_length_m},
                         {"energy_kj", x.energy_j / 1000.0},
@@ -291,6 +294,7 @@ void write_results(const std::string& dir, const EvaluationRun& run) {
                        {"runs", x.runs},
                        {"reached", x.reached},
                        {"collisions", x.collisions},
+                       {"unavoidable_collisions", x.unavoidable},
                        {"no_route", x.no_route},
                        {"energy_wins", x.wins},
                        {"path_length_m", dist_json(x.path_length_m)},

@@ -29,6 +29,7 @@ namespace deepguide {
 struct MethodStats {
   std::string method;
   int runs = 0, reached = 0, collisions = 0, no_route = 0, other_ends = 0, wins = 0;
+  int unavoidable = 0;  ///< of the collisions, those no guidance could have avoided (MethodRun::unavoidable)
   Distribution path_length_m, route_length_m, energy_kj, time_s, min_clearance_m;
   Distribution max_rate_ref_deg_s, rms_rate_ref_deg_s, compute_ms, graph_size;
 };

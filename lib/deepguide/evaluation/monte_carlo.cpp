@@ -134,7 +134,7 @@ MonteCarloResult run_monte_carlo(const MonteCarloParams& params, std::span<const
     const Scenario sc = monte_carlo_scenario(params, k);
     for (ReactiveMethod m : methods) {
       const SimulationResult r = simulate(sc, m, options);
-      result.runs.push_back({k, m, r.stats, r.end, (sc.target - sc.start).norm()});
+      result.runs.push_back({k, m, r.stats, r.end, (sc.target - sc.start).norm(), r.collision});
     }
     if (progress != nullptr) progress(k + 1, params.scenarios);
   }
@@ -147,6 +147,7 @@ MonteCarloResult run_monte_carlo(const MonteCarloParams& params, std::span<const
       ++s.runs;
       s.reached += run.stats.reached;
       s.collisions += run.stats.collided;
+      s.unavoidable += run.collision && run.collision->unavoidable;
       switch (run.end) {
         case SimulationEnd::reached: break;
         case SimulationEnd::stalled: ++s.stalled; break;

@@ -59,6 +59,7 @@ struct MonteCarloRun {
   SimulationStats stats;
   SimulationEnd end = SimulationEnd::time_out;
   double straight_m = 0.0;  ///< |target - start|
+  std::optional<CollisionCause> collision;  ///< SimulationResult::collision
 };
 
 /// Order statistics of a sample (nearest-rank percentiles); all zero when empty.
@@ -73,6 +74,7 @@ struct MethodSummary {
   int runs = 0;
   int reached = 0;
   int collisions = 0;  ///< runs in which the vehicle was ever inside a true obstacle
+  int unavoidable = 0;  ///< of those, collisions no guidance could have avoided (simulation/collision_envelope.hpp)
   int stalled = 0, no_progress = 0, time_out = 0, target_in_zone = 0;  ///< how the other runs ended
   Distribution min_clearance_m;
   Distribution max_abs_rate_ref, rms_rate_ref;  ///< rad/s

@@ -45,13 +45,20 @@ struct Tuning {
   double turn_rate = 0.0;  ///< turn_rate_limit; 0: the course line alone
   double speed = 0.0;      ///< through the water, for the turn
   double margin = 0.0;
+  double turn_lag = 0.0;   ///< turn_lag_s
+  double rate_now = 0.0;   ///< the vehicle's present turning rate
 };
 
 /// The least signed distance to the zones that do not hold p along the way
-/// a vehicle at `speed`, turning at most `rate`, sails a new course from its
-/// present one: the turn at the full rate, then straight on for two turning
-/// radii. (The current's drift is left out: the autopilot makes good the
-/// course over ground, and the comparison below is between two such turns.)
+/// a vehicle at `speed` sails a new course from its present one: its turning
+/// rate goes from the present one towards the full rate (the way the new
+/// course lies, easing off the last 2 s of the turn) as a first-order lag,
+/// then straight on for two turning radii. The lag matters: DeepC's closed
+/// loop takes about 7 s to reach a turning rate, 15 m of straight travel a
+/// turn that starts at once does not have, and a turn the other way first
+/// undoes the present one. (The current's drift is left out: the autopilot
+/// makes good the course over ground, and the comparison below is between
+/// two such turns.)
 /// The hysteresis band of a vehicle that sails the construction (a turning
 /// rate known): a fifth of the margin, at least 1 m; 0 for the construction
 /// itself (the figures' gradient lines, a vehicle that turns at once).
@@ -59,15 +66,22 @@ double sailing_band(const Tuning& tuning) {
   return tuning.turn_rate > 0.0 ? std::max(1.0, 0.2 * tuning.margin) : 0.0;
 }
 
+/// How deep a sailed turn may cut into a zone (the security ellipse, which
+/// lies outside the margin's offset curve) before another course is sought.
+double sailed_cut(const Tuning& tuning) { return 0.2 * tuning.margin; }
+
 Ellipse widened(const Ellipse& zone, double band) { return {zone.center, zone.a + band, zone.b + band, zone.theta}; }
 
 constexpr double kSmallTurn = 20.0 * std::numbers::pi / 180.0;
+constexpr int kMaxTurnSwitches = 3;
+constexpr int kFan = 24;
 
 double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double course, const Vec2& direction,
-                        double speed, double rate) {
-  const double to = math_angle(direction);
+                        const Tuning& tuning) {
+  constexpr double kEase_s = 2.0;
+  const double to = math_angle(direction), rate = tuning.turn_rate, speed = tuning.speed;
   const double radius = speed / rate;
-  const double horizon = std::abs(wrap_pi(to - course)) / rate + 2.0 * radius / speed;
+  const double horizon = std::abs(wrap_pi(to - course)) / rate + tuning.turn_lag + kEase_s + 2.0 * radius / speed;
   std::vector<std::size_t> near;
   for (std::size_t k = 0; k < zones.size(); ++k) {
     const double reach = zones[k].a + speed * horizon;
@@ -77,11 +91,12 @@ double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double
   if (near.empty()) return least;
   constexpr double dt = 0.2;
   Vec2 x = p;
-  double psi = course;
+  double psi = course, r = std::clamp(tuning.rate_now, -rate, rate);
   for (double t = 0.0; t < horizon; t += dt) {
-    const double step = std::clamp(wrap_pi(to - psi), -rate * dt, rate * dt);
-    x += speed * dt * unit_vector(psi + 0.5 * step);
-    psi += step;
+    const double wanted = std::clamp(wrap_pi(to - psi) / kEase_s, -rate, rate);
+    r += tuning.turn_lag > 0.0 ? (wanted - r) * std::min(1.0, dt / tuning.turn_lag) : wanted - r;
+    x += speed * dt * unit_vector(psi + 0.5 * r * dt);
+    psi += r * dt;
     for (const std::size_t k : near) least = std::min(least, signed_distance(zones[k], x));
   }
   return least;
@@ -183,6 +198,18 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     }
   }
   if (active < 0) active = first_zone_hit(zones, p, g);
+  if (active < 0 && memory && memory->side != 0 && course && tuning.turn_rate > 0.0 && tuning.speed > 0.0) {
+    // The way to the target is free, but a turn to it sailed from here would
+    // cut a zone (a large turn beside the zone just passed): the engaged zone
+    // stays engaged, its tangent held, until the turn to the target keeps clear.
+    const Vec2 direct = unit_or_zero(g - p);
+    if (std::abs(wrap_pi(math_angle(direct) - *course)) >= kSmallTurn &&
+        sailed_clearance(zones, p, *course, direct, tuning) < -sailed_cut(tuning)) {
+      for (std::size_t i = 0; i < zones.size() && active < 0; ++i) {
+        if (engaged_with(*memory, zones[i].center, match_radius(zones[i]))) active = static_cast<std::ptrdiff_t>(i);
+      }
+    }
+  }
   if (active < 0) {
     if (memory) release(*memory);
     return {unit_or_zero(g - p), 2, -1};
@@ -243,25 +270,51 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
   // one asks for a turn across the near one, and the cascade's same-side rule
   // sends the vehicle round the far side of a zone it could pass on the near.
   const auto sailed = [&](Construction chosen, int side) -> Construction {
-    if (!memory || memory->side_from_turn || !course || !(tuning.turn_rate > 0.0) || !(tuning.speed > 0.0) ||
+    if (!memory || !course || !(tuning.turn_rate > 0.0) || !(tuning.speed > 0.0) ||
         chosen.direction.squaredNorm() == 0.0) {
       return chosen;
     }
     // A small turn sweeps little: the line is what the vehicle sails (and the check costs nothing then).
     if (std::abs(wrap_pi(math_angle(chosen.direction) - *course)) < kSmallTurn) return chosen;
-    const double mine = sailed_clearance(zones, p, *course, chosen.direction, tuning.speed, tuning.turn_rate);
-    if (mine >= -0.2 * tuning.margin) return chosen;
-    const Construction other = cascade(-side);
-    if (other.direction.squaredNorm() == 0.0) return chosen;
-    const double theirs = sailed_clearance(zones, p, *course, other.direction, tuning.speed, tuning.turn_rate);
-    // Only for a turn that keeps clear: trading one cut for a smaller one
-    // late swaps a turn under way for a reversal, which sweeps more.
-    if (!(theirs >= -0.2 * tuning.margin)) return chosen;
-    memory->side = -side;
-    memory->engaged_object = active;
-    memory->engaged_center = engaged.center;
-    memory->side_from_turn = true;
-    return other;
+    const double cut = sailed_cut(tuning);
+    const double mine = sailed_clearance(zones, p, *course, chosen.direction, tuning);
+    if (mine >= -cut) return chosen;
+    double best = mine;
+    if (memory->turn_switches < kMaxTurnSwitches) {
+      const Construction other = cascade(-side);
+      if (other.direction.squaredNorm() > 0.0) {
+        const double theirs = sailed_clearance(zones, p, *course, other.direction, tuning);
+        // A turn that keeps clear, or one that cuts much less deep (the
+        // sailed turn counts the reversal a change of side may need).
+        if (theirs >= -cut || theirs > mine + cut) {
+          memory->side = -side;
+          memory->engaged_object = active;
+          memory->engaged_center = engaged.center;
+          ++memory->turn_switches;
+          return other;
+        }
+        best = std::max(best, theirs);
+      }
+    }
+    // Neither way round can be sailed clear from here: for this step, the
+    // course of a fan round the vehicle nearest the construction's whose
+    // turn keeps clear, else the one that cuts least. The construction is
+    // asked again at the next step, and taken as soon as its turn is clear.
+    Vec2 safest = chosen.direction;
+    double nearest = std::numeric_limits<double>::infinity();
+    const double want = math_angle(chosen.direction);
+    for (int i = 0; i < kFan; ++i) {
+      const double heading = *course + 2.0 * std::numbers::pi * i / kFan;
+      const Vec2 d = unit_vector(heading);
+      const double c = sailed_clearance(zones, p, *course, d, tuning);
+      const double off = std::abs(wrap_pi(heading - want));
+      if (c >= -cut ? off < nearest : nearest == std::numeric_limits<double>::infinity() && c > best + cut) {
+        if (c >= -cut) nearest = off;
+        best = std::max(best, c);
+        safest = d;
+      }
+    }
+    return {safest, chosen.sector, chosen.object};
   };
   if (memory && course && !engaged_with(*memory, engaged.center, match_radius(engaged))) {
     // A zone engaged afresh while under way: the side whose course is the
@@ -296,7 +349,7 @@ ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& 
   const Construction c =
       construct(zones, input.position, target.point, input.course, &memory,
                 {params.exit_blend_fraction, params.geometric_passage_m, params.turn_rate_limit.value_or(0.0),
-                 std::max(input.speed_mps, params.speed_mps), params.margin_m});
+                 std::max(input.speed_mps, params.speed_mps), params.margin_m, params.turn_lag_s, input.turn_rate});
   const ReactiveStatus status = c.sector == 3 ? ReactiveStatus::leaving_zone : ReactiveStatus::ok;
   ReactiveCommand cmd = course_command(params, input, c.direction, status, c.object, target);
   cmd.sector = c.sector;

@@ -53,10 +53,20 @@
 //     on); the sonar's noise flipped grazing lines between blocked and free,
 //     the turn began late or the course flipped between two ways round;
 //   - the turn checked: a course more than 20 deg off the present one is
-//     sailed ahead (the turn at the full rate, then straight for 2 U/r); if
-//     that cuts into a zone by more than a fifth of the margin, the other
-//     side's construction is taken when its turn keeps clear, once per
-//     engaged object (more would dither);
+//     sailed ahead as the vehicle turns (its turning rate going from the
+//     present one, ReactiveInput::turn_rate, to the full rate with the closed
+//     loop's lag, turn_lag_s; then straight for 2 U/r). If that cuts into a
+//     zone by more than a fifth of the margin, the other side's construction
+//     is taken when its turn keeps clear or cuts a fifth of the margin less
+//     (at most 3 times per engaged object, or it could dither); if neither
+//     side will do, for that step the course of a 24-way fan round the
+//     vehicle nearest the construction's whose turn keeps clear (else the
+//     one that cuts least). Checking the turn as an instant full-rate turn
+//     missed the 4-7 s DeepC takes to build up a turn (10-15 m of straight
+//     travel) and the turn it was already in;
+//   - the release checked: when the way to the target comes free, a turn to
+//     it of more than 20 deg that would cut a zone so keeps the engaged zone
+//     engaged (its tangent held) until the turn to the target keeps clear;
 //   - without a turning rate (0: the figures' gradient lines, a kinematic
 //     vehicle) none of this applies: the seed's construction, exactly.
 

@@ -81,6 +81,12 @@ struct ReactiveParams {
   /// the simulation and the mission run, none elsewhere; 0: the construction
   /// of lines alone (the seed's; figures, comparisons).
   std::optional<double> turn_rate_limit = std::nullopt;
+  /// (b) How long the vehicle takes to take up a new turning rate (s; the
+  /// closed loop as a first-order lag): a sailed turn begins this late, and
+  /// a turn the other way first undoes the present one. 0: at once. Filled
+  /// with turn_rate_limit in the simulation and the mission run
+  /// (simulation/simulation.hpp, sailing_params).
+  double turn_lag_s = 0.0;
   /// (c) Stalled when the resultant force is below this fraction of the unit attraction, in (0, 1).
   double potential_stall_fraction = 0.05;
 };
@@ -105,6 +111,7 @@ struct ReactiveInput {
   double speed_mps = 0.0;
   Vec2 target{0.0, 0.0};
   std::span<const Ellipse> objects;  ///< reported footprints (local frame), not inflated
+  double turn_rate = 0.0;   ///< present turning rate (rad/s, ccw > 0), for a method that sails its course; 0 unknown
 };
 
 enum class ReactiveStatus {
@@ -139,9 +146,10 @@ struct ReactiveMemory {
   int side = 0;
   std::ptrdiff_t engaged_object = -1;  ///< the object the side was latched for
   Vec2 engaged_center{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
-  /// The geometric method changed the side for this object because the turn
-  /// to the first would have cut into a zone: once per object, or it dithers.
-  bool side_from_turn = false;
+  /// How often the geometric method changed the side for this object
+  /// because the turn to the present one would have cut into a zone (a few
+  /// times at most, or it could dither).
+  int turn_switches = 0;
 };
 
 /// One control step of `method`. Throws InputError for bad params, a

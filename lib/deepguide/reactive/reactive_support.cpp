@@ -35,6 +35,7 @@ void validate(const ReactiveParams& p) {
     check(finite(*p.turn_rate_limit) && *p.turn_rate_limit >= 0.0, "turn_rate_limit", "a rate >= 0 rad/s",
           *p.turn_rate_limit);
   }
+  check(finite(p.turn_lag_s) && p.turn_lag_s >= 0.0, "turn_lag_s", "a time >= 0 s", p.turn_lag_s);
   check(finite(p.potential_stall_fraction) && p.potential_stall_fraction > 0.0 && p.potential_stall_fraction < 1.0,
         "potential_stall_fraction", "a fraction in (0, 1)", p.potential_stall_fraction);
 }
@@ -85,6 +86,9 @@ void validate_input(const ReactiveParams& params, const ReactiveInput& input) {
   validate_query(params, input.position, input.target, input.objects);
   if (!std::isfinite(input.course)) {
     throw input_error({"reactive", "", "course"}, "a finite course", std::to_string(input.course));
+  }
+  if (!std::isfinite(input.turn_rate)) {
+    throw input_error({"reactive", "", "turn_rate"}, "a finite turning rate", std::to_string(input.turn_rate));
   }
 }
 
@@ -174,7 +178,7 @@ bool engaged_with(const ReactiveMemory& memory, const Vec2& center, double match
 }
 
 int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& center, double match_m, int fresh) {
-  if (!engaged_with(memory, center, match_m)) memory.side = fresh, memory.side_from_turn = false;
+  if (!engaged_with(memory, center, match_m)) memory.side = fresh, memory.turn_switches = 0;
   memory.engaged_object = index;
   memory.engaged_center = center;
   return memory.side;

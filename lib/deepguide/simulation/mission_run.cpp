@@ -12,6 +12,7 @@
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
 #include "deepguide/simulation/plant.hpp"
+#include "deepguide/simulation/simulation.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/water_volume.hpp"
 
@@ -318,14 +319,13 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
       }
     }
     if (reactive) {
-      ReactiveParams params = sc.reactive;
+      ReactiveParams params = sailing_params(sc.reactive, sc.vehicle);
       params.speed_mps = std::max(here.speed_mps, 0.1);
-      if (!params.turn_rate_limit) params.turn_rate_limit = sc.vehicle.max_turn_rate;
       const double cog = s.ground_velocity.squaredNorm() > 0.0 ? std::atan2(s.ground_velocity.y(), s.ground_velocity.x())
                                                                : s.heading;
       const ReactiveCommand cmd =
           reactive_command(ReactiveMethod::geometric, params, memory,
-                           {t, pos, cog, s.speed_mps, reactive_target, contacts.ellipses()});
+                           {t, pos, cog, s.speed_mps, reactive_target, contacts.ellipses(), s.yaw_rate});
       if (cmd.status == ReactiveStatus::target_in_zone && !pending) {
         // The rendezvous lies inside an object's zone: no way on. Stop short and say so.
         event(t, pos, "the rendezvous " + point_text(reactive_target) +

@@ -83,26 +83,36 @@ SimulationStats trajectory_stats(std::span<const TrajectorySample> trajectory, c
   return acc.stats();
 }
 
+ReactiveParams sailing_params(const ReactiveParams& params, const VehicleParams& vehicle) {
+  ReactiveParams p = params;
+  if (!p.turn_rate_limit) {
+    p.turn_rate_limit = vehicle.autopilot.max_reference_turn_rate;
+    p.turn_lag_s = 2.0 * vehicle.autopilot.damping_ratio / vehicle.autopilot.natural_frequency_rad_s;
+  }
+  return p;
+}
+
 SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const SimulationOptions& options) {
   validate(sc);
   std::optional<Sonar> sonar;
   if (sc.sonar.range_m > 0.0) sonar.emplace(sc.sonar);
   ContactMemory contacts(sc.contacts, sc.sonar);
   ReactiveMemory memory;
-  // The method knows the vehicle's turning-rate limit unless the scenario says otherwise.
-  ReactiveParams params = sc.reactive;
-  if (!params.turn_rate_limit) params.turn_rate_limit = sc.vehicle.max_turn_rate;
+  const ReactiveParams params = sailing_params(sc.reactive, sc.vehicle);
+  CollisionWatch watch(sc);
   const Guidance reactive = [&](double t, const VehicleState& state) {
+    watch.observe(state);
     if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
       contacts.update(sonar->detections(), t);
     }
-    const ReactiveInput input{t,         state.position,     course_over_ground(state), state.speed_mps,
-                              sc.target, contacts.ellipses()};
+    const ReactiveInput input{t,         state.position,      course_over_ground(state), state.speed_mps,
+                              sc.target, contacts.ellipses(), state.yaw_rate};
     return reactive_command(method, params, memory, input);
   };
   SimulationResult result = simulate_guided(sc, reactive, options);
   result.method = method;
   result.contacts = contacts.size();
+  result.collision = watch.cause();
   return result;
 }
 

@@ -57,6 +57,7 @@
 #include <vector>
 
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/simulation/collision_envelope.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/vehicle/vehicle_model.hpp"
 
@@ -104,12 +105,22 @@ struct SimulationResult {
   std::size_t samples = 0;   ///< samples taken (the trajectory's size when recorded)
   std::size_t contacts = 0;  ///< contacts remembered at the end
   double guidance_ms = 0.0;  ///< wall time spent in the guidance (sonar, contacts and method; not the plant)
+  /// simulate(): the first collision, and whether any guidance could have
+  /// avoided it (simulation/collision_envelope.hpp); nullopt without one.
+  std::optional<CollisionCause> collision;
 };
 
 struct SimulationOptions {
   /// false: only the statistics (Monte Carlo runs); they are the same either way.
   bool record_trajectory = true;
 };
+
+/// What a reactive method is told of the vehicle it steers: unless `params`
+/// sets turn_rate_limit, the autopilot's largest reference turning rate and
+/// the closed loop's lag in taking it up, 2 zeta / omega_n (6.7 s for DeepC:
+/// a first-order fit to its course loop within 3 m over a 90 degree turn and
+/// a reversal; docs/SIMULATION.md).
+ReactiveParams sailing_params(const ReactiveParams& params, const VehicleParams& vehicle);
 
 /// Runs `scenario` with `method`. Throws InputError for an invalid scenario
 /// (validate()) or a vehicle that leaves a gridded current field.

@@ -97,6 +97,10 @@ nlohmann::ordered_json simulation_json(const Scenario& scenario, const Simulatio
       {"contacts", result.contacts},
   };
   if (std::isfinite(s.min_clearance_m)) j["min_clearance_m"] = s.min_clearance_m;
+  if (result.collision) {
+    j["collision"] = result.collision->unavoidable ? "unavoidable" : "avoidable";
+    j["collision_cause"] = result.collision->reason;
+  }
   return j;
 }
 
