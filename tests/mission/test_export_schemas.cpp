@@ -191,7 +191,8 @@ TEST(ExportSchemas, TheSampleHasWhatTheChecksNeed) {
   EXPECT_GT(arcs, 20u);
   EXPECT_GE(deepest, 8.0);
   EXPECT_EQ(want().front().name, "001");
-  EXPECT_EQ(want()[249].name, "250");
+  ASSERT_GE(want().size(), 100u);
+  EXPECT_EQ(want()[99].name, "100");
   EXPECT_GT(sample().route.turn_radius_m, 10.0);
 }
 

@@ -156,12 +156,37 @@ TEST(Mission, AGpsUpdateSurfacesAndDivesAndGoingAroundKeepsTheDistance) {
   EXPECT_DOUBLE_EQ(plan.basics[0].depth_m, 0.0);
   EXPECT_DOUBLE_EQ(plan.basics[0].hold_s, 90.0);
   EXPECT_DOUBLE_EQ(plan.basics[1].depth_m, 12.0);
-  // The approach ends on the path, and every vertex of the lap is 25 m from the outline.
+  // The approach ends on the path; the lap is arcs (no 72 short lines) that
+  // stay within kLapTolerance_m of 25 m from the outline, join without a
+  // corner, turn no tighter than the path (b^2/a + D = 35 m) and close.
   const ObstacleField field(set, 0.0);
+  EXPECT_NEAR(field.clearance(plan.basics[2].to), 25.0, 1e-6);
+  const auto tangent = [](const BasicManoeuvre& b, const Vec2& at) {
+    const Vec2 r = (at - b.centre).normalized();
+    return Vec2(-b.turn * r.y(), b.turn * r.x());
+  };
+  double lap_length = 0.0;
   for (std::size_t i = 3; i < plan.basics.size(); ++i) {
-    EXPECT_NEAR(field.clearance(plan.basics[i].to), 25.0, 1e-6) << i;
+    const BasicManoeuvre& b = plan.basics[i];
+    ASSERT_EQ(b.kind, BasicManoeuvre::Kind::arc) << i;
+    EXPECT_EQ(b.turn, +1) << i;
+    EXPECT_GE(b.radius_m, 35.0 - 0.5) << i;
+    for (int k = 0; k <= 8; ++k) {
+      EXPECT_NEAR(field.clearance(b.point_at(b.length_m * k / 8)), 25.0, kLapTolerance_m) << i;
+    }
+    if (i > 3) {
+      EXPECT_LT((tangent(plan.basics[i - 1], b.from) - tangent(b, b.from)).norm(), 1e-9) << i;
+    }
+    lap_length += b.length_m;
   }
+  EXPECT_LE(plan.basics.size() - 3, 32u);
   EXPECT_LT((plan.basics.back().to - plan.basics[2].to).norm(), 1e-6);  // one closed lap
+  // Its length against Steiner's formula: the offset curve of a convex curve
+  // at D is as long as the curve plus 2 pi D; the ellipse's perimeter by
+  // Ramanujan's second approximation (relative error ~1e-6 for 40 x 20).
+  const double h = std::pow((40.0 - 20.0) / (40.0 + 20.0), 2.0);
+  const double ellipse = M_PI * (40.0 + 20.0) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h)));
+  EXPECT_NEAR(lap_length, ellipse + 2.0 * M_PI * 25.0, 0.002 * lap_length);
   // An object that is not there.
   const std::string missing = dir.write("x.yaml", kHeader + "manoeuvres:\n  - identify: {object: nowhere}\n");
   try {

@@ -231,13 +231,21 @@ TEST(MissionControl, ARockToIdentifyIsGoneRoundAtTheIdentificationDistance) {
   EXPECT_EQ(planned.resolutions[0].reaction, ControlRules::Reaction::identify);
   EXPECT_TRUE(planned.remaining.empty());
   expect_continuous(planned.plan);
+  // Round a disc the path is a circle, and its biarcs are that circle: 8 arcs
+  // of radius 50 m about the rock's centre, one lap.
   std::size_t lap = 0;
+  double swept = 0.0;
   for (const BasicManoeuvre& b : planned.plan.basics) {
     if (b.role != BasicManoeuvre::Role::identification) continue;
     ++lap;
+    ASSERT_EQ(b.kind, BasicManoeuvre::Kind::arc);
+    EXPECT_NEAR(b.radius_m, 50.0, 1e-6);
+    EXPECT_LT((b.centre - Vec2(500.0, 10.0)).norm(), 1e-6);
     EXPECT_NEAR((b.to - Vec2(500.0, 10.0)).norm(), 50.0, 1e-6);
+    swept += b.length_m / b.radius_m;
   }
-  EXPECT_EQ(lap, 72u);
+  EXPECT_EQ(lap, 8u);
+  EXPECT_NEAR(swept, 2.0 * M_PI, 1e-6);
   EXPECT_TRUE(check_mission_plan(planned.plan, env, observation_options(m)).safe);
   // A rule naming an object that is not an elliptic cylinder (or the sea floor) evades.
   EXPECT_EQ(choose_reaction(m.control, env.obstacles, 0), ControlRules::Reaction::identify);

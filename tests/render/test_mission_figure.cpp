@@ -36,18 +36,19 @@ TEST(MissionFigure, EachPartIsDrawnInTheColourOfItsRole) {
   const test::Png png(path);
   ASSERT_TRUE(png.ok());
   EXPECT_EQ(png.width(), 900);
-  // The middle of the longest line of each role carries that role's colour.
+  // The middle of the longest line or arc of each role (the identification
+  // laps are arcs) carries that role's colour.
   for (const auto& [role, colour] : {std::pair{BasicManoeuvre::Role::mission, style.mission},
                                      std::pair{BasicManoeuvre::Role::evasion, style.evasion},
                                      std::pair{BasicManoeuvre::Role::identification, style.identification}}) {
     const BasicManoeuvre* longest = nullptr;
     for (const BasicManoeuvre& b : planned.plan.basics) {
-      if (b.role == role && b.kind == BasicManoeuvre::Kind::line && (!longest || b.length_m > longest->length_m)) {
+      if (b.role == role && b.kind != BasicManoeuvre::Kind::point && (!longest || b.length_m > longest->length_m)) {
         longest = &b;
       }
     }
     ASSERT_NE(longest, nullptr);
-    const Vec2 mid = layout.view.to_pixel(0.5 * (longest->from + longest->to));
+    const Vec2 mid = layout.view.to_pixel(longest->point_at(0.5 * longest->length_m));
     EXPECT_LE(colour_distance(png.at(mid), colour), 12) << static_cast<int>(role);
   }
   EXPECT_THROW(render_mission(MissionFigure{}, dir.file("none.png")), InputError);

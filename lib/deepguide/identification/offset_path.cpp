@@ -1,5 +1,6 @@
 #include "deepguide/identification/offset_path.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -35,6 +36,41 @@ OffsetProjection project_to_offset(const Ellipse& object, double distance_m, con
   out.point = offset_point(object, distance_m, out.t);
   out.tangent = offset_tangent(object, out.t);
   out.signed_m = near.signed_distance() - distance_m;
+  return out;
+}
+
+std::vector<CircleArc> offset_lap_arcs(const Ellipse& object, double distance_m, double t0, double tolerance_m) {
+  constexpr int kFirst = 4;   // quarter laps to begin with
+  constexpr int kDeepest = 10;  // 4096 pieces at most
+  std::vector<CircleArc> out;
+  const auto off_path = [&](const CircleArc& a) {
+    double worst = 0.0;
+    for (const double f : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
+      worst = std::max(worst, std::abs(project_to_offset(object, distance_m, a.point_at(f)).signed_m));
+    }
+    return worst;
+  };
+  const auto fit = [&](const auto& self, double ta, double tb, int depth) -> void {
+    const std::optional<std::array<CircleArc, 2>> pair =
+        biarc(offset_point(object, distance_m, ta), offset_tangent(object, ta), offset_point(object, distance_m, tb),
+              offset_tangent(object, tb));
+    if (pair && (depth >= kDeepest || std::max(off_path((*pair)[0]), off_path((*pair)[1])) <= tolerance_m)) {
+      out.push_back((*pair)[0]);
+      out.push_back((*pair)[1]);
+      return;
+    }
+    if (depth >= kDeepest) {  // a convex curve has biarcs between near points: only a broken ellipse gets here
+      throw InputError("identification lap: expected an ellipse with 0 < b <= a, got a = " + std::to_string(object.a) +
+                       ", b = " + std::to_string(object.b));
+    }
+    self(self, ta, 0.5 * (ta + tb), depth + 1);
+    self(self, 0.5 * (ta + tb), tb, depth + 1);
+  };
+  for (int k = 0; k < kFirst; ++k) {
+    fit(fit, t0 + 2.0 * M_PI * k / kFirst, t0 + 2.0 * M_PI * (k + 1) / kFirst, 0);
+  }
+  // The lap closes exactly where it began.
+  out.back().to = out.front().from;
   return out;
 }
 

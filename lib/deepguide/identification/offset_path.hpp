@@ -18,7 +18,9 @@
 // path is dist(p, ellipse) - D (negative between the object and the path).
 
 #include <string>
+#include <vector>
 
+#include "deepguide/geometry/biarc.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
 namespace deepguide {
@@ -45,6 +47,12 @@ struct OffsetProjection {
 /// The nearest point of the offset curve to `p` (header). Inside the object
 /// the nearest ellipse point is used alike (signed_m < -D).
 OffsetProjection project_to_offset(const Ellipse& object, double distance_m, const Vec2& p);
+
+/// One lap of the offset path, anticlockwise from the point of parameter t0
+/// back to it, as circular arcs with no corner between them: biarcs
+/// (geometry/biarc.hpp) between points of the path with its tangents there,
+/// halved until every arc lies within `tolerance_m` of the path.
+std::vector<CircleArc> offset_lap_arcs(const Ellipse& object, double distance_m, double t0, double tolerance_m);
 
 /// Throws InputError when a vehicle turning at most with `turn_radius_m`
 /// cannot follow the offset path (its smallest radius is smaller), naming

@@ -228,6 +228,19 @@ Vec2 BasicManoeuvre::point_at(double s) const {
   return centre + radius_m * Vec2(std::cos(a), std::sin(a));
 }
 
+Vec2 BasicManoeuvre::direction_at(double s) const {
+  if (kind == Kind::point || length_m <= 0.0) return Vec2::Zero();
+  if (kind == Kind::line) return (to - from) / length_m;
+  const Vec2 r = (point_at(s) - centre) / radius_m;
+  return turn * Vec2(-r.y(), r.x());
+}
+
+bool joins_smoothly(const BasicManoeuvre& before, const BasicManoeuvre& next) {
+  constexpr double kSameDirection = 1e-6;  // rad
+  const Vec2 a = before.direction_at(before.length_m), b = next.direction_at(0.0);
+  return a.squaredNorm() > 0.0 && b.squaredNorm() > 0.0 && (a - b).norm() < kSameDirection;
+}
+
 double plan_duration(const MissionPlan& plan) {
   double t = 0.0;
   for (const BasicManoeuvre& b : plan.basics) t += b.duration_s();
@@ -275,19 +288,18 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
         b.point(c.depth_m, 60.0);
       } else {
         check_offset_path_fits(*object, id->distance_m, radius, name);
-        for (const Vec2& p : identification_lap(*object, id->distance_m, b.at())) b.line(p);
+        const IdentificationLap lap = identification_lap(*object, id->distance_m, b.at());
+        b.line(lap.start);
+        for (const CircleArc& a : lap.arcs) b.arc(a.centre, a.to, a.turn);
       }
     }
   }
   return std::move(b.plan);
 }
 
-std::vector<Vec2> identification_lap(const Ellipse& object, double distance_m, const Vec2& from) {
-  constexpr int kSteps = 72;
+IdentificationLap identification_lap(const Ellipse& object, double distance_m, const Vec2& from) {
   const OffsetProjection nearest = project_to_offset(object, distance_m, from);
-  std::vector<Vec2> out{nearest.point};
-  for (int k = 1; k <= kSteps; ++k) out.push_back(offset_point(object, distance_m, nearest.t + 2.0 * M_PI * k / kSteps));
-  return out;
+  return {nearest.point, offset_lap_arcs(object, distance_m, nearest.t, kLapTolerance_m)};
 }
 
 std::vector<TrackPoint> plan_polyline(const MissionPlan& plan, double tolerance_m) {

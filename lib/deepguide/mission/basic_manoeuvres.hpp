@@ -19,7 +19,8 @@
 //   point back at the manoeuvre's depth (the dive).
 // - identify: around: a line to the nearest point of the path at distance_m
 //   from the object's outline, then one lap along that path (its true offset
-//   curve, identification/offset_path.hpp, as 72 lines); align: a line to the
+//   curve, identification/offset_path.hpp, as circular arcs within 0.1 m of
+//   it: 8 to 16 for the usual objects, where 72 lines were); align: a line to the
 //   point at distance_m from the outline facing the approach, and a point
 //   held there (the identification system aligns from there).
 // The first line of each manoeuvre changes depth from the previous depth to
@@ -30,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/geometry/biarc.hpp"
 #include "deepguide/mission/mission.hpp"
 #include "deepguide/world/obstacle.hpp"
 
@@ -57,6 +59,8 @@ struct BasicManoeuvre {
 
   /// The point s metres along it (clamped).
   Vec2 point_at(double s) const;
+  /// The unit direction of travel s metres along it (clamped); zero for a point.
+  Vec2 direction_at(double s) const;
   /// How long it takes at its speed, its hold included.
   double duration_s() const { return hold_s + (speed_mps > 0.0 ? length_m / speed_mps : 0.0); }
 };
@@ -66,6 +70,9 @@ struct MissionPlan {
   double length_m = 0.0;
   std::vector<std::string> warnings;  ///< one line each, naming the manoeuvre
 };
+
+/// Whether `next` leaves in the direction `before` arrives (no corner where they join).
+bool joins_smoothly(const BasicManoeuvre& before, const BasicManoeuvre& next);
 
 /// How long the plan takes at its speeds and holds (s).
 double plan_duration(const MissionPlan& plan);
@@ -89,9 +96,15 @@ double route_turn_radius(const VehicleParams& vehicle, double speed_mps, double 
 MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles);
 
 /// The lap round an object at `distance_m` from its outline, as identify
-/// around sails it: the point of the path nearest `from`, then 72 points one
-/// lap on (the last is the first again).
-std::vector<Vec2> identification_lap(const Ellipse& object, double distance_m, const Vec2& from);
+/// around sails it: from the point of the path nearest `from`, one lap
+/// anticlockwise as circular arcs within kLapTolerance_m of the path
+/// (identification/offset_path.hpp, offset_lap_arcs).
+struct IdentificationLap {
+  Vec2 start{0.0, 0.0};
+  std::vector<CircleArc> arcs;  ///< the last ends at start
+};
+inline constexpr double kLapTolerance_m = 0.1;
+IdentificationLap identification_lap(const Ellipse& object, double distance_m, const Vec2& from);
 
 /// The plan as a polyline of the horizontal track (arcs as chords no more
 /// than `tolerance_m` off), with the depth at each point.

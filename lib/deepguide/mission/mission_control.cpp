@@ -116,29 +116,48 @@ double deepest_between(const TrackDanger& danger, const MissionPlan& plan, doubl
 
 // Lines through `points` at `depth`, the first from the departure's depth,
 // the last to the rendezvous's; `lap` marks which legs go round the object.
-std::vector<BasicManoeuvre> evasion_lines(const std::vector<Vec2>& points, const std::vector<char>& lap,
-                                          const PlanPosition& from, const PlanPosition& to, double depth,
-                                          std::size_t source) {
+std::vector<BasicManoeuvre> evasion_lines(const std::vector<Vec2>& points, const std::vector<CircleArc>& lap,
+                                          const std::vector<Vec2>& after, const PlanPosition& from,
+                                          const PlanPosition& to, double depth, std::size_t source) {
   std::vector<BasicManoeuvre> out;
-  std::size_t legs = 0;
-  for (std::size_t k = 1; k < points.size(); ++k) legs += (points[k] - points[k - 1]).norm() > 1e-9 ? 1 : 0;
+  const auto add_line = [&](const Vec2& a, const Vec2& b, BasicManoeuvre::Role role) {
+    if ((b - a).norm() <= 1e-9) return;
+    BasicManoeuvre m;
+    m.kind = BasicManoeuvre::Kind::line;
+    m.from = a;
+    m.to = b;
+    m.length_m = (b - a).norm();
+    m.role = role;
+    out.push_back(m);
+  };
+  for (std::size_t k = 1; k < points.size(); ++k) add_line(points[k - 1], points[k], BasicManoeuvre::Role::evasion);
+  for (const CircleArc& a : lap) {
+    BasicManoeuvre m;
+    m.kind = BasicManoeuvre::Kind::arc;
+    m.from = a.from;
+    m.to = a.to;
+    m.centre = a.centre;
+    m.radius_m = a.radius_m;
+    m.turn = a.turn;
+    m.length_m = a.length_m();
+    m.role = BasicManoeuvre::Role::identification;
+    out.push_back(m);
+  }
+  for (std::size_t k = 1; k < after.size(); ++k) add_line(after[k - 1], after[k], BasicManoeuvre::Role::evasion);
+  // The first line leaves from the departure's depth, the last one rejoins at
+  // the rendezvous's; arcs keep the depth they begin at.
   double depth_now = from.depth_m;
-  std::size_t leg = 0;
-  for (std::size_t k = 1; k < points.size(); ++k) {
-    if ((points[k] - points[k - 1]).norm() <= 1e-9) continue;
-    ++leg;
-    BasicManoeuvre b;
-    b.kind = BasicManoeuvre::Kind::line;
-    b.from = points[k - 1];
-    b.to = points[k];
-    b.from_depth_m = depth_now;
-    b.depth_m = leg == legs ? to.depth_m : depth;
-    b.speed_mps = from.speed_mps;
-    b.source = source;
-    b.length_m = (b.to - b.from).norm();
-    b.role = lap[k] ? BasicManoeuvre::Role::identification : BasicManoeuvre::Role::evasion;
-    depth_now = b.depth_m;
-    out.push_back(b);
+  std::size_t last_line = out.size();
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (out[k].kind == BasicManoeuvre::Kind::line) last_line = k;
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    BasicManoeuvre& m = out[k];
+    m.from_depth_m = depth_now;
+    m.depth_m = m.kind == BasicManoeuvre::Kind::arc ? depth_now : k == last_line ? to.depth_m : depth;
+    m.speed_mps = from.speed_mps;
+    m.source = source;
+    depth_now = m.depth_m;
   }
   return out;
 }
@@ -205,29 +224,19 @@ std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironm
                   point_text(to.xy);
       return std::nullopt;
     }
-    std::vector<Vec2> points;
-    std::vector<char> lap{0};
+    std::vector<Vec2> points, onward;
+    IdentificationLap lap;
     if (r.reaction == ControlRules::Reaction::identify) {
       const Ellipse& object = env.obstacles.ellipses[next.obstacle].footprint;
-      const std::vector<Vec2> round = identification_lap(object, mission.control.identify_distance_m, from.xy);
-      const std::vector<Vec2> in = evasions.route(depth, from.xy, round.front(), r.problem);
-      const std::vector<Vec2> on = in.empty() ? in : evasions.route(depth, round.back(), to.xy, r.problem);
-      if (in.empty() || on.empty()) return std::nullopt;
-      points = in;
-      lap.resize(points.size(), 0);
-      for (std::size_t k = 1; k < round.size(); ++k) {
-        points.push_back(round[k]);
-        lap.push_back(1);
-      }
-      for (std::size_t k = 1; k < on.size(); ++k) {
-        points.push_back(on[k]);
-        lap.push_back(0);
-      }
+      lap = identification_lap(object, mission.control.identify_distance_m, from.xy);
+      points = evasions.route(depth, from.xy, lap.start, r.problem);
+      if (!points.empty()) onward = evasions.route(depth, lap.start, to.xy, r.problem);
+      if (points.empty() || onward.empty()) return std::nullopt;
     } else {
       points = evasions.route(depth, from.xy, to.xy, r.problem);
-      lap.resize(points.size(), 0);
     }
-    std::vector<BasicManoeuvre> lines = evasion_lines(points, lap, from, to, depth, plan.basics[from.basic].source);
+    std::vector<BasicManoeuvre> lines =
+        evasion_lines(points, lap.arcs, onward, from, to, depth, plan.basics[from.basic].source);
     if (lines.empty()) {
       if (r.problem.empty()) r.problem = "the evasion has no length (departure and rendezvous coincide)";
       return std::nullopt;

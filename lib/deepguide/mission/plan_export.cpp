@@ -70,9 +70,14 @@ std::vector<ExportWaypoint> export_corner_waypoints(const Mission& mission, cons
     if (b.kind == BasicManoeuvre::Kind::point) {
       out.back().hold_s += b.hold_s;  // held where the vehicle is
     } else if (b.kind == BasicManoeuvre::Kind::line) {
-      const bool arc_next = !last && plan.basics[i + 1].kind == BasicManoeuvre::Kind::arc;
+      // An arc that leaves along the line turns at its own corners; else the line's end is a corner.
+      const bool arc_next = !last && plan.basics[i + 1].kind == BasicManoeuvre::Kind::arc &&
+                            joins_smoothly(b, plan.basics[i + 1]);
       if (!arc_next && b.length_m > 0.0) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
     } else if (b.length_m > 0.0 && b.radius_m > 0.0) {
+      if (i > 0 && plan.basics[i - 1].kind == BasicManoeuvre::Kind::arc && !joins_smoothly(plan.basics[i - 1], b)) {
+        add(b, b.from, b.depth_m, b.start_m, time, 0.0);  // two arcs meeting at a corner
+      }
       const double sweep = b.length_m / b.radius_m;
       const int pieces = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * M_PI) - 1e-9)));
       const double piece = sweep / pieces;
@@ -83,7 +88,9 @@ std::vector<ExportWaypoint> export_corner_waypoints(const Mission& mission, cons
         const double f = (k + 0.5) / pieces;
         add(b, corner, b.depth_m, b.start_m + f * b.length_m, time + f * sailing, b.radius_m);
       }
-      if (last) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
+      // The arc's end is a waypoint where the route ends or goes on at a corner.
+      const bool corner_after = !last && plan.basics[i + 1].length_m > 0.0 && !joins_smoothly(b, plan.basics[i + 1]);
+      if (last || corner_after) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
     }
     time += sailing + (b.kind == BasicManoeuvre::Kind::point ? b.hold_s : 0.0);
   }
