@@ -116,6 +116,27 @@ TEST(BathymetryDamaged, AHeaderStatingAGiantRasterIsRefusedBeforeGdalAllocatesIt
   expect_one_line_error([&] { inspect_bathymetry(path); }, "1178892903 x 774990956 cells in blocks of 4497 MiB");
 }
 
+std::string corpus_file(const std::string& name) {
+  std::ifstream in(std::string(DEEPGUIDE_SOURCE_DIR) + "/fuzz/corpus/" + name, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(BathymetryDamaged, TheSoaksFindsAreOneLineErrors) {
+  test::ScratchDir tmp;
+  // 1835 bytes with an NLAPS header on which GDAL 3.6's NDF driver
+  // dereferenced a null list while probing: `chart info` and the current
+  // reader crashed. The driver is no longer offered.
+  const std::string ndf = corpus_file("current_nc/ndf-null-list");
+  ASSERT_EQ(ndf.size(), 1835u);
+  const std::string nc = tmp.write("ndf.nc", ndf);
+  expect_one_line_error([&] { load_current_field(nc); }, "expected a current field GDAL can open");
+  expect_one_line_error([&] { inspect_bathymetry(nc); }, "expected a raster GDAL can open");
+  // 60 bytes GDAL's XYZ driver took for 51 117 053 x 2 cells (from the
+  // spacing of two coordinates): 400 MB read, 10 s under the sanitizers.
+  const std::string xyz = tmp.write("xyz.asc", corpus_file("bathymetry_asc/xyz-51-million-cells"));
+  expect_one_line_error([&] { inspect_bathymetry(xyz); }, "51117053 x 2 cells, got 60 bytes");
+}
+
 // The format's one unpadded case: a single record variable of shorts. Its
 // records lie 2 bytes apart, so 10 records end 20 bytes after its start
 // (the walk once asked for 4 bytes a record and refused such a file).

@@ -593,11 +593,15 @@ CurrentField load_current_field(const std::string& path, const CurrentOptions& o
   // counts were damaged, allocated 12.8 GB and took 56 s to give up (found by
   // fuzz/fuzz_current_nc); the header walk refuses such a file at once.
   require_complete_netcdf(path);
+  // Only the drivers of the formats docs/FORMATS.md lists: GDAL probes a file
+  // with every driver it has, and each is a parser a damaged file can reach.
+  static const char* const multidim[] = {"netCDF", "HDF5", "Zarr", nullptr};
+  static const char* const two_band[] = {"GTiff", "netCDF", "HDF5Image", "Zarr", "GRIB", "ENVI", "EHdr", nullptr};
   {
-    GDALDatasetUniquePtr md = gdal::open_dataset(path, GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY);
+    GDALDatasetUniquePtr md = gdal::open_dataset(path, GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY, multidim);
     if (md) return load_multidim(*md, path, options);
   }
-  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY);
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY, two_band);
   if (!ds || ds->GetRasterCount() == 0) {
     const std::string why = gdal::QuietErrors::last_message();
     throw InputError(path + ": expected a current field GDAL can open (NetCDF with u/v or a two-band raster)" +

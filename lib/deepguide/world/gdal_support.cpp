@@ -48,6 +48,16 @@ void ensure_registered() {
   static std::once_flag once;
   std::call_once(once, [] {
     GDALAllRegister();
+    // GDAL 3.6's NLAPS (NDF) driver dereferences a null list while probing a
+    // damaged header (found by fuzz/fuzz_current_nc: `chart info` and every
+    // raster open crashed on 1835 bytes). A 1990s Landsat format nobody
+    // plans from: it is not offered.
+    for (const char* unsafe : {"NDF"}) {
+      if (GDALDriver* d = GetGDALDriverManager()->GetDriverByName(unsafe)) {
+        GetGDALDriverManager()->DeregisterDriver(d);
+        GDALDestroyDriver(d);
+      }
+    }
     silence_hdf5_diagnostics();
     // GDAL prints "ERROR 1: ..." to stderr where no QuietErrors is active
     // (a layer read after the open, say); ours is the one line the user
