@@ -600,6 +600,13 @@ TEST(EncCells, BrokenInputIsOneLineEach) {
   expect_one_line_error([&] { find_enc_cells({empty.string()}); }, "empty", "found none");
   expect_one_line_error([&] { find_enc_cells({(tmp.path() / "nothing").string()}); }, "nothing", "found nothing");
   expect_one_line_error([&] { find_enc_cells({(src / "US4MD81A.TXT").string()}); }, "US4MD81A.TXT", "*.000");
+  // An update given alone: named, with the base to give instead (chart info
+  // passed GDAL's own two-line message through before).
+  const std::string update = (src / "US4MD81M.001").string();
+  expect_one_line_error([&] { find_enc_cells({update}); }, "US4MD81M.001", "got an update; give US4MD81M.000");
+  expect_one_line_error([&] { chart_info(update); }, "US4MD81M.001", "got an update; give US4MD81M.000");
+  expect_one_line_error([&] { enc_no_go({update}, std::nullopt, at_depth(5.0)); }, "US4MD81M.001",
+                        "got an update; give US4MD81M.000");
   // A cell without depth areas (written through GDAL from the real one).
   DEEPGUIDE_REAL_FILE_OR_SKIP(key_west, kKeyWest);
   const std::string no_depare = (tmp.path() / "NODEPARE.000").string();

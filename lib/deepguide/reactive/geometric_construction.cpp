@@ -49,16 +49,6 @@ struct Tuning {
   double rate_now = 0.0;   ///< the vehicle's present turning rate
 };
 
-/// The least signed distance to the zones that do not hold p along the way
-/// a vehicle at `speed` sails a new course from its present one: its turning
-/// rate goes from the present one towards the full rate (the way the new
-/// course lies, easing off the last 2 s of the turn) as a first-order lag,
-/// then straight on for two turning radii. The lag matters: DeepC's closed
-/// loop takes about 7 s to reach a turning rate, 15 m of straight travel a
-/// turn that starts at once does not have, and a turn the other way first
-/// undoes the present one. (The current's drift is left out: the autopilot
-/// makes good the course over ground, and the comparison below is between
-/// two such turns.)
 /// The hysteresis band of a vehicle that sails the construction (a turning
 /// rate known): a fifth of the margin, at least 1 m; 0 for the construction
 /// itself (the figures' gradient lines, a vehicle that turns at once).
@@ -76,6 +66,16 @@ constexpr double kSmallTurn = 20.0 * std::numbers::pi / 180.0;
 constexpr int kMaxTurnSwitches = 3;
 constexpr int kFan = 24;
 
+/// The least signed distance to the zones that do not hold p along the way
+/// a vehicle at `speed` sails a new course from its present one: its turning
+/// rate goes from the present one towards the full rate (the way the new
+/// course lies, easing off the last 2 s of the turn) as a first-order lag,
+/// then straight on for two turning radii. The lag matters: DeepC's closed
+/// loop takes about 7 s to reach a turning rate, 15 m of straight travel a
+/// turn that starts at once does not have, and a turn the other way first
+/// undoes the present one. (The current's drift is left out: the autopilot
+/// makes good the course over ground, and the comparison below is between
+/// two such turns.)
 double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double course, const Vec2& direction,
                         const Tuning& tuning) {
   constexpr double kEase_s = 2.0;

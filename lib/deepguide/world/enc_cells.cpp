@@ -17,6 +17,14 @@ namespace {
 
 bool is_base_cell_name(const fs::path& p) { return ascii_lower(p.extension().string()) == ".000"; }
 
+// BASE.001 .. BASE.999: an update, which is read only with its base cell.
+bool is_update_name(const fs::path& p) {
+  const std::string ext = p.extension().string();
+  return ext.size() == 4 && ext != ".000" && std::all_of(ext.begin() + 1, ext.end(), [](char c) {
+           return c >= '0' && c <= '9';
+         });
+}
+
 // The update number of BASE.NNN (1..999), or 0 when `p` is not an update of `stem`.
 int update_number(const fs::path& p, const std::string& stem) {
   if (ascii_lower(p.stem().string()) != ascii_lower(stem)) return 0;
@@ -59,7 +67,7 @@ EncCellFiles with_updates(const fs::path& base) {
 
 bool names_enc(const std::string& path) {
   std::error_code ec;
-  return fs::is_directory(path, ec) || is_base_cell_name(fs::path(path));
+  return fs::is_directory(path, ec) || is_base_cell_name(fs::path(path)) || is_update_name(fs::path(path));
 }
 
 std::vector<EncCellFiles> find_enc_cells(const std::vector<std::string>& paths) {
@@ -81,6 +89,12 @@ std::vector<EncCellFiles> find_enc_cells(const std::vector<std::string>& paths) 
       }
       if (here == 0) throw InputError(printable(arg, 240) + ": expected a folder holding S-57 cells (*.000), found none");
       continue;
+    }
+    if (is_update_name(arg)) {
+      fs::path base(arg);
+      base.replace_extension(".000");
+      throw InputError(printable(arg, 240) + ": expected an S-57 base cell (*.000), got an update; give " +
+                       printable(base.filename().string(), 80) + " (its updates beside it are applied in order)");
     }
     if (!is_base_cell_name(arg)) {
       throw InputError(printable(arg, 240) + ": expected an S-57 base cell named *.000 (updates *.001.. are found beside it)");

@@ -27,8 +27,9 @@ struct EncCellFiles {
   std::vector<std::string> updates;  ///< BASE.001 .. BASE.N in order
 };
 
-/// True for a folder or a file whose extension is .000 (any case): an
-/// argument that must be read as S-57 whatever GDAL thinks of it.
+/// True for a folder or a file whose extension is .000 (any case) or an
+/// update's (.001 .. .999): an argument that must be read as S-57 whatever
+/// GDAL thinks of it (an update alone is then refused naming its base).
 bool names_enc(const std::string& path);
 
 /// Expands files and folders into base cells with their updates. Throws
