@@ -75,9 +75,6 @@ std::vector<ExportWaypoint> export_corner_waypoints(const Mission& mission, cons
                             joins_smoothly(b, plan.basics[i + 1]);
       if (!arc_next && b.length_m > 0.0) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
     } else if (b.length_m > 0.0 && b.radius_m > 0.0) {
-      if (i > 0 && plan.basics[i - 1].kind == BasicManoeuvre::Kind::arc && !joins_smoothly(plan.basics[i - 1], b)) {
-        add(b, b.from, b.depth_m, b.start_m, time, 0.0);  // two arcs meeting at a corner
-      }
       const double sweep = b.length_m / b.radius_m;
       const int pieces = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * M_PI) - 1e-9)));
       const double piece = sweep / pieces;

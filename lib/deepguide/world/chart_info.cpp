@@ -242,7 +242,7 @@ GDALDatasetUniquePtr open_chart(const std::string& path) {
   // The cell and its updates are checked before GDAL reads them: GDAL applies
   // a damaged update half-way (and leaks doing it).
   // An update alone (*.001 ..) is refused there too, naming its base cell.
-  if (cell_name || names_enc(path)) (void)find_enc_cells({path});
+  if (names_enc(path)) (void)find_enc_cells({path});
   GDALDatasetUniquePtr ds =
       gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, cell_name ? s57_only : nullptr);
   if (!ds) {
