@@ -40,6 +40,7 @@ struct PlanOptions {
   double margin = 5.0;
   double tolerance = PlannerOptions{}.tolerance;
   std::optional<double> turn_radius;
+  std::optional<double> from_heading, to_heading;  ///< deg, clockwise from true north
   double depth = std::nan("");
   double vertical_clearance = 2.0;
   std::string graph = "visibility";
@@ -140,6 +141,11 @@ void register_plan(CLI::App& app) {
   cmd->add_option("--turn-radius", o->turn_radius,
                   "The vehicle's least turning radius (m): every arc of the route is at least this wide "
                   "(--graph quadtree needs --smooth; default with --vehicle: what the vehicle can follow at the planned speed)");
+  cmd->add_option("--from-heading", o->from_heading,
+                  "The vehicle's heading at the start (deg, clockwise from true north): the route leaves along it, "
+                  "turning no tighter than the turning radius (Dubins ends; the tangent graph)");
+  cmd->add_option("--to-heading", o->to_heading,
+                  "The heading the route reaches the goal on (deg, clockwise from true north; as --from-heading)");
   cmd->add_option("--tolerance", o->tolerance, "How far zone polygons may reach beyond the zones (m)")
       ->capture_default_str();
   cmd->add_option("--depth", o->depth,
@@ -147,7 +153,7 @@ void register_plan(CLI::App& app) {
                   "--vertical-clearance are passed over");
   cmd->add_option("--vertical-clearance", o->vertical_clearance, "Vertical clearance above obstacle tops (m)")
       ->capture_default_str();
-  cmd->add_option("--graph", o->graph,
+  CLI::Option* graph_option = cmd->add_option("--graph", o->graph,
                   "visibility (reduced polygon graph), visibility-full (the seed's), tangent (exact, curved), "
                   "quadtree (free cells' centres, the seed's Fig. 7), or octree (a route in depth over the sea floor)")
       ->capture_default_str();
@@ -193,7 +199,25 @@ void register_plan(CLI::App& app) {
                   "each repaired route (ROUTE_repair_K.geojson)");
   cmd->add_option("--depart", o->depart,
                   "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
-  cmd->callback([o] {
+  cmd->callback([o, graph_option] {
+    const bool headings = o->from_heading || o->to_heading;
+    // Dubins ends are planned by the tangent graph alone (planner.hpp): it is the default then.
+    if (headings && graph_option->count() == 0) o->graph = "tangent";
+    if (headings) {
+      for (const auto& [flag, deg] : {std::pair{"--from-heading", o->from_heading}, {"--to-heading", o->to_heading}}) {
+        if (deg && !std::isfinite(*deg)) {
+          throw InputError(std::string(flag) + ": expected a heading in degrees, got " + general(*deg));
+        }
+      }
+      const char* which = o->from_heading ? "--from-heading" : "--to-heading";
+      if (o->graph != "tangent") {
+        throw InputError(std::string(which) + ": expected --graph tangent (the graph that plans Dubins ends), got " +
+                         o->graph);
+      }
+      if (!o->turn_radius && o->vehicle.empty()) {
+        throw InputError(std::string(which) + ": expected --turn-radius or --vehicle (the radius the route turns on)");
+      }
+    }
     const bool in_depth = o->graph == "octree";
     if (!in_depth && (!std::isnan(o->from_depth) || !std::isnan(o->to_depth) || !o->depth_band.empty() ||
                       !std::isnan(o->max_dive) || !o->render_profile.empty())) {
@@ -261,8 +285,10 @@ void register_plan(CLI::App& app) {
       frame_in_use = LocalFrame::utm_for(from.x(), from.y());
     }
     const LocalFrame& frame = *frame_in_use;
-    const PlanningProblem problem{parse_position(o->from, "--from", frame, !o->frame.crs.empty()),
-                                  parse_position(o->to, "--to", frame, !o->frame.crs.empty()), o->escape};
+    PlanningProblem problem{parse_position(o->from, "--from", frame, !o->frame.crs.empty()),
+                            parse_position(o->to, "--to", frame, !o->frame.crs.empty()), o->escape};
+    if (o->from_heading) problem.start_heading = frame.heading_to_local(*o->from_heading, problem.start);
+    if (o->to_heading) problem.goal_heading = frame.heading_to_local(*o->to_heading, problem.goal);
     if (in_depth) {
       DepthCommand c;
       c.frame = &frame;
@@ -448,6 +474,8 @@ void register_plan(CLI::App& app) {
       for (const RouteLeg& leg : out.result.legs) tightest = std::min(tightest, min_turn_radius(leg));
       if (arcs > 0) summary["min_turn_radius_m"] = tightest;
       if (options.turn_radius_m > 0.0) summary["turn_radius_m"] = options.turn_radius_m;
+      if (o->from_heading) summary["from_heading_deg"] = frame.local_to_heading(*problem.start_heading, problem.start);
+      if (o->to_heading) summary["to_heading_deg"] = frame.local_to_heading(*problem.goal_heading, problem.goal);
     }
     // Per waypoint: the speed of the leg it starts, and time and energy so far.
     std::vector<nlohmann::json> waypoints(route.points.size(), nlohmann::json::object());

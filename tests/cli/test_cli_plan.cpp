@@ -880,6 +880,45 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
   }
 }
 
+TEST(CliPlan, HeadingsGiveDubinsEnds) {
+  ScratchDir dir;
+  const std::string route = dir.file("dubins.geojson");
+  const std::string base = "plan --obstacles '" + kSample + "' --from 10.2405,54.4470 --to 10.2640,54.4560";
+  const auto free = run_cli(base + " --graph tangent --turn-radius 25 --json");
+  ASSERT_EQ(free.exit_code, 0) << free.err;
+  // No --graph: the tangent graph, the one that plans Dubins ends.
+  const auto r = run_cli(base + " --turn-radius 25 --from-heading 200 --to-heading 0 -o '" + route + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j.at("from_heading_deg").get<double>(), 200.0, 1e-9);
+  EXPECT_NEAR(std::remainder(j.at("to_heading_deg").get<double>(), 360.0), 0.0, 1e-9);
+  EXPECT_GE(j.at("min_turn_radius_m").get<double>(), 25.0 - 1e-9);
+  EXPECT_GT(j.at("exact_length_m").get<double>(), nlohmann::json::parse(free.out).at("exact_length_m").get<double>());
+  EXPECT_EQ(run_cli("check route '" + route + "' --obstacles '" + kSample + "'").exit_code, 0);
+  // The route file's first and last steps run along the headings (true bearings from lon/lat).
+  std::ifstream in(route);
+  const auto coords = nlohmann::json::parse(in)["features"][0]["geometry"]["coordinates"];
+  auto bearing = [](const nlohmann::json& a, const nlohmann::json& b) {
+    const double lat = a[1].get<double>() * M_PI / 180.0;
+    const double dx = (b[0].get<double>() - a[0].get<double>()) * std::cos(lat);
+    const double dy = b[1].get<double>() - a[1].get<double>();
+    return std::fmod(std::atan2(dx, dy) * 180.0 / M_PI + 360.0, 360.0);
+  };
+  EXPECT_NEAR(bearing(coords[0], coords[1]), 200.0, 0.5);
+  EXPECT_NEAR(std::remainder(bearing(coords[coords.size() - 2], coords[coords.size() - 1]), 360.0), 0.0, 0.5);
+  // What cannot plan Dubins ends: one line, exit 1.
+  for (const auto& [args, word] : std::vector<std::pair<std::string, std::string>>{
+           {" --graph visibility --turn-radius 25 --from-heading 10", "--graph tangent"},
+           {" --from-heading 10", "--turn-radius or --vehicle"},
+           {" --turn-radius 25 --to-heading nan", "--to-heading"},
+           {" --graph octree --depth 5 --turn-radius 25 --from-heading 10", "--graph tangent"}}) {
+    const auto bad = run_cli(base + args);
+    EXPECT_EQ(bad.exit_code, 1) << args << ": " << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << args << ": " << bad.err;
+    EXPECT_NE(bad.err.find(word), std::string::npos) << args << ": " << bad.err;
+  }
+}
+
 TEST(CliPlan, FramesBeyondUtmAreRefused) {
   // Near the pole, and half the globe away in one UTM zone: the frame would
   // be off by far more than the margin, so neither is planned.

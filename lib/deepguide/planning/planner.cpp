@@ -231,7 +231,10 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
     impl_->plain = std::make_unique<TangentGraph>(impl_->field.obstacles(), std::max(options_.margin, kMinGraphMargin),
                                                   options_.tolerance);
   }
-  const PlanResult plain = impl_->plain->solve(problem, options_.search);
+  PlanningProblem free_ends = problem;
+  free_ends.start_heading.reset();
+  free_ends.goal_heading.reset();
+  const PlanResult plain = impl_->plain->solve(free_ends, options_.search);
   if (!plain.found) return plain.message;
   for (const RouteLeg& leg : plain.legs) {
     if (min_turn_radius(leg) < options_.turn_radius_m) {
@@ -239,6 +242,9 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
              "' at " + point_text(0.5 * (leg.from + leg.to), 1) + " on a " + fixed(min_turn_radius(leg), 1) +
              " m radius";
     }
+  }
+  if (problem.start_heading || problem.goal_heading) {
+    return none + " leaving and arriving on the headings given (a route free to turn at its ends exists)";
   }
   return none;
 }
@@ -336,6 +342,20 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   }
   if ((problem.start - problem.goal).norm() < 1e-9) {
     throw InputError("start and goal: expected two different points, got the same one");
+  }
+  if (problem.start_heading || problem.goal_heading) {
+    // Dubins ends are circles of the tangent graph (tangent_graph.hpp); the
+    // polygon graphs would need them as polygons and fillets of their own.
+    const char* which = problem.start_heading ? "a start heading" : "a goal heading";
+    if (!impl_->tangent) {
+      throw InputError(std::string(which) + ": expected the tangent graph (the graph that plans Dubins ends), got " +
+                       to_string(options_.graph));
+    }
+    if (!(options_.turn_radius_m > 0.0)) throw InputError(std::string(which) + ": expected a turning radius > 0");
+    if (problem.escape && problem.start_heading && !impl_->field.is_free(problem.start)) {
+      throw InputError("a start heading: expected a start outside every safety zone (an escape leaves the zone "
+                       "along its normal, whatever the heading)");
+    }
   }
   std::string escaped_from;
   PlanningProblem inner = problem;

@@ -2,6 +2,7 @@
 // A planned route in the local frame, and what every planner reports with it.
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,11 @@ struct PlanningProblem {
   /// A start inside a safety zone first leaves it the shortest way (straight
   /// out along the normal of the nearest obstacle) instead of being refused.
   bool escape = false;
+  /// Dubins ends: the direction the vehicle has at the start and must have at
+  /// the goal (math angles in the local frame, rad). They need a turning
+  /// radius, and only the tangent graph plans them (Planner refuses others).
+  std::optional<double> start_heading = std::nullopt;
+  std::optional<double> goal_heading = std::nullopt;
 };
 
 /// The common result of every planner's solve(problem).

@@ -103,6 +103,14 @@ struct TangentGraph::Impl {
   std::vector<std::string> piece_names;
   std::vector<bool> needs_arc_check;  // another zone reaches into the piece's box
   double turn_radius = 0.0;           // routes turn on no boundary tighter than this (m)
+  // Dubins ends: a query with a start (goal) heading leaves (reaches) that
+  // end only along one of the two circles of this radius through it, the
+  // way round that has the heading there. The circles are appended to
+  // `pieces` while the query runs; end_way is +1 (anticlockwise) or -1 on
+  // them, 0 on the environment's pieces, which may be passed either way.
+  double heading_radius = 0.0;
+  std::vector<int> end_way;
+  std::vector<bool> end_is_start;
   // Whether a route may turn at the piece's point with normal phi, and along
   // its arc from phi0 to phi1 (phi0 < phi1): only where the radius is >= turn_radius.
   bool turns_at(std::size_t piece, double phi) const { return turns_along(piece, phi, phi); }
@@ -166,6 +174,8 @@ struct TangentGraph::Impl {
   // within `bound` (all pieces for an infinite bound).
   void add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low,
                           double bound) const;
+  // The collision-free common tangents of pieces i and j, from i to j.
+  void common_tangents(std::size_t i, std::size_t j, std::vector<Segment>& out) const;
   std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
   // The route's legs along a piece from normal angle phi0 to phi1 (turn: the
   // sign of phi1 - phi0), in the unshifted frame: one arc on an ellipse's
@@ -223,6 +233,9 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   for (const PolygonObstacle& poly : local.polygons) inner.push_back(poly.footprint);
   m.inner = std::make_unique<PolygonVisibility>(std::move(inner), 1e-9);
   for (const ZonePiece& z : m.pieces) m.piece_names.push_back(m.field->obstacle_name(z.obstacle));
+  m.heading_radius = turn_radius;
+  m.end_way.assign(m.pieces.size(), 0);
+  m.end_is_start.assign(m.pieces.size(), false);
 
   // Pieces whose box meets another obstacle's piece need their arcs checked.
   using Item = std::pair<BgBox, std::size_t>;
@@ -247,39 +260,7 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
       const ZonePiece& zi = m.pieces[i];
       const ZonePiece& zj = m.pieces[j];
       if (!m.focus.keeps_disc_pair(zi.inner_point(), radius[i], zj.inner_point(), radius[j])) continue;
-      // Outer tangents: h_i(u) = h_j(u); inner: h_i(u) = -h_j(-u). The
-      // slopes follow from the support points (see ZonePiece::support_at).
-      auto g_outer = [&](double phi) {
-        const Vec2 u = unit(phi);
-        const ZonePiece::Support si = zi.support_at(u), sj = zj.support_at(u);
-        return ValueSlope{si.h - sj.h, (si.p - sj.p).dot(Vec2(-u.y(), u.x()))};
-      };
-      auto g_inner = [&](double phi) {
-        const Vec2 u = unit(phi);
-        const ZonePiece::Support si = zi.support_at(u), sj = zj.support_at(-u);
-        return ValueSlope{si.h + sj.h, (si.p - sj.p).dot(Vec2(-u.y(), u.x()))};
-      };
-      double r[2];
-      // Both functions are positive along inner_i - inner_j and, for
-      // separated pieces, negative against it (periodic_two_roots' hint).
-      const Vec2 dc = zi.inner_point() - zj.inner_point();
-      const double along = std::atan2(dc.y(), dc.x());
-      auto add = [&](double phi_i, double phi_j) {
-        phi_i = wrap_two_pi(phi_i);
-        phi_j = wrap_two_pi(phi_j);
-        const Node a{i, phi_i, zi.point_at_normal(phi_i)};
-        const Node b{j, phi_j, zj.point_at_normal(phi_j)};
-        if ((a.p - b.p).norm() > 0.0 && m.turns_at(i, phi_i) && m.turns_at(j, phi_j) &&
-            m.focus.keeps_segment(a.p, b.p) && m.segment_free(a.p, b.p, i, j)) {
-          m.tangents.push_back({a, b});
-        }
-      };
-      if (periodic_two_roots(g_outer, r[0], r[1], along)) {
-        for (double phi : r) add(phi, phi);
-      }
-      if (periodic_two_roots(g_inner, r[0], r[1], along)) {
-        for (double phi : r) add(phi, phi + std::numbers::pi);
-      }
+      m.common_tangents(i, j, m.tangents);
     }
   }
   m.nodes = {Node{kNoPiece, 0.0, Vec2::Zero()}, Node{kNoPiece, 0.0, Vec2::Zero()}};
@@ -316,6 +297,44 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   }
   m.base_edges = segment_ends.size() + m.arcs.size();
   m.build_ms = elapsed_ms(t0);
+}
+
+void TangentGraph::Impl::common_tangents(std::size_t i, std::size_t j, std::vector<Segment>& out) const {
+  const ZonePiece& zi = pieces[i];
+  const ZonePiece& zj = pieces[j];
+  // Outer tangents: h_i(u) = h_j(u); inner: h_i(u) = -h_j(-u). The
+  // slopes follow from the support points (see ZonePiece::support_at).
+  auto g_outer = [&](double phi) {
+    const Vec2 u = unit(phi);
+    const ZonePiece::Support si = zi.support_at(u), sj = zj.support_at(u);
+    return ValueSlope{si.h - sj.h, (si.p - sj.p).dot(Vec2(-u.y(), u.x()))};
+  };
+  auto g_inner = [&](double phi) {
+    const Vec2 u = unit(phi);
+    const ZonePiece::Support si = zi.support_at(u), sj = zj.support_at(-u);
+    return ValueSlope{si.h + sj.h, (si.p - sj.p).dot(Vec2(-u.y(), u.x()))};
+  };
+  double r[2];
+  // Both functions are positive along inner_i - inner_j and, for
+  // separated pieces, negative against it (periodic_two_roots' hint).
+  const Vec2 dc = zi.inner_point() - zj.inner_point();
+  const double along = std::atan2(dc.y(), dc.x());
+  auto add = [&](double phi_i, double phi_j) {
+    phi_i = wrap_two_pi(phi_i);
+    phi_j = wrap_two_pi(phi_j);
+    const Node a{i, phi_i, zi.point_at_normal(phi_i)};
+    const Node b{j, phi_j, zj.point_at_normal(phi_j)};
+    if ((a.p - b.p).norm() > 0.0 && turns_at(i, phi_i) && turns_at(j, phi_j) && focus.keeps_segment(a.p, b.p) &&
+        segment_free(a.p, b.p, i, j)) {
+      out.push_back({a, b});
+    }
+  };
+  if (periodic_two_roots(g_outer, r[0], r[1], along)) {
+    for (double phi : r) add(phi, phi);
+  }
+  if (periodic_two_roots(g_inner, r[0], r[1], along)) {
+    for (double phi : r) add(phi, phi + std::numbers::pi);
+  }
 }
 
 template <class Want>
@@ -560,6 +579,58 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
     std::function<void()> f;
     ~Cleanup() { f(); }
   } cleanup{clean};
+  auto new_vertex = [&](const Node& n) {
+    const std::size_t v = nodes.size();
+    if (v >= boost::num_vertices(graph)) boost::add_vertex(graph);  // stays, isolated, for later queries
+    nodes.push_back(n);
+    used.push_back(v);
+    return v;
+  };
+
+  // Dubins ends. On the circle through p turning `way` round (left of the
+  // heading for anticlockwise), p's outward normal is heading - way pi/2.
+  const std::size_t env_pieces = m.pieces.size();
+  Cleanup drop_end_circles{[&m, env_pieces] {
+    m.pieces.resize(env_pieces);
+    m.piece_names.resize(env_pieces);
+    m.needs_arc_check.resize(env_pieces);
+    m.on_piece.resize(env_pieces);
+    m.end_way.resize(env_pieces);
+    m.end_is_start.resize(env_pieces);
+  }};
+  std::vector<Node> end_nodes;  // the ends' own points on their circles
+  for (const bool at_start : {true, false}) {
+    const std::optional<double>& heading = at_start ? problem.start_heading : problem.goal_heading;
+    if (!heading) continue;
+    if (!(m.heading_radius > 0.0) || !std::isfinite(*heading)) {
+      throw InputError("a start or goal heading: expected a finite angle and a turning radius > 0");
+    }
+    const Vec2 p = at_start ? s : g;
+    for (const int way : {+1, -1}) {
+      ZonePiece z;
+      z.kind = ZonePiece::Kind::capsule;
+      z.a = z.b = p + m.heading_radius * unit(*heading + way * std::numbers::pi / 2.0);
+      z.margin = m.heading_radius;
+      m.pieces.push_back(z);
+      m.piece_names.push_back(at_start ? "start heading" : "goal heading");
+      m.needs_arc_check.push_back(true);
+      m.on_piece.emplace_back();
+      m.end_way.push_back(way);
+      m.end_is_start.push_back(at_start);
+      end_nodes.push_back(Node{m.pieces.size() - 1, wrap_two_pi(*heading - way * std::numbers::pi / 2.0), p, way});
+    }
+  }
+  // A tangent point within rounding of its end's own point is that point, so
+  // the route goes straight on instead of once round the circle.
+  auto snapped = [&](Node n) {
+    for (const Node& e : end_nodes) {
+      if (e.piece == n.piece && std::abs(wrap_pi(n.phi - e.phi)) < 1e-9) {
+        n.phi = e.phi;
+        n.p = e.p;
+      }
+    }
+    return n;
+  };
 
   // Start and goal get tangents only to the pieces that can meet the ellipse
   // |x - s| + |x - g| <= bound (a piece lies in the disc of radius `radius`
@@ -585,6 +656,7 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
     arc_of.clear();
     std::vector<std::vector<std::size_t>> added(m.pieces.size());
     for (std::size_t end = 0; end < 2; ++end) {
+      if (end == 0 ? problem.start_heading.has_value() : problem.goal_heading.has_value()) continue;
       std::vector<Segment> tangents;
       m.add_point_tangents(end == 0 ? s : g, tangents, low, bound);
       for (const Segment& seg : tangents) {
@@ -595,11 +667,11 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
         const std::vector<int> ways = w > 0.0 ? std::vector<int>{orientation(unit(seg.b.phi), d)}
                                               : std::vector<int>{+1, -1};
         for (int orient : ways) {
-          const std::size_t v = nodes.size();
-          if (v >= boost::num_vertices(graph)) throw std::logic_error("tangent graph: spare vertices exhausted");
-          nodes.push_back(seg.b);
-          nodes.back().orient = orient;
-          used.push_back(v);
+          const int way = m.end_way[seg.b.piece];
+          if (way != 0 && orient != way) continue;  // the other end's circle, sailed the wrong way round
+          Node n = snapped(seg.b);
+          n.orient = orient;
+          const std::size_t v = new_vertex(n);
           added[seg.b.piece].push_back(v);
           if (end == 0) {
             boost::add_edge(0, v, w, graph);
@@ -609,7 +681,46 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
         }
       }
     }
-    if (direct) boost::add_edge(0, 1, (g - s).norm(), graph);
+    if (direct && end_nodes.empty()) boost::add_edge(0, 1, (g - s).norm(), graph);
+    // An end with a heading is on its circles, and leaves (is reached) along
+    // them; the circles' tangents to the pieces within the bound, and from
+    // the start's to the goal's, each kept the way round its end circle goes.
+    for (const Node& e : end_nodes) {
+      const std::size_t v = new_vertex(e);
+      added[e.piece].push_back(v);
+      if (m.end_is_start[e.piece]) {
+        boost::add_edge(0, v, 0.0, graph);
+      } else {
+        boost::add_edge(v, 1, 0.0, graph);
+      }
+    }
+    for (std::size_t q = env_pieces; q < m.pieces.size(); ++q) {
+      for (std::size_t j = 0; j < m.pieces.size(); ++j) {
+        // A goal circle's tangents with the start's circles are found from those.
+        const bool other_end = j >= env_pieces;
+        if (other_end ? !(m.end_is_start[q] && !m.end_is_start[j]) : low[j] > bound) continue;
+        std::vector<Segment> segs;
+        m.common_tangents(q, j, segs);
+        for (const Segment& seg : segs) {
+          const Vec2 d = seg.b.p - seg.a.p;
+          const int oa = orientation(unit(seg.a.phi), d), ob = orientation(unit(seg.b.phi), d);
+          // From q to j, departing q oa round and reaching j ob round; or back, -ob and -oa.
+          const bool forward = m.end_is_start[q];
+          if (forward ? oa != m.end_way[q] || (other_end && ob != m.end_way[j]) : -oa != m.end_way[q]) continue;
+          Node a = snapped(seg.a), b = snapped(seg.b);
+          a.orient = forward ? oa : -oa;
+          b.orient = forward ? ob : -ob;
+          const std::size_t va = new_vertex(a), vb = new_vertex(b);
+          added[q].push_back(va);
+          added[j].push_back(vb);
+          if (forward) {
+            boost::add_edge(va, vb, d.norm(), graph);
+          } else {
+            boost::add_edge(vb, va, d.norm(), graph);
+          }
+        }
+      }
+    }
     // New tangent points split the pieces' arcs: join them to their neighbours.
     for (std::size_t i = 0; i < m.pieces.size(); ++i) {
       if (added[i].empty()) continue;
@@ -682,7 +793,7 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
   // lines on either side become one.
   std::vector<RouteLeg> legs;
   for (RouteLeg& leg : result.legs) {
-    if (leg.kind == RouteLeg::Kind::arc && leg.length_m < 1e-9) continue;
+    if (leg.length_m < 1e-9) continue;  // a tangent that only touches a piece, an end's step onto its circle
     if (!legs.empty() && leg.kind == RouteLeg::Kind::line && legs.back().kind == RouteLeg::Kind::line) {
       RouteLeg& prev = legs.back();
       const Vec2 d0 = prev.to - prev.from, d1 = leg.to - leg.from;
