@@ -135,6 +135,10 @@ TEST(BathymetryDamaged, TheSoaksFindsAreOneLineErrors) {
   // spacing of two coordinates): 400 MB read, 10 s under the sanitizers.
   const std::string xyz = tmp.write("xyz.asc", corpus_file("bathymetry_asc/xyz-51-million-cells"));
   expect_one_line_error([&] { inspect_bathymetry(xyz); }, "51117053 x 2 cells, got 60 bytes");
+  // 4540 bytes of NetCDF whose time axis states 2^32 - 1 values: the current
+  // reader allocated 32 GiB for it before reading.
+  const std::string axis = tmp.write("axis.nc", corpus_file("current_nc/axis-of-4-billion-values"));
+  expect_one_line_error([&] { load_current_field(axis); }, "expected a coordinate axis of at most 10000000 values");
 }
 
 // The format's one unpadded case: a single record variable of shorts. Its

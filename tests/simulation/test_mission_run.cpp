@@ -6,6 +6,7 @@
 // gives the same run.
 #include <gtest/gtest.h>
 
+#include <numbers>
 #include <string>
 
 #include "deepguide/simulation/mission_run.hpp"
@@ -129,6 +130,44 @@ TEST(MissionRun, ObjectsNearAheadOrLongAreEvadedNotHit) {
   const MissionRun c = run_mission(m, {}, plan, along, other);
   ASSERT_EQ(c.detected.size(), 1u);
   EXPECT_NE(c.detected.ellipses[0].footprint.center, b.detected.ellipses[0].footprint.center);
+}
+
+TEST(MissionRun, ThePlanLevelKeepsToTheLapsArcs) {
+  // A lap of radius 25 m round a rock (22 m from its 3 m outline) at 2 m/s,
+  // where the vehicle turns on 22.9 m: entered along a tangent and sailed by
+  // path following, the lap is kept to within 1.1 m outside (taking up the
+  // turning rate where it begins) and 0.1 m inside (entered at a right angle
+  // and steered at the track a turn radius ahead: 8.6 m outside after the
+  // entry, 1.6 m inside later).
+  ScratchDir dir;
+  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
+                                      "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"
+                                      "  - goto: {speed_mps: 2, position: {x: 800, y: 0}}\n");
+  MissionEnvironment env;
+  const Vec2 rock(500.0, 60.0);
+  env.obstacles.ellipses.push_back(test::disc(rock.x(), rock.y(), 3.0, "rock"));
+  const MissionPlan plan = expand_mission(m, env.obstacles);
+  double lap_from = plan.length_m, lap_to = 0.0;
+  for (const BasicManoeuvre& b : plan.basics) {
+    if (b.kind != BasicManoeuvre::Kind::arc || b.source != 1) continue;  // the identify manoeuvre's
+    lap_from = std::min(lap_from, b.start_m);
+    lap_to = std::max(lap_to, b.start_m + b.length_m);
+  }
+  ASSERT_NEAR(lap_to - lap_from, 2.0 * std::numbers::pi * 25.0, 0.5);
+  const MissionRun run = run_mission(m, env, plan, {});
+  ASSERT_TRUE(run.completed);
+  double worst = 0.0;
+  int samples = 0;
+  for (const MissionSample& s : run.track) {
+    if (s.along_m < lap_from || s.along_m > lap_to) continue;
+    ++samples;
+    worst = std::max(worst, std::abs((s.position - rock).norm() - 25.0));
+  }
+  std::printf("[ mission lap ] %d samples on the lap, farthest %.2f m off it; least clearance %.2f m\n", samples, worst,
+              run.min_clearance_m);
+  EXPECT_GT(samples, 70);
+  EXPECT_LT(worst, 1.5);
+  EXPECT_GT(run.min_clearance_m, 22.0 - 0.5);
 }
 
 TEST(MissionRun, LapsAreSailedWholeAndAHoldAtTheEndCounts) {

@@ -128,6 +128,32 @@ TEST(PathFollowing, NearestPointsOnLinesAndArcs) {
   EXPECT_NEAR(q.curvature, 1.0 / (25.0 / 20.0 + 3.0), 1e-9);
 }
 
+TEST(PathFollowing, ACornerIsTurnedFromItsTangentPointOn) {
+  // A right-angle corner at (100, 0), turning left; on a 20 m radius the turn
+  // begins R tan(45 deg) = 20 m before it.
+  PathFollower f;
+  f.legs = {line_leg({0.0, 0.0}, {100.0, 0.0}), line_leg({100.0, 0.0}, {100.0, 100.0})};
+  f.lookahead_m = 10.0;
+  const Vec2 east(2.0, 0.0);
+  PathFollower::Command c = f.steer({79.0, 0.0}, east);
+  EXPECT_EQ(f.leg, 0u);  // no corner radius: on the first leg to its end
+  EXPECT_NEAR(c.course, 0.0, 1e-12);
+  EXPECT_NEAR(c.to_end_m, 21.0, 1e-12);
+  f.corner_radius_m = 20.0;
+  c = f.steer({79.0, 0.0}, east);
+  EXPECT_EQ(f.leg, 0u);  // 21 m out: not yet
+  c = f.steer({81.0, 0.0}, east);
+  EXPECT_EQ(f.leg, 1u);  // 19 m out: the second leg, 19 m to its right, steered for
+  EXPECT_NEAR(c.course, std::numbers::pi / 2 - std::atan(19.0 / 10.0), 1e-12);
+  EXPECT_NEAR(c.to_end_m, 100.0, 1e-12);
+  // Legs that join without a corner are not led: an arc after a line.
+  PathFollower g;
+  g.legs = {line_leg({0.0, 0.0}, {100.0, 0.0}), circle_leg({100.0, 20.0}, 20.0, -std::numbers::pi / 2, 1.0)};
+  g.corner_radius_m = 20.0;
+  g.steer({99.0, 0.0}, east);
+  EXPECT_EQ(g.leg, 0u);
+}
+
 TEST(RouteFollowing, ArcsWithinTheTurningRadiusAreSailedOnTheRoute) {
   // A route round two rocks in a 0.4 m/s cross-current, planned within the
   // radius the vehicle can follow and with the tracking allowance: the

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
@@ -299,7 +300,34 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
 
 IdentificationLap identification_lap(const Ellipse& object, double distance_m, const Vec2& from) {
   const OffsetProjection nearest = project_to_offset(object, distance_m, from);
-  return {nearest.point, offset_lap_arcs(object, distance_m, nearest.t, kLapTolerance_m)};
+  double t0 = nearest.t;
+  if (nearest.signed_m > kLapTolerance_m) {
+    // The tangent from `from` that runs on anticlockwise: where p lies on the
+    // path's tangent line behind the point, g(t) = cross(tangent, p - o) = 0
+    // with (o - p) . tangent > 0. g changes sign at both tangent points.
+    const auto g = [&](double t) { return cross(offset_tangent(object, t), from - offset_point(object, distance_m, t)); };
+    constexpr int kSteps = 720;
+    for (int k = 0; k < kSteps; ++k) {
+      double lo = nearest.t + 2.0 * std::numbers::pi * k / kSteps, hi = lo + 2.0 * std::numbers::pi / kSteps;
+      double glo = g(lo);
+      if ((glo > 0.0) == (g(hi) > 0.0)) continue;
+      for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if ((g(mid) > 0.0) == (glo > 0.0)) {
+          lo = mid;
+          glo = g(mid);
+        } else {
+          hi = mid;
+        }
+      }
+      const double t = 0.5 * (lo + hi);
+      if ((offset_point(object, distance_m, t) - from).dot(offset_tangent(object, t)) > 0.0) {
+        t0 = t;
+        break;
+      }
+    }
+  }
+  return {offset_point(object, distance_m, t0), offset_lap_arcs(object, distance_m, t0, kLapTolerance_m)};
 }
 
 std::vector<TrackPoint> plan_polyline(const MissionPlan& plan, double tolerance_m) {

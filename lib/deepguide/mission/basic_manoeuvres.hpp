@@ -17,10 +17,12 @@
 //   twice the turn radius. A line from where the vehicle is to the first line.
 // - gps_update: a point at the surface (depth 0) held for hold_s, then a
 //   point back at the manoeuvre's depth (the dive).
-// - identify: around: a line to the nearest point of the path at distance_m
-//   from the object's outline, then one lap along that path (its true offset
-//   curve, identification/offset_path.hpp, as circular arcs within 0.1 m of
-//   it: 8 to 16 for the usual objects, where 72 lines were); align: a line to the
+// - identify: around: a line tangent to the path at distance_m from the
+//   object's outline, joining it anticlockwise without a corner (from inside
+//   the path: a line to its nearest point), then one lap along that path
+//   (its true offset curve, identification/offset_path.hpp, as circular arcs
+//   within 0.1 m of it: 8 to 16 for the usual objects, where 72 lines
+//   were); align: a line to the
 //   point at distance_m from the outline facing the approach, and a point
 //   held there (the identification system aligns from there).
 // The first line of each manoeuvre changes depth from the previous depth to
@@ -96,8 +98,10 @@ double route_turn_radius(const VehicleParams& vehicle, double speed_mps, double 
 MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles);
 
 /// The lap round an object at `distance_m` from its outline, as identify
-/// around sails it: from the point of the path nearest `from`, one lap
-/// anticlockwise as circular arcs within kLapTolerance_m of the path
+/// around sails it: from the point where the line from `from` meets the path
+/// tangentially going anticlockwise (or, from within kLapTolerance_m of the
+/// path or inside it, the path's nearest point), one lap anticlockwise as
+/// circular arcs within kLapTolerance_m of the path
 /// (identification/offset_path.hpp, offset_lap_arcs).
 struct IdentificationLap {
   Vec2 start{0.0, 0.0};

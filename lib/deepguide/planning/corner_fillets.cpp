@@ -19,11 +19,7 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 void add_line(std::vector<RouteLeg>& legs, const Vec2& from, const Vec2& to) {
   const double length = (to - from).norm();
   if (length <= 1e-9) return;
-  RouteLeg leg;
-  leg.from = from;
-  leg.to = to;
-  leg.length_m = length;
-  legs.push_back(leg);
+  legs.push_back(line_leg(from, to));
 }
 
 std::vector<Vec2> distinct_points(const std::vector<Vec2>& polyline) {
@@ -109,17 +105,9 @@ FilletedRoute fillet_corners(const std::vector<Vec2>& polyline, double radius) {
     const Vec2 t1 = p[i] - tangent[i] * u, t2 = p[i] + tangent[i] * v;
     const Vec2 centre = t1 + radius * side * Vec2(-u.y(), u.x());
     add_line(out.legs, at, t1);
-    RouteLeg arc;
-    arc.kind = RouteLeg::Kind::arc;
-    arc.from = t1;
+    RouteLeg arc = circle_leg(centre, radius, std::atan2(t1.y() - centre.y(), t1.x() - centre.x()), turn[i]);
+    arc.from = t1;  // exactly the tangent points, which the lines end and begin at
     arc.to = t2;
-    arc.turn = turn[i] > 0.0 ? 1 : -1;
-    arc.radius_m = radius;
-    arc.length_m = radius * std::abs(turn[i]);
-    arc.core = Ellipse{centre, 0.0, 0.0, 0.0};
-    arc.offset_m = radius;
-    arc.phi_from = std::atan2(t1.y() - centre.y(), t1.x() - centre.x());
-    arc.phi_to = arc.phi_from + turn[i];
     out.legs.push_back(arc);
     at = t2;
   }

@@ -27,6 +27,38 @@ Vec2 Route::point_at(double s) const {
   return points.back();
 }
 
+Vec2 leg_direction(const RouteLeg& leg, bool at_end) {
+  if (leg.kind == RouteLeg::Kind::line) {
+    const Vec2 d = leg.to - leg.from;
+    return d.norm() > 0.0 ? Vec2(d.normalized()) : Vec2(1.0, 0.0);
+  }
+  const double phi = at_end ? leg.phi_to : leg.phi_from;
+  return leg.turn * Vec2(-std::sin(phi), std::cos(phi));
+}
+
+RouteLeg line_leg(const Vec2& from, const Vec2& to) {
+  RouteLeg leg;
+  leg.from = from;
+  leg.to = to;
+  leg.length_m = (to - from).norm();
+  return leg;
+}
+
+RouteLeg circle_leg(const Vec2& centre, double radius, double phi_from, double sweep) {
+  RouteLeg leg;
+  leg.kind = RouteLeg::Kind::arc;
+  leg.turn = sweep >= 0.0 ? 1 : -1;
+  leg.radius_m = radius;
+  leg.length_m = radius * std::abs(sweep);
+  leg.core = Ellipse{centre, 0.0, 0.0, 0.0};
+  leg.offset_m = radius;
+  leg.phi_from = phi_from;
+  leg.phi_to = phi_from + sweep;
+  leg.from = arc_point(leg, leg.phi_from);
+  leg.to = arc_point(leg, leg.phi_to);
+  return leg;
+}
+
 double offset_ellipse_radius(const Ellipse& e, double offset, double phi) {
   const double c = std::cos(phi - e.theta), s = std::sin(phi - e.theta);
   const double h = std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s);

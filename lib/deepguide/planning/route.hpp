@@ -41,6 +41,13 @@ struct RouteLeg {
   double phi_from = 0.0, phi_to = 0.0;
 };
 
+/// The unit direction of travel where a leg begins (at_end = false) or ends.
+Vec2 leg_direction(const RouteLeg& leg, bool at_end);
+/// A line leg from a to b.
+RouteLeg line_leg(const Vec2& from, const Vec2& to);
+/// An arc leg on the circle of `radius` round `centre`, from the point at
+/// normal angle phi_from, turning by `sweep` rad (anticlockwise > 0).
+RouteLeg circle_leg(const Vec2& centre, double radius, double phi_from, double sweep);
 /// An arc leg's point with outward normal angle phi (between phi_from and phi_to).
 Vec2 arc_point(const RouteLeg& leg, double phi);
 /// Radius of curvature of the boundary of ellipse (+) disc(offset) at the

@@ -11,7 +11,9 @@
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
+#include "deepguide/simulation/path_following.hpp"
 #include "deepguide/simulation/plant.hpp"
+#include "deepguide/simulation/route_following.hpp"
 #include "deepguide/simulation/simulation.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/water_volume.hpp"
@@ -22,43 +24,57 @@ namespace {
 constexpr double kArrival_m = 5.0;
 constexpr double kKnownSlack_m = 10.0;  // a contact this near a known footprint is that obstacle
 constexpr double kSameContact_m = 10.0;
-constexpr double kCursorWindow_m = 15.0;  // per step the vehicle moves well under a metre
+constexpr double kTrackWindow_m = 15.0;  // per step the vehicle moves well under a metre
 constexpr double kRetry_s = 10.0;         // an evasion that cannot be planned yet is tried again after this
 
-// The vehicle's place on the plan: its projection onto the plan's track,
-// searched from a little behind the last place to `window` ahead of it.
-class Cursor {
+// The plan level: the plan's lines and arcs followed one after another
+// (path_following.hpp; corners turned on the vehicle's radius), and the
+// vehicle's place along the plan, which only moves on.
+class PlanTrack {
  public:
-  explicit Cursor(const MissionPlan& plan) { reset(plan, 0.0); }
-  void reset(const MissionPlan& plan, double along) {
-    track_ = plan_polyline(plan, 0.25);
+  // Follows `plan` from its leg nearest `pos` within [along - 2 m, along + ahead].
+  void reset(const MissionPlan& plan, double along, const Vec2& pos, double ahead) {
+    follower_.legs.clear();
+    start_.clear();
+    for (const BasicManoeuvre& b : plan.basics) {
+      if (b.kind == BasicManoeuvre::Kind::point || b.length_m <= 1e-9) continue;
+      if (b.kind == BasicManoeuvre::Kind::line) {
+        follower_.legs.push_back(line_leg(b.from, b.to));
+      } else {
+        const Vec2 r = b.from - b.centre;
+        follower_.legs.push_back(circle_leg(b.centre, b.radius_m, std::atan2(r.y(), r.x()), b.turn * b.length_m / b.radius_m));
+      }
+      start_.push_back(b.start_m);
+    }
     along_ = along;
-  }
-  double along() const { return along_; }
-  void set_along(double along) { along_ = along; }
-  // The nearest point of the track within [along - behind, along + ahead]; the
-  // window keeps the place continuous where the track passes near itself
-  // (laps, out and back, adjacent survey lines).
-  void locate(const Vec2& p, double behind, double ahead) {
-    double best = std::numeric_limits<double>::infinity(), at = along_;
-    for (std::size_t k = 0; k + 1 < track_.size(); ++k) {
-      const TrackPoint &a = track_[k], &b = track_[k + 1];
-      if (b.along_m < along_ - behind || a.along_m > along_ + ahead) continue;
-      const Vec2 d = b.xy - a.xy;
-      const double len2 = d.squaredNorm();
-      const double t = len2 > 0.0 ? std::clamp((p - a.xy).dot(d) / len2, 0.0, 1.0) : 0.0;
-      const double s = std::clamp(a.along_m + t * (b.along_m - a.along_m), along_ - behind, along_ + ahead);
-      const double dist = (a.xy + t * d - p).norm();
-      if (dist < best) {
-        best = dist;
-        at = s;
+    double best = std::numeric_limits<double>::infinity();
+    follower_.leg = 0;
+    for (std::size_t k = 0; k < start_.size(); ++k) {
+      if (start_[k] + follower_.legs[k].length_m < along - kBehind_m || start_[k] > along + ahead) continue;
+      const double d = (nearest_on_leg(follower_.legs[k], pos).point - pos).norm();
+      if (d < best) {
+        best = d;
+        follower_.leg = k;
       }
     }
-    along_ = std::max(along_, at);  // the vehicle moves on along the plan, never back
+  }
+  double along() const { return along_; }
+  // The command at `pos`; the place along the plan moves on with it.
+  PathFollower::Command steer(const Vec2& pos, const Vec2& ground_velocity, const VehicleParams& vehicle,
+                              double speed_mps, double lookahead_m) {
+    if (follower_.legs.empty()) return {.at_end = true};
+    follower_.lookahead_m = lookahead_m > 0.0 ? lookahead_m : path_lookahead(vehicle, speed_mps);
+    follower_.lead_m = path_lead(vehicle, speed_mps);
+    follower_.corner_radius_m = turn_radius(vehicle, speed_mps);
+    const PathFollower::Command c = follower_.steer(pos, ground_velocity);
+    along_ = std::max(along_, start_[follower_.leg] + follower_.legs[follower_.leg].length_m - c.to_end_m);
+    return c;
   }
 
  private:
-  std::vector<TrackPoint> track_;
+  static constexpr double kBehind_m = 2.0;
+  PathFollower follower_;
+  std::vector<double> start_;  // along the plan where each leg begins
   double along_ = 0.0;
 };
 
@@ -102,7 +118,9 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
   Sonar sonar(sc.sonar);
   ContactMemory contacts(sc.contacts, sc.sonar);
   ReactiveMemory memory;
-  Cursor cursor(run.plan);
+  PlanTrack plan_track;
+  plan_track.reset(run.plan, 0.0, mission.start, kTrackWindow_m);
+  double plan_speed = first.speed_mps;  // the plan's speed where the vehicle was a step ago
   const ObservationOptions observe = observation_options(mission);
 
   bool reactive = false;
@@ -144,8 +162,9 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     const Vec2 pos = s.position;
     run.length_m += (pos - last).norm();
     last = pos;
-    if (!reactive) cursor.locate(pos, 2.0, kCursorWindow_m);
-    const PlanPosition here = position_at(run.plan, cursor.along());
+    if (!reactive) plan_track.steer(pos, s.ground_velocity, mission.vehicle, std::max(plan_speed, 0.1), options.lookahead_m);
+    const PlanPosition here = position_at(run.plan, plan_track.along());
+    plan_speed = here.speed_mps;
 
     // Truth: clearance and collisions.
     for (std::size_t i : truth_field.near(pos, pos, 100.0)) {
@@ -158,13 +177,13 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     }
     inside = v.blocked;
     if (t >= next_sample) {
-      run.track.push_back({t, pos, s.depth_m, s.heading, cursor.along(), reactive});
+      run.track.push_back({t, pos, s.depth_m, s.heading, plan_track.along(), reactive});
       next_sample = t + options.sample_every_s;
     }
     // Holds: wait at the point (the clock runs on, the vehicle stays).
     for (std::size_t i = 0; !reactive && i < run.plan.basics.size(); ++i) {
       const BasicManoeuvre& b = run.plan.basics[i];
-      if (b.start_m > cursor.along()) break;
+      if (b.start_m > plan_track.along()) break;
       if (b.kind != BasicManoeuvre::Kind::point || held[i]) continue;
       held[i] = 1;
       if (b.hold_s > 0.0) {
@@ -175,7 +194,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
       }
     }
 
-    if (!reactive && cursor.along() >= run.plan.length_m - kArrival_m) {
+    if (!reactive && plan_track.along() >= run.plan.length_m - kArrival_m) {
       for (std::size_t i = 0; i < run.plan.basics.size(); ++i) {  // holds at the very end
         const BasicManoeuvre& b = run.plan.basics[i];
         if (b.kind != BasicManoeuvre::Kind::point || held[i]) continue;
@@ -209,7 +228,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         ObstacleSet contact;
         contact.ellipses.push_back(object);
         const std::vector<Conflict> ahead = observe_collisions(run.plan, contact, nullptr, observe);
-        const auto danger = std::find_if(ahead.begin(), ahead.end(), [&](const Conflict& x) { return x.along_m > cursor.along(); });
+        const auto danger = std::find_if(ahead.begin(), ahead.end(), [&](const Conflict& x) { return x.along_m > plan_track.along(); });
         if (danger == ahead.end()) continue;
         const double speed = std::max(here.speed_mps, 0.1);
         const double lead = 2.0 * turn_radius(mission.vehicle, speed) + zone_margin;
@@ -220,7 +239,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         seen_env.obstacles.ellipses.insert(seen_env.obstacles.ellipses.end(), run.detected.ellipses.begin(),
                                            run.detected.ellipses.end());
         seen_env.obstacles.ellipses.push_back(object);
-        const double from_m = cursor.along() + speed * options.planning_delay_s + lead;
+        const double from_m = plan_track.along() + speed * options.planning_delay_s + lead;
         PlannedMission planned = plan_mission(rules, seen_env, run.plan, from_m);
         const auto mine = std::find_if(planned.resolutions.begin(), planned.resolutions.end(),
                                        [&](const Resolution& r) { return r.conflict.with == object.id; });
@@ -228,7 +247,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
                         std::all_of(planned.resolutions.begin(), planned.resolutions.end(),
                                     [](const Resolution& r) { return r.resolved; });
         // In view ahead, before the planner can be done, the reactive level must act now.
-        const bool imminent = danger->along_m - cursor.along() <= speed * options.planning_delay_s + 2.0 * lead;
+        const bool imminent = danger->along_m - plan_track.along() <= speed * options.planning_delay_s + 2.0 * lead;
         if (!ok && !imminent) {
           waiting.emplace_back(c.center, t + kRetry_s);  // try again as it comes nearer
           continue;
@@ -236,7 +255,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         handled.push_back(c.center);
         run.detected.ellipses.push_back(object);
         event(t, pos, object.id + " at " + point_text(c.center) + " is on no chart and endangers the plan " +
-                          fixed(danger->along_m - cursor.along(), 0) + " m ahead");
+                          fixed(danger->along_m - plan_track.along(), 0) + " m ahead");
         if (ok) {
           // The rendezvous is on the route as written, so the new plan's point for it is the place.
           reactive_target = position_at(planned.plan, mine->rendezvous_m).xy;
@@ -254,7 +273,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
                                            {mission.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()});
           std::string why;
           const std::optional<EvasionStretch> stretch =
-              goal_points(track_danger(run.plan, contact_volume, 2.0), danger->along_m, lead, cursor.along(), &why);
+              goal_points(track_danger(run.plan, contact_volume, 2.0), danger->along_m, lead, plan_track.along(), &why);
           rendezvous_m = stretch ? stretch->rendezvous_m : run.plan.length_m;
           const bool planner_failed = mine != planned.resolutions.end() && !mine->resolved;
           if (planner_failed || !stretch) {
@@ -288,11 +307,10 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         run.plan = pending->plan;
         double added = 0.0;
         for (const Resolution& r : pending->resolutions) added += r.added_m;
-        cursor.reset(run.plan, cursor.along());
-        cursor.locate(pos, 2.0, 60.0);
+        plan_track.reset(run.plan, plan_track.along(), pos, 60.0);
         held.assign(run.plan.basics.size(), 0);
         for (std::size_t i = 0; i < run.plan.basics.size(); ++i) {
-          held[i] = run.plan.basics[i].start_m < cursor.along() - 1e-6 ? 1 : 0;
+          held[i] = run.plan.basics[i].start_m < plan_track.along() - 1e-6 ? 1 : 0;
         }
         ++run.replans;
         char what[128];
@@ -311,8 +329,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
           held[i] = 1;
           if (b.hold_s > 0.0) event(t, pos, "the hold at " + point_text(b.from) + " was skipped by the reactive level", true);
         }
-        cursor.reset(run.plan, rendezvous_m);
-        cursor.locate(pos, 2.0, kCursorWindow_m);
+        plan_track.reset(run.plan, rendezvous_m, pos, kTrackWindow_m);
         rendezvous_m = -1.0;
         event(t, pos, "at the rendezvous: the plan level again");
         reactive = false;
@@ -336,11 +353,16 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
       set.course = cmd.course;
       set.speed_mps = cmd.speed_mps;
     } else {
-      const double lookahead =
-          options.lookahead_m > 0.0 ? options.lookahead_m : 1.0 * turn_radius(mission.vehicle, std::max(here.speed_mps, 0.1));
-      const Vec2 aim = position_at(run.plan, std::min(run.plan.length_m, cursor.along() + lookahead)).xy;
-      set.course = (aim - pos).norm() > 1e-6 ? std::atan2((aim - pos).y(), (aim - pos).x()) : s.heading;
       set.speed_mps = std::max(here.speed_mps, 0.1);
+      const PathFollower::Command c = plan_track.steer(pos, s.ground_velocity, mission.vehicle, set.speed_mps, options.lookahead_m);
+      if (c.at_end) {
+        // Past the last leg's end, short of arriving: home on the plan's end.
+        const Vec2 end = position_at(run.plan, run.plan.length_m).xy - pos;
+        set.course = end.norm() > 1e-6 ? std::atan2(end.y(), end.x()) : s.heading;
+      } else {
+        set.course = c.course;
+        set.course_rate = c.course_rate;
+      }
     }
     plant.steer(set);
     plant.advance();

@@ -1,10 +1,12 @@
 #pragma once
 // The two-level guidance of a whole mission in simulation (the seed's Fig. 4).
 //
-// Plan level: the vehicle follows the planned mission, its basic manoeuvres
-// as one track, by line-of-sight guidance: the course points at the track
-// `lookahead_m` ahead of the vehicle's own place on it (its projection,
-// searched forward from the last one), at the manoeuvre's speed and depth.
+// Plan level: the vehicle follows the planned mission's lines and arcs one
+// after another by path following (path_following.hpp: line of sight on the
+// leg being followed, the arcs' turning as the autopilot's feed-forward,
+// the current crabbed into), at the manoeuvre's speed and depth. Where two
+// legs meet at a corner (an evasion's, a track's corner too tight to round)
+// the turn begins at the tangent point of a turn of the vehicle's radius.
 // A hold (GPS fix, alignment) is sailed by waiting at its point: the clock
 // runs on, the vehicle stays.
 //
@@ -27,9 +29,11 @@
 // and is no bigger than it + 10 m. The sonar models elliptic objects only:
 // an unknown polygon is never seen.
 //
-// The vehicle's place on the plan is its projection onto the track within a
-// window (2 m behind, 15 m ahead of the last place), so laps and tracks that
-// pass near themselves are sailed in order. When the danger begins before the
+// The vehicle's place on the plan is its place on the leg it follows; the
+// legs are taken in order, so laps and tracks that pass near themselves are
+// sailed in order. Where the plan changes (an evasion spliced in, the
+// rendezvous reached) the leg is the one nearest the vehicle within a window
+// (2 m behind the place, 60 m and 15 m ahead of it). When the danger begins before the
 // planner could be done, the reactive level alone evades it to the
 // rendezvous past it (goal points on the contact) and hands back there; holds
 // it cut across are alarms. An evasion that cannot be planned yet, the danger
@@ -49,7 +53,7 @@
 namespace deepguide {
 
 struct MissionRunOptions {
-  double lookahead_m = 0.0;       ///< 0: the turn radius at the manoeuvre's speed (2R cut corners 3 m deeper into zones)
+  double lookahead_m = 0.0;       ///< the path follower's; 0: 0.3 x the turn radius at the manoeuvre's speed (path_lookahead)
   double planning_delay_s = 5.0;  ///< the evasion planner's time on the vehicle
   double max_time_s = 0.0;        ///< 0: twice the plan's time + 600 s
   std::uint64_t seed = 1;         ///< the sonar's noise

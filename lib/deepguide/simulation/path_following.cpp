@@ -8,6 +8,9 @@
 #include "deepguide/geometry/ellipse_distance.hpp"
 
 namespace deepguide {
+namespace {
+constexpr double kMaxLedTurn = 150.0 * std::numbers::pi / 180.0;
+}  // namespace
 
 PathPoint nearest_on_leg(const RouteLeg& leg, const Vec2& p) {
   PathPoint q;
@@ -48,10 +51,18 @@ PathPoint nearest_on_leg(const RouteLeg& leg, const Vec2& p) {
 
 PathFollower::Command PathFollower::steer(const Vec2& position, const Vec2& ground_velocity) {
   Command cmd;
+  // How far before leg k's end the next leg is taken: a corner's tangent length.
+  const auto corner_lead = [&](std::size_t k) {
+    if (corner_radius_m <= 0.0) return 0.0;
+    const Vec2 u = leg_direction(legs[k], true), v = leg_direction(legs[k + 1], false);
+    const double turn = std::min(std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)), kMaxLedTurn);
+    return turn > 1e-6 ? corner_radius_m * std::tan(0.5 * turn) : 0.0;
+  };
   PathPoint q = nearest_on_leg(legs[leg], position);
-  while (q.past_end && leg + 1 < legs.size()) {
+  while (leg + 1 < legs.size() && (q.past_end || q.to_end_m < corner_lead(leg))) {
     q = nearest_on_leg(legs[++leg], position);
   }
+  cmd.to_end_m = q.to_end_m;
   cmd.at_end = q.past_end && leg + 1 == legs.size();
   const double l = lookahead_m, e = q.left_m;
   const double alpha = std::atan2(q.tangent.y(), q.tangent.x());

@@ -17,8 +17,13 @@
 //
 // P is searched on the leg being followed; the next leg is taken once the
 // vehicle is abeam of the current leg's end or beyond, so nothing is cut.
-// The legs must join without a corner (routes within the turning radius,
-// planning/turn_rounding.hpp): at a corner the vehicle would overshoot.
+// Routes within the turning radius (planning/turn_rounding.hpp) join without
+// a corner. Where two legs do meet at a corner (a mission's evasion, a track
+// whose legs leave no room for a fillet), turning at the corner would
+// overshoot it by about a turning radius: with corner_radius_m R the next leg
+// is taken R tan(|turn| / 2) before the corner, where a turn of radius R
+// round it would begin, so the vehicle cuts it by about R (1 / cos(turn / 2)
+// - 1) on the inside instead (turns beyond 150 degrees are led as 150).
 
 #include <cstddef>
 #include <vector>
@@ -48,12 +53,15 @@ struct PathFollower {
   /// so starting the feed-forward this much early splits the lag about evenly
   /// before and after a change of curvature.
   double lead_m = 0.0;
+  /// The radius corners are turned on (see above); 0: at the corner.
+  double corner_radius_m = 0.0;
   std::size_t leg = 0;
 
   struct Command {
     double course = 0.0;       ///< course over ground (math rad)
     double course_rate = 0.0;  ///< feed-forward (rad/s)
     double left_m = 0.0;       ///< cross-track error, left > 0
+    double to_end_m = 0.0;     ///< along the leg followed, from the vehicle's place on it to its end
     bool at_end = false;       ///< past the last leg's end
   };
   /// The command for a vehicle at `position` moving at `ground_velocity`.

@@ -41,6 +41,14 @@ void check_ends(const Scenario& sc, const Vec2& first, const Vec2& last) {
 
 }  // namespace
 
+double path_lookahead(const VehicleParams& vehicle, double speed_mps) { return 0.3 * turn_radius(vehicle, speed_mps); }
+
+// The course reference takes up a new turning rate with a time constant of
+// about 1 / (2 w_r): lead by that many seconds of way.
+double path_lead(const VehicleParams& vehicle, double speed_mps) {
+  return speed_mps / (2.0 * vehicle.autopilot.reference_natural_frequency_rad_s);
+}
+
 // A polyline: line of sight leg by leg, the next leg taken within the
 // lookahead of this one's end (so a corner is cut, as a vehicle rounds a
 // waypoint), past the last leg's end homing on the target. Kept for the
@@ -89,14 +97,9 @@ SimulationResult follow_route(const Scenario& sc, const std::vector<RouteLeg>& l
   check_ends(sc, legs.front().from, legs.back().to);
   double length = 0.0;
   for (const RouteLeg& leg : legs) length += leg.length_m;
-  // The course reference takes up a new turning rate with a time constant of
-  // about 1 / (2 w_r): lead by that many seconds of way.
-  const double lead = options.lead_m >= 0.0
-                          ? options.lead_m
-                          : sc.reactive.speed_mps / (2.0 * sc.vehicle.autopilot.reference_natural_frequency_rad_s);
+  const double lead = options.lead_m >= 0.0 ? options.lead_m : path_lead(sc.vehicle, sc.reactive.speed_mps);
   PathFollower follower{legs,
-                        options.lookahead_m > 0.0 ? options.lookahead_m
-                                                  : 0.3 * turn_radius(sc.vehicle, sc.reactive.speed_mps),
+                        options.lookahead_m > 0.0 ? options.lookahead_m : path_lookahead(sc.vehicle, sc.reactive.speed_mps),
                         lead};
   const Guidance along_the_path = [&](double, const VehicleState& state) {
     ReactiveCommand cmd;

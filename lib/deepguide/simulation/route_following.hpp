@@ -33,6 +33,12 @@ namespace deepguide {
 /// (measured: docs/SIMULATION.md, "Following a route").
 inline constexpr double kPathTrackingAllowance_m = 1.0;
 
+/// The path follower's defaults for a vehicle at `speed_mps` (above):
+/// lookahead 0.3 x turn_radius(), and the feed-forward's lead V / (2 w_r),
+/// the course reference's time constant in metres of way.
+double path_lookahead(const VehicleParams& vehicle, double speed_mps);
+double path_lead(const VehicleParams& vehicle, double speed_mps);
+
 struct RouteFollowing {
   double lookahead_m = 0.0;  ///< 0: the default above (for legs, for a polyline)
   double lead_m = -1.0;      ///< PathFollower::lead_m; < 0: the default (route_following.cpp)

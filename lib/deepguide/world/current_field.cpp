@@ -167,7 +167,16 @@ std::vector<double> read_vector(const GDALMDArray& a, const std::string& path) {
   if (a.GetDimensionCount() != 1) {
     throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected a one-dimensional coordinate variable");
   }
-  const std::size_t n = static_cast<std::size_t>(a.GetDimensions()[0]->GetSize());
+  // A header can state any length; the values are read only for a length a
+  // real axis can have (GEBCO's 15" longitudes are 86 400; the soak found
+  // 2^32 - 1, 32 GiB, in 4.5 KB).
+  constexpr GUInt64 kMaxAxis = 10'000'000;
+  const GUInt64 stated = a.GetDimensions()[0]->GetSize();
+  if (stated > kMaxAxis) {
+    throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected a coordinate axis of at most " +
+                     std::to_string(kMaxAxis) + " values, got " + std::to_string(stated));
+  }
+  const std::size_t n = static_cast<std::size_t>(stated);
   std::vector<double> out(n);
   const GUInt64 start = 0;
   const std::size_t count = n;
