@@ -14,6 +14,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/output_paths.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
@@ -114,13 +115,6 @@ CostModel cost_model_of(const PlanOptions& o, const LocalFrame& frame, const Pla
   else if (!m.steady) m.depart_s = m.time_first_s;  // the start of the forecast
   validate(m);
   return m;
-}
-
-std::string hms(double seconds) {
-  const auto s = static_cast<long long>(std::llround(seconds));
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%lld:%02lld:%02lld", s / 3600, (s / 60) % 60, s % 60);
-  return buf;
 }
 
 }  // namespace
@@ -551,7 +545,7 @@ void register_plan(CLI::App& app) {
         for (const PricedLeg& leg : priced.legs) {
           char text[96];
           if (leg.cost.feasible) {
-            std::snprintf(text, sizeof text, "%.2f m/s, %s, %.0f kJ", leg.cost.speed_mps, hms(leg.cost.time_s).c_str(),
+            std::snprintf(text, sizeof text, "%.2f m/s, %s, %.0f kJ", leg.cost.speed_mps, clock_text(leg.cost.time_s).c_str(),
                           leg.cost.energy_j / 1e3);
           } else {
             std::snprintf(text, sizeof text, "%.2f m/s: the current wins", leg.cost.speed_mps);
@@ -635,7 +629,7 @@ void register_plan(CLI::App& app) {
     if (out.result.stats.refine_sweeps > 0) std::printf(", refinement %.1f ms", out.result.stats.refine_ms);
     std::printf("\n");
     if (priced.feasible) {
-      std::printf("time, energy     %.1f s (%s), %.1f kJ at %s speed\n", priced.time_s, hms(priced.time_s).c_str(), priced.energy_j / 1e3, o->speed.c_str());
+      std::printf("time, energy     %.1f s (%s), %.1f kJ at %s speed\n", priced.time_s, clock_text(priced.time_s).c_str(), priced.energy_j / 1e3, o->speed.c_str());
       if (timed) {
         std::printf("depart, arrive   %s, %s\n", format_utc(model->depart_s).c_str(),
                     format_utc(model->depart_s + priced.time_s).c_str());

@@ -18,6 +18,7 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "nc_writer.hpp"
 #include "test_support.hpp"

@@ -136,9 +136,10 @@ TEST(MissionRun, ThePlanLevelKeepsToTheLapsArcs) {
   // A lap of radius 25 m round a rock (22 m from its 3 m outline) at 2 m/s,
   // where the vehicle turns on 22.9 m: entered along a tangent and sailed by
   // path following, the lap is kept to within 1.1 m outside (taking up the
-  // turning rate where it begins) and 0.1 m inside (entered at a right angle
-  // and steered at the track a turn radius ahead: 8.6 m outside after the
-  // entry, 1.6 m inside later).
+  // turning rate where it begins) and 0.1 m inside. Entered at a right angle
+  // and steered at the track a turn radius ahead, the vehicle cut 8.1 m
+  // inside the lap; path following alone, with that entry, ran 8.6 m outside
+  // after the entry and 1.6 m inside later.
   ScratchDir dir;
   const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
                                       "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"

@@ -20,14 +20,15 @@
 namespace deepguide {
 
 inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 constexpr double deg_to_rad(double deg) { return deg * kPi / 180.0; }
 constexpr double rad_to_deg(double rad) { return rad * 180.0 / kPi; }
 
 /// Wraps an angle in radians to [-pi, pi).
 inline double wrap_pi(double a) {
-  double w = std::fmod(a + kPi, 2.0 * kPi);
-  if (w < 0.0) w += 2.0 * kPi;
+  double w = std::fmod(a + kPi, kTwoPi);
+  if (w < 0.0) w += kTwoPi;
   // -tiny + 2 pi can round up to 2 pi, which would give +pi.
   const double r = w - kPi;
   return r >= kPi ? -kPi : r;
@@ -35,9 +36,9 @@ inline double wrap_pi(double a) {
 
 /// Wraps an angle in radians to [0, 2 pi).
 inline double wrap_two_pi(double a) {
-  double w = std::fmod(a, 2.0 * kPi);
-  if (w < 0.0) w += 2.0 * kPi;
-  return w >= 2.0 * kPi ? 0.0 : w;
+  double w = std::fmod(a, kTwoPi);
+  if (w < 0.0) w += kTwoPi;
+  return w >= kTwoPi ? 0.0 : w;
 }
 
 /// Wraps degrees to [0, 360).

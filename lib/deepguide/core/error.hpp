@@ -1,7 +1,9 @@
 #pragma once
 // Errors that reach the user. Every one is a single line that names where the
 // problem is (file, feature or line, field) and what was expected.
-// Exit codes (DESIGN.md): 1 bad input, 2 usage, 3 no safe route.
+// Exit codes (apps/main.cpp): 1 bad input (and internal errors), 2 usage,
+// 3 no safe route or a manoeuvre that cannot be done, 4 done with some inputs
+// skipped.
 
 #include <stdexcept>
 #include <string>

@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 
 namespace deepguide {
@@ -58,7 +59,6 @@ Scenario monte_carlo_scenario(const MonteCarloParams& params, int index) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
   std::normal_distribution<double> normal(0.0, 1.0);
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
   Scenario sc;
   sc.name = "monte-carlo-" + std::to_string(index);

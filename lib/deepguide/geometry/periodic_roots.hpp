@@ -18,6 +18,8 @@
 #include <numbers>
 #include <type_traits>
 
+#include "deepguide/core/angles.hpp"
+
 namespace deepguide {
 
 /// A function's value and its derivative at one angle.
@@ -27,7 +29,6 @@ struct ValueSlope {
 };
 
 namespace periodic_detail {
-inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Coarse sampling finds both signs for all but nearly touching or very
 // elongated pairs; only those pay for the dense pass and the polish.
 inline constexpr int kCoarseSamples = 48;

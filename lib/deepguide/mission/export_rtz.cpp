@@ -30,6 +30,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/mission/export_writers.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/current_field.hpp"

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/utc_time.hpp"
 
 namespace deepguide {
 

@@ -24,7 +24,6 @@ namespace bgi = boost::geometry::index;
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr std::size_t kNoPiece = static_cast<std::size_t>(-1);
 // Tangent segments touch zones exactly; the field judging them allows this
 // much (m) so rounding does not reject them. The route checker allows 1e-6.

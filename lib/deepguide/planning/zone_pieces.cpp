@@ -6,10 +6,10 @@
 
 #include "deepguide/core/angles.hpp"
 
+
 namespace deepguide {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 Vec2 unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
 
 // Ellipse parameter t of the boundary point whose normal has local angle phi_l:

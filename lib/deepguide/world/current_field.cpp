@@ -10,6 +10,7 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/raster_completeness.hpp"
@@ -48,41 +49,9 @@ std::optional<std::pair<double, double>> parse_time_units(const std::string& tex
   else if (unit == "days" || unit == "day" || unit == "d") per = 86400;
   else return std::nullopt;
 
-  std::string rest = trim(t.substr(since + 7));
-  int y = 0, mo = 0, d = 0, h = 0, mi = 0, consumed = 0;
-  double sec = 0;
-  if (std::sscanf(rest.c_str(), "%d-%d-%d%n", &y, &mo, &d, &consumed) != 3) return std::nullopt;
-  rest = rest.substr(static_cast<std::size_t>(consumed));
-  if (!rest.empty() && (rest[0] == 't' || rest[0] == ' ')) {
-    const std::string clock = trim(rest.substr(1));
-    int c2 = 0;
-    if (std::sscanf(clock.c_str(), "%d:%d%n", &h, &mi, &c2) == 2) {
-      rest = clock.substr(static_cast<std::size_t>(c2));
-      int c3 = 0;
-      if (!rest.empty() && rest[0] == ':' && std::sscanf(rest.c_str(), ":%lf%n", &sec, &c3) == 1) {
-        rest = rest.substr(static_cast<std::size_t>(c3));
-      }
-    } else {
-      rest = clock;
-    }
-  }
-  rest = trim(rest);
-  double zone_s = 0;
-  if (rest == "z" || rest == "utc" || rest == "gmt" || rest.empty()) {
-  } else if (rest[0] == '+' || rest[0] == '-') {
-    int zh = 0, zm = 0;
-    const int n = std::sscanf(rest.c_str() + 1, "%d:%d", &zh, &zm);
-    if (n < 1) return std::nullopt;
-    zone_s = (rest[0] == '-' ? -1.0 : 1.0) * (zh * 3600.0 + zm * 60.0);
-  } else {
-    return std::nullopt;
-  }
-  using namespace std::chrono;
-  const year_month_day ymd{year{y}, month{static_cast<unsigned>(mo)}, day{static_cast<unsigned>(d)}};
-  if (!ymd.ok() || h < 0 || h > 24 || mi < 0 || mi > 59 || sec < 0 || sec >= 61) return std::nullopt;
-  const double days = static_cast<double>(sys_days{ymd}.time_since_epoch().count());
-  // A local time zone +hh means the clock runs ahead of UTC: subtract it.
-  return std::make_pair(per, days * 86400.0 + h * 3600.0 + mi * 60.0 + sec - zone_s);
+  const std::optional<double> origin = parse_iso8601(t.substr(since + 7), false);
+  if (!origin) return std::nullopt;
+  return std::make_pair(per, *origin);
 }
 
 // ------------------------------------------------------------------ axes
@@ -1007,29 +976,6 @@ CurrentSummary summarize_current(const CurrentField& f) {
     s.max_speed_mps = smax;
   }
   return s;
-}
-
-std::string format_utc(double epoch_s) {
-  if (!std::isfinite(epoch_s)) return "?";
-  using namespace std::chrono;
-  const double whole = std::floor(epoch_s + 0.5);
-  const auto days = static_cast<long long>(std::floor(whole / 86400.0));
-  const auto secs = static_cast<long long>(whole - static_cast<double>(days) * 86400.0);
-  const year_month_day ymd{sys_days{std::chrono::days{days}}};
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%04d-%02u-%02uT%02lld:%02lld:%02lldZ", static_cast<int>(ymd.year()),
-                static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()), secs / 3600, (secs / 60) % 60,
-                secs % 60);
-  return buf;
-}
-
-double parse_utc(const std::string& text, const std::string& what) {
-  // The CF reference date's grammar, which is ISO 8601's common forms.
-  const auto parsed = parse_time_units("seconds since " + text);
-  if (!parsed || text.find_first_not_of(" \t") == std::string::npos) {
-    throw InputError(what + ": expected a UTC time such as 2019-03-07T15:00:00Z, got '" + printable(text) + "'");
-  }
-  return parsed->second;
 }
 
 }  // namespace deepguide

@@ -210,12 +210,4 @@ struct CurrentSummary {
 
 CurrentSummary summarize_current(const CurrentField& field);
 
-/// "2019-03-07T15:00:00Z" (whole seconds, UTC) for seconds since the Unix epoch.
-std::string format_utc(double epoch_s);
-
-/// Seconds since the Unix epoch for an ISO 8601 time ("2019-03-07T15:00:00Z",
-/// "2019-03-07 15:00", "2019-03-07T17:00+02:00"; no zone = UTC), given as
-/// `what` (e.g. "--depart"). Throws InputError naming `what` otherwise.
-double parse_utc(const std::string& text, const std::string& what);
-
 }  // namespace deepguide

@@ -26,6 +26,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -49,85 +50,14 @@ using Millis = std::int64_t;  // milliseconds since 1970-01-01T00:00:00Z
 
 // ---------------------------------------------------------------- times
 
+// A stored time: an ISO 8601 time with a zone (core/utc_time.hpp), in milliseconds.
 std::optional<Millis> parse_iso(const std::string& s) {
-  std::size_t i = 0;
-  auto number = [&](std::size_t digits, int& out) {
-    if (i + digits > s.size()) return false;
-    out = 0;
-    for (std::size_t k = 0; k < digits; ++k) {
-      const char c = s[i + k];
-      if (c < '0' || c > '9') return false;
-      out = out * 10 + (c - '0');
-    }
-    i += digits;
-    return true;
-  };
-  auto expect = [&](const char* any_of) {
-    if (i >= s.size() || std::strchr(any_of, s[i]) == nullptr) return false;
-    ++i;
-    return true;
-  };
-  int y = 0, mo = 0, d = 0, h = 0, mi = 0, sec = 0;
-  if (!number(4, y) || !expect("-") || !number(2, mo) || !expect("-") || !number(2, d) || !expect("Tt ") ||
-      !number(2, h) || !expect(":") || !number(2, mi) || !expect(":") || !number(2, sec)) {
-    return std::nullopt;
-  }
-  Millis ms = 0;
-  if (i < s.size() && (s[i] == '.' || s[i] == ',')) {
-    ++i;
-    const std::size_t start = i;
-    double scale = 100.0;
-    double frac = 0.0;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9') {
-      frac += (s[i] - '0') * scale;
-      scale /= 10.0;
-      ++i;
-    }
-    if (i == start) return std::nullopt;
-    ms = static_cast<Millis>(std::llround(frac));
-  }
-  int offset_min = 0;
-  if (expect("Zz")) {
-  } else if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
-    const int sign = s[i] == '-' ? -1 : 1;
-    ++i;
-    int oh = 0, om = 0;
-    if (!number(2, oh)) return std::nullopt;
-    if (i < s.size()) {
-      expect(":");
-      if (!number(2, om)) return std::nullopt;
-    }
-    if (oh > 23 || om > 59) return std::nullopt;
-    offset_min = sign * (oh * 60 + om);
-  } else {
-    return std::nullopt;  // no zone: local time of an unknown place
-  }
-  if (i != s.size()) return std::nullopt;
-  using namespace std::chrono;
-  const year_month_day ymd{year{y}, month{static_cast<unsigned>(mo)}, day{static_cast<unsigned>(d)}};
-  if (!ymd.ok() || h > 23 || mi > 59 || sec > 59) return std::nullopt;
-  const auto t = sys_days{ymd} + hours{h} + minutes{mi} + seconds{sec} + milliseconds{ms} - minutes{offset_min};
-  return duration_cast<milliseconds>(t.time_since_epoch()).count();
+  const std::optional<double> t = parse_iso8601(s, true);
+  if (!t) return std::nullopt;
+  return static_cast<Millis>(std::llround(*t * 1000.0));
 }
 
-std::string format_utc(Millis ms) {
-  using namespace std::chrono;
-  const sys_time<milliseconds> tp{milliseconds{ms}};
-  const auto day = floor<days>(tp);
-  const year_month_day ymd{day};
-  const hh_mm_ss hms{tp - day};
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%04d-%02u-%02uT%02d:%02d:%02d", static_cast<int>(ymd.year()),
-                static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()),
-                static_cast<int>(hms.hours().count()), static_cast<int>(hms.minutes().count()),
-                static_cast<int>(hms.seconds().count()));
-  std::string out = buf;
-  if (const auto sub = hms.subseconds().count(); sub != 0) {
-    std::snprintf(buf, sizeof buf, ".%03d", static_cast<int>(sub));
-    out += buf;
-  }
-  return out + "Z";
-}
+std::string format_utc(Millis ms) { return deepguide::format_utc(static_cast<double>(ms) / 1000.0, true); }
 
 Millis checked_time(const std::string& text, const InputLocation& where) {
   return *parse_iso(normalize_utc_time(text, where));

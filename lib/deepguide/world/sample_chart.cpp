@@ -9,6 +9,7 @@
 #include <optional>
 #include <random>
 
+#include "deepguide/core/angles.hpp"
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/gdal_support.hpp"
@@ -18,7 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 
 // Design coordinates: metres from the raster's south-west corner (x east, y north).
 struct Shoal {
