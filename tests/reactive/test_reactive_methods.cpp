@@ -1,5 +1,5 @@
 // The reactive methods (lib/deepguide/reactive): hand-derived courses, the
-// geometric tangency, dipole streamlines, side latches and the notes 9 numbers
+// geometric tangency, dipole streamlines, side latches and the single-disc numbers
 // with a kinematic vehicle (perfect course tracking).
 
 #include <gtest/gtest.h>
@@ -424,7 +424,7 @@ TEST(Geometric, ReorderedObjectsKeepTheLatchedSide) {
 // --- (a) dipole ---
 
 TEST(Dipole, SingleCircleIsTheClassicalUniformFlowPastACylinder) {
-  // With the target far along +x from p and no taper, V = (1 - R^2/z^2)^* (notes 2.2):
+  // With the target far along +x from p and no taper, V = (1 - R^2/z^2)^* (circle in a uniform flow):
   // v_r = (1 - R^2/r^2) cos th, v_th = -(1 + R^2/r^2) sin th, R = 20.
   ReactiveParams params = params_for(10, 2, 5);
   params.influence_m = 1e9;
@@ -608,7 +608,7 @@ TEST(ReactiveMethods, HeadOnVehiclePicksASideOnceAndKeepsIt) {
   }
 }
 
-// --- the notes 9 table, kinematic: R = 20 disc, target (150, 0), start (-150, y0), U = 2.06 m/s ---
+// --- the single-disc table, kinematic: R = 20 disc, target (150, 0), start (-150, y0), U = 2.06 m/s ---
 
 /// Exact shortest path length round the disc on the vehicle's side, minus the 2 m stop distance.
 double optimum_minus_stop(double y0) {
@@ -620,15 +620,15 @@ double optimum_minus_stop(double y0) {
 TEST(ReactiveMethods, Notes9TableKinematic) {
   const ReactiveParams params = params_for(10, 2.06, 2.0);
   const std::vector<Ellipse> objects{disc(0, 0, 10)};
-  const double dt = 0.05;  // the notes' step
+  const double dt = 0.05;  // 20 Hz
   const double arc_rate = 2.06 / 20.0;
-  EXPECT_NEAR(optimum_minus_stop(0.0), 302.67 - 2.0, 0.01);  // notes 3.5
+  EXPECT_NEAR(optimum_minus_stop(0.0), 302.67 - 2.0, 0.01);  // 2 sqrt(150^2 - 20^2) + 20 (pi - 2 acos(20/150))
   for (double y0 : {0.0, 1.0, 5.0, 15.0}) {
     const Flight geo = fly(ReactiveMethod::geometric, params, Vec2(-150, y0), 0.0, Vec2(150, 0), objects, dt);
     const Flight dip = fly(ReactiveMethod::dipole, params, Vec2(-150, y0), 0.0, Vec2(150, 0), objects, dt);
     ASSERT_EQ(geo.last, ReactiveStatus::arrived);
     ASSERT_EQ(dip.last, ReactiveStatus::arrived);  // y0 = 0 too: the axis tie-break
-    // Geometric: the shortest path (within 0.1 %), within 1 % of the notes' 302.67 - 2 m.
+    // Geometric: the shortest path (within 0.1 %), within 1 % of the axis optimum 302.67 - 2 m.
     EXPECT_NEAR(geo.length, optimum_minus_stop(y0), 0.003 * optimum_minus_stop(y0)) << y0;
     EXPECT_NEAR(geo.length, 300.67, 0.01 * 300.67) << y0;
     EXPECT_GT(min_clearance(geo.path, objects, 10), -1e-9);

@@ -228,7 +228,7 @@ TEST(Simulation, StartOnTheTargetEndsAtOnce) {
 }
 
 TEST(Simulation, OneObstacleIsPassedAndAvoided) {
-  // notes §9's disc (R = 20 m), started off the axis (the dipole's stagnation
+  // The single disc of test_reactive_methods.cpp (R = 20 m), started off the axis (the dipole's stagnation
   // line), margin 10 m, the inexact sonar on. Every method arrives; the
   // geometric and potential methods keep clear. The dipole method is not held
   // to clearance here: its field turns faster near the disc than the vehicle

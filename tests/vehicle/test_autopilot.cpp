@@ -37,7 +37,7 @@ double cog_error_deg(const VehicleState& s, const AutopilotSetpoint& sp) {
 }  // namespace
 
 TEST(Autopilot, GainsByPolePlacement) {
-  // notes §7.2: T = 4, K = 0.25, w_n = 0.3, zeta = 1 -> Kp = 1.44, Kd = 5.6, Ki = 0.0432.
+  // T = 4, K = 0.25 (m = 16, d = 4), w_n = 0.3, zeta = 1 -> Kp = 1.44, Kd = 5.6, Ki = 0.0432.
   const HeadingGains g = heading_gains(kP);
   EXPECT_NEAR(g.kp, 1.44, 1e-12);
   EXPECT_NEAR(g.kd, 5.6, 1e-12);
@@ -161,7 +161,7 @@ TEST(Autopilot, ClosedLoopIsBitIdentical) {
 }
 
 // A course set-point that turns at a steady rate: without its rate the
-// reference lags by 2 r / w_r (notes: critically damped second order); with it
+// reference lags by 2 r / w_r (a critically damped second-order reference); with it
 // fed forward the lag goes (autopilot.hpp).
 TEST(Autopilot, CourseRateFeedForwardRemovesTheRampLag) {
   const double rate = deg_to_rad(3.0);

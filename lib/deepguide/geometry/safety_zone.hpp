@@ -3,7 +3,7 @@
 // than d to the ellipse, i.e. the Minkowski sum ellipse (+) disc(d). Its
 // boundary is the offset curve of the ellipse, which is NOT an ellipse: the
 // ellipse with both semi-axes grown by d keeps only ~0.87 d of clearance at
-// a = 10, b = 2, d = 5 (shared/notes/algorithms.md, 3.2).
+// a = 10, b = 2, d = 5 (docs/PLANNING.md, "Safety zones"; tests/geometry/test_safety_zone.cpp).
 //
 // Enclosing polygon. The support function of a Minkowski sum is the sum of the
 // support functions, h(u) = u.c + sqrt(u^T A u) + d, so every half-plane

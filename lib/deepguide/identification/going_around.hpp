@@ -10,7 +10,7 @@
 //   steering   |e| > switch_m: straight at the nearest point of the path.
 //              That segment runs along the object's normal, so it never
 //              crosses the object.
-//   tracking   |e| <= switch_m: lookahead line of sight (notes 7.4) on the
+//   tracking   |e| <= switch_m: lookahead line of sight (Breivik & Fossen, CDC 2008) on the
 //              path's tangent direction alpha, in math angles:
 //                chi = alpha + direction * atan(e / lookahead_m)
 //              Outside the path (e > 0) this turns towards the object. Back
@@ -40,7 +40,7 @@ struct AroundParams {
   double distance_m = 20.0;    ///< D, from the object's footprint, > 0
   int direction = 1;           ///< +1 anticlockwise (object to port), -1 clockwise
   double laps = 1.0;           ///< laps to go, > 0
-  /// LOS lookahead distance (notes 7.4: 15-30 m for DeepC), > 0. 25 m: with
+  /// LOS lookahead distance (rule of thumb: a few vehicle lengths, 15-30 m for DeepC), > 0. 25 m: with
   /// 20 m the real vehicle, joining a 30 m path round a 40 x 18 m wreck in a
   /// 1 m/s current, turned at its limit and overshot by 6 m (cross-track RMS
   /// 1.07 m over two laps); with 25 m 4 m (0.72 m), and the still-water RMS
@@ -48,7 +48,7 @@ struct AroundParams {
   /// ground is the rule (23.6 m at cruise, 35 m downstream in 1 m/s).
   double lookahead_m = 25.0;
   /// Steering -> tracking within this cross-track distance, > 0. About twice
-  /// the turning radius (notes 1.5): joining closer, at right angles, the
+  /// the turning radius: joining closer, at right angles, the
   /// vehicle overshoots by up to its radius (10 m: 8 m inside a 20 m path).
   double switch_m = 40.0;
   double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< commanded speed through the water, > 0

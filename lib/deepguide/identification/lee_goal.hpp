@@ -1,6 +1,6 @@
 #pragma once
-// Aligning to an object in a current (the seed's Figs. 13-14; shared/notes/
-// algorithms.md 1.5): where the vehicle must go and which area it is in.
+// Aligning to an object in a current (the seed's Figs. 13-14; docs/IDENTIFICATION.md,
+// "Aligning"): where the vehicle must go and which area it is in.
 //
 // The safety ellipse is the object's security ellipse for the standoff
 // (reactive_method.hpp: it contains the true offset zone), so the evasive

@@ -1,6 +1,6 @@
 #pragma once
-// Going around an object (the seed's Figs. 15-16; shared/notes/algorithms.md
-// 1.5): the path at distance D from the object's ellipse, its true offset
+// Going around an object (the seed's Figs. 15-16; docs/IDENTIFICATION.md,
+// "Going around"): the path at distance D from the object's ellipse, its true offset
 // curve (not a scaled ellipse, which would run closer than D along the flat
 // sides).
 //

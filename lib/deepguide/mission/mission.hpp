@@ -4,7 +4,7 @@
 // Update)"), read from a commented YAML file (docs/MISSIONS.md,
 // data/missions/).
 //
-// Frame: the file's `crs`, else the UTM zone of the start (DESIGN.md).
+// Frame: the file's `crs`, else the UTM zone of the start (docs/MISSIONS.md, "The file").
 // Positions are {lon, lat} or {x, y} in that frame; depths positive down;
 // speeds in knots (`speed_kn`) or m/s (`speed_mps`); headings clockwise from
 // true north. Paths are relative to the file's folder. Every error is one

@@ -1,7 +1,7 @@
 #pragma once
 // Quadtree (D = 2) and octree (D = 3) decomposition of a work area into free,
 // occupied and mixed cells: one implementation generic over the dimension
-// (shared/notes/algorithms.md §4).
+// (docs/PLANNING.md, "The quadtree graph").
 //
 // The root is a box of extent root_size (per axis) at `origin`; a cell of
 // level L has extent root_size / 2^L and integer index i (per axis) at that

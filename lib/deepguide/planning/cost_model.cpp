@@ -80,7 +80,7 @@ void attach_current(CostModel& m, std::shared_ptr<const CurrentField> field, con
   if (!std::isfinite(m.max_current_mps)) m.max_current_mps = 0.0;  // no node known: still water everywhere
   // Pieces of a quarter of the node spacing: the current is bilinear in each
   // cell, and the midpoint rule over a quarter cell is well inside 0.1 % of
-  // a leg's time (notes §6.1 asks for at most half). Never finer than the
+  // a leg's time (the usual rule asks for at most half). Never finer than the
   // model's step (10 m by default); a constant field needs one piece per leg.
   if (field->constant) {
     m.leg.step_m = std::numeric_limits<double>::max();

@@ -5,7 +5,7 @@
 // time. Graph searches ask it for the cost of one directed edge leaving at a
 // given time, and for an admissible, consistent A* heuristic.
 //
-// Edge costs (edge_cost.hpp, shared/notes/algorithms.md §6):
+// Edge costs (edge_cost.hpp; docs/PLANNING.md, "Costs in a current"):
 //   length  L
 //   time    t = sum dl / s_k at the speed through the water v
 //   energy  E = P(v) t,  P(v) = P_hotel + k v^3; with `economical`, v is chosen

@@ -1,5 +1,5 @@
 #pragma once
-// D* Lite (Koenig & Likhachev, AAAI 2002; shared/notes/algorithms.md §5):
+// D* Lite (Koenig & Likhachev, AAAI 2002; docs/PLANNING.md, "Replanning on new detections"):
 // incremental replanning on a planning graph whose edge costs change while
 // the vehicle follows its route (a sonar reports an obstacle nobody knew).
 //

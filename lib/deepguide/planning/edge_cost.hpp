@@ -1,5 +1,5 @@
 #pragma once
-// What a straight leg costs in a sea current (shared/notes/algorithms.md §6):
+// What a straight leg costs in a sea current (docs/PLANNING.md, "Costs in a current"):
 // its time and its propulsion energy, at a given speed through the water or
 // at the speed that spends least energy on it. The building block of routes
 // weighed by time or energy (plan --cost time|energy, issue 6).
@@ -22,7 +22,7 @@
 // minimum; in a uniform current E(v) has one, and the tests check the answer
 // against a fine scan of v in currents that change along the leg.
 //
-// Admissible lower bounds for A* (notes §6.4), c_max the fastest current
+// Admissible lower bounds for A*, c_max the fastest current
 // anywhere: the ground speed never exceeds v + c_max, so for a route of
 // length >= D (the straight distance)
 //   time   >= D / (v + c_max)                              (v the speed used)
@@ -70,7 +70,7 @@ LegCost leg_cost_economical(const Vec2& a, const Vec2& b, double min_speed_mps, 
 using CurrentAtTime = std::function<std::optional<Vec2>(const Vec2&, double)>;
 
 /// The leg a -> b at `speed_mps` leaving at `depart_s` in a current that
-/// changes in time. The time is marched piece by piece (notes §6.1):
+/// changes in time. The time is marched piece by piece (docs/PLANNING.md, "Time-dependent fields"):
 /// t_{k+1} = t_k + dl / s(x_k, t_k + dl / (2 s(x_k, t_k))), the current taken
 /// at the piece's middle in space and (by one predictor step) in time. A leg
 /// is infeasible where the current has no value at a piece or at its arrival.

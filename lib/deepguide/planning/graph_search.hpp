@@ -39,7 +39,7 @@ using EdgeCostFn = std::function<double(GraphVertex from, GraphVertex to, double
 /// or `edge_cost` when given: it is called lazily, once per edge the search
 /// looks at (the search asks more than once; answers are kept). The label of
 /// a vertex is final when its edges are looked at, so a time-dependent cost is
-/// exact when leaving later never arrives earlier (FIFO, notes §6.3; it holds
+/// exact when leaving later never arrives earlier (FIFO: Kaufman & Smith 1993; it holds
 /// for legs in a current, see docs/PLANNING.md).
 SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
                            SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,

@@ -24,7 +24,7 @@
 //
 // `smooth` (plan --smooth) shortcuts the route afterwards: from each anchor
 // it jumps to the farthest later waypoint it sees (segment_free), so the
-// centre-to-centre zig-zag becomes any-angle legs (notes §4.3; greedy, not
+// centre-to-centre zig-zag becomes any-angle legs (string_pulling.hpp; greedy, not
 // optimal). Costs other than length are priced per directed edge like the
 // visibility graph's (cost_model.hpp).
 

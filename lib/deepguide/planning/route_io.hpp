@@ -1,5 +1,5 @@
 #pragma once
-// Routes on disk (DESIGN.md): GeoJSON (RFC 7946, lon/lat) with the route line
+// Routes on disk: GeoJSON (RFC 7946, lon/lat) with the route line
 // and one point per waypoint carrying its index and cumulative length (depth,
 // speed, ETA and cost once the planners produce them). Reading accepts any
 // OGR source with a LineString (GeoJSON, GPX routes/tracks, KML, ...).

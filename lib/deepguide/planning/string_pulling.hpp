@@ -1,6 +1,6 @@
 #pragma once
-// Post-smoothing of a graph route by string pulling (shared/notes/algorithms.md
-// §4.3): from each anchor, jump to the farthest later waypoint the anchor
+// Post-smoothing of a graph route by string pulling (docs/PLANNING.md,
+// `--smooth`): from each anchor, jump to the farthest later waypoint the anchor
 // sees, where `sees(a, b)` says the straight leg a -> b is allowed (free, and
 // flyable in depth). Greedy, O(k^2) tests at worst, not optimal: it can only
 // shortcut between the waypoints the search chose. The quadtree (2-D) and the

@@ -1,6 +1,6 @@
 #pragma once
 // (a) Uniform flow towards the target + a dipole per object (the seed's
-// synthetic harmonic potentials; shared/notes/algorithms.md 2.2-2.4).
+// synthetic harmonic potentials; Kim & Khosla, IEEE T-RA 8(3), 1992; Feder & Slotine, ICRA 1997).
 //
 // One zone. Complex notation, U = 1 (only the direction is used). For a circle
 // of radius R at the origin in a uniform flow along e = e^{i alpha}:
@@ -18,7 +18,7 @@
 // so the ellipse is exactly a streamline; a circle (k = 0) gives the formula above.
 //
 // Point target. The flow direction is taken at each point as e(p) = unit(g - p)
-// (the notes' frame "whose x-axis points at the goal", evaluated per point). Every
+// (the obstacle frame whose x-axis points at the target, evaluated per point). Every
 // member of that family has the zone as a streamline, so V(p) is tangent to the
 // zone wherever p is on it; far away V -> e(p), so the lines end at the target
 // instead of passing it at their initial offset as a fixed uniform flow would.
@@ -33,7 +33,7 @@
 // w_j = 0 (s_i = 0), provided no other zone is within dipole_blend_m: zones
 // closer than that (overlapping objects included) are merged first into the
 // circle enclosing their enclosing circles, repeatedly. Why not plain
-// superposition: it lets zones leak (notes 2.3: the circles stop being
+// superposition: it lets zones leak (the other dipoles' flow makes the circles stop being
 // streamlines). Why not the nearest zone only: the field jumps where the
 // nearest one changes (r_ref spikes). The price: two close objects become one
 // big circle (a passage narrower than dipole_blend_m is given up), and

@@ -1,6 +1,6 @@
 #pragma once
 // (b) The seed's geometric construction of gradient lines (Eichhorn, UT'04 /
-// IFAC 2005; reconstructed in shared/notes/algorithms.md 1.2).
+// IFAC 2005; the seed names only the sectors, so the rules below are a reconstruction).
 //
 // Zones: each object's security ellipse (reactive_method.hpp), not its
 // enclosing circle: for an elongated object the circle a + d would double the
@@ -28,7 +28,8 @@
 // the zone is a neighbour's (overlapping zones), so the rotation sense cannot
 // flip between them.
 //
-// Several objects (notes 1.2 options (a)-(c)):
+// Several objects (the seed treats one; options (a) first zone on the line of sight,
+// (b) merge, (c) virtual-target cascade):
 //   - engaged zone = the latched one while it still blocks the line of sight,
 //     else the first zone the line of sight enters (option a); hysteresis on
 //     the object, so two zones at similar range cannot take turns;

@@ -58,7 +58,7 @@ struct ReactiveParams {
   double potential_gain = 1.0;      ///< (c) repulsive gain relative to the unit attraction, > 0
   /// (b) and the zone exits of (a): inside a zone the course turns from the
   /// boundary tangent to the outward normal over this fraction of the way to
-  /// the centre (notes 1.2: 0.25), in (0, 1].
+  /// the centre (an assumed blend; 0.25 by default), in (0, 1].
   double exit_blend_fraction = 0.25;
   /// (a) Axis tie-break: a vehicle upstream of the object it is passing and
   /// closer than this to the dividing streamline (in the circle plane of the

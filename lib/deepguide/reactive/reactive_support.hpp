@@ -4,7 +4,7 @@
 // real one lies in a zone, arrival, the side rule with its latch, the first
 // zone on a line of sight, and the blended exit from inside a zone.
 //
-// Exit blend (notes 1.2, sector 3). Inside a zone, with n the outward normal
+// Exit blend (geometric_construction.hpp, sector 3). Inside a zone, with n the outward normal
 // (gradient of the zone's implicit function) and t the course the method
 // would command just outside the nearest boundary point (tangent to the
 // boundary, or towards the target once that is free), the course is
@@ -13,7 +13,7 @@
 // circle (R - |p - o|)/R) and f = params.exit_blend_fraction. At the boundary
 // beta = 0: the course equals the outside course there, so a vehicle riding
 // the boundary does not chatter between "in" and "out"; deeper in it heads
-// straight out. The notes' linear beta (without the square root) makes the
+// straight out. A linear beta (without the square root) makes the
 // outward speed proportional to the depth near the boundary, U pi/(2 f) depth:
 // the depth then only decays exponentially and the vehicle rides just inside
 // the zone for ever (in continuous time); with the square root it decays like

@@ -1,7 +1,7 @@
 #pragma once
 // Following a path of lines and arcs (RouteLeg), not cutting its corners.
 //
-// Curved-path line of sight (Fossen's LOS on a path with curvature; notes 7.4):
+// Curved-path line of sight (Fossen's LOS on a path with curvature; docs/SIMULATION.md, "Following a route"):
 // with P the point of the path nearest the vehicle, alpha the path's course
 // there, kappa its signed curvature (ccw > 0) and e the vehicle's signed
 // distance left of the path,

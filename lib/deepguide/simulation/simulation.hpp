@@ -40,11 +40,11 @@
 //   min_clearance_m min over samples (+infinity without obstacles); collided if < 0
 //   max_abs_rate(_ref)  max |r_k|, max |r_ref,k|
 //   rms_rate(_ref)      sqrt(sum dt_k (r_k^2 + r_{k+1}^2) / 2 / time_s): time-weighted
-//                       (notes §8.1), 0 for a single sample
+//                       (not per sample), 0 for a single sample
 //   heading_reversals   sign changes of r_ref counting only |r_ref| > the dead band
 //                       (0.5 deg/s by default): the last significant sign is kept,
-//                       and a significant sample of the other sign counts one (notes
-//                       §8.1). On r_ref, not r: r_ref is what the guidance asked for,
+//                       and a significant sample of the other sign counts one
+//                       (docs/SIMULATION.md, "Statistics"). On r_ref, not r: r_ref is what the guidance asked for,
 //                       free of the loop's own small oscillations.
 //   course_unreachable_s  sum dt_k over samples where the autopilot could not make
 //                       good the course in the current

@@ -6,7 +6,7 @@
 // routes drawn over the ground: a reactive method asks for a direction of
 // motion over the ground. So the set-point is the COURSE OVER GROUND chi. With a
 // current the autopilot turns it into a heading set-point by the crab
-// (notes/algorithms.md §6.1 formula 4): for the unit direction d of chi,
+// (docs/SIMULATION.md, "Autopilot", step 2): for the unit direction d of chi,
 // current c and speed through water v,
 //   s = d.c + sqrt(v^2 - (d x c)^2),  heading vector h = (s d - c) / v,
 // using the current estimate it is given (the simulation passes the truth; a
@@ -31,8 +31,8 @@
 //     it, which is what matters for the rudder). So a step in the set-point
 //     never asks for more than the vehicle can turn, and the reference turning
 //     rate is reported for the statistics.
-//  2. Heading PID by pole placement on Nomoto (Fossen, PIDpolePlacement; notes
-//     §7.2), m = T/K, d = 1/K:
+//  2. Heading PID by pole placement on Nomoto (Fossen, PythonVehicleSimulator,
+//     lib/control.py, PIDpolePlacement), m = T/K, d = 1/K:
 //       Kp = m w_n^2,  Kd = 2 zeta w_n m - d,  Ki = Kp w_n / 10
 //       delta_c = (m a_r + d r_r) - Kp e - Kd (r - r_r) - Ki int(e),  e = ssa(psi - psi_d)
 //     where the first term is the feed-forward that makes the reference turn
@@ -96,7 +96,7 @@ struct HeadingGains {
 HeadingGains heading_gains(const VehicleParams& params);
 
 /// Ground speed along the unit direction `d` at `speed_mps` through the water
-/// in `current` (notes §6.1): s = d.c + sqrt(v^2 - (d x c)^2); nullopt when no
+/// in `current` (the crab, above): s = d.c + sqrt(v^2 - (d x c)^2); nullopt when no
 /// heading holds the line (v < |d x c|) or the current wins (s <= 0).
 std::optional<double> ground_speed_along(const Vec2& d, const Vec2& current, double speed_mps);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Propulsion energy (shared/notes/algorithms.md §6.2): the power the vehicle
+// Propulsion energy (docs/SIMULATION.md, "Vehicle model"): the power the vehicle
 // draws at speed v through the water, P(v) = P_hotel + k v^3 (hotel load plus
 // drag power, k = rho C_D A / (2 eta)). Defaults: k = 60 W/(m/s)^3 and
 // P_hotel = 1050 W, which make v* = (P_hotel / 2k)^(1/3) = 2.06 m/s, DeepC's

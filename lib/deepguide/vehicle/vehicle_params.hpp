@@ -3,8 +3,9 @@
 //
 // Defaults describe a DeepC-like vehicle. Where each number comes from:
 //   seed  = the seed paper, Table 1 (5.8 m, 2.4 t, 4000 m, cruise 4 kn, max 6 kn)
-//   notes = shared/notes/algorithms.md §7 (itself an engineering estimate: no
-//           Nomoto K, T have been published for DeepC or a vehicle of its size)
+//   model = assumed DeepC-like values for the manoeuvring model (first-order Nomoto yaw with
+//           rudder and speed lags; Fossen, Handbook of Marine Craft Hydrodynamics and Motion
+//           Control, 2011): no Nomoto K, T have been published for DeepC or a vehicle of its size
 //   est.  = an engineering estimate made here, stated as such in docs/SIMULATION.md
 // Every number is a parameter so that a calibrated vehicle (turning-circle test
 // gives K, the 63 % rise time of r after a rudder step gives T) replaces it.
@@ -31,11 +32,11 @@ inline constexpr double kMetresPerSecondPerKnot = 1852.0 / 3600.0;
 /// The course autopilot's tuning (autopilot.hpp): PID by pole placement on the
 /// Nomoto model and a second-order reference model with a turning-rate limit.
 struct AutopilotTuning {
-  double natural_frequency_rad_s = 0.3;  ///< closed-loop omega_n (notes §7.2 example)
-  double damping_ratio = 1.0;            ///< closed-loop zeta (notes §7.2: critically damped)
+  double natural_frequency_rad_s = 0.3;  ///< closed-loop omega_n (model; gives Kp = 1.44)
+  double damping_ratio = 1.0;            ///< closed-loop zeta (model: critically damped)
   double reference_natural_frequency_rad_s = 0.2;  ///< est.: slower than the loop, so it can follow
   /// Reference turning-rate limit: 0.8 K delta_max keeps the rudder out of
-  /// saturation (notes §7.1); 5 deg/s = 0.8 x 6.25 deg/s with the defaults.
+  /// saturation (a rule of thumb); 5 deg/s = 0.8 x 6.25 deg/s with the defaults.
   double max_reference_turn_rate = deg_to_rad(5.0);
 
   bool operator==(const AutopilotTuning&) const = default;
@@ -49,22 +50,22 @@ struct VehicleParams {
   double max_speed_mps = 6.0 * kMetresPerSecondPerKnot;     ///< seed: 6 kn
   /// est.: 1 kn, the slowest speed with steerage way; the floor of --speed optimal.
   double min_speed_mps = 1.0 * kMetresPerSecondPerKnot;
-  double speed_time_constant_s = 20.0;  ///< T_u, notes §7.1
+  double speed_time_constant_s = 20.0;  ///< T_u, model
 
-  double nomoto_gain_per_s = 0.25;       ///< K (r per rad of rudder), notes §7.1
-  double nomoto_time_constant_s = 4.0;   ///< T, notes §7.1
-  double max_rudder = deg_to_rad(25.0);  ///< delta_max, notes §7.1
-  double max_rudder_rate = deg_to_rad(10.0);  ///< notes §7.1
-  double rudder_time_constant_s = 0.5;   ///< T_delta of the rudder servo, notes §7.1
+  double nomoto_gain_per_s = 0.25;       ///< K (r per rad of rudder), model
+  double nomoto_time_constant_s = 4.0;   ///< T, model
+  double max_rudder = deg_to_rad(25.0);  ///< delta_max, model
+  double max_rudder_rate = deg_to_rad(10.0);  ///< model
+  double rudder_time_constant_s = 0.5;   ///< T_delta of the rudder servo, model
   /// Hard turning-rate limit. est.: 6 deg/s, just under K delta_max = 6.25 deg/s,
   /// so a hard-over turn at cruise has the radius u / r_max = 19.6 m (3.4 L).
   double max_turn_rate = deg_to_rad(6.0);
 
-  double max_vertical_speed_mps = 0.5;  ///< est.: about U sin(15 deg) at cruise (notes §7.3: 20-30 deg pitch)
+  double max_vertical_speed_mps = 0.5;  ///< est.: about U sin(15 deg) at cruise (AUVs pitch up to 20-30 deg)
   double depth_time_constant_s = 10.0;  ///< est.: first-order depth response outside the rate limit
   double max_depth_m = 4000.0;          ///< seed: depth of diving
 
-  double step_s = 0.1;  ///< fixed integration step; notes §7.5: T is seconds, 0.1 s is ample
+  double step_s = 0.1;  ///< fixed integration step; Nomoto T is seconds, so 0.1 s is ample
 
   AutopilotTuning autopilot;
   /// Propulsion power P(v) = P_hotel + k v^3 (energy_model.hpp says where the numbers come from).

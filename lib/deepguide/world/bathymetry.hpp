@@ -3,7 +3,7 @@
 // ASCII grids, and whatever else GDAL opens as a raster.
 //
 // Decisions (to be mirrored in docs/FORMATS.md):
-// - Depth is positive down (DESIGN.md section 2). A file holds either
+// - Depth is positive down (README.md, "Conventions"). A file holds either
 //   elevation (up positive, the sea floor negative: GDAL, GMT, NOAA, BAG) or
 //   depth (down positive). VerticalSense::automatic looks where the file says:
 //   a "positive" attribute (CF/NetCDF: up or down), the BAG driver (elevation

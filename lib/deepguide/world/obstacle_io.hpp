@@ -1,7 +1,7 @@
 #pragma once
 // Obstacles on disk, through OGR: any vector source GDAL opens (GeoJSON,
 // GeoPackage, Shapefile, CSV with X/Y or WKT columns, ...). Fields
-// (DESIGN.md): a Point feature with `semi_major_m`, `semi_minor_m`,
+// (docs/FORMATS.md, "Obstacle files"): a Point feature with `semi_major_m`, `semi_minor_m`,
 // `orientation_deg` (major axis, clockwise from true north) and `height_m` or
 // `top_depth_m` is an elliptical cylinder; a Polygon (or MultiPolygon) feature
 // is a polygonal obstacle. Optional `id` or `name` names the obstacle.

@@ -39,7 +39,6 @@ namespace {
 
 constexpr const char* kObstacleLayer = "obstacles";
 constexpr const char* kDetectionLayer = "detections";
-constexpr const char* kStallHook = "DEEPGUIDE_TEST_STALL_IMPORT_AFTER_ROWS";
 
 // Extra fields asked of load_obstacles: the store's first three, the detections' last three.
 const std::vector<std::string> kExtraFields = {"first_seen", "last_seen", "sightings", "time", "mission",
@@ -552,14 +551,10 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
   OGRLayer* obstacle_layer = ds->GetLayerByName(kObstacleLayer);
   OGRLayer* detection_layer = ds->GetLayerByName(kDetectionLayer);
   if (!rows.empty()) {
-    long stall_after = -1;
-    if (const char* hook = std::getenv(kStallHook)) stall_after = std::strtol(hook, nullptr, 10);
     long rows_written = 0;
     auto row_written = [&] {
-      if (++rows_written != stall_after) return;
-      std::fprintf(stderr, "deepguide: test hook: import stalled after %ld rows\n", rows_written);
-      std::fflush(stderr);
-      for (;;) ::pause();
+      ++rows_written;
+      if (options.on_row_written) options.on_row_written(rows_written);
     };
     gdal::QuietErrors quiet;
     auto fail = [&](const std::string& what) {

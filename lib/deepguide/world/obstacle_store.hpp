@@ -1,7 +1,7 @@
 #pragma once
-// The stored-obstacle database (DESIGN.md: "a GeoPackage is the stored-obstacle
-// database: detections from several missions merge there"). Layout and
-// decisions are in docs/FORMATS.md, "Stored-obstacle database"; in short:
+// The stored-obstacle database: one GeoPackage in which the detections from
+// several missions merge. Layout and decisions are in docs/FORMATS.md,
+// "Stored-obstacle database"; in short:
 //
 // - Layer `obstacles`: Points in EPSG:4326, an ordinary obstacle file for
 //   load_obstacles (`id`, `semi_major_m`, `semi_minor_m`, `orientation_deg`,
@@ -43,13 +43,9 @@
 //   import leaves no store or an empty, valid one. An exclusive flock() on the
 //   store serialises concurrent importers. A store file without any write
 //   permission bit is refused as read-only, even for root.
-// - Test hook (tests only, never for users): with the environment variable
-//   DEEPGUIDE_TEST_STALL_IMPORT_AFTER_ROWS=N, import_detections() writes
-//   "deepguide: test hook: import stalled after N rows" to stderr once N rows
-//   have been written inside the open transaction, then sleeps forever, so a
-//   test can SIGKILL it mid-transaction.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,6 +64,9 @@ struct ObstacleStoreOptions {
   std::string source_crs;
   /// Sighting time for detections without `time`, ISO 8601; empty = now.
   std::string import_time;
+  /// Called with the count of rows written so far inside the open
+  /// transaction, after each (a test stops an import there to kill it).
+  std::function<void(long rows)> on_row_written = nullptr;
 };
 
 struct StoredObstacle {

@@ -6,7 +6,7 @@
 // - Outside the grid, and where the chart has no data, the depth is 0: water
 //   nobody sounded is not water to dive in. Land has negative depth.
 // - depth_range(box) bounds the floor over a footprint from a min/max pyramid
-//   (notes §4.1): level k holds the shallowest and deepest node of each block
+//   (a mip-map of the nodes): level k holds the shallowest and deepest node of each block
 //   of 2^k x 2^k nodes, and a query reads at most 4 x 4 blocks of the level
 //   where the footprint's nodes fit. The blocks cover the footprint, and a
 //   bilinear patch lies between its corner nodes, so the range always holds
