@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/world/current_field.hpp"
@@ -82,9 +83,9 @@ struct Variant {
 
 int main(int argc, char** argv) {
   int scenarios = 100;
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::strcmp(argv[i], "--scenarios") == 0) scenarios = std::max(1, std::atoi(argv[i + 1]));
-  }
+  CLI::App app{"bench_cost_planning: time and energy routes in random current fields, then HYCOM"};
+  app.add_option("--scenarios", scenarios, "Random current fields")->check(CLI::PositiveNumber)->capture_default_str();
+  deepguide::bench::parse_or_exit(app, argc, argv);
   std::mt19937 rng(20261123);
   std::vector<Scenario> all;
   for (int i = 0; i < scenarios; ++i) all.push_back(random_scenario(rng));

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <string>
 
+#include "bench_options.hpp"
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/simulation/identification_run.hpp"
@@ -73,8 +74,12 @@ int run(const std::string& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::string folder = "data/scenarios";
+  CLI::App app{"bench_identification: aligning and going around in currents of 0..1 m/s"};
+  app.add_option("folder", folder, "The scenario folder (its identify scenarios)")->capture_default_str();
+  deepguide::bench::parse_or_exit(app, argc, argv);
   try {
-    return run(argc > 1 ? argv[1] : "data/scenarios");
+    return run(folder);
   } catch (const InputError& e) {
     std::fprintf(stderr, "bench_identification: %s\n", e.what());
     return 1;

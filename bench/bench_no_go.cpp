@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/no_go.hpp"
 
@@ -123,25 +124,13 @@ void write_seabed(const std::string& path, int n) {
 
 int main(int argc, char** argv) {
   Args a;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto next = [&]() -> double {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "bench_no_go: %s needs a value\n", arg.c_str());
-        std::exit(2);
-      }
-      return std::atof(argv[++i]);
-    };
-    if (arg == "--size") a.size = static_cast<int>(next());
-    else if (arg == "--depth") a.depth = next();
-    else if (arg == "--clearance") a.clearance = next();
-    else if (arg == "--tolerance") a.tolerance = next();
-    else if (arg == "--keep") a.keep = true;
-    else {
-      std::fprintf(stderr, "usage: bench_no_go [--size N] [--depth M] [--clearance M] [--tolerance M] [--keep]\n");
-      return arg == "--help" ? 0 : 2;
-    }
-  }
+  CLI::App app{"bench_no_go: a synthetic GeoTIFF polygonized into its no-go area; time and peak RSS"};
+  app.add_option("--size", a.size, "Raster side (cells)")->check(CLI::Range(2, 200000))->capture_default_str();
+  app.add_option("--depth", a.depth, "Operating depth (m)")->capture_default_str();
+  app.add_option("--clearance", a.clearance, "Vertical clearance (m)")->capture_default_str();
+  app.add_option("--tolerance", a.tolerance, "Polygon simplification tolerance (m)")->capture_default_str();
+  app.add_flag("--keep", a.keep, "Keep the GeoTIFF");
+  deepguide::bench::parse_or_exit(app, argc, argv);
   const fs::path dir = fs::temp_directory_path() / ("deepguide-bench-nogo-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string path = (dir / "seabed.tif").string();

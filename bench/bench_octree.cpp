@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "deepguide/planning/octree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 
@@ -36,11 +37,11 @@ double peak_rss_mib() {
 int main(int argc, char** argv) {
   double min_cell = 1.0, dive = 45.0;
   bool header = false;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--min-cell") == 0 && i + 1 < argc) min_cell = std::atof(argv[++i]);
-    else if (std::strcmp(argv[i], "--dive") == 0 && i + 1 < argc) dive = std::atof(argv[++i]);
-    else if (std::strcmp(argv[i], "--header") == 0) header = true;
-  }
+  CLI::App app{"bench_octree: one octree configuration over a 2 km synthetic sea floor, one markdown row"};
+  app.add_option("--min-cell", min_cell, "The smallest cell's height (m)")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--dive", dive, "The steepest dive (deg)")->check(CLI::Range(1.0, 89.0))->capture_default_str();
+  app.add_flag("--header", header, "Print the table's header only");
+  deepguide::bench::parse_or_exit(app, argc, argv);
   if (header) {
     std::printf("| min cell (h x w) | dive | cells | free cells | build s | octree MiB | peak RSS MiB | query s | route m | expanded |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");

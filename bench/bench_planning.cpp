@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_check.hpp"
@@ -309,51 +310,26 @@ struct Options {
   std::vector<double> budgets{0.01, 0.1, 1.0};
 };
 
-void usage() {
-  std::puts(
-      "bench_planning [--quick] [--scenarios K] [--queries Q] [--no-peer] [--peer-scenarios K]\n"
-      "  --quick             N = 10, 50, 200; 2 scenarios; peer: N = 10, 50, 2 scenarios, 0.01 and 0.1 s\n"
-      "  --scenarios K       scenarios per obstacle count (default 5)\n"
-      "  --queries Q         random queries on the prebuilt 200-obstacle graph (default 100)\n"
-      "  --no-peer           skip the OMPL peer\n"
-      "  --peer-scenarios K  scenarios per obstacle count for the OMPL peer (default 5)\n"
-      "Google Benchmark flags (--benchmark_*) are accepted and ignored.");
-}
-
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next_int = [&] {
-      if (i + 1 >= argc) {
-        usage();
-        std::exit(2);
-      }
-      return std::atoi(argv[++i]);
-    };
-    if (a == "--quick") {
-      o.sizes = {10, 50, 200};
-      o.scenarios = 2;
-      o.peer_sizes = {10, 50};
-      o.peer_scenarios = 2;
-      o.budgets = {0.01, 0.1};
-    } else if (a == "--scenarios") {
-      o.scenarios = std::max(1, next_int());
-    } else if (a == "--queries") {
-      o.queries = std::max(1, next_int());
-    } else if (a == "--no-peer") {
-      o.peer = false;
-    } else if (a == "--peer-scenarios") {
-      o.peer_scenarios = std::max(1, next_int());
-    } else if (a.rfind("--benchmark", 0) == 0) {
-      // scripts/bench.sh passes Google Benchmark flags to every bench_*; not ours.
-    } else if (a == "--help" || a == "-h") {
-      usage();
-      std::exit(0);
-    } else {
-      usage();
-      std::exit(2);
-    }
+  bool quick = false;
+  CLI::App app{"bench_planning: planning time, graph sizes and route lengths as markdown tables"};
+  app.add_flag("--quick", quick, "N = 10, 50, 200; 2 scenarios; peer: N = 10, 50, 2 scenarios, 0.01 and 0.1 s");
+  app.add_option("--scenarios", o.scenarios, "Scenarios per obstacle count")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--queries", o.queries, "Random queries on the prebuilt 200-obstacle graph")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_flag("!--no-peer", o.peer, "Skip the OMPL peer");
+  app.add_option("--peer-scenarios", o.peer_scenarios, "Scenarios per obstacle count for the OMPL peer")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  deepguide::bench::parse_or_exit(app, argc, argv);
+  if (quick) {
+    o.sizes = {10, 50, 200};
+    o.scenarios = 2;
+    o.peer_sizes = {10, 50};
+    o.peer_scenarios = 2;
+    o.budgets = {0.01, 0.1};
   }
   o.peer_scenarios = std::min(o.peer_scenarios, o.scenarios);
   return o;

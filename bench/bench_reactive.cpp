@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "deepguide/core/angles.hpp"
 #include "deepguide/evaluation/monte_carlo.hpp"
 
@@ -156,19 +157,11 @@ void print_throughput() {
 int main(int argc, char** argv) {
   MonteCarloParams params;
   bool throughput = true;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--scenarios" && i + 1 < argc) {
-      params.scenarios = std::atoi(argv[++i]);
-    } else if (a == "--seed" && i + 1 < argc) {
-      params.seed = std::strtoull(argv[++i], nullptr, 10);
-    } else if (a == "--no-throughput") {
-      throughput = false;
-    } else {
-      std::fprintf(stderr, "usage: bench_reactive [--scenarios N] [--seed S] [--no-throughput]\n");
-      return a == "--help" ? 0 : 2;
-    }
-  }
+  CLI::App app{"bench_reactive: Monte Carlo over seeded scenarios, then simulation throughput"};
+  app.add_option("--scenarios", params.scenarios, "Scenarios")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--seed", params.seed, "The suite's seed")->capture_default_str();
+  app.add_flag("!--no-throughput", throughput, "Skip the one-hour throughput run");
+  deepguide::bench::parse_or_exit(app, argc, argv);
   try {
     std::printf("# bench_reactive\n\n");
     const auto t0 = std::chrono::steady_clock::now();

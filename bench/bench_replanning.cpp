@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/quadtree_graph.hpp"
 #include "deepguide/planning/replanning.hpp"
@@ -38,9 +39,9 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int scenarios = 40;
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::strcmp(argv[i], "--scenarios") == 0) scenarios = std::max(1, std::atoi(argv[i + 1]));
-  }
+  CLI::App app{"bench_replanning: D* Lite repairs against A* from scratch"};
+  app.add_option("--scenarios", scenarios, "Random detection scenarios")->check(CLI::PositiveNumber)->capture_default_str();
+  deepguide::bench::parse_or_exit(app, argc, argv);
   std::mt19937 rng(20021);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<double> build, repair, scratch, rebuild, ratio, rebuild_ratio, leaves, expanded_repair, expanded_scratch;
