@@ -20,6 +20,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/utc_time.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/current_sampling.hpp"
+#include "deepguide/world/current_summary.hpp"
 #include "nc_writer.hpp"
 #include "test_support.hpp"
 

@@ -23,6 +23,7 @@
 #include "deepguide/simulation/simulation.hpp"
 #include "deepguide/simulation/trajectory_io.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "test_support.hpp"
 

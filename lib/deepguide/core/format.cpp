@@ -10,9 +10,9 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
-std::string general(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g", v);
+std::string general(double v, int significant) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
   return buf;
 }
 

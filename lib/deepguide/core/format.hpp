@@ -10,8 +10,8 @@ namespace deepguide {
 
 /// `v` with `digits` decimals ("%.*f").
 std::string fixed(double v, int digits);
-/// `v` in printf's %g form (6 significant digits, no trailing zeros).
-std::string general(double v);
+/// `v` in printf's %g form (`significant` digits, no trailing zeros).
+std::string general(double v, int significant = 6);
 /// "(x, y)" with `digits` decimals, e.g. "(120.0, 45.5)".
 std::string point_text(double x, double y, int digits = 1);
 inline std::string point_text(const Eigen::Vector2d& p, int digits = 1) { return point_text(p.x(), p.y(), digits); }

@@ -4,7 +4,10 @@
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
+#include "deepguide/world/current_sampling.hpp"
+#include "deepguide/world/current_summary.hpp"
 
 namespace deepguide {
 
@@ -25,12 +28,6 @@ std::string to_string(CostKind kind) {
 }
 
 namespace {
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 bool positive(double v) { return v > 0.0 && std::isfinite(v); }
 
@@ -95,16 +92,16 @@ void attach_current(CostModel& m, std::shared_ptr<const CurrentField> field, con
 void validate(const CostModel& m) {
   if (!positive(m.leg.energy.hotel_power_w) || !positive(m.leg.energy.propulsion_k_w_per_mps3)) {
     throw InputError("energy model: hotel_power_w and propulsion_k_w_per_mps3: expected powers > 0, got " +
-                     num(m.leg.energy.hotel_power_w) + " W and " + num(m.leg.energy.propulsion_k_w_per_mps3) +
+                     general(m.leg.energy.hotel_power_w) + " W and " + general(m.leg.energy.propulsion_k_w_per_mps3) +
                      " W/(m/s)^3");
   }
   if (!positive(m.min_speed_mps) || !positive(m.max_speed_mps) || m.min_speed_mps > m.max_speed_mps) {
-    throw InputError("vehicle speeds: expected 0 < min_speed_mps <= max_speed_mps, got " + num(m.min_speed_mps) +
-                     " and " + num(m.max_speed_mps) + " m/s");
+    throw InputError("vehicle speeds: expected 0 < min_speed_mps <= max_speed_mps, got " + general(m.min_speed_mps) +
+                     " and " + general(m.max_speed_mps) + " m/s");
   }
   if (!m.economical && (!positive(m.speed_mps) || m.speed_mps > m.max_speed_mps)) {
-    throw InputError("--speed: expected a speed > 0 and <= the vehicle's maximum " + num(m.max_speed_mps) +
-                     " m/s, got " + num(m.speed_mps));
+    throw InputError("--speed: expected a speed > 0 and <= the vehicle's maximum " + general(m.max_speed_mps) +
+                     " m/s, got " + general(m.speed_mps));
   }
   if (!(m.max_current_mps >= 0.0) || !std::isfinite(m.max_current_mps)) {
     throw InputError("current: expected a finite maximum speed >= 0 m/s");
@@ -116,7 +113,7 @@ void validate(const CostModel& m) {
   }
   if (m.economical && m.kind == CostKind::time) {
     throw InputError("--speed optimal: expected --cost energy or length (the least-energy speed per leg; the "
-                     "fastest route is flown at the maximum speed: give --speed " + num(m.max_speed_mps) + ")");
+                     "fastest route is flown at the maximum speed: give --speed " + general(m.max_speed_mps) + ")");
   }
   if (m.economical && !m.steady) {
     throw InputError(

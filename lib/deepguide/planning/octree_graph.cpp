@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/planning/string_pulling.hpp"
 
 namespace deepguide {
@@ -16,12 +17,6 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 constexpr int kAttachRings = 4;
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 std::string where(const Vec3& p) {
   char buf[96];
@@ -63,10 +58,10 @@ CellState classify(const WaterVolume& volume, const Vec3& lo, const Vec3& hi, co
 
 void validate(const OctreeOptions& options) {
   if (!(options.min_cell_m > 0.0) || !std::isfinite(options.min_cell_m)) {
-    throw InputError("--min-cell: expected a cell size > 0 m, got " + num(options.min_cell_m));
+    throw InputError("--min-cell: expected a cell size > 0 m, got " + general(options.min_cell_m));
   }
   if (!(options.max_dive_deg > 0.0 && options.max_dive_deg < 90.0)) {
-    throw InputError("--max-dive: expected an angle between 0 and 90 degrees, got " + num(options.max_dive_deg));
+    throw InputError("--max-dive: expected an angle between 0 and 90 degrees, got " + general(options.max_dive_deg));
   }
 }
 
@@ -85,14 +80,14 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
     throw InputError("octree: expected a depth band with a bottom or a sea floor (a chart), got neither");
   }
   if (!(bottom > band.min_depth_m)) {
-    throw InputError("octree: no free cell: the sea floor less the clearance (" + num(bottom) +
-                     " m at its deepest) is not below the depth band's top (" + num(band.min_depth_m) + " m)");
+    throw InputError("octree: no free cell: the sea floor less the clearance (" + general(bottom) +
+                     " m at its deepest) is not below the depth band's top (" + general(band.min_depth_m) + " m)");
   }
   slope_ = std::tan(options.max_dive_deg * M_PI / 180.0);
   const double height = options.min_cell_m, width = height / std::min(1.0, slope_);
   const double need = std::max(extent.maxCoeff() / width, (bottom - band.min_depth_m) / height);
   if (!(need < std::ldexp(1.0, CellTree<3>::kMaxLevels))) {
-    throw InputError("--min-cell: " + num(options.min_cell_m) + " m cells over this volume need more than " +
+    throw InputError("--min-cell: " + general(options.min_cell_m) + " m cells over this volume need more than " +
                      std::to_string(CellTree<3>::kMaxLevels) + " levels; give a larger cell");
   }
   // Strictly more than the extent: cells are half-open, and a point on the
@@ -103,7 +98,7 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
   std::size_t cells = 0;
   tree_ = std::make_unique<CellTree<3>>(origin, root, depth, [&](const CellTree<3>::Box& box) {
     if (++cells > options.max_cells) {
-      throw InputError("--min-cell: " + num(options.min_cell_m) + " m cells over this volume make more than " +
+      throw InputError("--min-cell: " + general(options.min_cell_m) + " m cells over this volume make more than " +
                        std::to_string(options.max_cells) + " cells; give a larger cell or a smaller volume");
     }
     return classify(volume, box.min, box.max, options.area_max, bottom);
@@ -119,7 +114,7 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
   }
   if (free_.empty()) {
     throw InputError("octree: no free cell in the volume (every cell is outside the band, in the sea floor's "
-                     "clearance or within " + num(volume.field().margin()) + " m of an obstacle)");
+                     "clearance or within " + general(volume.field().margin()) + " m of an obstacle)");
   }
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -161,18 +161,12 @@ QuadtreeGraph* Planner::quadtree() { return impl_->quadtree.get(); }
 
 namespace {
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
 void require_free(const ObstacleField& field, const Vec2& p, const char* which) {
   const ObstacleField::Nearest n = field.segment_clearance(p, p);
   // A point exactly on the zone boundary is free; rounding gets a micrometre.
   if (n.distance >= field.margin() - 1e-6) return;
-  throw NoRouteError(std::string(which) + " lies " + fmt(n.distance) + " m from obstacle '" +
-                     printable(field.obstacle_name(n.obstacle)) + "', inside its " + fmt(field.margin()) +
+  throw NoRouteError(std::string(which) + " lies " + fixed(n.distance, 2) + " m from obstacle '" +
+                     printable(field.obstacle_name(n.obstacle)) + "', inside its " + fixed(field.margin(), 2) +
                      " m safety zone");
 }
 

@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/planning/string_pulling.hpp"
 
 namespace deepguide {
@@ -24,19 +25,13 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 }  // namespace
 
 QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& options)
     : field_(&field), options_(options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!(options.min_cell_m > 0.0) || !std::isfinite(options.min_cell_m)) {
-    throw InputError("--min-cell: expected a cell size > 0 m, got " + num(options.min_cell_m));
+    throw InputError("--min-cell: expected a cell size > 0 m, got " + general(options.min_cell_m));
   }
   const Vec2 extent = options.area_max - options.area_min;
   if (!options.area_min.allFinite() || !options.area_max.allFinite() || !(extent.minCoeff() > 0.0)) {
@@ -46,7 +41,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   // doubles first: a tiny cell over a wide area overflows an int).
   const double need = extent.maxCoeff() / options.min_cell_m;
   if (!(need < std::ldexp(1.0, kMaxDepth))) {
-    throw InputError("--min-cell: " + num(options.min_cell_m) + " m over a " + num(extent.maxCoeff()) +
+    throw InputError("--min-cell: " + general(options.min_cell_m) + " m over a " + general(extent.maxCoeff()) +
                      " m area needs more than " + std::to_string(kMaxDepth) + " levels; give a larger cell");
   }
   // Strictly more than the extent: cells are half-open, and a point on the
@@ -57,7 +52,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   const double margin = field.margin();
   const auto classify = [&](const CellTree<2>::Box& box) {
     if (++cells > options.max_cells) {
-      throw InputError("--min-cell: " + num(options.min_cell_m) + " m cells over this area make more than " +
+      throw InputError("--min-cell: " + general(options.min_cell_m) + " m cells over this area make more than " +
                        std::to_string(options.max_cells) + " cells; give a larger cell or a smaller area");
     }
     // The root square reaches past the area on its far sides: cells wholly
@@ -85,7 +80,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
     centres_.push_back(tree_->box(i).centre());
   }
   if (free_.empty()) {
-    throw InputError("quadtree: no free cell in the work area (every cell lies within " + num(margin) +
+    throw InputError("quadtree: no free cell in the work area (every cell lies within " + general(margin) +
                      " m of an obstacle)");
   }
   graph_ = PlanningGraph(free_.size() + 2);  // + start and goal

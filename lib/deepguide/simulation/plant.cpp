@@ -6,6 +6,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/current_sampling.hpp"
 
 namespace deepguide {
 namespace {

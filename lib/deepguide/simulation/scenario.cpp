@@ -16,6 +16,8 @@
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/current_sampling.hpp"
+#include "deepguide/world/current_summary.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide {

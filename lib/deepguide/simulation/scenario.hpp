@@ -88,6 +88,7 @@
 #include "deepguide/simulation/contacts.hpp"
 #include "deepguide/vehicle/energy_model.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
+#include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sonar.hpp"

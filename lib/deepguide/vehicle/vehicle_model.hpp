@@ -34,6 +34,7 @@
 
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
+#include "deepguide/world/current_sampling.hpp"
 
 namespace deepguide {
 

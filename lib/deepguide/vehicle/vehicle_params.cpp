@@ -13,6 +13,7 @@
 
 #include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 
 namespace deepguide {
@@ -101,15 +102,8 @@ const Field kAutopilotFields[] = {
 
 constexpr double kMinStep_s = 1e-3;
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
 std::string range_text(const Field& f) {
-  return f.what + std::string(" > 0 and <= ") + number(from_si(f.scale, f.hi));
+  return f.what + std::string(" > 0 and <= ") + general(from_si(f.scale, f.hi), 10);
 }
 
 // Where a key sits: "line N" from the file, or empty for a default value.
@@ -133,7 +127,7 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
       if (used != &f) continue;  // another key fills this field (or this is the alternative)
       const double v = f.ref(p);
       if (!std::isfinite(v) || v <= f.lo || v > f.hi) {
-        throw input_error(where(prefix + f.key), range_text(f), number(from_si(f.scale, v)));
+        throw input_error(where(prefix + f.key), range_text(f), general(from_si(f.scale, v), 10));
       }
     }
   };
@@ -144,14 +138,14 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
   const Field* max = key_of("max_speed_mps");
   if (p.cruise_speed_mps > p.max_speed_mps) {
     throw input_error(where(cruise->key), std::string("cruise speed <= ") + max->key + " (" +
-                                              number(from_si(max->scale, p.max_speed_mps)) + ")",
-                      number(from_si(cruise->scale, p.cruise_speed_mps)));
+                                              general(from_si(max->scale, p.max_speed_mps), 10) + ")",
+                      general(from_si(cruise->scale, p.cruise_speed_mps), 10));
   }
   const Field* min = key_of("min_speed_mps");
   if (p.min_speed_mps > p.cruise_speed_mps) {
     throw input_error(where(min->key), std::string("a minimum speed <= ") + cruise->key + " (" +
-                                           number(from_si(cruise->scale, p.cruise_speed_mps)) + ")",
-                      number(from_si(min->scale, p.min_speed_mps)));
+                                           general(from_si(cruise->scale, p.cruise_speed_mps), 10) + ")",
+                      general(from_si(min->scale, p.min_speed_mps), 10));
   }
   // RK4 on a first-order lag is accurate to about (h/T)^4 / 120; half the smallest
   // time constant keeps that under 1e-3 and far inside the stability bound 2.78 T.
@@ -161,18 +155,18 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
   // seconds) and only multiplies the work: 1e-9 s made one run take minutes
   // per simulated second and gigabytes of samples.
   if (p.step_s < kMinStep_s) {
-    throw input_error(where("step_s"), "a step >= " + number(kMinStep_s) + " s", number(p.step_s));
+    throw input_error(where("step_s"), "a step >= " + general(kMinStep_s, 10) + " s", general(p.step_s, 10));
   }
   if (p.step_s > 0.5 * smallest) {
-    throw input_error(where("step_s"), "a step <= half the smallest time constant (" + number(0.5 * smallest) + " s)",
-                      number(p.step_s));
+    throw input_error(where("step_s"), "a step <= half the smallest time constant (" + general(0.5 * smallest, 10) + " s)",
+                      general(p.step_s, 10));
   }
   const double capability = std::min(p.max_turn_rate, p.nomoto_gain_per_s * p.max_rudder);
   if (p.autopilot.max_reference_turn_rate > capability) {
     throw input_error(where("autopilot.max_reference_turn_rate_deg_s"),
                       "a reference turning rate <= what the vehicle can turn, min(max_turn_rate_deg_s, K x "
-                      "max_rudder_deg) = " + number(rad_to_deg(capability)) + " deg/s",
-                      number(rad_to_deg(p.autopilot.max_reference_turn_rate)));
+                      "max_rudder_deg) = " + general(rad_to_deg(capability), 10) + " deg/s",
+                      general(rad_to_deg(p.autopilot.max_reference_turn_rate), 10));
   }
 }
 

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/geometry/polygon_locator.hpp"
 #include "deepguide/geometry/polygon_ops.hpp"
 #include "deepguide/world/no_go_union.hpp"
@@ -38,15 +39,9 @@ const std::set<int> kNoEntry = {7, 8, 14};
 constexpr double kNonDangerousWreckDepth = 20.1;
 constexpr int kCirclePoints = 16;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
 void check_options(const EncNoGoOptions& o) {
   auto need = [](bool ok, const char* field, const char* expected, double got) {
-    if (!ok) throw InputError(std::string(field) + ": expected " + expected + ", got " + num(got));
+    if (!ok) throw InputError(std::string(field) + ": expected " + expected + ", got " + general(got, 4));
   };
   need(std::isfinite(o.operating_depth_m) && o.operating_depth_m >= 0.0, "--depth",
        "the operating depth (m, >= 0) to tell too-shallow water in an S-57 chart", o.operating_depth_m);
@@ -200,13 +195,13 @@ struct Builder {
   // Why a charted depth z is no-go; `catzoc` the (best) zone it fails in, -1 for none (unassessed).
   std::string depth_reason(const char* what, double z, int catzoc) const {
     if (std::isnan(z)) return std::string(what) + " unknown";
-    std::string r = std::string(what) + " " + num(z) + " m";
+    std::string r = std::string(what) + " " + general(z, 4) + " m";
     if (z < 0.0) return r + " (dries)";
-    if (z < D || !o.zone_of_confidence) return r + " < " + num(D) + " m";
+    if (z < D || !o.zone_of_confidence) return r + " < " + general(D, 4) + " m";
     // Deep enough as charted: the zone of confidence decides.
     const ZocFigures f = zoc_figures(std::max(catzoc, 0), o);
-    return r + ", least " + num(least(z, f)) + " m at CATZOC " +
-           (catzoc <= 0 ? std::string("none (unassessed)") : zoc_name(catzoc)) + ", < " + num(D) + " m";
+    return r + ", least " + general(least(z, f), 4) + " m at CATZOC " +
+           (catzoc <= 0 ? std::string("none (unassessed)") : zoc_name(catzoc)) + ", < " + general(D, 4) + " m";
   }
 
   EncNoGoFeature base(const EncCell& c, const EncFeature& f) const {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/geometry/polygon_ops.hpp"
 #include "deepguide/world/gdal_support.hpp"
@@ -35,15 +36,9 @@ constexpr std::size_t kMemMaskCells = std::size_t{1} << 26;
 // Lines between two drops of the mask's block cache while polygonizing.
 constexpr int kMaskFlushLines = 512;
 
-std::string number(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
 void check_option(const std::string& path, const char* field, double value, const char* what) {
   if (!std::isfinite(value) || value < 0) {
-    throw input_error(InputLocation{path, "", field}, std::string("a finite ") + what + " >= 0 m", number(value));
+    throw input_error(InputLocation{path, "", field}, std::string("a finite ") + what + " >= 0 m", general(value));
   }
 }
 

@@ -20,6 +20,7 @@
 #include <boost/math/tools/minima.hpp>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/geometry/ellipse_segment.hpp"
 
@@ -38,12 +39,6 @@ constexpr int kBrentBits = std::numeric_limits<double>::digits / 2;
 // A convex function on [0, 1] converges in a few dozen steps; this only bounds
 // the cost if something pathological slips through.
 constexpr std::uintmax_t kBrentMaxIter = 200;
-
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // The point of [a, b] closest to q. Boost 1.74 has no closest_points, so the
 // segment's closest point to a ring edge is found from its candidates below.
@@ -274,10 +269,10 @@ SegmentDistance segment_signed_distance(const BgPolygon& polygon, const Vec2& a,
 ObstacleField::ObstacleField(ObstacleSet obstacles, double margin, double slack)
     : obstacles_(std::move(obstacles)), margin_(margin), threshold_(margin - slack) {
   if (!std::isfinite(margin) || margin < 0.0) {
-    throw input_error({"obstacle field", "", "margin"}, "a finite safety margin >= 0 m", fmt(margin));
+    throw input_error({"obstacle field", "", "margin"}, "a finite safety margin >= 0 m", general(margin));
   }
   if (!std::isfinite(slack) || slack < 0.0) {
-    throw input_error({"obstacle field", "", "slack"}, "a finite slack >= 0 m", fmt(slack));
+    throw input_error({"obstacle field", "", "slack"}, "a finite slack >= 0 m", general(slack));
   }
   const std::size_t n_ellipses = obstacles_.ellipses.size();
   std::vector<Entry> entries;
@@ -289,7 +284,7 @@ ObstacleField::ObstacleField(ObstacleSet obstacles, double margin, double slack)
       throw input_error(where, "a finite centre and orientation");
     }
     if (!std::isfinite(e.a) || !(e.b > 0.0) || e.b > e.a) {
-      throw input_error(where, "semi-axes 0 < b <= a", "a = " + fmt(e.a) + ", b = " + fmt(e.b));
+      throw input_error(where, "semi-axes 0 < b <= a", "a = " + general(e.a) + ", b = " + general(e.b));
     }
     entries.emplace_back(ellipse_box(e), i);
     axes_.push_back(e.major_dir());

@@ -14,6 +14,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -89,12 +90,6 @@ std::optional<double> numeric_field(const OGRFeature& f, const char* name, Input
   return v;
 }
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 void read_vertical(const OGRFeature& f, const InputLocation& where, GeoRecord& rec) {
   rec.height_m = numeric_field(f, "height_m", where);
   rec.top_depth_m = numeric_field(f, "top_depth_m", where);
@@ -106,12 +101,12 @@ void read_vertical(const OGRFeature& f, const InputLocation& where, GeoRecord& r
   if (rec.height_m && *rec.height_m <= 0.0) {
     InputLocation w = where;
     w.field = "height_m";
-    throw input_error(w, "a height above the sea floor > 0 m", fmt(*rec.height_m));
+    throw input_error(w, "a height above the sea floor > 0 m", general(*rec.height_m));
   }
   if (rec.top_depth_m && *rec.top_depth_m < 0.0) {
     InputLocation w = where;
     w.field = "top_depth_m";
-    throw input_error(w, "a depth >= 0 m (positive down)", fmt(*rec.top_depth_m));
+    throw input_error(w, "a depth >= 0 m (positive down)", general(*rec.top_depth_m));
   }
 }
 
@@ -120,16 +115,16 @@ Eigen::Vector2d to_geo(OGRCoordinateTransformation& ct, double x, double y, cons
   InputLocation w = where;
   w.field = "geometry";
   if (!std::isfinite(x) || !std::isfinite(y)) {
-    throw input_error(w, "finite coordinates", "(" + fmt(x) + ", " + fmt(y) + ")");
+    throw input_error(w, "finite coordinates", "(" + general(x) + ", " + general(y) + ")");
   }
   const double x0 = x;
   const double y0 = y;
   if (!ct.Transform(1, &x, &y) || !std::isfinite(x) || !std::isfinite(y)) {
-    throw input_error(w, "coordinates valid in the file's CRS", "(" + fmt(x0) + ", " + fmt(y0) + ")");
+    throw input_error(w, "coordinates valid in the file's CRS", "(" + general(x0) + ", " + general(y0) + ")");
   }
   if (std::abs(y) > 90.0 || std::abs(x) > 540.0) {
     throw input_error(w, "a position on the Earth (lon/lat within +-180/+-90 after transformation)",
-                      "(" + fmt(x) + ", " + fmt(y) + "); a file without a CRS is read as lon/lat: "
+                      "(" + general(x) + ", " + general(y) + "); a file without a CRS is read as lon/lat: "
                       "give its CRS with --src-crs");
   }
   return {x, y};
@@ -143,17 +138,17 @@ void read_ellipse_fields(const OGRFeature& f, const InputLocation& where, GeoRec
   // An obstacle's axes are metres to kilometres; 100 km is far beyond any
   // (and beyond what a UTM frame holds to the metre).
   constexpr double kMaxAxis_m = 1e5;
-  if (!(*a > 0.0 && *a <= kMaxAxis_m)) throw input_error(w, "a semi-major axis > 0 m and at most 100 km", fmt(*a));
+  if (!(*a > 0.0 && *a <= kMaxAxis_m)) throw input_error(w, "a semi-major axis > 0 m and at most 100 km", general(*a));
   const auto b = numeric_field(f, "semi_minor_m", where);
   w.field = "semi_minor_m";
-  if (b && *b <= 0.0) throw input_error(w, "a semi-minor axis > 0 m", fmt(*b));
+  if (b && *b <= 0.0) throw input_error(w, "a semi-minor axis > 0 m", general(*b));
   if (b && *b > *a) {
-    throw input_error(w, "semi_minor_m <= semi_major_m (" + fmt(*a) + " m)", fmt(*b));
+    throw input_error(w, "semi_minor_m <= semi_major_m (" + general(*a) + " m)", general(*b));
   }
   const auto heading = numeric_field(f, "orientation_deg", where);
   w.field = "orientation_deg";
   if (heading && !(std::abs(*heading) <= 360.0)) {
-    throw input_error(w, "a heading in degrees within +-360", fmt(*heading));
+    throw input_error(w, "a heading in degrees within +-360", general(*heading));
   }
   rec.is_ellipse = true;
   rec.a = *a;
@@ -429,7 +424,7 @@ Eigen::Vector2d to_local_checked(const LocalFrame& frame, const Eigen::Vector2d&
     InputLocation w = where;
     w.field = "geometry";
     throw input_error(w, "a position inside the area of the local frame " + frame.id(),
-                      "lon " + fmt(lonlat.x()) + ", lat " + fmt(lonlat.y()));
+                      "lon " + general(lonlat.x()) + ", lat " + general(lonlat.y()));
   }
   return xy;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/plausible_depth.hpp"
 #include "deepguide/world/s57_unknown_objects.hpp"
@@ -19,12 +20,6 @@ namespace deepguide {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // Opens `path` with the S57 driver only, the update handling set per dataset
 // (open option UPDATES), never through a process-wide config option. The
@@ -149,7 +144,7 @@ LocalFrame s57_local_frame(const S57Summary& summary, const S57Options& options)
 
 S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S57Options& options) {
   if (!std::isfinite(options.point_hazard_radius_m) || options.point_hazard_radius_m <= 0.0) {
-    throw InputError("point hazard radius: expected a radius > 0 m, got " + fmt(options.point_hazard_radius_m));
+    throw InputError("point hazard radius: expected a radius > 0 m, got " + general(options.point_hazard_radius_m));
   }
   gdal::QuietErrors quiet;
   GDALDatasetUniquePtr ds = open_cell(path, options.apply_updates);
@@ -179,7 +174,7 @@ S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S
                             : Vec2(NAN, NAN);
         if (!xy.allFinite()) {
           throw input_error(where, "a position inside the area of the local frame " + frame.id(),
-                            "lon " + fmt(lon) + ", lat " + fmt(lat));
+                            "lon " + general(lon) + ", lat " + general(lat));
         }
         return xy;
       };

@@ -8,17 +8,12 @@
 #include <limits>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
 namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // Coordinates for GDAL's argument list, to the last bit.
 std::string exact(double v) {
@@ -32,7 +27,7 @@ std::string exact(double v) {
 SeaFloor::SeaFloor(const Vec2& origin, double spacing, std::size_t nx, std::size_t ny, std::vector<double> depths)
     : origin_(origin), spacing_(spacing), nx_(nx), ny_(ny), depth_(std::move(depths)) {
   if (!(spacing > 0.0) || !std::isfinite(spacing)) {
-    throw InputError("sea floor: expected a node spacing > 0 m, got " + num(spacing));
+    throw InputError("sea floor: expected a node spacing > 0 m, got " + general(spacing));
   }
   if (nx < 2 || ny < 2 || nx > depth_.size() / ny || depth_.size() != nx * ny || !origin.allFinite()) {
     throw InputError("sea floor: expected a grid of at least 2 x 2 nodes with one depth each, got " +
@@ -187,7 +182,7 @@ SeaFloor::Gap SeaFloor::lowest_gap(const Vec3& a, const Vec3& b) const {
 SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame, const Vec2& area_min,
                                const Vec2& area_max, double spacing, const BathymetryOptions& options) {
   if (!(spacing >= 0.0) || !std::isfinite(spacing)) {
-    throw InputError(path + ": sea floor node spacing: expected > 0 m (or 0: the raster's own), got " + num(spacing));
+    throw InputError(path + ": sea floor node spacing: expected > 0 m (or 0: the raster's own), got " + general(spacing));
   }
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
@@ -204,7 +199,7 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
   }
   const double nxd = std::ceil(extent.x() / spacing) + 1.0, nyd = std::ceil(extent.y() / spacing) + 1.0;
   if (nxd * nyd > 1e8) {
-    throw InputError(path + ": sea floor: " + num(spacing) + " m nodes over this area make more than 1e8 nodes; " +
+    throw InputError(path + ": sea floor: " + general(spacing) + " m nodes over this area make more than 1e8 nodes; " +
                      "give a larger spacing");
   }
   const auto nx = static_cast<std::size_t>(nxd), ny = static_cast<std::size_t>(nyd);

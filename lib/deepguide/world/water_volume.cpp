@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 
 namespace deepguide {
 namespace {
@@ -15,12 +16,6 @@ namespace {
 // obstacle's zone along a leg are found to about 1e-16 of its length, and
 // legs between cell centres meet the limits exactly.
 constexpr double kRounding = 1e-9;
-
-std::string num(double v, const char* format = "%.2f") {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 // Parameters t of the line a + t d where it is closer than r to the segment
 // [e0, e1]: the capsule around the segment is convex, so one interval (the
@@ -73,15 +68,15 @@ WaterVolume::WaterVolume(const ObstacleField& field, const SeaFloor* floor, cons
   const double top = options.min_depth_m, bottom = options.max_depth_m;
   if (!(bottom > 0.0) || !(top >= 0.0) || std::isnan(bottom) || !std::isfinite(top)) {
     throw InputError("depth band: expected a band below the surface (top >= 0 m, bottom > 0 m, depths positive "
-                     "down), got " + num(top, "%g") + " .. " + num(bottom, "%g") + " m");
+                     "down), got " + general(top) + " .. " + general(bottom) + " m");
   }
   if (!(top < bottom)) {
-    throw InputError("depth band: expected its top (" + num(top, "%g") + " m) above its bottom (" +
-                     num(bottom, "%g") + " m)");
+    throw InputError("depth band: expected its top (" + general(top) + " m) above its bottom (" +
+                     general(bottom) + " m)");
   }
   const double c = options.vertical_clearance_m;
   if (!(c >= 0.0) || !std::isfinite(c)) {
-    throw InputError("vertical clearance: expected a finite value >= 0 m, got " + num(c, "%g"));
+    throw InputError("vertical clearance: expected a finite value >= 0 m, got " + general(c));
   }
   const ObstacleSet& set = field.obstacles();
   const auto resolve = [&](const std::optional<double>& top_depth, const std::optional<double>& height,
@@ -200,16 +195,16 @@ WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) co
   // The band: z is linear, so the ends decide.
   for (const Vec3& p : {a, b}) {
     if (p.z() < options_.min_depth_m) {
-      return {true, "rises above the depth band's top " + num(options_.min_depth_m, "%g") + " m", p};
+      return {true, "rises above the depth band's top " + general(options_.min_depth_m) + " m", p};
     }
     if (p.z() > options_.max_depth_m) {
-      return {true, "sinks below the depth band's bottom " + num(options_.max_depth_m, "%g") + " m", p};
+      return {true, "sinks below the depth band's bottom " + general(options_.max_depth_m) + " m", p};
     }
   }
   if (floor_ != nullptr) {
     const SeaFloor::Gap gap = floor_->lowest_gap(a, b);
     if (gap.gap_m < c - kRounding) {
-      return {true, "comes within " + num(gap.gap_m) + " m of the sea floor (clearance " + num(c, "%g") + " m)",
+      return {true, "comes within " + fixed(gap.gap_m, 2) + " m of the sea floor (clearance " + general(c) + " m)",
               gap.where};
     }
   }
@@ -228,8 +223,8 @@ WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) co
     if (p.z() > top + kRounding) {
       const std::string name = field_->obstacle_name(i);
       if (std::isinf(top)) return {true, "enters the safety zone of obstacle '" + name + "'", p};
-      return {true, "passes over obstacle '" + name + "' " + num(p.z() - top) + " m too deep (its top less " +
-                        num(c, "%g") + " m clearance is at depth " + num(top) + " m)",
+      return {true, "passes over obstacle '" + name + "' " + fixed(p.z() - top, 2) + " m too deep (its top less " +
+                        general(c) + " m clearance is at depth " + fixed(top, 2) + " m)",
               p};
     }
   }
