@@ -1,8 +1,7 @@
 #pragma once
 // The bench programs' command lines: CLI11, with Google Benchmark's own flags
 // (--benchmark_*, which scripts/bench.sh passes to every bench_*) accepted
-// and ignored. --help prints the options; a bad one exits 2 (CLI11's code 106
-// is not used: scripts compare with 2 as the apps do).
+// and ignored. --help prints the options; a bad one exits 2, as the apps do.
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>

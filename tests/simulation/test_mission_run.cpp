@@ -155,6 +155,13 @@ TEST(MissionRun, ThePlanLevelKeepsToTheLapsArcs) {
     lap_to = std::max(lap_to, b.start_m + b.length_m);
   }
   ASSERT_NEAR(lap_to - lap_from, 2.0 * std::numbers::pi * 25.0, 0.5);
+  // The line to the lap meets it along its tangent: no corner there.
+  for (std::size_t i = 1; i < plan.basics.size(); ++i) {
+    if (plan.basics[i].source == 1 && plan.basics[i].kind == BasicManoeuvre::Kind::arc) {
+      EXPECT_TRUE(joins_smoothly(plan.basics[i - 1], plan.basics[i]));
+      break;
+    }
+  }
   const MissionRun run = run_mission(m, env, plan, {});
   ASSERT_TRUE(run.completed);
   double worst = 0.0;

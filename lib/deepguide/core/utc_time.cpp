@@ -61,7 +61,9 @@ std::optional<double> parse_iso8601(std::string_view text, bool zone_required) {
         const std::size_t start = r.i;
         while (r.peek("0123456789")) ++r.i;
         if (r.i == start) return std::nullopt;
-        fraction = std::stod("0." + std::string(text.substr(start, r.i - start)));
+        // from_chars, not stod: the C library's decimal point follows the locale.
+        const std::string digits = "0." + std::string(text.substr(start, r.i - start));
+        std::from_chars(digits.data(), digits.data() + digits.size(), fraction);
       }
     }
   } else {
