@@ -8,8 +8,8 @@
 #   diagonal  the same field, corner to corner
 #   dense     one per 100 m x 100 m (7.1 km side), corner to corner
 #   corridor  a band 10 km long and 6 km wide, along it
-#   tight     a band 10 km long and 3 km wide, along it (41 000 zone corners in
-#             the first focus: above what the reduced graph takes, refused)
+#   tight     a band 10 km long and 3 km wide, along it (54 000 usable zone
+#             corners in the last focus; the tangent graph refuses it)
 # Needs python3 (the generator); prints markdown rows for docs/PERFORMANCE.md.
 #   bench/many_obstacles.sh [BUILD_DIR] [RUNS] [N]
 set -euo pipefail

@@ -40,7 +40,6 @@ constexpr double kPi = std::numbers::pi;
 // The ellipse frame, from (c, a, b, theta) only (reference_ellipse.hpp).
 using test_ref::Frame;
 
-double cross(const Vec2& p, const Vec2& q) { return p.x() * q.y() - p.y() * q.x(); }
 
 Ellipse random_ellipse(std::mt19937& rng, double max_b = 5.0) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);

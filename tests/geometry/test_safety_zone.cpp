@@ -38,7 +38,6 @@ constexpr double kPi = std::numbers::pi;
 using test_ref::Frame;
 using test_ref::reference_distance;
 
-double cross(const Vec2& p, const Vec2& q) { return p.x() * q.y() - p.y() * q.x(); }
 
 struct PolygonReport {
   std::size_t vertices = 0;

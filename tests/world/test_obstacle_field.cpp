@@ -79,7 +79,7 @@ ObstacleSet one_polygon(const BgPolygon& p, const std::string& id = "p") {
 }
 
 // Closed-form distance from p to the segment [a, b] (test-side).
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+double reference_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 d = b - a;
   const double len2 = d.squaredNorm();
   const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
@@ -92,7 +92,7 @@ double reference_segment_distance(const Ellipse& e, const Vec2& a, const Vec2& b
   const test_ref::Frame f(e);
   constexpr int n = 20000;
   const double h = 2.0 * kPi / n;
-  const auto g = [&](double s) { return point_segment_distance(f.point(s), a, b); };
+  const auto g = [&](double s) { return reference_segment_distance(f.point(s), a, b); };
   std::vector<double> values(n);
   for (int k = 0; k < n; ++k) values[k] = g(k * h);
   std::vector<int> minima;
@@ -363,7 +363,7 @@ TEST(ObstacleField, SegmentEllipseMatchesReference) {
     EXPECT_NEAR(n.distance, ref, 1e-7) << "iter " << iter << " a " << a << " b " << b;
     worst = std::max(worst, std::abs(n.distance - ref));
     // The reported point is on the segment and at the reported distance.
-    EXPECT_NEAR(point_segment_distance(n.point_on_segment, p0, p1), 0.0, 1e-9);
+    EXPECT_NEAR(reference_segment_distance(n.point_on_segment, p0, p1), 0.0, 1e-9);
     EXPECT_NEAR(test_ref::reference_distance(f, n.point_on_segment).distance, n.distance, 1e-7)
         << "iter " << iter;
   }
@@ -463,7 +463,7 @@ Brute brute_segment(const ObstacleField& field, const Vec2& a, const Vec2& b) {
     double lower = -kInf;
     if (i < set.ellipses.size()) {
       const Ellipse& e = set.ellipses[i].footprint;
-      lower = point_segment_distance(e.center, a, b) - e.a;
+      lower = reference_segment_distance(e.center, a, b) - e.a;
     }
     if (lower > best.distance) continue;
     const double d = field.segment_distance_to(i, a, b).distance;

@@ -7,8 +7,9 @@
 // (holes included: their edges count too); an edge crosses when its ends lie
 // on either side of the ray's line, the lower end counting as above on a tie
 // (the half-open rule, so a ray through a vertex counts once). Points on an
-// edge count as inside (covered). The edges the ray can cross are those whose
-// box meets the ray's box, found by the R-tree.
+// edge count as inside (covered). Only polygons whose box holds the point are
+// tested, each with the ray cut at its box; the edges the ray can cross are
+// those whose box meets the ray's box, found by the R-tree.
 
 #include <boost/geometry/geometries/segment.hpp>
 #include <boost/geometry/index/rtree.hpp>
@@ -33,6 +34,8 @@ class PolygonLocator {
   using Segment = boost::geometry::model::segment<BgPoint>;
   using Item = std::pair<Segment, std::size_t>;
   boost::geometry::index::rtree<Item, boost::geometry::index::rstar<16>> edges_;
+  using BoxItem = std::pair<BgBox, std::size_t>;  // a polygon's box, its index
+  boost::geometry::index::rtree<BoxItem, boost::geometry::index::rstar<16>> boxes_;
   std::size_t count_ = 0;
   double max_x_ = -std::numeric_limits<double>::infinity();
 };

@@ -21,8 +21,6 @@ std::string place(const Mission& mission, const ComplexManoeuvre& c) {
   return mission.source + ": " + c.line + ": " + c.type + " '" + printable(c.name) + "'";
 }
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Appends basic manoeuvres, keeping the position, depth and distance along.
 class Builder {
  public:

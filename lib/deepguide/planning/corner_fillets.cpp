@@ -14,8 +14,6 @@ namespace {
 
 constexpr double kStraight = 1e-9;  // rad: a corner turning less is left as it is
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 void add_line(std::vector<RouteLeg>& legs, const Vec2& from, const Vec2& to) {
   const double length = (to - from).norm();
   if (length <= 1e-9) return;

@@ -11,20 +11,11 @@ namespace bgi = boost::geometry::index;
 
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Signed distance of x from the line through a and b (positive to the left).
 double side(const Vec2& a, const Vec2& b, const Vec2& x) {
   const Vec2 d = b - a;
   const double len = d.norm();
   return len > 0.0 ? cross(d, x - a) / len : (x - a).norm();
-}
-
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
 }
 
 template <class Ring, class F>

@@ -5,14 +5,16 @@
 #include <cmath>
 #include <string>
 
+#include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/parallel_blocks.hpp"
+#include "deepguide/planning/occlusion_horizon.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
 
 namespace {
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // The first query bound: a little more than the straight line (see solve()).
 constexpr double kFirstBoundStretch = 1.05;
@@ -33,6 +35,175 @@ inline bool supports_line(const Vec2& to_prev, const Vec2& to_next, const Vec2& 
   if ((s1 > 0.0) == (s2 > 0.0) || s1 == 0.0 || s2 == 0.0) return true;
   const double eps2 = eps * eps * len2;
   return !(s1 * s1 > eps2 && s2 * s2 > eps2);
+}
+
+// The bearings (pseudo-angles, occlusion_horizon.hpp) of the lines through a
+// corner that support it, widened by the angle supports_line's eps admits and
+// a little more: outside the cone between the corner's two edges and outside
+// its opposite.
+BearingSet supporting_bearings(const Vec2& to_prev, const Vec2& to_next, double eps) {
+  BearingSet set;
+  const double shortest = std::min(to_prev.norm(), to_next.norm());
+  const double margin = OcclusionHorizon::kMarginRad + (shortest > 0.0 ? 2.0 * eps / shortest : kFullTurn);
+  const double half = 0.5 * kFullTurn;
+  if (margin >= 0.5 * half) {
+    add_arc(set, 0.0, kFullTurn);
+    return set;
+  }
+  // The cone runs anticlockwise from lo to hi, less than a half turn.
+  const bool from_prev = cross(to_prev, to_next) >= 0.0;
+  const double lo = pseudo_bearing(from_prev ? to_prev : to_next);
+  double hi = pseudo_bearing(from_prev ? to_next : to_prev);
+  if (hi < lo) hi += kFullTurn;
+  add_arc(set, hi - margin, lo + half + margin);
+  add_arc(set, hi + half - margin, lo + kFullTurn + margin);
+  return set;
+}
+
+// Boundary pieces a corner's horizon takes at most: a dense field closes a
+// corner's supporting bearings within a few hundred metres, a few hundred
+// pieces; past that the bearings still open are tested pair by pair.
+constexpr std::size_t kHorizonPieces = 256;
+// Corner pairs the bearing test may take where corners look out at open
+// water (each is tried with every later corner): about the old all-pairs
+// limit, 10 s on the 2-core reference machine.
+constexpr double kMaxOpenPairs = 8e8;
+
+// Polygons that together hold every point at bearings lo..hi from p up to
+// `far` (pseudo-angles; pieces of at most half a quarter turn, each a
+// quadrilateral whose outer edges stay beyond far).
+std::vector<BgPolygon> bearing_wedges(const Vec2& p, double lo, double hi, double far) {
+  // The point of the square |x| + |y| = 1 at a bearing: its norm is at least
+  // 1 / sqrt 2, so scaling by 2 far puts it beyond far * sqrt 2.
+  const auto on_square = [](double b) {
+    b -= kFullTurn * std::floor(b / kFullTurn);
+    if (b <= 1.0) return Vec2(1.0 - b, b);
+    if (b <= 2.0) return Vec2(1.0 - b, 2.0 - b);
+    if (b <= 3.0) return Vec2(b - 3.0, 2.0 - b);
+    return Vec2(b - 3.0, b - 4.0);
+  };
+  std::vector<BgPolygon> out;
+  const double slack = 1e-9;  // the wedge's own rounding must not drop a point on its side
+  lo -= slack;
+  hi += slack;
+  const int pieces = std::max(1, static_cast<int>(std::ceil((hi - lo) / 0.5)));
+  for (int k = 0; k < pieces; ++k) {
+    const double a = lo + (hi - lo) * k / pieces, b = lo + (hi - lo) * (k + 1) / pieces;
+    BgPolygon wedge;
+    for (const double bearing : {a, 0.5 * (a + b), b}) wedge.outer().push_back(to_bg(p + 2.0 * far * on_square(bearing)));
+    wedge.outer().push_back(to_bg(p));
+    bg::correct(wedge);
+    out.push_back(std::move(wedge));
+  }
+  return out;
+}
+
+// An edge found between two usable corners (their indices in `usable`).
+struct Link {
+  std::size_t u, v;
+  double w;
+};
+
+// Graphs with fewer corners are built on one thread: threads cost more than
+// they save there, and evaluate already runs one plan per core.
+constexpr std::size_t kParallelCorners = 4000;
+std::size_t build_workers(std::size_t corners) { return corners >= kParallelCorners ? hardware_workers() : 1; }
+
+// Runs test(u, v, horizon of v), u < v, for every pair of corners (points,
+// with their edges to_prev and to_next) where u may see v along a line
+// supporting u: within u's occlusion horizon over its supporting bearings
+// (occlusion_horizon.hpp). A pair left out is hidden or not supporting at u,
+// so the edges are those of the all-pairs loop; test() checks v's horizon
+// the other way once it knows the line supports v, and returns the edge's
+// weight or a negative number. Returns the edges found, in no order.
+template <class TestPair>
+std::vector<Link> pairs_within_horizons(const std::vector<Vec2>& points, const std::vector<Vec2>& to_prev,
+                                        const std::vector<Vec2>& to_next, const PolygonVisibility& visibility,
+                                        TestPair test) {
+  const std::size_t m = points.size();
+  const std::size_t workers = build_workers(m);
+  const OcclusionHorizon occlusion(visibility.polygons(), visibility.eps());
+  std::vector<Horizon> seen(m);
+  parallel_blocks(m, 256, workers, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t u = begin; u < end; ++u) {
+      seen[u] = occlusion.horizon(points[u], supporting_bearings(to_prev[u], to_next[u], visibility.eps()),
+                                  kHorizonPieces);
+    }
+  });
+  double open_pairs = 0.0;
+  for (std::size_t u = 0; u < m; ++u) {
+    if (!seen[u].bounded()) open_pairs += static_cast<double>(m - u - 1);
+  }
+  if (open_pairs > kMaxOpenPairs) {
+    throw InputError("the safety zones have " + std::to_string(m) +
+                     " polygon corners in the focus, too many in open view of each other for the reduced "
+                     "visibility graph; raise --tolerance or plan a smaller area");
+  }
+  using Item = std::pair<BgPoint, std::size_t>;
+  std::vector<Item> items;
+  items.reserve(m);
+  for (std::size_t u = 0; u < m; ++u) items.emplace_back(to_bg(points[u]), u);
+  const bgi::rtree<Item, bgi::rstar<16>> index(items);
+  BgBox extent(to_bg(points.empty() ? Vec2::Zero() : points[0]), to_bg(points.empty() ? Vec2::Zero() : points[0]));
+  for (const Vec2& q : points) bg::expand(extent, to_bg(q));
+
+  struct Scratch {
+    std::vector<std::size_t> near;
+    std::vector<std::size_t> taken;  // taken[v] == u: v is in u's list already
+    std::vector<Link> links;
+  };
+  std::vector<Scratch> scratch(workers);
+  for (Scratch& s : scratch) s.taken.assign(m, m);
+  parallel_blocks(m, 64, workers, [&](std::size_t begin, std::size_t end, std::size_t worker) {
+    Scratch& s = scratch[worker];
+    for (std::size_t u = begin; u < end; ++u) {
+      const Vec2& p = points[u];
+      s.near.clear();
+      const auto collect = [&](const auto& region, double max_d2) {
+        for (auto it = index.qbegin(bgi::intersects(region)); it != index.qend(); ++it) {
+          const std::size_t v = it->second;
+          if (v > u && s.taken[v] != u && (points[v] - p).squaredNorm() <= max_d2) {
+            s.taken[v] = u;
+            s.near.push_back(v);
+          }
+        }
+      };
+      const double r = seen[u].reach_m + visibility.eps();
+      collect(BgBox(to_bg(p - Vec2(r, r)), to_bg(p + Vec2(r, r))), r * r);
+      // Beyond the reach, only the open bearings: wedges from p past every corner.
+      const Vec2 span =
+          (to_eigen(extent.max_corner()) - p).cwiseAbs().cwiseMax((to_eigen(extent.min_corner()) - p).cwiseAbs());
+      const double far = 2.0 * span.norm() + 1.0;
+      for (const auto& [lo, hi] : seen[u].open) {
+        for (const BgPolygon& wedge : bearing_wedges(p, lo, hi, far)) collect(wedge, far * far);
+      }
+      for (const std::size_t v : s.near) {
+        const double w = test(u, v, &seen[v]);
+        if (w >= 0.0) s.links.push_back({u, v, w});
+      }
+    }
+  });
+  std::vector<Link> links;
+  for (Scratch& s : scratch) links.insert(links.end(), s.links.begin(), s.links.end());
+  return links;
+}
+
+// Runs test(u, v, nullptr) for every pair u < v: the full graph's loop.
+template <class TestPair>
+std::vector<Link> all_pairs(std::size_t m, TestPair test) {
+  const std::size_t workers = build_workers(m);
+  std::vector<std::vector<Link>> found(workers);
+  parallel_blocks(m, 16, workers, [&](std::size_t begin, std::size_t end, std::size_t worker) {
+    for (std::size_t u = begin; u < end; ++u) {
+      for (std::size_t v = u + 1; v < m; ++v) {
+        const double w = test(u, v, nullptr);
+        if (w >= 0.0) found[worker].push_back({u, v, w});
+      }
+    }
+  });
+  std::vector<Link> links;
+  for (const auto& f : found) links.insert(links.end(), f.begin(), f.end());
+  return links;
 }
 
 }  // namespace
@@ -119,25 +290,37 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   }
   const bool reduced = variant_ == VisibilityVariant::reduced;
   const double eps = visibility_->eps();
-  for (std::size_t ui = 0; ui < m; ++ui) {
-    const std::size_t i = usable[ui];
-    const Corner& a = corners_[i];
-    for (std::size_t uj = ui + 1; uj < m; ++uj) {
-      const std::size_t j = usable[uj];
-      const Corner& b = corners_[j];
-      const Vec2 d = b.p - a.p;
-      if (reduced && (!supports_line(to_prev[ui], to_next[ui], d, eps) ||
-                      !supports_line(to_prev[uj], to_next[uj], -d, eps))) {
-        continue;
-      }
-      const double w = d.norm();
-      if (std::min(to_start[ui] + w + to_goal[uj], to_start[uj] + w + to_goal[ui]) > focus_.bound_m) continue;
-      if (!visibility_->segment_visible(a.p, b.p)) continue;
-      boost::add_edge(i, j, w, graph_);
-      boost::add_edge(j, i, w, graph_);
-      ++base_edges_;
+  // The edge's weight if corners ui and uj see each other along a line the
+  // graph keeps, else -1; seen_j: what uj's occlusion horizon lets it see
+  // (nullptr: anything). Runs on several threads: reads only.
+  const auto test_pair = [&](std::size_t ui, std::size_t uj, const Horizon* seen_j) {
+    const std::size_t i = usable[ui], j = usable[uj];
+    const Vec2 d = corners_[j].p - corners_[i].p;
+    if (reduced && (!supports_line(to_prev[ui], to_next[ui], d, eps) ||
+                    !supports_line(to_prev[uj], to_next[uj], -d, eps))) {
+      return -1.0;
     }
+    if (seen_j != nullptr && !seen_j->sees(-d)) return -1.0;
+    const double w = d.norm();
+    if (std::min(to_start[ui] + w + to_goal[uj], to_start[uj] + w + to_goal[ui]) > focus_.bound_m) return -1.0;
+    return visibility_->segment_visible(corners_[i].p, corners_[j].p) ? w : -1.0;
+  };
+  std::vector<Link> links;
+  if (reduced) {
+    std::vector<Vec2> points(m);
+    for (std::size_t u = 0; u < m; ++u) points[u] = corners_[usable[u]].p;
+    links = pairs_within_horizons(points, to_prev, to_next, *visibility_, test_pair);
+  } else {
+    links = all_pairs(m, test_pair);
   }
+  // In corner order, as a single all-pairs loop adds them: the search breaks
+  // ties by the order of out-edges, so the same graph gives the same route.
+  std::sort(links.begin(), links.end(), [](const Link& a, const Link& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
+  for (const Link& l : links) {
+    boost::add_edge(usable[l.u], usable[l.v], l.w, graph_);
+    boost::add_edge(usable[l.v], usable[l.u], l.w, graph_);
+  }
+  base_edges_ += links.size();
   if (grid.active()) link_lattice(grid, lattice_cells, n);
   build_ms_ = elapsed_ms(t0);
 }
@@ -211,8 +394,12 @@ void VisibilityGraph::link_lattice(const WaypointGrid& grid, const std::vector<s
 }
 
 std::size_t VisibilityGraph::max_corners(VisibilityVariant variant) {
-  // About 10 s of build on the 2-core reference machine (docs/PERFORMANCE.md).
-  return variant == VisibilityVariant::full ? 4000 : 40000;
+  // The full graph tries all pairs: about 10 s of build at 4000 corners on the
+  // 2-core reference machine (docs/PERFORMANCE.md). The reduced graph tries
+  // the pairs within each corner's occlusion horizon, and refuses where too
+  // many corners see open water without end (kMaxUnboundedPairs); its corner
+  // limit bounds memory.
+  return variant == VisibilityVariant::full ? 4000 : 250000;
 }
 
 bool VisibilityGraph::supporting_at(const Corner& c, const Vec2& other) const {

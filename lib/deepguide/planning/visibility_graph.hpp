@@ -32,8 +32,10 @@ enum class VisibilityVariant { full, reduced };
 class VisibilityGraph {
  public:
   /// `zones`: polygons enclosing the safety zones, in the local frame. Throws
-  /// InputError when they have more corners than max_corners(variant): the
-  /// build is quadratic in the corners and would not finish in useful time.
+  /// InputError when they have more corners than max_corners(variant), or
+  /// (reduced) too many corners that see open water without end: the full
+  /// build tries every pair of corners, the reduced one each corner's
+  /// neighbours within its occlusion horizon (occlusion_horizon.hpp).
   /// With an active `focus` only the corners and edges a route from its start
   /// to its goal no longer than its bound can use are built (query_focus.hpp).
   /// With an active `grid`, its lattice points outside the zone polygons

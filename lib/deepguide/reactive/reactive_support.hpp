@@ -96,7 +96,6 @@ Vec2 exit_direction(const Vec2& along, const Vec2& normal, double depth, double 
 
 /// v rotated by +90 degrees (counter-clockwise).
 inline Vec2 left_normal(const Vec2& v) { return {-v.y(), v.x()}; }
-inline double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 /// The direction along a boundary with outward normal n on side `side`
 /// (clockwise round the zone for +1, the side convention of reactive_method.hpp).
 inline Vec2 along_boundary(const Vec2& n, int side) { return -static_cast<double>(side) * left_normal(n); }
