@@ -1,0 +1,149 @@
+#include "deepguide/planning/route_file_check.hpp"
+
+#include <optional>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
+#include "deepguide/planning/route_check.hpp"
+#include "deepguide/planning/route_io.hpp"
+#include "deepguide/world/enc_route_check.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/prepared_chart.hpp"
+
+namespace deepguide {
+namespace {
+
+// The route against obstacle files: the verdict is the first unsafe part, else
+// the part that comes closest.
+RouteFileCheckReport check_on_obstacles(const RouteFileCheckOptions& o, const std::vector<RouteFilePart>& parts) {
+  const LoadedObstacles loaded = load_obstacles(o.obstacles, {o.crs, o.src_crs});
+  // Files without an obstacle fix no frame: the route's start does (its UTM zone).
+  LocalFrame frame = loaded.frame;
+  if (loaded.obstacles.empty() && o.crs.empty()) {
+    const Vec2 start = parts.front().points.front().lonlat;
+    frame = LocalFrame::utm_for(start.x(), start.y());
+  }
+  const ObstacleField field(loaded.obstacles, o.margin_m);
+  RouteFileCheckReport r;
+  std::optional<RouteCheck> worst;
+  std::string worst_part, first_line;  // the verdict names a part other than the route line
+  std::size_t lines = 0, points = 0;
+  for (const RouteFilePart& part : parts) {
+    const Route route = route_in_frame(part.points, frame, o.route + ": " + part.label);
+    if (part.is_point) ++points;
+    if (!part.is_point && lines++ == 0) {
+      r.waypoints = route.points.size();
+      r.length_m = route.length();
+      r.details["waypoints"] = r.waypoints, r.details["length_m"] = r.length_m;
+      first_line = part.label;
+    }
+    const RouteCheck check = check_route(route.points, field, kRouteFileTolerance_m);
+    const bool first_unsafe = !check.safe && (!worst || worst->safe);
+    if (!worst || first_unsafe || (worst->safe && check.min_clearance_m < worst->min_clearance_m)) {
+      worst = check;
+      worst_part = part.label;
+    }
+  }
+  r.safe = worst->safe;
+  r.why = (worst_part != first_line ? worst_part + ": " : std::string()) + worst->describe();
+  r.details["safe"] = worst->safe;
+  r.details["min_clearance_m"] = worst->min_clearance_m;
+  r.details["worst_segment"] = worst->worst_segment;
+  r.details["worst_obstacle"] = worst->worst_obstacle;
+  r.details["worst_part"] = worst_part;
+  r.details["margin_m"] = o.margin_m;
+  r.details["lines"] = lines;
+  r.details["points"] = points;
+  r.details["crs"] = frame.id();
+  return r;
+}
+
+// The route against S-57 cells, feature by feature: the verdict names the
+// first part that crosses.
+RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::vector<RouteFilePart>& parts) {
+  if (std::isnan(o.operating_depth_m)) {
+    throw InputError("operating depth: expected the depth (m) to check the route against S-57 charts at");
+  }
+  EncNoGoOptions opts;
+  opts.operating_depth_m = o.operating_depth_m;
+  opts.vertical_clearance_m = o.vertical_clearance_m;
+  opts.restricted_areas = o.restricted_areas;
+  opts.zone_of_confidence = o.zone_of_confidence;
+  std::optional<LocalFrame> frame;
+  if (!o.crs.empty()) frame = LocalFrame::from_user_crs(o.crs);
+  const EncNoGo no_go = chart_no_go(o.charts, frame, opts);
+  RouteFileCheckReport r;
+  nlohmann::json& j = r.details;
+  j = {{"margin_m", o.margin_m}, {"required_depth_m", no_go.required_depth_m}};
+  std::size_t lines = 0, points = 0, crossed = 0;
+  for (const RouteFilePart& part : parts) {
+    const Route route = route_in_frame(part.points, no_go.frame, o.route + ": " + part.label);
+    if (part.is_point) {
+      ++points;
+      const EncNoGoFeature* f = no_go_feature_at(no_go, route.points.front(), o.margin_m, kRouteFileTolerance_m);
+      if (f != nullptr && r.safe) {
+        r.safe = false;
+        r.why = part.label + ": lies within " + fixed(o.margin_m, 2) + " m of " + f->id +
+                (f->cell.empty() ? "" : " of " + f->cell) + " (" + f->reason + ")";
+        j["first_crossing"] = {{"part", part.label}, {"feature", f->id}, {"cell", f->cell},
+                               {"class", f->cls},    {"rcid", f->rcid},  {"reason", f->reason}};
+      }
+      continue;
+    }
+    if (lines++ == 0) {
+      r.waypoints = route.points.size();
+      r.length_m = route.length();
+      j["waypoints"] = r.waypoints, j["length_m"] = r.length_m;
+    }
+    const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin_m, kRouteFileTolerance_m);
+    crossed += check.crossed_features;
+    if (!check.safe && r.safe) {
+      r.safe = false;
+      r.why = (parts.size() > 1 ? part.label + ": " : std::string()) + check.describe(no_go.frame);
+      const ChartCrossing& c = *check.first;
+      const Vec2 ll = no_go.frame.to_lonlat(c.at);
+      j["first_crossing"] = {{"part", part.label},      {"feature", c.feature->id}, {"cell", c.feature->cell},
+                             {"class", c.feature->cls}, {"rcid", c.feature->rcid},  {"reason", c.feature->reason},
+                             {"leg", c.leg + 1},        {"along_m", c.along_m},     {"lon", ll.x()},
+                             {"lat", ll.y()}};
+      if (std::isfinite(c.feature->charted_depth_m)) j["first_crossing"]["charted_depth_m"] = c.feature->charted_depth_m;
+    } else if (r.safe) {
+      r.why = check.describe(no_go.frame);
+    }
+  }
+  j["safe"] = r.safe;
+  j["crossed_features"] = crossed;
+  j["lines"] = lines;
+  j["points"] = points;
+  return r;
+}
+
+}  // namespace
+
+std::string RouteFileCheckReport::to_text() const {
+  if (!safe) return "unsafe: " + why;
+  return "safe: " + why + " (" + std::to_string(waypoints) + " waypoints, " + fixed(length_m, 1) + " m)";
+}
+
+RouteFileCheckReport check_route_file(const RouteFileCheckOptions& o) {
+  if (o.obstacles.empty() && o.charts.empty()) {
+    throw InputError(o.route + ": expected obstacle files or charts to check the route against");
+  }
+  if (!std::isfinite(o.margin_m) || o.margin_m < 0.0) {
+    throw InputError("margin: expected a safety margin >= 0 m, got " + general(o.margin_m));
+  }
+  // Every line and point of the file (a second line through an obstacle is not "safe").
+  const std::vector<RouteFilePart> parts = read_route_parts(o.route);
+  if (o.obstacles.empty()) return check_on_charts(o, parts);
+  RouteFileCheckReport r = check_on_obstacles(o, parts);
+  if (o.charts.empty()) return r;
+  const RouteFileCheckReport chart = check_on_charts(o, parts);
+  r.details["chart"] = chart.details;
+  r.details["safe"] = r.safe && chart.safe;
+  if (r.safe && !chart.safe) r.why = chart.why;
+  if (r.safe && chart.safe) r.why += "; " + chart.why;
+  r.safe = r.safe && chart.safe;
+  return r;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,48 @@
+#pragma once
+// `check route` as a library call: every line and point of a route file
+// against obstacle files (exact clearance, route_check.hpp) and/or S-57
+// charts at an operating depth (the first crossing named, enc_route_check.hpp),
+// returned as one report that prints itself as text or JSON.
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace deepguide {
+
+struct RouteFileCheckOptions {
+  std::string route;                   ///< the route file (RTZ, GPX, GeoJSON, KML, ...)
+  std::vector<std::string> obstacles;  ///< obstacle files
+  std::vector<std::string> charts;     ///< S-57 cells, folders of cells, prepared charts
+  std::string crs;                     ///< the local frame ("" : from the inputs)
+  std::string src_crs;                 ///< CRS of inputs that carry none
+  double margin_m = 5.0;               ///< clearance the route must keep, >= 0
+  double operating_depth_m = std::nan("");  ///< needed with charts (m, positive down)
+  double vertical_clearance_m = 2.0;   ///< water kept under the vehicle, with charts
+  bool restricted_areas = false;       ///< charts: RESTRN 7, 8, 14 are no-go too
+  bool zone_of_confidence = true;      ///< charts: widen by each area's zone of confidence
+};
+
+struct RouteFileCheckReport {
+  bool safe = true;
+  /// Why: the first crossing, or where the route comes closest (one line).
+  std::string why;
+  std::size_t waypoints = 0;  ///< of the file's first line
+  double length_m = 0.0;      ///< of the file's first line
+  /// The verdict's fields (the obstacles' verdict, with the chart's under
+  /// "chart" when both were checked).
+  nlohmann::json details = nlohmann::json::object();
+
+  nlohmann::json to_json() const { return details; }
+  /// "safe: WHY (N waypoints, L m)" or "unsafe: WHY".
+  std::string to_text() const;
+};
+
+/// Throws InputError for unreadable or malformed inputs (one line), or when
+/// neither obstacles nor charts are given, or charts without a depth.
+RouteFileCheckReport check_route_file(const RouteFileCheckOptions& options);
+
+}  // namespace deepguide
