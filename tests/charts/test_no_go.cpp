@@ -19,6 +19,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/no_go.hpp"
+#include "deepguide/world/no_go_export.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {
@@ -474,15 +475,74 @@ TEST(NoGoErrors, UnreadableRasters) {
   EXPECT_EQ(compute_no_go(nocrs, utm32(), o).no_go_cells, 16u);
 }
 
+// ---------------------------------------------------------------- library call
+
+// A 7 x 7 raster of 10 m cells: a 5 x 5 shoal (8 m) with a deep middle cell,
+// in deep water (60 m).
+void write_shoal_ring(const std::string& path) {
+  std::vector<double> d(49, 60.0);
+  for (int r = 1; r <= 5; ++r)
+    for (int c = 1; c <= 5; ++c) d[r * 7 + c] = (r == 3 && c == 3) ? 60.0 : 8.0;
+  write_depths(path, 7, 7, d);
+}
+
+TEST(NoGoExport, ReportsTheRingInTextAndJsonFromOneReport) {
+  test::ScratchDir dir;
+  // At 10 m depth the 24 shoal cells of the ring are no-go:
+  // 24 of 49 cells (49.0 %), 100 m2 each, one polygon of 2400 m2 (with a hole).
+  const std::string path = dir.file("ring.tif");
+  write_shoal_ring(path);
+  NoGoExportRequest request;
+  request.charts = {path};
+  request.output = dir.file("nogo.geojson");
+  request.nogo = at(10, 2, 0);
+  const NoGoExportReport report = export_no_go(request);
+  EXPECT_FALSE(report.from_cells);
+  const nlohmann::json j = report.to_json();
+  EXPECT_EQ(j["no_go_cells"], 24);
+  EXPECT_EQ(j["total_cells"], 49);
+  EXPECT_EQ(j["polygons"], 1);
+  EXPECT_DOUBLE_EQ(j["area_m2"].get<double>(), 2400.0);
+  const std::string text = report.to_text();
+  EXPECT_NE(text.find("no-go cells      24 of 49 (49.0%), 100.0 m2 each\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("polygons         1, area 2400.0 m2\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("wrote            " + request.output + "\n"), std::string::npos) << text;
+  EXPECT_TRUE(fs::exists(request.output));
+
+  // A bad extension is refused before any work, and nothing is written.
+  request.output = dir.file("nogo.txt");
+  expect_one_line_error([&] { export_no_go(request); }, "nogo.txt");
+  EXPECT_FALSE(fs::exists(request.output));
+}
+
+TEST(NoGoExport, CellsReportTheirClassesAndFrame) {
+  test::ScratchDir dir;
+  NoGoExportRequest request;
+  request.charts = {test::real_file("noaa-enc-US5FL4DQ/US5FL4DQ.000")};
+  request.output = dir.file("enc.gpkg");
+  request.nogo.operating_depth_m = 3.0;
+  const NoGoExportReport report = export_no_go(request);
+  ASSERT_TRUE(report.from_cells);
+  const nlohmann::json j = report.to_json();
+  EXPECT_EQ(j["local_crs"], "EPSG:32617");
+  EXPECT_DOUBLE_EQ(j["required_depth_m"].get<double>(), 5.0);  // 3 m operating + 2 m clearance
+  EXPECT_GT(j["no_go_by_class"]["DEPARE"].get<int>(), 0);
+  EXPECT_EQ(j["cells"][0]["name"], "US5FL4DQ");
+  const std::string text = report.to_text();
+  EXPECT_EQ(text.rfind("cell             US5FL4DQ  1:", 0), 0u) << text;
+  EXPECT_NE(text.find("planners         " + std::to_string(report.polygons) + " polygon(s) with " +
+                      std::to_string(report.vertices) + " corners"),
+            std::string::npos)
+      << text;
+  EXPECT_TRUE(fs::exists(request.output));
+}
+
 // ---------------------------------------------------------------- CLI
 
 TEST(NoGoCli, WritesObstaclePolygons) {
   test::ScratchDir dir;
   const std::string path = dir.file("ring.tif");
-  std::vector<double> d(49, 60.0);
-  for (int r = 1; r <= 5; ++r)
-    for (int c = 1; c <= 5; ++c) d[r * 7 + c] = (r == 3 && c == 3) ? 60.0 : 8.0;
-  write_depths(path, 7, 7, d);
+  write_shoal_ring(path);
   const std::string out = dir.file("nogo.geojson");
   const auto r = test::run_cli("chart nogo '" + path + "' --depth 10 --tolerance 0 -o '" + out + "' --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
