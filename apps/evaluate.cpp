@@ -1,4 +1,3 @@
-// deepguide suite generate DIR ...           a seeded scenario suite
 // deepguide evaluate SUITE --methods LIST -o OUTDIR [--threads N] [--shard K/N|slurm] [--allow-skips]
 // deepguide evaluate merge -o OUTDIR SHARD_DIR... [--overwrite] [--allow-skips]
 // Exit 0 when every scenario ran (or some were skipped with --allow-skips);
@@ -10,11 +9,9 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
@@ -41,25 +38,6 @@ struct EvaluateArgs {
   std::string merge_output;
 };
 
-std::vector<EvalMethod> parse_methods(const std::string& list) {
-  std::vector<EvalMethod> out;
-  std::istringstream in(list);
-  for (std::string name; std::getline(in, name, ',');) out.push_back(parse_eval_method(name));
-  if (out.empty()) throw InputError("--methods: expected a comma-separated list, e.g. visibility,quadtree,geometric,dipole");
-  return out;
-}
-
-std::string clock_text(double s) {
-  const long t = static_cast<long>(s + 0.5);
-  char buf[32];
-  if (t >= 3600) {
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
-  } else {
-    std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
-  }
-  return buf;
-}
-
 // A progress bar with ETA on stderr, only when stderr is a terminal.
 struct ProgressBar {
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
@@ -72,13 +50,7 @@ struct ProgressBar {
     if (done < total && now - last < std::chrono::milliseconds(100)) return;
     last = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
-    const double eta = done > 0 ? elapsed * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
-    constexpr int kWidth = 30;
-    const int filled = static_cast<int>(kWidth * done / total);
-    std::fprintf(stderr, "\r[%s%s] %zu/%zu runs %5.1f %%  %s elapsed  ETA %s ", std::string(filled, '#').c_str(),
-                 std::string(kWidth - filled, '.').c_str(), done, total, 100.0 * done / total,
-                 clock_text(elapsed).c_str(), done > 0 ? clock_text(eta).c_str() : "--:--");
-    if (done == total) std::fprintf(stderr, "\n");
+    std::fprintf(stderr, "\r%s %s", progress_line(done, total, elapsed).c_str(), done == total ? "\n" : "");
     std::fflush(stderr);
   }
   // A warning on its own line, the bar redrawn after it.
@@ -90,68 +62,14 @@ struct ProgressBar {
 
 void report(const EvaluationRun& run, const std::string& out_dir, const EvaluateArgs& o) {
   if (!o.quiet) std::cout << summary_markdown(run, summarize(run));
-  std::cout << "\nwrote " << out_dir << "/rows.csv, run.json, results.json and summary.md"
-            << (o.no_report ? "" : ", report.html and its figures") << " (" << run.rows.size() << " rows";
-  if (run.resumed > 0 && run.computed > 0) std::cout << ", " << run.resumed << " kept from the earlier run";
-  std::cout << ")\n";
-  if (run.manifest.skipped.empty()) return;
-  const SkippedRun& first = run.manifest.skipped.front();
-  const std::string what = std::to_string(run.manifest.skipped.size()) + " run(s) skipped, the first: " +
-                           first.scenario + (first.method.empty() ? "" : " with " + first.method) + ": " + first.error;
-  if (o.allow_skips) {
-    std::cerr << "deepguide: warning: " << what << " (listed in summary.md; exit 0 with --allow-skips)\n";
-    return;
-  }
-  throw PartialError(what);
-}
-
-// Worker threads: --threads, else the CPUs Slurm gave the task, else every core (0).
-int threads_for(int given) {
-  if (given > 0) return given;
-  if (const char* slurm = std::getenv("SLURM_CPUS_PER_TASK")) {
-    char* end = nullptr;
-    const long n = std::strtol(slurm, &end, 10);
-    if (end != slurm && *end == '\0' && n >= 1 && n <= 1024) return static_cast<int>(n);
-  }
-  return 0;
+  std::cout << "\n" << outputs_line(run, out_dir, !o.no_report) << "\n";
+  const std::string skipped = skipped_line(run);
+  if (skipped.empty()) return;
+  if (!o.allow_skips) throw PartialError(skipped);
+  std::cerr << "deepguide: warning: " << skipped << " (listed in summary.md; exit 0 with --allow-skips)\n";
 }
 
 }  // namespace
-
-void register_suite(CLI::App& app) {
-  CLI::App* suite = app.add_subcommand("suite", "Scenario suites for deepguide evaluate");
-  suite->require_subcommand(1);
-  auto o = std::make_shared<std::pair<std::string, MonteCarloParams>>();
-  auto name = std::make_shared<std::string>();
-  auto flags = std::make_shared<std::pair<bool, bool>>(false, false);  // on demand, overwrite
-  CLI::App* cmd = suite->add_subcommand("generate", "Write a seeded random suite (scenario files and suite.yaml)");
-  MonteCarloParams& p = o->second;
-  cmd->add_option("DIR", o->first, "Folder to create")->required();
-  cmd->add_option("--name", *name, "Suite name (default: the folder's name)");
-  cmd->add_option("--scenarios", p.scenarios, "How many scenarios")->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Random seed")->capture_default_str();
-  cmd->add_option("--min-obstacles", p.min_obstacles, "Fewest obstacles per scenario")->capture_default_str();
-  cmd->add_option("--max-obstacles", p.max_obstacles, "Most obstacles per scenario")->capture_default_str();
-  cmd->add_option("--min-size", p.min_size_m, "Smallest semi-major axis (m)")->capture_default_str();
-  cmd->add_option("--max-size", p.max_size_m, "Largest semi-major axis (m)")->capture_default_str();
-  cmd->add_option("--spread", p.cross_track_sigma_m, "Cross-track spread of the obstacles, sigma (m); with the count, the density")
-      ->capture_default_str();
-  cmd->add_option("--max-current", p.max_current_mps, "Fastest uniform current (m/s)")->capture_default_str();
-  cmd->add_option("--sonar-noise", p.sonar_noise, "Factor on the sonar's error sigmas (0 = exact)")->capture_default_str();
-  cmd->add_flag("--on-demand", flags->first, "Write only suite.yaml: evaluate makes the scenarios as it runs");
-  cmd->add_flag("--overwrite", flags->second, "Replace the folder if it exists");
-  cmd->callback([o, name, flags] {
-    std::string n = *name;
-    if (n.empty()) {
-      std::filesystem::path dir = std::filesystem::absolute(o->first).lexically_normal();
-      if (dir.filename().empty()) dir = dir.parent_path();
-      n = dir.filename().string();
-    }
-    write_suite(o->first, n, o->second, !flags->first, flags->second);
-    std::cout << "wrote suite " << n << " to " << o->first << ": " << o->second.scenarios << " scenarios"
-              << (flags->first ? " (made on demand from suite.yaml)" : "") << "\n";
-  });
-}
 
 void register_evaluate(CLI::App& app) {
   auto o = std::make_shared<EvaluateArgs>();
@@ -193,12 +111,12 @@ void register_evaluate(CLI::App& app) {
     if (o->methods.empty()) throw CLI::RequiredError("--methods");
     if (o->output.empty()) throw CLI::RequiredError("--output");
     EvaluateOptions options;
-    options.methods = parse_methods(o->methods);
+    options.methods = parse_eval_methods(o->methods);
     options.shard = o->shard == "slurm" ? slurm_array_shard(std::getenv("SLURM_ARRAY_TASK_ID"),
                                                             std::getenv("SLURM_ARRAY_TASK_MIN"),
                                                             std::getenv("SLURM_ARRAY_TASK_COUNT"))
                                         : parse_shard(o->shard);
-    options.threads = threads_for(o->threads);
+    options.threads = o->threads > 0 ? o->threads : slurm_cpus_per_task(std::getenv("SLURM_CPUS_PER_TASK"));
     options.fresh = o->fresh;
     options.timing = !o->no_timing;
     options.report = !o->no_report;

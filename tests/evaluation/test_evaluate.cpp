@@ -80,6 +80,29 @@ TEST(EvalMethod, NamesParseToCanonicalForms) {
   }
 }
 
+TEST(EvalMethod, ListsParseInOrderAndAnEmptyListIsAnError) {
+  const std::vector<EvalMethod> m = parse_eval_methods("visibility,geometric,quadtree:dijkstra");
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[0].name, "visibility");
+  EXPECT_EQ(m[1].reactive, ReactiveMethod::geometric);
+  EXPECT_EQ(m[2].name, "quadtree:dijkstra");
+  deepguide::test::expect_one_line_error([] { (void)parse_eval_methods(""); }, "methods: expected a comma-separated");
+  deepguide::test::expect_one_line_error([] { (void)parse_eval_methods("visibility,,geometric"); }, "unknown method");
+}
+
+TEST(Evaluate, ProgressLineAndSlurmThreads) {
+  // 3 of 12 runs after 30 s: a quarter of the bar (7 of 30), 90 s to go.
+  EXPECT_EQ(progress_line(3, 12, 30.0),
+            "[#######.......................] 3/12 runs 25.0 %  0:00:30 elapsed  ETA 0:01:30");
+  EXPECT_EQ(progress_line(0, 5, 2.0), "[..............................] 0/5 runs 0.0 %  0:00:02 elapsed  ETA -:--:--");
+  EXPECT_EQ(progress_line(5, 5, 3725.0).substr(0, 33), "[##############################] ");
+  EXPECT_NE(progress_line(5, 5, 3725.0).find("1:02:05 elapsed  ETA 0:00:00"), std::string::npos);
+  EXPECT_EQ(progress_line(1, 0, 1.0), "");
+  EXPECT_EQ(slurm_cpus_per_task(nullptr), 0);
+  EXPECT_EQ(slurm_cpus_per_task("8"), 8);
+  for (const char* bad : {"", "0", "-2", "8x", "1025", "two"}) EXPECT_EQ(slurm_cpus_per_task(bad), 0) << bad;
+}
+
 TEST(Evaluate, HandCheckedRowsWithoutObstacles) {
   ScratchDir tmp;
   const std::string file = tmp.write("open.yaml", "start: {x: 0, y: 0}\ntarget: {x: 300, y: 400}\n");
@@ -293,6 +316,8 @@ TEST(Evaluate, BrokenScenarioIsSkippedAndTheRestRuns) {
   EXPECT_NE(run.manifest.skipped[0].error.find("range_m"), std::string::npos);
   ASSERT_EQ(warnings.size(), 1u);
   for (const EvalRow& r : run.rows) EXPECT_NE(r.scenario, "scenario-0002");
+  EXPECT_EQ(skipped_line(run), "1 run(s) skipped, the first: scenario-0002: " + run.manifest.skipped[0].error);
+  EXPECT_EQ(outputs_line(run, "OUT", false), "wrote OUT/rows.csv, run.json, results.json and summary.md (8 rows)");
   const std::string summary = slurp(tmp.path() / "out" / "summary.md");
   EXPECT_NE(summary.find("1 skipped"), std::string::npos);
   EXPECT_NE(summary.find("scenario-0002"), std::string::npos);

@@ -92,6 +92,14 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
 
 }  // namespace
 
+std::vector<EvalMethod> parse_eval_methods(const std::string& list) {
+  std::vector<EvalMethod> out;
+  std::istringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) out.push_back(parse_eval_method(name));
+  if (out.empty()) throw InputError("methods: expected a comma-separated list, e.g. visibility,quadtree,geometric,dipole");
+  return out;
+}
+
 EvalMethod parse_eval_method(const std::string& text) {
   EvalMethod m;
   if (const auto reactive = parse_reactive_method(text)) {

@@ -43,6 +43,8 @@ struct EvalMethod {
 /// Parses a method name (header). Throws InputError "unknown method 'X':
 /// expected ..." listing the names.
 EvalMethod parse_eval_method(const std::string& text);
+/// Parses a comma-separated list of method names, in order.
+std::vector<EvalMethod> parse_eval_methods(const std::string& list);
 
 /// What one method did on one scenario.
 struct MethodRun {

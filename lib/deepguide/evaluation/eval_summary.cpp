@@ -219,6 +219,21 @@ EvaluationSummary summarize(const EvaluationRun& run) {
   return s;
 }
 
+std::string outputs_line(const EvaluationRun& run, const std::string& dir, bool with_report) {
+  std::string line = "wrote " + dir + "/rows.csv, run.json, results.json and summary.md" +
+                     (with_report ? ", report.html and its figures" : "") + " (" + std::to_string(run.rows.size()) +
+                     " rows";
+  if (run.resumed > 0 && run.computed > 0) line += ", " + std::to_string(run.resumed) + " kept from the earlier run";
+  return line + ")";
+}
+
+std::string skipped_line(const EvaluationRun& run) {
+  if (run.manifest.skipped.empty()) return {};
+  const SkippedRun& first = run.manifest.skipped.front();
+  return std::to_string(run.manifest.skipped.size()) + " run(s) skipped, the first: " + first.scenario +
+         (first.method.empty() ? "" : " with " + first.method) + ": " + first.error;
+}
+
 std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& s) {
   const RunManifest& m = run.manifest;
   std::ostringstream o;

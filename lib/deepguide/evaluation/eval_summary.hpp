@@ -50,6 +50,12 @@ EvaluationSummary summarize(const EvaluationRun& run);
 /// The summary as Markdown (summary.md; also what the terminal shows).
 std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& summary);
 
+/// "wrote DIR/rows.csv, ... (N rows[, K kept from the earlier run])": what a
+/// run left in its folder, one line.
+std::string outputs_line(const EvaluationRun& run, const std::string& dir, bool with_report);
+/// "N run(s) skipped, the first: SCENARIO with METHOD: ERROR"; empty when none was.
+std::string skipped_line(const EvaluationRun& run);
+
 /// The methods table's columns: summary.md and report.html draw the same
 /// table from this one list. A cell is text ("–" where there is no value).
 struct MethodColumn {

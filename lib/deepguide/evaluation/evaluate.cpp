@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/folder_lock.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/evaluation/eval_report.hpp"
 #include "deepguide/evaluation/eval_summary.hpp"
 
@@ -139,6 +141,24 @@ struct JobResult {
 };
 
 }  // namespace
+
+int slurm_cpus_per_task(const char* value) {
+  if (value == nullptr) return 0;
+  char* end = nullptr;
+  const long n = std::strtol(value, &end, 10);
+  return end != value && *end == '\0' && n >= 1 && n <= 1024 ? static_cast<int>(n) : 0;
+}
+
+std::string progress_line(std::size_t done, std::size_t total, double elapsed_s) {
+  if (total == 0) return {};
+  done = std::min(done, total);
+  constexpr std::size_t kWidth = 30;
+  const std::size_t filled = kWidth * done / total;
+  const double eta = done > 0 ? elapsed_s * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
+  return "[" + std::string(filled, '#') + std::string(kWidth - filled, '.') + "] " + std::to_string(done) + "/" +
+         std::to_string(total) + " runs " + fixed(100.0 * static_cast<double>(done) / static_cast<double>(total), 1) +
+         " %  " + clock_text(elapsed_s) + " elapsed  ETA " + (done > 0 ? clock_text(eta) : std::string("-:--:--"));
+}
 
 Shard slurm_array_shard(const char* task_id, const char* task_min, const char* task_count) {
   if (task_id == nullptr || task_count == nullptr) {

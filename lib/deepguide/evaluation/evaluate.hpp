@@ -45,6 +45,12 @@ Shard parse_shard(const std::string& text);
 /// N = SLURM_ARRAY_TASK_COUNT (the variables' values; `task_min` may be null:
 /// 0). The array's ids must be consecutive. InputError naming the variable otherwise.
 Shard slurm_array_shard(const char* task_id, const char* task_min, const char* task_count);
+/// Worker threads from SLURM_CPUS_PER_TASK's value (1..1024); 0 (every core)
+/// when it is null or not such a number.
+int slurm_cpus_per_task(const char* value);
+/// One line of progress: a bar, runs done of total, the time elapsed and the
+/// time left (estimated from the rate so far), as H:MM:SS.
+std::string progress_line(std::size_t done, std::size_t total, double elapsed_s);
 
 struct SkippedRun {
   std::size_t scenario_index = 0;

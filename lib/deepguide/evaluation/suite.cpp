@@ -222,14 +222,15 @@ std::string suite_yaml(const std::string& name, const MonteCarloParams& p) {
   return o.str();
 }
 
-void write_suite(const std::string& dir, const std::string& name, const MonteCarloParams& params, bool files,
-                 bool overwrite) {
+std::string write_suite(const std::string& dir, const std::string& given_name, const MonteCarloParams& params,
+                        bool files, bool overwrite) {
   validate(params);
+  fs::path target = fs::absolute(dir).lexically_normal();
+  if (target.filename().empty()) target = target.parent_path();  // "suites/mine/"
+  const std::string name = given_name.empty() ? target.filename().string() : given_name;
   if (name.empty() || name.find_first_of("\"\\\n\r") != std::string::npos) {
     throw InputError(dir + ": name: expected a suite name without quotes, backslashes or line breaks");
   }
-  fs::path target = fs::absolute(dir).lexically_normal();
-  if (target.filename().empty()) target = target.parent_path();  // "suites/mine/"
   std::error_code ec;
   const fs::path here = fs::current_path(ec).lexically_normal();
   if (target.filename().empty() || target == target.root_path() ||
@@ -267,6 +268,7 @@ void write_suite(const std::string& dir, const std::string& name, const MonteCar
   fs::rename(temp, target, ec);
   if (ec) throw InputError(dir + ": could not move the suite into place (" + ec.message() + ")");
   cleanup.p.clear();
+  return name;
 }
 
 }  // namespace deepguide

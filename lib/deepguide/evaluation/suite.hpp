@@ -68,8 +68,9 @@ std::string suite_yaml(const std::string& name, const MonteCarloParams& params);
 /// Writes a generated suite to the folder `dir`: suite.yaml, and with
 /// `files` every scenario as scenario-NNNN.yaml. The folder must not exist
 /// (or, with `overwrite`, is replaced); it appears whole or not at all (it is
-/// written beside it under a temporary name and renamed). Throws InputError.
-void write_suite(const std::string& dir, const std::string& name, const MonteCarloParams& params, bool files,
-                 bool overwrite);
+/// written beside it under a temporary name and renamed). An empty `name`
+/// is the folder's own name. Returns the name written. Throws InputError.
+std::string write_suite(const std::string& dir, const std::string& name, const MonteCarloParams& params, bool files,
+                        bool overwrite);
 
 }  // namespace deepguide
