@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/planning/depth_plan_report.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/mission/route_export.hpp"
@@ -86,9 +87,9 @@ void run_plan_in_depth(const DepthCommand& c) {
     return;
   }
   std::cout << report.to_text();
-  if (!c.output.empty()) std::cout << "wrote            " << c.output << "\n";
-  if (!c.render.empty()) std::cout << "rendered         " << c.render << "\n";
-  if (!c.render_profile.empty()) std::cout << "rendered         " << c.render_profile << " (depth profile)\n";
+  if (!c.output.empty()) std::cout << report_line("wrote", c.output);
+  if (!c.render.empty()) std::cout << report_line("rendered", c.render);
+  if (!c.render_profile.empty()) std::cout << report_line("rendered", c.render_profile + " (depth profile)");
 }
 
 }  // namespace deepguide::app

@@ -26,6 +26,10 @@ std::string clock_text(double seconds) {
   return buf;
 }
 
+std::string report_line(const std::string& label, const std::string& value) {
+  return label + std::string(label.size() < 17 ? 17 - label.size() : 1, ' ') + value + "\n";
+}
+
 std::string ascii_lower(std::string s) {
   for (char& c : s) {
     if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');

@@ -18,6 +18,9 @@ inline std::string point_text(const Eigen::Vector2d& p, int digits = 1) { return
 /// A duration as a clock, "H:MM:SS", rounded to the second (e.g. "1:47:47"); "-" for
 /// a negative or non-finite one.
 std::string clock_text(double seconds);
+/// One line of a command's text report: the label padded to column 18, the
+/// value, a newline ("length           12.00 m\n").
+std::string report_line(const std::string& label, const std::string& value);
 /// `s` with ASCII letters in lower case (names in files: units, extensions, attributes).
 std::string ascii_lower(std::string s);
 

@@ -16,11 +16,6 @@
 namespace deepguide {
 namespace {
 
-// A text line: the label padded to the value column.
-std::string line(const std::string& label, const std::string& value) {
-  return label + std::string(label.size() < 17 ? 17 - label.size() : 1, ' ') + value + "\n";
-}
-
 // The vehicle's steepest steady dive: its vertical speed at cruise.
 double vehicle_dive_deg(const std::string& vehicle_file) {
   const VehicleParams vehicle = vehicle_file.empty() ? VehicleParams{} : read_vehicle_file(vehicle_file);
@@ -144,24 +139,24 @@ std::vector<nlohmann::json> DepthPlanReport::waypoint_properties() const {
 std::string DepthPlanReport::to_text() const {
   const Route& r = route();
   const VolumeOptions& v = options.volume;
-  std::string text = line("length", fixed(r.length(), 2) + " m in depth, " + std::to_string(r.points.size()) +
+  std::string text = report_line("length", fixed(r.length(), 2) + " m in depth, " + std::to_string(r.points.size()) +
                                         " waypoints");
-  text += line("depth", fixed(r.depth_m.front(), 1) + " m to " + fixed(r.depth_m.back(), 1) + " m; band " +
+  text += report_line("depth", fixed(r.depth_m.front(), 1) + " m to " + fixed(r.depth_m.back(), 1) + " m; band " +
                             fixed(v.min_depth_m, 1) + " m to " +
                             (std::isfinite(v.max_depth_m) ? fixed(v.max_depth_m, 1) + " m" : "the floor") +
                             "; steepest leg " + fixed(plan.check.steepest_deg, 1) + " deg (dive " +
                             fixed(options.octree.max_dive_deg, 1) + " deg)");
   if (std::isfinite(plan.check.min_floor_gap_m)) {
-    text += line("sea floor", "at least " + fixed(plan.check.min_floor_gap_m, 2) + " m below the route (clearance " +
+    text += report_line("sea floor", "at least " + fixed(plan.check.min_floor_gap_m, 2) + " m below the route (clearance " +
                                   fixed(vertical_clearance_m, 2) + " m)");
   }
-  text += line("octree", std::to_string(plan.cells) + " cells (" + std::to_string(plan.free_cells) + " free), smallest " +
+  text += report_line("octree", std::to_string(plan.cells) + " cells (" + std::to_string(plan.free_cells) + " free), smallest " +
                              fixed(plan.min_cell.z(), 2) + " m high x " + fixed(plan.min_cell.x(), 2) + " m wide, " +
                              fixed(static_cast<double>(plan.memory_bytes) / (1024.0 * 1024.0), 1) + " MiB; " +
                              to_string(search) + " expanded " + std::to_string(plan.result.stats.expanded));
-  text += line("time", "build " + fixed(plan.result.stats.build_ms, 2) + " ms, query " +
+  text += report_line("time", "build " + fixed(plan.result.stats.build_ms, 2) + " ms, query " +
                            fixed(plan.result.stats.query_ms, 2) + " ms");
-  text += line("check", plan.check.describe());
+  text += report_line("check", plan.check.describe());
   return text;
 }
 

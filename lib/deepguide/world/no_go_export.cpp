@@ -15,11 +15,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// A text line: the label padded to the value column.
-std::string line(const std::string& label, const std::string& value) {
-  return label + std::string(label.size() < 17 ? 17 - label.size() : 1, ' ') + value + "\n";
-}
-
 void from_cells(const NoGoExportRequest& r, NoGoExportReport& out) {
   EncNoGoOptions opts;
   opts.operating_depth_m = r.nogo.operating_depth_m;
@@ -124,40 +119,40 @@ std::string NoGoExportReport::to_text() const {
   std::string text;
   if (from_cells) {
     for (const EncCellSummary& c : cells) {
-      text += line("cell", c.name + "  1:" + std::to_string(c.compilation_scale) + ", band " +
+      text += report_line("cell", c.name + "  1:" + std::to_string(c.compilation_scale) + ", band " +
                                std::to_string(c.usage_band) + ", edition " + c.edition + ", update " +
                                std::to_string(c.update_number));
     }
-    text += line("local frame", local_crs + " (" + local_crs_name + ")");
-    text += line("rule", "charted depth less its zone of confidence < " + fixed(o.operating_depth_m, 2) +
+    text += report_line("local frame", local_crs + " (" + local_crs_name + ")");
+    text += report_line("rule", "charted depth less its zone of confidence < " + fixed(o.operating_depth_m, 2) +
                              " m (operating) + " + fixed(o.vertical_clearance_m, 2) + " m (clearance)" +
                              (request.zone_of_confidence ? "" : " (zones ignored)"));
     std::string classes;
     for (const auto& [cls, n] : no_go_by_class) classes += (classes.empty() ? "" : ", ") + cls + " " + std::to_string(n);
-    text += line("no-go", classes);
-    text += line("planners", std::to_string(polygons) + " polygon(s) with " + std::to_string(vertices) + " corners, " +
+    text += report_line("no-go", classes);
+    text += report_line("planners", std::to_string(polygons) + " polygon(s) with " + std::to_string(vertices) + " corners, " +
                                  std::to_string(discs) + " disc(s) (tolerance " + fixed(o.simplify_tolerance_m, 2) +
                                  " m, outward only)");
   } else {
     const BathymetryInfo& r = area.raster;
-    text += line("raster", request.charts.front() + "  [" + r.driver + ", " + r.crs + "] " + std::to_string(r.width) +
+    text += report_line("raster", request.charts.front() + "  [" + r.driver + ", " + r.crs + "] " + std::to_string(r.width) +
                                " x " + std::to_string(r.height) + " cells");
-    text += line("local frame", local_crs + " (" + local_crs_name + ")");
-    text += line("rule", "depth < " + fixed(o.operating_depth_m, 2) + " m (operating) + " +
+    text += report_line("local frame", local_crs + " (" + local_crs_name + ")");
+    text += report_line("rule", "depth < " + fixed(o.operating_depth_m, 2) + " m (operating) + " +
                              fixed(o.vertical_clearance_m, 2) + " m (clearance), land, " +
                              (request.nodata_is_no_go ? "and cells without data" : "cells without data are water"));
     const double pct = area.total_cells > 0 ? 100.0 * static_cast<double>(area.no_go_cells) /
                                                   static_cast<double>(area.total_cells)
                                             : 0.0;
-    text += line("no-go cells", std::to_string(area.no_go_cells) + " of " + std::to_string(area.total_cells) + " (" +
+    text += report_line("no-go cells", std::to_string(area.no_go_cells) + " of " + std::to_string(area.total_cells) + " (" +
                                     fixed(pct, 1) + "%), " + fixed(area.cell_area_m2, 1) + " m2 each");
-    text += line("polygons", std::to_string(polygons) + ", area " + fixed(area.area_m2, 1) + " m2");
-    text += line("vertices", std::to_string(area.vertices_before_simplify) + " before, " +
+    text += report_line("polygons", std::to_string(polygons) + ", area " + fixed(area.area_m2, 1) + " m2");
+    text += report_line("vertices", std::to_string(area.vertices_before_simplify) + " before, " +
                                  std::to_string(area.vertices_after_simplify) + " after simplification (tolerance " +
                                  fixed(o.simplify_tolerance_m, 2) + " m, outward only)");
   }
-  text += line("time", fixed(seconds, 2) + " s");
-  text += line("wrote", request.output);
+  text += report_line("time", fixed(seconds, 2) + " s");
+  text += report_line("wrote", request.output);
   return text;
 }
 
