@@ -16,7 +16,6 @@
 #include "deepguide/mission/route_export.hpp"
 #include "deepguide/render/depth_profile.hpp"
 #include "deepguide/render/route_scene.hpp"
-#include "deepguide/vehicle/vehicle_params.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -60,8 +59,7 @@ void run_plan_in_depth(const DepthCommand& c) {
     RouteExportSettings settings;
     settings.name = std::filesystem::path(c.output).stem().string();
     settings.margin_m = c.margin;
-    ExportRoute exported =
-        export_route(route, *c.frame, c.vehicle.empty() ? VehicleParams{} : read_vehicle_file(c.vehicle), settings);
+    ExportRoute exported = export_route(route, *c.frame, report.vehicle, settings);
     exported.properties = report.to_json();
     exported.waypoint_properties = report.waypoint_properties();
     write_route_file(exported, c.output, route_file_format(c.output), {.overwrite = true});

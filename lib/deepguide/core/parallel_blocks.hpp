@@ -20,10 +20,11 @@ inline std::size_t hardware_workers() { return std::max<std::size_t>(1, std::thr
 
 template <class Fn>
 void parallel_blocks(std::size_t count, std::size_t block, std::size_t workers, Fn fn) {
+  if (count == 0) return;
   block = std::max<std::size_t>(block, 1);
   workers = std::clamp<std::size_t>(workers, 1, (count + block - 1) / block);
   if (workers <= 1) {
-    if (count > 0) fn(std::size_t{0}, count, std::size_t{0});
+    fn(std::size_t{0}, count, std::size_t{0});
     return;
   }
   std::atomic<std::size_t> next{0};

@@ -7,7 +7,6 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/enc_cells.hpp"
@@ -17,8 +16,7 @@ namespace deepguide {
 namespace {
 
 // The vehicle's steepest steady dive: its vertical speed at cruise.
-double vehicle_dive_deg(const std::string& vehicle_file) {
-  const VehicleParams vehicle = vehicle_file.empty() ? VehicleParams{} : read_vehicle_file(vehicle_file);
+double vehicle_dive_deg(const VehicleParams& vehicle, const std::string& vehicle_file) {
   if (!(vehicle.max_vertical_speed_mps < vehicle.cruise_speed_mps)) {
     throw InputError((vehicle_file.empty() ? std::string("the vehicle") : vehicle_file) +
                      ": max_vertical_speed_mps is not below the cruise speed, so it gives no dive angle; give "
@@ -78,7 +76,9 @@ DepthPlanReport plan_depth_request(const LocalFrame& frame, const DepthPlanReque
   if (!std::isnan(r.band_bottom_m)) options.volume.max_depth_m = r.band_bottom_m;
   options.octree.min_cell_m = r.min_cell_m;
   options.octree.smooth = r.smooth;
-  options.octree.max_dive_deg = std::isnan(r.max_dive_deg) ? vehicle_dive_deg(r.vehicle) : r.max_dive_deg;
+  report.vehicle = r.vehicle.empty() ? VehicleParams{} : read_vehicle_file(r.vehicle);
+  options.octree.max_dive_deg =
+      std::isnan(r.max_dive_deg) ? vehicle_dive_deg(report.vehicle, r.vehicle) : r.max_dive_deg;
   validate(options.octree);
   if (std::isnan(r.start_depth_m) || std::isnan(r.goal_depth_m)) {
     throw InputError("planning in depth: expected the start's and the goal's depth");

@@ -15,6 +15,7 @@
 
 #include "deepguide/planning/depth_planning.hpp"
 #include "deepguide/planning/graph_search.hpp"
+#include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace deepguide {
@@ -46,6 +47,7 @@ struct DepthPlanReport {
   std::string crs;
   SearchAlgorithm search = SearchAlgorithm::astar;
   double vertical_clearance_m = 2.0;
+  VehicleParams vehicle;  ///< the request's vehicle file, read once (what exports of the route use)
 
   const Route& route() const { return plan.result.route; }
   nlohmann::json to_json() const;

@@ -105,6 +105,32 @@ OcclusionHorizon::OcclusionHorizon(const BgMultiPolygon& polygons, double eps) :
 
 OcclusionHorizon::~OcclusionHorizon() = default;
 
+std::vector<BgPolygon> bearing_wedges(const Vec2& p, double lo, double hi, double far) {
+  // The point of the square |x| + |y| = 1 at a bearing: its norm is at least
+  // 1 / sqrt 2, so scaling by 2 far puts it beyond far * sqrt 2.
+  const auto on_square = [](double b) {
+    b -= kFullTurn * std::floor(b / kFullTurn);
+    if (b <= 1.0) return Vec2(1.0 - b, b);
+    if (b <= 2.0) return Vec2(1.0 - b, 2.0 - b);
+    if (b <= 3.0) return Vec2(b - 3.0, 2.0 - b);
+    return Vec2(b - 3.0, b - 4.0);
+  };
+  std::vector<BgPolygon> out;
+  const double slack = 1e-9;  // the wedge's own rounding must not drop a point on its side
+  lo -= slack;
+  hi += slack;
+  const int pieces = std::max(1, static_cast<int>(std::ceil((hi - lo) / 0.5)));
+  for (int k = 0; k < pieces; ++k) {
+    const double a = lo + (hi - lo) * k / pieces, b = lo + (hi - lo) * (k + 1) / pieces;
+    BgPolygon wedge;
+    for (const double bearing : {a, 0.5 * (a + b), b}) wedge.outer().push_back(to_bg(p + 2.0 * far * on_square(bearing)));
+    wedge.outer().push_back(to_bg(p));
+    bg::correct(wedge);
+    out.push_back(std::move(wedge));
+  }
+  return out;
+}
+
 bool Horizon::sees(const Vec2& offset) const {
   if (offset.squaredNorm() <= reach_m * reach_m) return true;
   if (open.empty()) return false;

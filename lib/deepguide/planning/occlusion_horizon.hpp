@@ -36,6 +36,11 @@ namespace deepguide {
 inline constexpr double kFullTurn = 4.0;
 double pseudo_bearing(const Vec2& v);
 
+/// Polygons that together hold every point at bearings lo..hi from p up to
+/// `far` (pieces of at most half a quarter turn, each a quadrilateral whose
+/// outer edges stay beyond far): a cone query for an R-tree.
+std::vector<BgPolygon> bearing_wedges(const Vec2& p, double lo, double hi, double far);
+
 /// Bearings as closed intervals [lo, hi] with 0 <= lo <= hi <= kFullTurn; an
 /// arc across bearing 0 is two intervals.
 using BearingSet = std::vector<std::pair<double, double>>;

@@ -69,35 +69,6 @@ constexpr std::size_t kHorizonPieces = 256;
 // limit, 10 s on the 2-core reference machine.
 constexpr double kMaxOpenPairs = 8e8;
 
-// Polygons that together hold every point at bearings lo..hi from p up to
-// `far` (pseudo-angles; pieces of at most half a quarter turn, each a
-// quadrilateral whose outer edges stay beyond far).
-std::vector<BgPolygon> bearing_wedges(const Vec2& p, double lo, double hi, double far) {
-  // The point of the square |x| + |y| = 1 at a bearing: its norm is at least
-  // 1 / sqrt 2, so scaling by 2 far puts it beyond far * sqrt 2.
-  const auto on_square = [](double b) {
-    b -= kFullTurn * std::floor(b / kFullTurn);
-    if (b <= 1.0) return Vec2(1.0 - b, b);
-    if (b <= 2.0) return Vec2(1.0 - b, 2.0 - b);
-    if (b <= 3.0) return Vec2(b - 3.0, 2.0 - b);
-    return Vec2(b - 3.0, b - 4.0);
-  };
-  std::vector<BgPolygon> out;
-  const double slack = 1e-9;  // the wedge's own rounding must not drop a point on its side
-  lo -= slack;
-  hi += slack;
-  const int pieces = std::max(1, static_cast<int>(std::ceil((hi - lo) / 0.5)));
-  for (int k = 0; k < pieces; ++k) {
-    const double a = lo + (hi - lo) * k / pieces, b = lo + (hi - lo) * (k + 1) / pieces;
-    BgPolygon wedge;
-    for (const double bearing : {a, 0.5 * (a + b), b}) wedge.outer().push_back(to_bg(p + 2.0 * far * on_square(bearing)));
-    wedge.outer().push_back(to_bg(p));
-    bg::correct(wedge);
-    out.push_back(std::move(wedge));
-  }
-  return out;
-}
-
 // An edge found between two usable corners (their indices in `usable`).
 struct Link {
   std::size_t u, v;
@@ -273,8 +244,8 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
     if (variant_ == VisibilityVariant::reduced && !corners_[i].convex) continue;
     if (focus_.keeps_point(corners_[i].p)) usable.push_back(i);
   }
-  // The pair loop runs n^2 / 2 times: the cheapest test that rejects most
-  // pairs comes first. In the reduced graph that is the supporting test (four
+  // Each pair tried runs the cheapest test that rejects most pairs first. In
+  // the reduced graph that is the supporting test (four
   // cross products; a corner of a 32-gon supports 1 line direction in 16),
   // then the focus, with each corner's distances to start and goal computed
   // once instead of per pair.
@@ -397,7 +368,7 @@ std::size_t VisibilityGraph::max_corners(VisibilityVariant variant) {
   // The full graph tries all pairs: about 10 s of build at 4000 corners on the
   // 2-core reference machine (docs/PERFORMANCE.md). The reduced graph tries
   // the pairs within each corner's occlusion horizon, and refuses where too
-  // many corners see open water without end (kMaxUnboundedPairs); its corner
+  // many corners see open water without end (kMaxOpenPairs); its corner
   // limit bounds memory.
   return variant == VisibilityVariant::full ? 4000 : 250000;
 }
