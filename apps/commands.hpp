@@ -41,11 +41,6 @@ void register_evaluate(CLI::App& app);
 void register_figures(CLI::App& app);
 void register_render_identification(CLI::App& render);
 
-/// For drawings (apps/render.cpp): the clockwise angle (deg) from grid north
-/// to true north at a local point, and the default title of a route chart.
-double true_north_deg(const LocalFrame& frame, const Eigen::Vector2d& at);
-std::string route_title(const std::string& name, const Route& route, double margin, const LocalFrame& frame);
-
 /// A reactive method named on the command line (simulate, render field): an
 /// unknown name is bad input (exit 1), as --graph's is for plan.
 ReactiveMethod reactive_method_option(const std::string& option, const std::string& name);

@@ -23,18 +23,6 @@ extern "C" const char* __lsan_default_options() { return "print_suppressions=0";
 
 namespace deepguide::app {
 
-double true_north_deg(const LocalFrame& frame, const Vec2& at) {
-  // Clockwise angle from the map's up (grid north) to true north.
-  return 90.0 - frame.true_north_angle(at) * 180.0 / std::numbers::pi;
-}
-
-std::string route_title(const std::string& name, const Route& route, double margin, const LocalFrame& frame) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, ": %.1f m, %zu waypoints, margin %g m  (%s)", route.length(), route.points.size(),
-                margin, frame.id().c_str());
-  return name + buf;
-}
-
 namespace {
 
 struct RenderRouteOptions {

@@ -1,5 +1,6 @@
 #include "deepguide/core/format.hpp"
 
+#include <cstdarg>
 #include <cstdio>
 
 namespace deepguide {
@@ -14,6 +15,18 @@ std::string general(double v, int significant) {
   char buf[400];
   std::snprintf(buf, sizeof buf, "%.*g", significant, v);
   return buf;
+}
+
+std::string printf_text(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
 }
 
 std::string point_text(double x, double y, int digits) { return "(" + fixed(x, digits) + ", " + fixed(y, digits) + ")"; }

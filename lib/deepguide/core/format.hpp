@@ -21,6 +21,9 @@ std::string clock_text(double seconds);
 /// One line of a command's text report: the label padded to column 18, the
 /// value, a newline ("length           12.00 m\n").
 std::string report_line(const std::string& label, const std::string& value);
+/// printf's formatting into a string of any length: the rows of a command's
+/// text tables ("%4zu %10.1f ...").
+std::string printf_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
 /// `s` with ASCII letters in lower case (names in files: units, extensions, attributes).
 std::string ascii_lower(std::string s);
 

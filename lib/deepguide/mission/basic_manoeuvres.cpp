@@ -246,15 +246,6 @@ double plan_duration(const MissionPlan& plan) {
   return t;
 }
 
-double turn_radius(const VehicleParams& vehicle, double speed_mps) {
-  return speed_mps / vehicle.autopilot.max_reference_turn_rate;
-}
-
-double route_turn_radius(const VehicleParams& vehicle, double speed_mps, double current_mps) {
-  constexpr double kHeadroom = 1.15;
-  return kHeadroom * turn_radius(vehicle, speed_mps + std::max(current_mps, 0.0));
-}
-
 MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles) {
   Builder b(mission.start, mission.start_depth_m);
   for (std::size_t i = 0; i < mission.manoeuvres.size(); ++i) {

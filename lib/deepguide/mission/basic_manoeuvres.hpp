@@ -79,16 +79,7 @@ bool joins_smoothly(const BasicManoeuvre& before, const BasicManoeuvre& next);
 /// How long the plan takes at its speeds and holds (s).
 double plan_duration(const MissionPlan& plan);
 
-/// The turn radius at `speed_mps` (the header).
-double turn_radius(const VehicleParams& vehicle, double speed_mps);
-
-/// The least radius a planned route should turn on for this vehicle to sail
-/// it at `speed_mps` through a current of up to `current_mps`: the course
-/// reference turns at most max_reference_turn_rate, over ground that is a
-/// radius of (speed + current) / rate; and 15 % more, so the path follower
-/// keeps turning rate in hand to correct its errors (at exactly the limit it
-/// can only fall behind a turn). Measured on mc1000: docs/SIMULATION.md.
-double route_turn_radius(const VehicleParams& vehicle, double speed_mps, double current_mps = 0.0);
+// turn_radius and route_turn_radius: vehicle/vehicle_params.hpp.
 
 /// Expands the mission (the header). `obstacles` (local frame) are where
 /// identify finds its object. Throws InputError naming the file and the

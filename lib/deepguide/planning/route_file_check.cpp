@@ -16,13 +16,10 @@ namespace {
 // The route against obstacle files: the verdict is the first unsafe part, else
 // the part that comes closest.
 RouteFileCheckReport check_on_obstacles(const RouteFileCheckOptions& o, const std::vector<RouteFilePart>& parts) {
-  const LoadedObstacles loaded = load_obstacles(o.obstacles, {o.crs, o.src_crs});
   // Files without an obstacle fix no frame: the route's start does (its UTM zone).
-  LocalFrame frame = loaded.frame;
-  if (loaded.obstacles.empty() && o.crs.empty()) {
-    const Vec2 start = parts.front().points.front().lonlat;
-    frame = LocalFrame::utm_for(start.x(), start.y());
-  }
+  const LoadedObstacles loaded =
+      load_obstacles(o.obstacles, {o.crs, o.src_crs, {}, {}, parts.front().points.front().lonlat});
+  const LocalFrame& frame = loaded.frame;
   const ObstacleField field(loaded.obstacles, o.margin_m);
   RouteFileCheckReport r;
   std::optional<RouteCheck> worst;

@@ -5,6 +5,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/mission/mission_environment.hpp"
 #include "deepguide/simulation/mission_run.hpp"
 
 namespace deepguide {
@@ -178,6 +179,24 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
     o.overlay_legend.push_back({style.conflict, 5.0, false, "object the sonar found (its estimate)"});
   }
   return render_chart(o, path);
+}
+
+ChartLayout render_mission_file(const std::string& mission, const std::string& path, const MissionFileFigure& o) {
+  const LoadedMission l = load_mission(mission);
+  const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
+  MissionFigure f = mission_figure_for(l.mission, l.plan, planned);
+  if (o.as_written) {
+    f.plan = &l.plan;
+    f.written = nullptr;
+  }
+  f.width_px = o.width_px;
+  const MissionPlan& shown = *f.plan;
+  f.title = !o.title.empty() ? o.title
+                             : printf_text("%s: %.2f km, %s; %zu conflict(s), %zu resolved",
+                                           printable(l.mission.name, 120).c_str(), shown.length_m / 1000.0,
+                                           clock_text(plan_duration(shown)).c_str(), planned.resolutions.size(),
+                                           planned.resolutions.size() - f.unresolved.size());
+  return render_mission(f, path);
 }
 
 }  // namespace deepguide

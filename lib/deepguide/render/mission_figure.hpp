@@ -72,4 +72,14 @@ MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan
 /// for a missing plan or what render_chart refuses.
 ChartLayout render_mission(const MissionFigure& figure, const std::string& path, const MissionStyle& style = {});
 
+struct MissionFileFigure {
+  std::string title;  ///< empty: "NAME: L km, T; N conflict(s), K resolved"
+  int width_px = 1200;
+  bool as_written = false;  ///< the plan as written, without mission control's changes
+};
+
+/// `render mission`: the mission file read, planned and drawn to `path`.
+/// Throws what load_mission and render_mission throw.
+ChartLayout render_mission_file(const std::string& mission, const std::string& path, const MissionFileFigure& options);
+
 }  // namespace deepguide

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "deepguide/geometry/polygon.hpp"
+#include "deepguide/planning/route.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/map_furniture.hpp"  // nice_scale_length
+#include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
 namespace deepguide {
@@ -97,5 +99,11 @@ RouteLayout route_layout(const RouteScene& scene, int width_px = 1200);
 /// Draws the scene to `path` (.png or .svg). Atomic: a failure leaves no file.
 /// Throws InputError naming the path on bad input or when writing fails.
 void render_route(const RouteScene& scene, const std::string& path, int width_px = 1200);
+
+/// The clockwise angle (deg) from grid north to true north at a local point
+/// (RouteScene::true_north_deg).
+double true_north_deg(const LocalFrame& frame, const Vec2& at);
+/// A route chart's default title: "NAME: L m, N waypoints, margin M m  (CRS)".
+std::string route_title(const std::string& name, const Route& route, double margin, const LocalFrame& frame);
 
 }  // namespace deepguide

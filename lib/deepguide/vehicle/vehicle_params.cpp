@@ -310,4 +310,13 @@ std::string vehicle_yaml(const VehicleParams& params) {
   return std::string(out.c_str()) + "\n";
 }
 
+double turn_radius(const VehicleParams& vehicle, double speed_mps) {
+  return speed_mps / vehicle.autopilot.max_reference_turn_rate;
+}
+
+double route_turn_radius(const VehicleParams& vehicle, double speed_mps, double current_mps) {
+  constexpr double kHeadroom = 1.15;
+  return kHeadroom * turn_radius(vehicle, speed_mps + std::max(current_mps, 0.0));
+}
+
 }  // namespace deepguide

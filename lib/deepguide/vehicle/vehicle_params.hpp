@@ -74,6 +74,17 @@ struct VehicleParams {
   bool operator==(const VehicleParams&) const = default;
 };
 
+/// The turn radius at `speed_mps` (the radius the autopilot turns on at its largest reference turn rate).
+double turn_radius(const VehicleParams& vehicle, double speed_mps);
+
+/// The least radius a planned route should turn on for this vehicle to sail
+/// it at `speed_mps` through a current of up to `current_mps`: the course
+/// reference turns at most max_reference_turn_rate, over ground that is a
+/// radius of (speed + current) / rate; and 15 % more, so the path follower
+/// keeps turning rate in hand to correct its errors (at exactly the limit it
+/// can only fall behind a turn). Measured on mc1000: docs/SIMULATION.md.
+double route_turn_radius(const VehicleParams& vehicle, double speed_mps, double current_mps = 0.0);
+
 /// Checks ranges and consistency; throws InputError naming `source` and the key.
 void validate(const VehicleParams& params, const std::string& source = "vehicle");
 

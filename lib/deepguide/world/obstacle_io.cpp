@@ -451,8 +451,9 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
     }
   }
   if (!frame) {
-    frame = west <= east ? LocalFrame::utm_for(0.5 * (west + east), 0.5 * (south + north))
-                         : LocalFrame::utm_for(0.0, 0.0);
+    const Eigen::Vector2d at = west <= east ? Eigen::Vector2d(0.5 * (west + east), 0.5 * (south + north))
+                                            : options.fallback_lonlat.value_or(Eigen::Vector2d(0.0, 0.0));
+    frame = LocalFrame::utm_for(at.x(), at.y());
   }
 
   LoadedObstacles out{{}, *frame, {}};

@@ -35,6 +35,9 @@ struct ObstacleReadOptions {
   std::vector<std::string> extra_fields = {};
   /// Layers to read (empty: every layer with geometry), e.g. a prepared chart's "obstacles".
   std::vector<std::string> layers = {};
+  /// Without local_crs, when no file holds an obstacle: the lon, lat whose
+  /// UTM zone is the frame (a command's start). None: the zone at 0, 0.
+  std::optional<Eigen::Vector2d> fallback_lonlat = std::nullopt;
 };
 
 struct ObstacleSourceInfo {
