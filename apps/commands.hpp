@@ -13,6 +13,10 @@ enum class ReactiveMethod;
 
 namespace deepguide::app {
 
+/// Parses the command line, runs the command and returns the exit code
+/// (apps/cli.cpp): what `main` does, callable in-process.
+int run(int argc, char** argv);
+
 /// Options every command that reads obstacles or charts shares.
 struct FrameOptions {
   std::string crs;      ///< --crs: local planning frame

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "deepguide/planning/graph_registry.hpp"
 #include "plan_command.hpp"
 
 namespace deepguide::app {
@@ -39,13 +40,12 @@ void register_plan(CLI::App& app) {
       "Operating depth (m); obstacles whose top_depth_m lies deeper than depth + --vertical-clearance are passed over");
   cmd->add_option("--vertical-clearance", r.vertical_clearance_m, "Vertical clearance above obstacle tops (m)")
       ->capture_default_str();
-  CLI::Option* graph =
-      cmd->add_option(
-             "--graph", c->graph,
-             "visibility (reduced polygon graph), visibility-full (the seed's), tangent (exact, curved), "
-             "quadtree (free cells' centres, the seed's Fig. 7), or octree (a route in depth over the sea floor)")
-          ->capture_default_str();
+  CLI::Option* graph = cmd->add_option("--graph", c->graph, graph_help_text())->capture_default_str();
   cmd->add_option("--search", c->search, "astar or dijkstra")->capture_default_str();
+  cmd->add_option("--max-expansions", r.max_expansions,
+                  "The search's budget: at most this many vertices examined per search (0: none); a search that "
+                  "runs out says so (exit 3)")
+      ->capture_default_str();
   cmd->add_flag("--json", c->out.json, "Print the summary as JSON");
   cmd->add_flag("--escape", r.problem.escape, "A start inside a safety zone first leaves it the shortest way");
   cmd->add_option("--render", c->out.render, "Also draw the route chart (obstacles, zones, route) as .png or .svg");

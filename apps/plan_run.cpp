@@ -11,6 +11,7 @@
 #include "deepguide/core/utc_time.hpp"
 #include "deepguide/mission/route_export.hpp"
 #include "deepguide/mission/route_plan_export.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
 #include "deepguide/world/obstacle_io.hpp"
@@ -38,7 +39,8 @@ LocalFrame read_frame_and_ends(PlanCommand& c) {
 
 void run_plan(PlanCommand& c) {
   RoutePlanRequest& r = c.request;
-  const bool in_depth = c.graph == "octree";
+  r.graph = parse_graph_kind(c.graph);
+  const bool in_depth = graph_entry(r.graph).can.in_depth;
   check_depth_flags(in_depth, c.depth,
                     c.cost != "length" || !r.current_file.empty() || !c.current_const.empty() || r.waypoint_grid_m ||
                         r.problem.escape || !r.replan_events.empty() || !c.depart.empty() || c.render_graph ||
@@ -51,7 +53,6 @@ void run_plan(PlanCommand& c) {
   check_outputs_apart(
       inputs, {{"-o", c.out.route_file}, {"--render", c.out.render}, {"--render-profile", c.depth.render_profile}});
   if (!c.out.route_file.empty()) route_file_format(c.out.route_file);  // a mission's .yaml is not a route
-  r.graph = in_depth ? GraphKind::quadtree : parse_graph_kind(c.graph);
   r.search = parse_search(c.search);
   r.cost = parse_cost_kind(c.cost);
   r.refine = !c.no_refine;

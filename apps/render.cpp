@@ -1,5 +1,6 @@
 // deepguide render route --obstacles FILE... --route ROUTE [--margin M] [--graph KIND] [--width PX] -o OUT.png|svg
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/route_scene.hpp"
@@ -42,13 +44,15 @@ void register_render_route(CLI::App& render) {
   CLI::App* cmd = render.add_subcommand(
       "route", "Draw obstacles, safety zones, optionally the planning graph, and a route as PNG or SVG");
   cmd->add_option("--obstacles", o->obstacles, "Obstacle files (GeoJSON, GeoPackage, Shapefile, CSV, ...)")
-      ->required()->expected(1, -1);
+      ->required()
+      ->expected(1, -1);
   cmd->add_option("--route", o->route, "Route file (GeoJSON, GPX, KML, ... with a LineString)")->required();
   cmd->add_option("-o,--output", o->output, "Image to write: .png or .svg")->required();
   add_frame_options(*cmd, o->frame);
   cmd->add_option("--margin", o->margin, "Safety margin drawn around every obstacle (m)")->capture_default_str();
   cmd->add_option("--tolerance", o->tolerance, "Zone polygon tolerance for --graph (m)")->capture_default_str();
-  cmd->add_option("--graph", o->graph, "Planning graph to draw: none, or a plan --graph kind (visibility, visibility-full, ...)")
+  cmd->add_option("--graph", o->graph,
+                  "Planning graph to draw: none, or a plan --graph kind (visibility, visibility-full, ...)")
       ->capture_default_str();
   cmd->add_option("--width", o->width, "Image width in pixels")
       ->capture_default_str()
@@ -61,14 +65,13 @@ void register_render_route(CLI::App& render) {
     }
     std::optional<GraphKind> graph;
     if (o->graph != "none") {
-      try {
-        graph = parse_graph_kind(o->graph);
-      } catch (const InputError& e) {
-        // The planner's message lists its graph kinds; "none" is ours.
-        std::string message = e.what();
-        if (const auto at = message.find("expected "); at != std::string::npos) message.insert(at + 9, "none, ");
-        throw InputError(message);
+      const auto plane = [](const GraphEntry& e) { return !e.can.in_depth; };
+      const std::vector<GraphEntry> entries = graph_entries();
+      if (std::none_of(entries.begin(), entries.end(),
+                       [&](const GraphEntry& e) { return e.name == o->graph && plane(e); })) {
+        throw InputError("--graph: expected none, " + graph_names_text(plane) + ", got '" + printable(o->graph) + "'");
       }
+      graph = GraphKind{o->graph};
     }
     const LoadedObstacles loaded = load_obstacles(o->obstacles, {o->frame.crs, o->frame.src_crs});
     const Route route = read_route(o->route, loaded.frame);
@@ -87,7 +90,8 @@ void register_render_route(CLI::App& render) {
                       : o->title;
     std::optional<Planner> planner;
     if (graph) {
-      planner.emplace(loaded.obstacles, PlannerOptions{.margin = o->margin, .tolerance = o->tolerance, .graph = *graph});
+      planner.emplace(loaded.obstacles,
+                      PlannerOptions{.margin = o->margin, .tolerance = o->tolerance, .graph = *graph});
       scene.zone_polygons = &planner->zone_polygons();
       scene.graph_edges = planner->graph_edges();
     }

@@ -290,15 +290,7 @@ CaseResult run_case(const Scenario& sc, GraphKind kind, double tolerance = kTole
   return r;
 }
 
-const char* kind_name(GraphKind k) {
-  switch (k) {
-    case GraphKind::visibility_full: return "visibility-full";
-    case GraphKind::visibility: return "visibility (reduced)";
-    case GraphKind::tangent: return "tangent";
-    case GraphKind::quadtree: return "quadtree";
-  }
-  return "?";
-}
+std::string kind_name(const GraphKind& k) { return k == GraphKind::visibility ? "visibility (reduced)" : k.name; }
 
 struct Options {
   std::vector<int> sizes{10, 50, 200, 1000};
@@ -372,7 +364,7 @@ int main(int argc, char** argv) {
         continue;
       }
       for (const Scenario& sc : scenarios[n]) {
-        std::fprintf(stderr, "[%6.1f s] N=%d %s scenario %d ...\n", ms_since(run_t0) / 1000.0, n, kind_name(kind),
+        std::fprintf(stderr, "[%6.1f s] N=%d %s scenario %d ...\n", ms_since(run_t0) / 1000.0, n, kind_name(kind).c_str(),
                      sc.index);
         const CaseResult r = run_case(sc, kind);
         cases.push_back(r);
@@ -420,7 +412,7 @@ int main(int argc, char** argv) {
       const auto ok = oks(cs);
       const double side = scenarios[n][0].side;
       if (ok.empty()) {
-        std::printf("| %d | %.0f | %s | 0 | %s | | | | | | | | | | |\n", n, side, kind_name(kind),
+        std::printf("| %d | %.0f | %s | 0 | %s | | | | | | | | | | |\n", n, side, kind_name(kind).c_str(),
                     cs.empty() ? "not run" : cs.front().message);
         continue;
       }
@@ -449,7 +441,7 @@ int main(int argc, char** argv) {
         note = " (first took > " + fmt("%.0f", kSlowS) + " s; rest not run)";
       }
       std::printf("| %d | %.0f | %s | %zu%s | %s | %s | %s | %s | %s (%s) | %s | %.0f | %.0f | %d/%zu | %d/%d | %s |\n",
-                  n, side, kind_name(kind), ok.size(), note.c_str(), ms(median(ctor)).c_str(),
+                  n, side, kind_name(kind).c_str(), ok.size(), note.c_str(), ms(median(ctor)).c_str(),
                   ms(median(build)).c_str(), ms(median(query)).c_str(), ms(median(solve)).c_str(),
                   ms(median(total)).c_str(), ms(max_of(total)).c_str(), ms(median(cpu)).c_str(), median(verts),
                   median(edges), found, ok.size(), safe, found,
@@ -484,13 +476,13 @@ int main(int argc, char** argv) {
         if (r.status == Status::ok && r.found && r.single_found) dev.push_back(r.single_route_m / r.route_m - 1.0);
       }
       if (count == 0) {
-        std::printf("| %d | %s | 0 | | | | | | | | | |\n", n, kind_name(kind));
+        std::printf("| %d | %s | 0 | | | | | | | | | |\n", n, kind_name(kind).c_str());
         continue;
       }
       double worst = 0.0;
       for (double d : dev) worst = std::max(worst, std::abs(d));
       std::printf("| %d | %s | %d | %s | %s | %s | %.0f (%.0f) | %.0f | %.0f | %d/%d | %d/%d | %s |\n", n,
-                  kind_name(kind), count, ms(median(t)).c_str(), ms(max_of(t)).c_str(), ms(median(c)).c_str(),
+                  kind_name(kind).c_str(), count, ms(median(t)).c_str(), ms(max_of(t)).c_str(), ms(median(c)).c_str(),
                   median(rounds), max_of(rounds), median(used), median(verts), found, count, safe, found,
                   dev.empty() ? "–" : fmt("%.1e", worst).c_str());
     }
@@ -559,11 +551,11 @@ int main(int argc, char** argv) {
     for (GraphKind kind : kinds) {
       const auto& c0 = res[qn][kind];
       if (c0.empty() || c0.front().status != Status::ok) {
-        std::printf("| %s | %s | | | | | | | | |\n", kind_name(kind), c0.empty() ? "not run" : c0.front().message);
+        std::printf("| %s | %s | | | | | | | | |\n", kind_name(kind).c_str(), c0.empty() ? "not run" : c0.front().message);
         continue;
       }
       std::fprintf(stderr, "[%6.1f s] prebuilt N=%d %s: %d queries ...\n", ms_since(run_t0) / 1000.0, qn,
-                   kind_name(kind), opt.queries);
+                   kind_name(kind).c_str(), opt.queries);
       Planner planner(sc.obstacles, PlannerOptions{.margin = kMargin, .tolerance = kTolerance, .graph = kind});
       std::vector<double> q, s, c;
       int found = 0;
@@ -579,7 +571,7 @@ int main(int argc, char** argv) {
         found += out.result.found;
       }
       prebuilt_solve_median[kind] = median(s);
-      std::printf("| %s | %s | %d/%zu | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind), ms(build).c_str(),
+      std::printf("| %s | %s | %d/%zu | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind).c_str(), ms(build).c_str(),
                   found, queries.size(), ms(median(q)).c_str(), ms(quantile(q, 0.9)).c_str(), ms(max_of(q)).c_str(),
                   ms(median(s)).c_str(), ms(quantile(s, 0.9)).c_str(), ms(max_of(s)).c_str(), ms(median(c)).c_str());
     }
@@ -603,7 +595,7 @@ int main(int argc, char** argv) {
     }
     const double pm = prebuilt_solve_median.count(kind) ? prebuilt_solve_median[kind] : std::nan("");
     auto verdict = [](double v, double limit) { return std::isnan(v) ? "–" : v < limit ? "yes" : "**no**"; };
-    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind), ms(median(single)).c_str(),
+    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind).c_str(), ms(median(single)).c_str(),
                 ms(max_of(single)).c_str(), verdict(max_of(single), 50.0), ms(median(total)).c_str(),
                 ms(max_of(total)).c_str(), verdict(max_of(total), 50.0), ms(pm).c_str(), verdict(pm, 1.0));
   }

@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     // One rock 25 m across, reported on the route 40 % along, when the vehicle has sailed 30 %.
     const double length = first.length();
     const Vec2 c = first.point_at(0.4 * length);
-    Detection d;
+    ReplanEvent d;
     d.along_m = 0.3 * length;
     EllipticCylinder rock;
     rock.id = "rock";

@@ -1,5 +1,9 @@
 # Installs the build into a scratch prefix, then configures, builds and runs
-# the consumer project against it.
+# the consumer project against it. -DSTRICT_HEADERS=ON: each header compiled
+# with nothing precompiled (scripts/check_headers.sh).
+if(NOT DEFINED STRICT_HEADERS)
+  set(STRICT_HEADERS OFF)
+endif()
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -8,11 +12,12 @@ if(rc)
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}/build
                         -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
+                        -DSTRICT_HEADERS=${STRICT_HEADERS}
                 RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "configure of the consumer failed: ${rc}")
 endif()
-execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build RESULT_VARIABLE rc)
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build --parallel 2 RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "build of the consumer failed: ${rc}")
 endif()

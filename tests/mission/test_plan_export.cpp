@@ -17,7 +17,7 @@
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
-#include "deepguide/mission/export_writers.hpp"
+#include "deepguide/mission/moos_helm.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/plan_export.hpp"
 #include "test_support.hpp"
@@ -306,9 +306,9 @@ TEST(PlanExport, MoosBehavioursReadBackInLocalCoordinates) {
   for (std::size_t i = 1; i < csv_depth.size(); ++i) changes += std::abs(csv_depth[i] - csv_depth[i - 1]) > 0.5;
   EXPECT_GE(changes, 3u);
   // MOOSGeodesy's zones: Norway's 32V at 60 N 5 E (31 by the plain rule), Svalbard's 33X at 78 N 15 E.
-  EXPECT_EQ(detail::moos_local_utm(5.0, 60.0).id(), "EPSG:32632");
-  EXPECT_EQ(detail::moos_local_utm(15.0, 78.0).id(), "EPSG:32633");
-  EXPECT_EQ(detail::moos_local_utm(10.2, 54.4).id(), "EPSG:32632");
+  EXPECT_EQ(moos_local_utm(5.0, 60.0).id(), "EPSG:32632");
+  EXPECT_EQ(moos_local_utm(15.0, 78.0).id(), "EPSG:32633");
+  EXPECT_EQ(moos_local_utm(10.2, 54.4).id(), "EPSG:32632");
 }
 
 TEST(PlanExport, OurYamlReadsBackAsTheBasicManoeuvres) {

@@ -50,13 +50,13 @@ TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
     const PlanResult first = graph.solve(problem, SearchAlgorithm::astar);
     if (!first.found) continue;
     // Ten sonar reports of small rocks on or beside the route ahead, 40 m apart in time.
-    std::vector<Detection> detections;
+    std::vector<ReplanEvent> detections;
     const double length = first.route.length();
     for (int k = 0; k < 10; ++k) {
       const double s = 40.0 * (k + 1);
       const Vec2 c = first.route.point_at(std::min(length - 60.0, s + 30.0 + 60.0 * u(rng))) +
                      Vec2(30.0 * (u(rng) - 0.5), 30.0 * (u(rng) - 0.5));
-      Detection d;
+      ReplanEvent d;
       d.along_m = s;
       d.obstacles.ellipses.push_back(disc(c.x(), c.y(), 3.0 + 10.0 * u(rng), "rock" + std::to_string(k)));
       detections.push_back(d);
@@ -123,13 +123,13 @@ TEST(DStarLite, TheVehicleNeverShuttlesBetweenTwoCells) {
     }
     return -1;
   };
-  std::vector<Detection> detections;
+  std::vector<ReplanEvent> detections;
   Replay replay = replay_detections(graph, problem, detections, 5.0);
   int in_use = gap_of(replay.initial_route);
   ASSERT_GE(in_use, 0);
   int flips = 0;  // the route changes side of the straight line
   for (int k = 0; k < 5; ++k) {
-    Detection d;
+    ReplanEvent d;
     d.along_m = 5.0 + 15.0 * k;
     const double c = gaps[in_use];
     d.obstacles.polygons.push_back(box(590, c - 20.0, 610, c + 20.0, "plug" + std::to_string(k)));
@@ -173,13 +173,13 @@ TEST(DStarLite, DetectionsNeedADistanceAlongTheRoute) {
   const ObstacleField field(set, 5.0);
   QuadtreeGraph graph(field, area(0, 0, 600, 600, 8.0));
   for (double bad : {-1.0, std::numeric_limits<double>::quiet_NaN()}) {
-    Detection d;
+    ReplanEvent d;
     d.along_m = bad;
     d.obstacles.ellipses.push_back(disc(200, 300, 5, "x"));
     EXPECT_THROW(replay_detections(graph, {{10, 300}, {590, 300}}, {d}, 5.0), InputError);
   }
   // A report that walls the vehicle in: the repair says so, and the vehicle stops.
-  Detection wall;
+  ReplanEvent wall;
   wall.along_m = 0.0;
   wall.obstacles.polygons.push_back(box(100, -10, 110, 610, "new-wall"));
   const Replay r = replay_detections(graph, {{10, 300}, {590, 300}}, {wall}, 5.0);

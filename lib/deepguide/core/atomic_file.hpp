@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 class AtomicOutput {
  public:

@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// Bad input: a file, a feature, a field or an option value. Exit code 1.
 class InputError : public std::runtime_error {

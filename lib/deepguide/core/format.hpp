@@ -6,7 +6,9 @@
 #include <Eigen/Core>
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// `v` with `digits` decimals ("%.*f").
 std::string fixed(double v, int digits);

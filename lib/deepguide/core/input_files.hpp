@@ -5,7 +5,9 @@
 
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// Throws InputError "PATH: expected a file, got a named pipe (FIFO)" (or a
 /// socket, a device) for such a path; returns for files, folders, paths that

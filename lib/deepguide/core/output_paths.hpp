@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 struct NamedPath {
   std::string option;  ///< e.g. "-o", "--render", "--obstacles"

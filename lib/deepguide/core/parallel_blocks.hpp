@@ -13,7 +13,9 @@
 #include <thread>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// The threads worth using for CPU-bound work: the machine's cores, at least 1.
 inline std::size_t hardware_workers() { return std::max<std::size_t>(1, std::thread::hardware_concurrency()); }

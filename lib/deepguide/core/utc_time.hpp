@@ -14,7 +14,9 @@
 #include <string>
 #include <string_view>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// Seconds since 1970-01-01T00:00:00Z; nullopt for anything else, and for a
 /// time without a zone when `zone_required` (a clock of an unknown place).

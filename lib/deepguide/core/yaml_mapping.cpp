@@ -94,7 +94,7 @@ std::string Range::text() const {
 }
 
 Mapping::Mapping(const YAML::Node& node, std::string source, std::string prefix,
-                 std::initializer_list<const char*> known, const std::string& expected)
+                 const std::vector<std::string>& known, const std::string& expected)
     : node_(node), source_(std::move(source)), prefix_(std::move(prefix)) {
   if (!node.IsMap()) {
     const std::string where = prefix_.empty() ? std::string() : prefix_.substr(0, prefix_.size() - 1);
@@ -103,9 +103,9 @@ Mapping::Mapping(const YAML::Node& node, std::string source, std::string prefix,
   for (const auto& kv : node) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
     const InputLocation at{source_, line_of(kv.first), printable(prefix_ + key)};
-    if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) == known.end()) {
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
       std::string list;
-      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       throw input_error(at, "one of the known keys (" + list + ")", "an unknown key");
     }
     for (const auto& [k, first] : entries_)
@@ -126,18 +126,29 @@ InputLocation Mapping::where(const char* key) const {
   return {source_, i >= 0 ? line_of(entries_[static_cast<std::size_t>(i)].second) : line_of(node_), prefix_ + key};
 }
 
-double Mapping::number(const char* key, const Range& r) const {
+double Mapping::scalar_number(const char* key, const char* what) const {
   const YAML::Node v = value(key);
-  if (!v.IsDefined()) throw input_error(where(key), r.text(), "nothing");
-  const std::string expected = r.what + std::string(" (a number)");
+  const std::string expected = what + std::string(" (a number)");
   if (!v.IsScalar()) throw input_error(where(key), expected, v.IsNull() ? "nothing" : "a list or mapping");
-  double x = 0.0;
   try {
-    x = v.as<double>();
+    return v.as<double>();
   } catch (const YAML::Exception&) {
     throw input_error(where(key), expected, "'" + printable(v.Scalar()) + "'");
   }
-  if (!r.holds(x)) throw input_error(where(key), r.text(), printable(v.Scalar()));
+}
+
+double Mapping::number(const char* key, const Range& r) const {
+  if (!value(key).IsDefined()) throw input_error(where(key), r.text(), "nothing");
+  const double x = scalar_number(key, r.what);
+  if (!r.holds(x)) throw input_error(where(key), r.text(), printable(value(key).Scalar()));
+  return x;
+}
+
+double Mapping::finite_number(const char* key, const char* what) const {
+  const double x = scalar_number(key, what);
+  if (!std::isfinite(x)) {
+    throw input_error(where(key), what + std::string(" (a finite number)"), printable(value(key).Scalar()));
+  }
   return x;
 }
 

@@ -45,6 +45,11 @@ class Mapping {
   /// holds a key outside `known` or a key twice. `prefix` is put before key
   /// names in messages ("sonar." for a nested mapping).
   Mapping(const YAML::Node& node, std::string source, std::string prefix, std::initializer_list<const char*> known,
+          const std::string& expected)
+      : Mapping(node, std::move(source), std::move(prefix), std::vector<std::string>(known.begin(), known.end()),
+                expected) {}
+  /// The same with the known keys from a table (the vehicle file's fields).
+  Mapping(const YAML::Node& node, std::string source, std::string prefix, const std::vector<std::string>& known,
           const std::string& expected);
 
   bool has(const char* key) const { return index(key) >= 0; }
@@ -60,6 +65,8 @@ class Mapping {
   double number_or(const char* key, const Range& r, double fallback) const {
     return has(key) ? number(key, r) : fallback;
   }
+  /// A finite number (required), `what` it is in messages; its range is the caller's to check.
+  double finite_number(const char* key, const char* what) const;
   /// A non-empty scalar (required).
   std::string text(const char* key, const char* expected) const;
   /// A path, relative to `base_dir` unless absolute.
@@ -67,6 +74,8 @@ class Mapping {
 
  private:
   int index(const char* key) const;
+  /// The value as a number, `what` it is in messages (no range).
+  double scalar_number(const char* key, const char* what) const;
   YAML::Node node_;
   std::string source_, prefix_;
   std::vector<std::pair<std::string, YAML::Node>> entries_;  // key text, key node (for its line)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/simulation/route_following.hpp"
@@ -17,8 +18,9 @@ namespace {
 
 [[noreturn]] void unknown(const std::string& text, const std::string& why) {
   throw InputError("unknown method '" + printable(text) + "'" + (why.empty() ? "" : " (" + why + ")") +
-                   ": expected geometric, dipole, potential, or GRAPH[:SEARCH][:COST] with GRAPH visibility, "
-                   "visibility-full, tangent or quadtree, SEARCH astar or dijkstra, COST length, time or energy");
+                   ": expected geometric, dipole, potential, or GRAPH[:SEARCH][:COST] with GRAPH " +
+                   graph_names_text([](const GraphEntry& e) { return !e.can.in_depth; }) +
+                   ", SEARCH astar or dijkstra, COST length, time or energy");
 }
 
 void fill_from(MethodRun& run, const SimulationResult& sim) {
@@ -49,8 +51,11 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
   options.search = m.search;
   // Routes that turn no tighter than the vehicle can at the speed it sails
   // them (the tangent graph along rounded zones, the visibility graphs and
-  // the smoothed quadtree with rounded corners), planned with room for tracking.
-  options.turn_radius_m = route_turn_radius(sc.vehicle, sc.reactive.speed_mps, sc.current.norm());
+  // the smoothed quadtree with rounded corners), planned with room for
+  // tracking. A graph that keeps no radius gives its corners as they are.
+  if (graph_entry(m.graph).can.turn_radius) {
+    options.turn_radius_m = route_turn_radius(sc.vehicle, sc.reactive.speed_mps, sc.current.norm());
+  }
   options.margin += kPathTrackingAllowance_m;
   options.quadtree.smooth = true;
   if (m.cost != CostKind::length) {
@@ -127,8 +132,10 @@ EvalMethod parse_eval_method(const std::string& text) {
       unknown(text, "no search or cost '" + printable(parts[i]) + "'");
     }
   }
-  if (m.cost != CostKind::length && m.graph == GraphKind::tangent) {
-    unknown(text, "the tangent graph prices by length only");
+  const GraphEntry& graph = graph_entry(m.graph);
+  if (graph.can.in_depth) unknown(text, "the " + graph.name + " graph plans in depth; the scenarios are in the plane");
+  if (m.cost != CostKind::length && !graph.can.weighs_cost) {
+    unknown(text, "the " + graph.name + " graph prices by length only");
   }
   m.name = to_string(m.graph);
   if (m.search != SearchAlgorithm::astar) m.name += ":" + to_string(m.search);

@@ -23,12 +23,13 @@
 #include <optional>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct EvalMethod {
   std::string name;  ///< canonical: "quadtree:dijkstra", "visibility:astar:energy" shortened to what differs from the defaults

@@ -11,9 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/evaluation/evaluate.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Writes the figures and report.html into `dir`; returns the figure file names.
 std::vector<std::string> write_report(const std::string& dir, const EvaluationRun& run);

@@ -17,9 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/evaluation/eval_method.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct EvalRow {
   std::size_t scenario_index = 0;  ///< position in the suite

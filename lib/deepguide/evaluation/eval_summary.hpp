@@ -21,10 +21,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/evaluation/evaluate.hpp"
 #include "deepguide/evaluation/monte_carlo.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MethodStats {
   std::string method;

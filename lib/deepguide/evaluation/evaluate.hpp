@@ -28,11 +28,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/evaluation/eval_method.hpp"
 #include "deepguide/evaluation/eval_rows.hpp"
 #include "deepguide/evaluation/suite.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Shard {
   int index = 1;  ///< K, 1 .. count

@@ -27,11 +27,12 @@
 #include <span>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MonteCarloParams {
   int scenarios = 500;

@@ -31,10 +31,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/evaluation/monte_carlo.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct SuiteScenario {
   std::string id;    ///< the file's stem, or scenario-NNNN

@@ -17,9 +17,10 @@
 #include <array>
 #include <optional>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct CircleArc {
   Vec2 from{0.0, 0.0}, to{0.0, 0.0}, centre{0.0, 0.0};

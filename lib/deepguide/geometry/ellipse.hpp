@@ -11,9 +11,10 @@
 
 #include <Eigen/Core>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Ellipse {
   Vec2 center{0.0, 0.0};

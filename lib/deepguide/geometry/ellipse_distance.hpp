@@ -9,9 +9,10 @@
 // converges to the last bit without any starting guess: robust for points
 // inside, outside, on the axes and at the centre.
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct EllipseProjection {
   Vec2 point;       ///< closest point on the boundary

@@ -5,9 +5,10 @@
 
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Parameters t in [0, 1] (ascending) where the segment p0 -> p1 crosses or
 /// touches the boundary of `e`.

@@ -19,9 +19,10 @@
 #include <optional>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The two tangent points on `e` seen from `p`: `left` lies to the left of the
 /// ray from p through the centre, `right` to the right. Empty if p is not

@@ -18,9 +18,10 @@
 #include <numbers>
 #include <type_traits>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/angles.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// A function's value and its derivative at one angle.
 struct ValueSlope {

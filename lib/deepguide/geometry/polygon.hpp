@@ -10,9 +10,10 @@
 #include <boost/geometry/geometries/box.hpp>
 #include <boost/geometry/strategies/strategies.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 using BgPoint = boost::geometry::model::d2::point_xy<double>;
 using BgPolygon = boost::geometry::model::polygon<BgPoint>;

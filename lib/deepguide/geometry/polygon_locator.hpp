@@ -17,9 +17,10 @@
 #include <limits>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 class PolygonLocator {
  public:

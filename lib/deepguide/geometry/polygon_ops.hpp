@@ -17,9 +17,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Contains `exact`, lies within 0.95 tol of it (tol > 0).
 BgMultiPolygon simplify_outward(const BgPolygon& exact, double tol);

@@ -16,10 +16,11 @@
 
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/polygon.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct SafetyZone {
   Ellipse ellipse;

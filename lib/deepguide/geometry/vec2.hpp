@@ -5,7 +5,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 using Vec2 = Eigen::Vector2d;
 
 /// z of the 3-D cross product: positive when b lies anticlockwise of a.

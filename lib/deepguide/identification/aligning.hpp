@@ -42,10 +42,11 @@
 #include <optional>
 #include <span>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/identification/lee_goal.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct AlignParams {
   double standoff_m = 10.0;          ///< safety margin round the object; the goal lies on this zone, > 0

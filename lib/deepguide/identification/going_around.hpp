@@ -32,9 +32,10 @@
 // path point, in the travel direction, from the moment tracking starts. The
 // run is done when `laps` laps are complete (status done, speed 0).
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct AroundParams {
   double distance_m = 20.0;    ///< D, from the object's footprint, > 0

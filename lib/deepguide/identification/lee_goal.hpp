@@ -19,9 +19,10 @@
 // Without a current there is no lee: the direction is then the one from the
 // object's centre towards the vehicle (the near side), see align_direction.
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The direction the goal lies in from the object: the current's (unit) when
 /// it is faster than `still_mps`, else from the centre towards `vehicle`

@@ -20,10 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/biarc.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The offset curve's point for ellipse parameter t.
 Vec2 offset_point(const Ellipse& object, double distance_m, double t);

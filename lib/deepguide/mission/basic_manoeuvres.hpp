@@ -33,11 +33,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/biarc.hpp"
 #include "deepguide/mission/mission.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct BasicManoeuvre {
   enum class Kind { line, arc, point };

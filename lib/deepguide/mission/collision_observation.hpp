@@ -19,11 +19,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Conflict {
   std::size_t basic = 0;       ///< the (first) basic manoeuvre endangered

@@ -29,8 +29,4 @@ void write_plan_rtz(const std::string& path, const ExportInput& in);
 /// `path`, never the temporary file, on one line.
 void write_atomically(const std::string& path, bool overwrite, const std::function<void(const std::string&)>& write);
 
-/// The frame MOOSGeodesy's LatLong2LocalUTM works in for an origin: its UTM
-/// zone as the classic LLtoUTM picks it (Norway's 32V and Svalbard's zones included).
-LocalFrame moos_local_utm(double lon_deg, double lat_deg);
-
 }  // namespace deepguide::detail

@@ -21,10 +21,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/world/water_volume.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct TrackDanger {
   std::vector<TrackPoint> points;  ///< the track, at most step_m apart

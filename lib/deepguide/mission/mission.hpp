@@ -17,12 +17,13 @@
 #include <variant>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Follow waypoints in order from wherever the vehicle is.
 struct TrackSpec {

@@ -30,12 +30,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/collision_observation.hpp"
 #include "deepguide/mission/mission.hpp"
 #include "deepguide/mission/mission_environment.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Resolution {
   Conflict conflict;  ///< as observed on the plan of the time (along_m in that plan)

@@ -9,12 +9,13 @@
 #include <memory>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MissionEnvironment {
   ObstacleSet obstacles;

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/output_paths.hpp"
 #include "deepguide/mission/collision_observation.hpp"
 #include "deepguide/mission/mission_control.hpp"
@@ -19,7 +20,7 @@
 #include "deepguide/mission/plan_check.hpp"
 #include "deepguide/mission/route_export.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// What `mission check` reports: the plan as written, its conflicts, which of
 /// them mission control cannot resolve, and the legs a constant current beats.

@@ -47,11 +47,9 @@ double quantile(std::vector<double> v, double q) {
 
 }  // namespace
 
-namespace detail {
 LocalFrame moos_local_utm(double lon_deg, double lat_deg) {
   return LocalFrame::from_user_crs("EPSG:" + std::to_string(moos_utm_epsg(lon_deg, lat_deg)), "MOOS UTM zone");
 }
-}  // namespace detail
 
 std::vector<Vec2> MoosPlan::track() const {
   std::vector<Vec2> t{Vec2(0.0, 0.0)};
@@ -63,7 +61,7 @@ MoosPlan moos_plan(const ExportRoute& route) {
   const std::vector<ExportWaypoint>& wps = route.waypoints;
   if (wps.empty()) throw InputError("a MOOS-IvP plan needs at least one waypoint");
   const Vec2 origin_ll = wps.front().lonlat;
-  MoosPlan plan{detail::moos_local_utm(origin_ll.x(), origin_ll.y()), origin_ll};
+  MoosPlan plan{moos_local_utm(origin_ll.x(), origin_ll.y()), origin_ll};
   // The helm captures a waypoint within the capture radius, or passes it when it was within the
   // slip radius and the distance grows; a waypoint inside the turning circle is orbited forever
   // with small radii, so both grow with the turn, and the lead keeps the vehicle on the track line.

@@ -12,11 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/mission/route_export.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MoosPhase {
   enum class Kind { waypoints, reach_depth, hold };
@@ -90,5 +91,9 @@ struct SailedReport {
 };
 
 SailedReport compare_sailed(const MoosPlan& plan, const MoosLog& log);
+
+/// The frame MOOSGeodesy's LatLong2LocalUTM works in for an origin: its UTM
+/// zone as the classic LLtoUTM picks it (Norway's 32V and Svalbard's zones included).
+LocalFrame moos_local_utm(double lon_deg, double lat_deg);
 
 }  // namespace deepguide

@@ -13,11 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/collision_observation.hpp"
 #include "deepguide/mission/mission_environment.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MissionPlanCheck {
   bool safe = true;

@@ -10,11 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission.hpp"
 #include "deepguide/mission/route_export.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The plan's waypoints: the start, then each line's end, the chords' ends
 /// along arcs (with the arc's radius), and each point (with its hold and depth).

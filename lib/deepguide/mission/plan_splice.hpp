@@ -10,9 +10,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Where the plan is `along_m` metres along the mission.
 struct PlanPosition {

@@ -30,12 +30,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class ExportFormat { yaml, geojson, gpx, kml, csv, qgc_plan, moos, rtz };
 

@@ -6,9 +6,10 @@
 
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Writes each repaired route to its name in report.repair_files, then the
 /// route to `path` (overwriting). Throws InputError for a name whose

@@ -34,7 +34,9 @@
 #include <utility>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 enum class CellState : std::uint8_t { free, occupied, mixed };
 

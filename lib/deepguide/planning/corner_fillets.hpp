@@ -19,9 +19,10 @@
 #include <optional>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/route.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct FilletedRoute {
   std::vector<RouteLeg> legs;  ///< lines and arcs, empty when a fillet did not fit

@@ -34,10 +34,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/edge_cost.hpp"
 #include "deepguide/world/current_field.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class CostKind { length, time, energy };
 

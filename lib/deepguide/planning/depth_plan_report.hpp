@@ -13,12 +13,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/depth_planning.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct DepthPlanRequest {
   ObstacleSet obstacles;  ///< in the local frame

@@ -10,12 +10,13 @@
 
 #include <memory>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/octree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct DepthPlanOptions {
   double margin = 5.0;            ///< horizontal safety margin to every footprint (m)

@@ -27,9 +27,10 @@
 #include <utility>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/graph_search.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 class DStarLite {
  public:

@@ -32,10 +32,11 @@
 #include <functional>
 #include <optional>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/vehicle/energy_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The current (m/s, local frame) at a point, steady.
 using CurrentAt = std::function<Vec2(const Vec2&)>;

@@ -12,23 +12,33 @@ namespace deepguide {
 namespace {
 
 struct TargetReached {};
+struct Stopped {
+  SearchStop why;
+};
 
-// Counts examined vertices and stops the search at the target (Boost's
-// documented way to end a search early is to throw from a visitor). One
-// template for both searches' visitor bases.
+// Counts examined vertices and stops the search at the target, or when the
+// budget runs out (Boost's documented way to end a search early is to throw
+// from a visitor). One template for both searches' visitor bases.
 template <class Base>
 class StopAtTarget : public Base {
  public:
-  StopAtTarget(GraphVertex target, std::size_t& expanded) : target_(target), expanded_(&expanded) {}
+  StopAtTarget(GraphVertex target, std::size_t& expanded, const SearchBudget& budget)
+      : target_(target), expanded_(&expanded), budget_(&budget) {}
   template <class Graph>
   void examine_vertex(GraphVertex v, const Graph&) const {
+    if (v == target_) {
+      ++*expanded_;
+      throw TargetReached{};
+    }
+    if (budget_->max_expansions > 0 && *expanded_ >= budget_->max_expansions) throw Stopped{SearchStop::budget};
+    if (budget_->cancelled && *expanded_ % 256 == 0 && budget_->cancelled()) throw Stopped{SearchStop::cancelled};
     ++*expanded_;
-    if (v == target_) throw TargetReached{};
   }
 
  private:
   GraphVertex target_;
   std::size_t* expanded_;
+  const SearchBudget* budget_;
 };
 
 template <class Graph>
@@ -45,7 +55,8 @@ namespace {
 template <class Graph, class WeightMap>
 void run_search(const Graph& graph, GraphVertex source, GraphVertex target, SearchAlgorithm algorithm,
                 const std::function<double(GraphVertex)>& heuristic, WeightMap weight, std::vector<GraphVertex>& pred,
-                std::vector<double>& dist, std::size_t& expanded) {
+                std::vector<double>& dist, const SearchBudget& budget, SearchResult& result) {
+  std::size_t& expanded = result.expanded;
   try {
     if (algorithm == SearchAlgorithm::astar) {
       std::vector<double> rank(dist.size(), std::numeric_limits<double>::infinity());
@@ -57,16 +68,18 @@ void run_search(const Graph& graph, GraphVertex source, GraphVertex target, Sear
                               .distance_map(dist.data())
                               .rank_map(rank.data())
                               .weight_map(weight)
-                              .visitor(StopAtTarget<boost::default_astar_visitor>(target, expanded)));
+                              .visitor(StopAtTarget<boost::default_astar_visitor>(target, expanded, budget)));
     } else {
       boost::dijkstra_shortest_paths(graph, source,
                                      boost::vertex_index_map(boost::typed_identity_property_map<GraphVertex>())
                                          .predecessor_map(pred.data())
                                          .distance_map(dist.data())
                                          .weight_map(weight)
-                                         .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, expanded)));
+                                         .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, expanded, budget)));
     }
   } catch (const TargetReached&) {
+  } catch (const Stopped& s) {
+    result.stopped = s.why;
   }
 }
 
@@ -74,7 +87,7 @@ void run_search(const Graph& graph, GraphVertex source, GraphVertex target, Sear
 SearchResult finish(GraphVertex source, GraphVertex target, const std::vector<GraphVertex>& pred,
                     const std::vector<double>& dist, SearchResult& result) {
   // Boost initialises distances to numeric_limits::max() as its infinity.
-  if (!(dist[target] < std::numeric_limits<double>::max())) return result;
+  if (result.stopped != SearchStop::none || !(dist[target] < std::numeric_limits<double>::max())) return result;
   result.found = true;
   result.cost = dist[target];
   for (GraphVertex v = target;; v = pred[v]) {
@@ -89,14 +102,14 @@ SearchResult finish(GraphVertex source, GraphVertex target, const std::vector<Gr
 
 SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
                            SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
-                           const EdgeCostFn& edge_cost) {
+                           const EdgeCostFn& edge_cost, const SearchBudget& budget) {
   const std::size_t n = boost::num_vertices(graph);
   std::vector<GraphVertex> pred(n);
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   SearchResult result;
   if (!edge_cost) {
-    run_search(graph, source, target, algorithm, heuristic, boost::get(boost::edge_weight, graph), pred, dist,
-               result.expanded);
+    run_search(graph, source, target, algorithm, heuristic, boost::get(boost::edge_weight, graph), pred, dist, budget,
+               result);
   } else {
     // Boost reads an edge's weight several times (the negative-weight check,
     // then the relaxation); a priced edge is kept with the label it was priced at.
@@ -112,21 +125,33 @@ SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, Graph
       return it->second.second;
     };
     run_search(graph, source, target, algorithm, heuristic, boost::make_function_property_map<Edge, double>(weight),
-               pred, dist, result.expanded);
+               pred, dist, budget, result);
   }
   return finish(source, target, pred, dist, result);
 }
 
 SearchResult shortest_path(const ImplicitGraph& graph, GraphVertex source, GraphVertex target,
-                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic) {
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
+                           const SearchBudget& budget) {
   const std::size_t n = graph.vertex_count;
   std::vector<GraphVertex> pred(n);
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   SearchResult result;
   const auto weight = [](const ImplicitEdge& e) { return e.cost; };
   run_search(graph, source, target, algorithm, heuristic, boost::make_function_property_map<ImplicitEdge, double>(weight),
-             pred, dist, result.expanded);
+             pred, dist, budget, result);
   return finish(source, target, pred, dist, result);
+}
+
+std::string search_stop_message(SearchStop stop, std::size_t expanded) {
+  switch (stop) {
+    case SearchStop::none: return "";
+    case SearchStop::budget:
+      return "the search stopped after " + std::to_string(expanded) + " vertices, its budget; no route is proven missing";
+    case SearchStop::cancelled:
+      return "the search was cancelled after " + std::to_string(expanded) + " vertices";
+  }
+  return "";
 }
 
 }  // namespace deepguide

@@ -7,12 +7,15 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/planning/implicit_graph.hpp"
+#include "deepguide/planning/route.hpp"  // SearchBudget, SearchStop
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 using PlanningGraph =
     boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS, boost::no_property,
@@ -23,6 +26,7 @@ enum class SearchAlgorithm { astar, dijkstra };
 
 struct SearchResult {
   bool found = false;
+  SearchStop stopped = SearchStop::none;  ///< not none: found is false, and no route is proven missing
   std::vector<GraphVertex> path;  ///< source ... target
   double cost = 0.0;
   std::size_t expanded = 0;  ///< vertices examined (popped from the queue)
@@ -43,10 +47,15 @@ using EdgeCostFn = std::function<double(GraphVertex from, GraphVertex to, double
 /// for legs in a current, see docs/PLANNING.md).
 SearchResult shortest_path(const PlanningGraph& graph, GraphVertex source, GraphVertex target,
                            SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
-                           const EdgeCostFn& edge_cost = {});
+                           const EdgeCostFn& edge_cost = {}, const SearchBudget& budget = {});
 /// The same search over a graph found on demand (implicit_graph.hpp); its
 /// edges carry their costs.
 SearchResult shortest_path(const ImplicitGraph& graph, GraphVertex source, GraphVertex target,
-                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic);
+                           SearchAlgorithm algorithm, const std::function<double(GraphVertex)>& heuristic,
+                           const SearchBudget& budget = {});
+
+/// "the search stopped after N vertices, its budget" (or "was cancelled after
+/// N vertices"): why a graph without a route proves nothing; "" for none.
+std::string search_stop_message(SearchStop stop, std::size_t expanded);
 
 }  // namespace deepguide

@@ -20,7 +20,9 @@
 #include <utility>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 struct ImplicitGraph {
   using Successors = std::vector<std::pair<std::size_t, double>>;  ///< (target, cost)

@@ -24,9 +24,10 @@
 #include <utility>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Bearings here are pseudo-angles: where the ray from the origin meets the
 /// square |x| + |y| = 1, measured along it anticlockwise from +x, in [0, 4).

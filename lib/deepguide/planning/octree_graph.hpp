@@ -35,12 +35,13 @@
 #include <memory>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/cell_tree.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/water_volume.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct OctreeOptions {
   double min_cell_m = 1.0;     ///< height of the smallest cell (m), > 0; its width follows the dive angle

@@ -10,6 +10,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/corner_fillets.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_refinement.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
@@ -18,13 +19,7 @@
 
 namespace deepguide {
 
-GraphKind parse_graph_kind(const std::string& text) {
-  if (text == "visibility") return GraphKind::visibility;
-  if (text == "visibility-full") return GraphKind::visibility_full;
-  if (text == "tangent") return GraphKind::tangent;
-  if (text == "quadtree") return GraphKind::quadtree;
-  throw InputError("--graph: expected visibility, visibility-full, tangent or quadtree, got '" + text + "'");
-}
+GraphKind parse_graph_kind(const std::string& text) { return GraphKind{graph_entry(GraphKind{text}).name}; }
 
 SearchAlgorithm parse_search(const std::string& text) {
   if (text == "astar") return SearchAlgorithm::astar;
@@ -32,15 +27,7 @@ SearchAlgorithm parse_search(const std::string& text) {
   throw InputError("--search: expected astar or dijkstra, got '" + text + "'");
 }
 
-std::string to_string(GraphKind kind) {
-  switch (kind) {
-    case GraphKind::visibility: return "visibility";
-    case GraphKind::visibility_full: return "visibility-full";
-    case GraphKind::tangent: return "tangent";
-    case GraphKind::quadtree: return "quadtree";
-  }
-  return "?";
-}
+std::string to_string(const GraphKind& kind) { return kind.name; }
 std::string to_string(SearchAlgorithm a) { return a == SearchAlgorithm::astar ? "astar" : "dijkstra"; }
 
 namespace {
@@ -55,6 +42,7 @@ struct Planner::Impl {
   std::unique_ptr<VisibilityGraph> visibility;
   std::unique_ptr<TangentGraph> tangent;
   std::unique_ptr<QuadtreeGraph> quadtree;
+  std::unique_ptr<RouteGraph> registered;  // a graph from the registry's build function
   std::unique_ptr<ObstacleField> turning_field;  // the quadtree's, within a turning radius
   // With a turning radius: the graph without it, built when no route is
   // found, to say where the radius closes the way.
@@ -86,16 +74,21 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
     throw InputError("--tolerance: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
   }
+  const GraphEntry& entry = graph_entry(options.graph);
+  if (entry.can.in_depth) {
+    throw InputError("--graph " + entry.name + ": plans in depth (depth_planning.hpp), not among obstacles in the plane");
+  }
   const bool weighed = options.cost != nullptr && options.cost->kind != CostKind::length;
   if (weighed) validate(*options.cost);
-  if (weighed && options.graph == GraphKind::tangent) {
-    throw InputError("--cost " + to_string(options.cost->kind) +
-                     ": expected --graph visibility or visibility-full (the tangent graph's arcs are priced by "
-                     "length only)");
+  if (weighed && !entry.can.weighs_cost) {
+    throw InputError("--cost " + to_string(options.cost->kind) + ": expected --graph " +
+                     graph_names_text([](const GraphEntry& e) { return e.can.weighs_cost; }) + " (the " + entry.name +
+                     " graph prices by length only)");
   }
-  if (options.grid.active() && options.graph == GraphKind::tangent) {
-    throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the tangent graph has no "
-                     "open-water vertices)");
+  if (options.grid.active() && !entry.can.open_water_grid) {
+    throw InputError("--waypoint-grid: expected --graph " +
+                     graph_names_text([](const GraphEntry& e) { return e.can.open_water_grid; }) + " (the " +
+                     entry.name + " graph has no open-water vertices)");
   }
   if (!std::isfinite(options.turn_radius_m) || options.turn_radius_m < 0.0) {
     throw InputError("turn radius: expected a radius > 0 m (or 0 for none), got " + general(options.turn_radius_m));
@@ -104,13 +97,19 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     throw InputError("turn radius: expected --graph tangent, visibility or visibility-full, or quadtree with "
                      "--smooth (the quadtree's cell-to-cell steps cannot be rounded)");
   }
+  if (options.turn_radius_m > 0.0 && !entry.can.turn_radius) {
+    throw InputError("turn radius: expected --graph " +
+                     graph_names_text([](const GraphEntry& e) { return e.can.turn_radius; }) + " (the " + entry.name +
+                     " graph keeps no turning radius)");
+  }
   impl_ = std::make_unique<Impl>(ObstacleField(obstacles, options.margin));
   const double graph_margin = std::max(options.margin, kMinGraphMargin);
-  if (options.graph == GraphKind::quadtree) {
-    if (options.grid.active()) {
-      throw InputError("--waypoint-grid: expected --graph visibility or visibility-full (the quadtree's free cells "
-                       "are its open-water vertices)");
-    }
+  if (entry.build) {
+    const auto started = std::chrono::steady_clock::now();
+    impl_->registered = entry.build(GraphBuild{obstacles, impl_->field, options, focus});
+    if (!impl_->registered) throw InputError("graph '" + entry.name + "': its build function returned no graph");
+    build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  } else if (options.graph == GraphKind::quadtree) {
     // Within a turning radius the cells keep out of the turning circles too
     // (discs whose zones are the circles widened by the tolerance, as the
     // visibility graphs' 32-gons), and the tolerance beyond every zone: the
@@ -152,6 +151,7 @@ Planner& Planner::operator=(Planner&&) noexcept = default;
 const ObstacleField& Planner::field() const { return impl_->field; }
 const BgMultiPolygon& Planner::zone_polygons() const { return impl_->zones; }
 std::vector<std::pair<Vec2, Vec2>> Planner::graph_edges() const {
+  if (impl_->registered) return impl_->registered->edges();
   if (impl_->quadtree) return impl_->quadtree->edges();
   return impl_->tangent ? impl_->tangent->tangent_segments() : impl_->visibility->edges();
 }
@@ -366,11 +366,17 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
 
   PlanOutcome out;
   bool rounding_failed = false;
-  if (impl_->quadtree) {
-    out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get());
+  if (impl_->registered) {
+    const auto started = std::chrono::steady_clock::now();
+    out.result = impl_->registered->solve(problem, options_.search, options_.cost.get(), options_.budget);
+    out.result.stats.build_ms = build_ms_;
+    out.result.stats.query_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  } else if (impl_->quadtree) {
+    out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get(), options_.budget);
     rounding_failed = !refine_and_round(out.result);
   } else if (impl_->tangent) {
-    out.result = impl_->tangent->solve(problem, options_.search);
+    out.result = impl_->tangent->solve(problem, options_.search, options_.budget);
   } else {
     // A point outside the true zone can still lie in the thin band between a
     // zone and its enclosing polygon; step to the polygon's boundary first.
@@ -380,7 +386,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     const bool goal_in_band = graph.strictly_inside(problem.goal);
     if (start_in_band) banded.start = graph.closest_boundary_point(problem.start);
     if (goal_in_band) banded.goal = graph.closest_boundary_point(problem.goal);
-    out.result = graph.solve(banded, options_.search, options_.cost.get());
+    out.result = graph.solve(banded, options_.search, options_.cost.get(), options_.budget);
     if (out.result.found) {
       auto& pts = out.result.route.points;
       if (start_in_band) pts.insert(pts.begin(), problem.start);
@@ -393,14 +399,18 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
   // A rounded polygon route whose joined corners or fillets come near another
   // zone is refused, saying where, rather than returned to fail the check.
-  const bool rounded = out.result.found && options_.turn_radius_m > 0.0 && !impl_->tangent;
+  const bool rounded = out.result.found && options_.turn_radius_m > 0.0 && !impl_->tangent && !impl_->registered;
   if (rounded && (!out.check.safe || !out.legs_check->safe)) {
     const RouteCheck& bad = out.check.safe ? *out.legs_check : out.check;
     out.result.found = false;
     out.result.message = unrounded_message(bad.worst_point, "rounding its corners comes within the margin of another zone");
     rounding_failed = true;
   }
-  if (!out.result.found && !rounding_failed && options_.turn_radius_m > options_.margin) {
+  if (out.result.stats.stopped != SearchStop::none) {
+    // However the graph put it: out of budget, nothing is proven.
+    out.result.found = false;
+    out.result.message = search_stop_message(out.result.stats.stopped, out.result.stats.expanded);
+  } else if (!out.result.found && !rounding_failed && options_.turn_radius_m > options_.margin) {
     out.result.message = why_no_turning_route(problem);
   }
   return out;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/quadtree_graph.hpp"
@@ -19,9 +20,22 @@
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
-enum class GraphKind { visibility, visibility_full, tangent, quadtree };
+/// A graph kind: the name of a graph in the registry (graph_registry.hpp).
+/// The built-in ones are constants; a registered one is GraphKind{"name"}.
+struct GraphKind {
+  std::string name;
+  static const GraphKind visibility, visibility_full, tangent, quadtree, octree;
+  friend bool operator==(const GraphKind&, const GraphKind&) = default;
+  friend auto operator<=>(const GraphKind&, const GraphKind&) = default;
+};
+inline const GraphKind GraphKind::visibility{"visibility"};
+inline const GraphKind GraphKind::visibility_full{"visibility-full"};
+inline const GraphKind GraphKind::tangent{"tangent"};
+inline const GraphKind GraphKind::quadtree{"quadtree"};
+/// Routes in depth (depth_planning.hpp): registered for its name and help, not built by Planner.
+inline const GraphKind GraphKind::octree{"octree"};
 
 struct PlannerOptions {
   /// Safety margin to every obstacle footprint (m). Below 1 um the graphs use
@@ -53,16 +67,19 @@ struct PlannerOptions {
   /// (rounded_zone_polygons) and round each corner of the route on a circle
   /// of this radius (corner_fillets.hpp). Not the quadtree.
   double turn_radius_m = 0.0;
+  /// Limits on each search (graph_search.hpp): a route not found within them
+  /// is reported as such (PlanStats::stopped), never as "no route".
+  SearchBudget budget = {};
   /// Time and energy routes in a current that changes from place to place
   /// are refined off the graph's vertices to the continuous optimum near
   /// them (route_refinement.hpp). Off: the graph's own optimum.
   bool refine = true;
 };
 
-/// Parses "visibility", "visibility-full", "tangent", "quadtree" / "astar", "dijkstra"; InputError otherwise.
+/// A registered graph's name (graph_registry.hpp) / "astar", "dijkstra"; InputError otherwise.
 GraphKind parse_graph_kind(const std::string& text);
 SearchAlgorithm parse_search(const std::string& text);
-std::string to_string(GraphKind kind);
+std::string to_string(const GraphKind& kind);
 std::string to_string(SearchAlgorithm algorithm);
 
 /// What a query's route looks like against the exact obstacles.
@@ -107,6 +124,7 @@ class Planner {
   std::string unrounded_message(const Vec2& at, const std::string& why) const;
   struct Impl;
   PlannerOptions options_;
+  double build_ms_ = 0.0;  ///< a registered graph's build (the built-in ones time their own)
   std::unique_ptr<Impl> impl_;
 };
 

@@ -17,10 +17,11 @@
 #include <memory>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/geometry/polygon_locator.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 class PolygonVisibility {
  public:

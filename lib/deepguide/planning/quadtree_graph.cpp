@@ -160,7 +160,8 @@ void QuadtreeGraph::detach() {
   boost::clear_vertex(goal_vertex(), graph_);
 }
 
-PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost) {
+PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost,
+                                 const SearchBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = free_.size();
   const GraphVertex sv = start_vertex(), gv = goal_vertex();
@@ -176,18 +177,21 @@ PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm 
       return edge_weight(*cost, price_leg(*cost, position(from), position(to), departure_after(*cost, label)));
     };
   }
-  const SearchResult found = shortest_path(graph_, sv, gv, algorithm, h, priced);
+  const SearchResult found = shortest_path(graph_, sv, gv, algorithm, h, priced, budget);
   detach();
 
   PlanResult result;
   result.stats.graph_vertices = n + 2;
   result.stats.graph_edges = edges_ + attached;
   result.stats.expanded = found.expanded;
+  result.stats.stopped = found.stopped;
   result.stats.build_ms = build_ms_;
   result.found = found.found;
   result.cost = found.cost;
   if (!found.found) {
-    result.message = "the goal cannot be reached from the start through the quadtree's free cells";
+    result.message = found.stopped != SearchStop::none
+                         ? search_stop_message(found.stopped, found.expanded)
+                         : "the goal cannot be reached from the start through the quadtree's free cells";
     result.stats.query_ms = elapsed_ms(t0);
     return result;
   }

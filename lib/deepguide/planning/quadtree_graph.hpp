@@ -33,13 +33,14 @@
 #include <memory>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/cell_tree.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct QuadtreeOptions {
   double min_cell_m = 2.0;  ///< the smallest cell side (m), > 0
@@ -60,7 +61,8 @@ class QuadtreeGraph {
 
   /// Cheapest route from start to goal over the free cells (see the header).
   /// Throws NoRouteError when start or goal lies outside the area.
-  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost = nullptr);
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost = nullptr,
+                   const SearchBudget& budget = {});
 
   /// For incremental replanning (dstar_lite.hpp): start and goal joined to
   /// the graph as vertices start_vertex() and goal_vertex() until detach()

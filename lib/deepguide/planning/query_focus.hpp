@@ -17,9 +17,10 @@
 #include <cmath>
 #include <limits>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct QueryFocus {
   Vec2 start{0.0, 0.0};

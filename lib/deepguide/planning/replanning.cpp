@@ -12,14 +12,14 @@
 
 namespace deepguide {
 
-std::vector<Detection> load_detections(const std::string& path, const LocalFrame& frame,
+std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFrame& frame,
                                        const std::string& source_crs) {
   ObstacleReadOptions options;
   options.local_crs = frame.id();
   options.source_crs = source_crs;
   options.extra_fields = {"detected_at_m"};
   const LoadedObstacles loaded = load_obstacles({path}, options);
-  std::vector<Detection> out;
+  std::vector<ReplanEvent> out;
   const auto distance = [](const ObstacleOrigin& origin) {
     const std::optional<std::string>& text = origin.extra.at(0);
     InputLocation at = origin.where;
@@ -40,13 +40,13 @@ std::vector<Detection> load_detections(const std::string& path, const LocalFrame
     return v;
   };
   for (std::size_t i = 0; i < loaded.obstacles.ellipses.size(); ++i) {
-    Detection d;
+    ReplanEvent d;
     d.along_m = distance(loaded.ellipse_origins.at(i));
     d.obstacles.ellipses.push_back(loaded.obstacles.ellipses[i]);
     out.push_back(std::move(d));
   }
   for (std::size_t i = 0; i < loaded.obstacles.polygons.size(); ++i) {
-    Detection d;
+    ReplanEvent d;
     d.along_m = distance(loaded.polygon_origins.at(i));
     d.obstacles.polygons.push_back(loaded.obstacles.polygons[i]);
     out.push_back(std::move(d));
@@ -54,15 +54,15 @@ std::vector<Detection> load_detections(const std::string& path, const LocalFrame
   return out;
 }
 
-Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<Detection> detections,
+Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections,
                          double margin, const std::function<void(const Repair&, GraphVertex)>& after_repair) {
-  for (const Detection& d : detections) {
+  for (const ReplanEvent& d : detections) {
     if (!(d.along_m >= 0.0) || !std::isfinite(d.along_m)) {
       throw InputError("detection: along_m: expected a distance >= 0 m along the route");
     }
   }
   std::stable_sort(detections.begin(), detections.end(),
-                   [](const Detection& a, const Detection& b) { return a.along_m < b.along_m; });
+                   [](const ReplanEvent& a, const ReplanEvent& b) { return a.along_m < b.along_m; });
   graph.attach(problem);
   const GraphVertex goal = graph.goal_vertex();
   const auto h = [&graph](GraphVertex a, GraphVertex b) { return (graph.position(a) - graph.position(b)).norm(); };
@@ -98,7 +98,7 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
       replay.track_vertices.push_back(at);
     }
   };
-  for (const Detection& d : detections) {
+  for (const ReplanEvent& d : detections) {
     sail(d.along_m);
     const auto t0 = std::chrono::steady_clock::now();
     const std::size_t before = dstar.expanded();

@@ -15,13 +15,17 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/quadtree_graph.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
-struct Detection {
+/// A sonar report along the route (replan_events.csv): the obstacles it
+/// reveals and how far the vehicle has sailed when it comes (world/sonar.hpp
+/// has the sonar's own Detection).
+struct ReplanEvent {
   double along_m = 0.0;    ///< distance sailed when the sonar reports it (m)
   ObstacleSet obstacles;   ///< what it reports (usually one obstacle)
 };
@@ -51,7 +55,7 @@ struct Replay {
 /// sailed when the sonar reports them; one detection per feature, in the
 /// local frame `frame`. Throws InputError naming the file, the feature and
 /// the field for a missing, non-numeric or negative value.
-std::vector<Detection> load_detections(const std::string& path, const LocalFrame& frame,
+std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFrame& frame,
                                        const std::string& source_crs = "");
 
 /// Plans from start to goal on `graph`, then replays the detections (with
@@ -61,7 +65,7 @@ std::vector<Detection> load_detections(const std::string& path, const LocalFrame
 /// `after_repair(repair, vehicle_vertex)`, when given, runs after each repair
 /// while start and goal are still attached (graph.goal_vertex()): tests and
 /// benchmarks compare with a search from scratch on the changed graph there.
-Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<Detection> detections,
+Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections,
                          double margin,
                          const std::function<void(const Repair&, GraphVertex)>& after_repair = {});
 

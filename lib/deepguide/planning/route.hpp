@@ -3,12 +3,14 @@
 
 #include <cstddef>
 #include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Route {
   std::vector<Vec2> points;  ///< waypoints from start to goal, local frame (m)
@@ -61,11 +63,25 @@ double least_offset_ellipse_radius(const Ellipse& e, double offset, double lo, d
 double min_turn_radius(const RouteLeg& leg);
 
 /// What a planner measured while solving; every planner fills what applies.
+/// Limits on one search: at most `max_expansions` vertices examined (0: no
+/// limit), and `cancelled()`, asked every 256 expansions, ends it early (a
+/// replanning deadline on the vehicle, a user's interrupt).
+struct SearchBudget {
+  std::size_t max_expansions = 0;
+  std::function<bool()> cancelled = {};
+  bool limited() const { return max_expansions > 0 || static_cast<bool>(cancelled); }
+};
+
+/// Why a search ended before it examined its target: it did not (none), its
+/// budget ran out, or it was cancelled.
+enum class SearchStop { none, budget, cancelled };
+
 struct PlanStats {
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;
   std::size_t open_water_vertices = 0;  ///< of graph_vertices, lattice points (--waypoint-grid)
   std::size_t expanded = 0;   ///< vertices the search examined
+  SearchStop stopped = SearchStop::none;  ///< the search's budget ran out, or it was cancelled (PlannerOptions::budget)
   double build_ms = 0.0;      ///< building the environment's graph (once per environment)
   double query_ms = 0.0;      ///< attaching start and goal plus the search
   /// Continuous refinement of a time or energy route (route_refinement.hpp).

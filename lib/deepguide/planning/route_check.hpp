@@ -14,12 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/water_volume.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct RouteCheck {
   bool safe = true;               ///< every segment keeps >= margin - tolerance from every obstacle

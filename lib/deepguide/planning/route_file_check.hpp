@@ -11,7 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 struct RouteFileCheckOptions {
   std::string route;                   ///< the route file (RTZ, GPX, GeoJSON, KML, ...)

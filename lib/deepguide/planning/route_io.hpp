@@ -8,10 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Writes the route as GeoJSON; `properties` go onto the line feature
 /// (summary values such as length_m, min_clearance_m), `waypoint_properties[i]`

@@ -177,6 +177,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   options.quadtree.min_cell_m = r.min_cell_m;
   options.quadtree.smooth = r.smooth;
   options.refine = r.refine;
+  options.budget.max_expansions = r.max_expansions;
   if (model.kind != CostKind::length) options.cost = report.model;
   if (r.turn_radius_m) {
     options.turn_radius_m = *r.turn_radius_m;

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
@@ -25,7 +26,7 @@
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct RoutePlanRequest {
   ObstacleSet obstacles;  ///< in the local frame
@@ -48,6 +49,7 @@ struct RoutePlanRequest {
   bool smooth = false;                               ///< quadtree: pull the cell route taut
   bool refine = true;                                ///< time and energy routes: refine off the vertices
   std::optional<double> waypoint_grid_m;             ///< open-water vertices this far apart
+  std::size_t max_expansions = 0;                    ///< the search's budget of vertices (0: none)
   CostKind cost = CostKind::length;
   std::string vehicle;           ///< vehicle file ("": the default vehicle)
   std::string speed = "cruise";  ///< cruise, optimal (least energy per leg) or m/s
@@ -80,7 +82,7 @@ struct RoutePlanReport {
   std::optional<RoutePricing> shortest;  ///< weighed by time or energy: the shortest route, priced alike
   bool timed = false;                    ///< the route has clock times (a changing current or a departure)
   std::optional<Replay> replay;
-  std::vector<Detection> detections;
+  std::vector<ReplanEvent> detections;
   std::vector<std::string> repair_files;  ///< per repair: its file name, "" when none is written
 
   /// Flat keys (a GeoJSON feature's properties hold no nested objects).

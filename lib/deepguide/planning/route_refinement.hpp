@@ -41,10 +41,11 @@
 #include <functional>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/planning/cost_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Whether the straight leg a -> b keeps the margin from every zone.
 using LegIsFree = std::function<bool(const Vec2& a, const Vec2& b)>;

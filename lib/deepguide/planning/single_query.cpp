@@ -9,6 +9,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/planning/informed_bound.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
@@ -39,6 +40,7 @@ Disc footprint_disc(const PolygonObstacle& p) {
 constexpr double kFirstStretch = 1.01;
 // Growth when a round's route is longer than its bound: a little past that route.
 constexpr double kGrowth = 1.02;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
@@ -125,19 +127,22 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     // weighed by length): a cheaper route is no longer, so it lies in E(bound).
     double reach = found ? plan.outcome.result.route.length() : 0.0;
     if (found && weighed) reach = price_route(*options.cost, plan.outcome.result.route.points).cost / per_metre;
-    if (found && reach <= bound) break;
+    // Out of budget: nothing is proven, and the next round would run out too.
+    if (plan.outcome.result.stats.stopped != SearchStop::none) break;
     // No route in the whole graph over some of the obstacles: none among all.
     if (!found && !focused) break;
-    if (last) break;
     // No route in a focused graph proves nothing (the focus dropped edges):
     // the same obstacles once more, whole graph.
     if (!found) {
       focus = false;
       continue;
     }
+    // A focused round at a bound past every obstacle is not final (the focus
+    // may have dropped a shorter way): only the last, unfocused round is.
+    const NextBound next = next_bound(bound, kInf, found, reach, kGrowth);
+    if (next.final) break;
     focus = true;
-    bound = kGrowth * std::max(reach, bound);
-    if (bound >= farthest) bound = std::numeric_limits<double>::infinity();
+    bound = next.bound >= farthest ? kInf : next.bound;
   }
   if (plan.obstacles_used < plan.obstacles_total) {
     // The route lies in E(bound), so the check against all obstacles agrees;

@@ -30,9 +30,10 @@
 #include <cstddef>
 #include <memory>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/planner.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct SingleQueryPlan {
   /// The route, checked against ALL obstacles (not only those used).

@@ -11,7 +11,9 @@
 #include <cstddef>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 template <class Point, class Sees>
 std::vector<Point> pull_string(const std::vector<Point>& points, const Sees& sees) {

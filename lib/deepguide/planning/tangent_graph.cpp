@@ -13,6 +13,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/periodic_roots.hpp"
+#include "deepguide/planning/informed_bound.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
 #include "deepguide/planning/zone_pieces.hpp"
@@ -28,7 +29,7 @@ constexpr std::size_t kNoPiece = static_cast<std::size_t>(-1);
 // Tangent segments touch zones exactly; the field judging them allows this
 // much (m) so rounding does not reject them. The route checker allows 1e-6.
 constexpr double kTouchEps = 1e-7;
-// The first query bound: a little more than the straight line (see solve()).
+// The first informed bound (informed_bound.hpp): a little more than the straight line.
 constexpr double kFirstBoundStretch = 1.05;
 // About 10 s of build on the reference machine (docs/PERFORMANCE.md).
 constexpr std::size_t kMaxPieces = 3000;
@@ -554,7 +555,7 @@ std::vector<RouteLeg> TangentGraph::Impl::arc_legs(std::size_t piece, double phi
   return out;
 }
 
-PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm) {
+PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const SearchBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   Impl& m = *impl_;
   const Vec2 s = problem.start - m.origin;
@@ -631,25 +632,23 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
     return n;
   };
 
-  // Start and goal get tangents only to the pieces that can meet the ellipse
-  // |x - s| + |x - g| <= bound (a piece lies in the disc of radius `radius`
-  // around its inner point); as in VisibilityGraph::solve, a cost within the
-  // bound is final, else the bound grows to the cost or doubles.
+  // Start and goal get tangents only to the pieces that can meet the informed
+  // bound's ellipse (informed_bound.hpp; a piece lies in the disc of radius
+  // `radius` around its inner point).
   std::vector<double> low(m.pieces.size());
   double farthest = (g - s).norm();
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
     const ZonePiece& z = m.pieces[i];
     const Vec2 c = z.inner_point();
     const double radius = z.bounding_radius();
-    low[i] = (c - s).norm() + (c - g).norm() - 2.0 * radius;
+    low[i] = informed_reach(c, s, g) - 2.0 * radius;
     farthest = std::max(farthest, low[i] + 4.0 * radius);
   }
   const bool direct = m.segment_free(s, g);
-  double bound = m.focus.active() ? m.focus.bound_m : kFirstBoundStretch * (g - s).norm();
+  const double first = m.focus.active() ? m.focus.bound_m : kFirstBoundStretch * (g - s).norm();
   std::vector<Impl::Arc> arcs;
   std::unordered_map<std::uint64_t, std::size_t> arc_of;
-  SearchResult found;
-  for (;;) {
+  const SearchResult found = search_in_growing_bound(first, farthest, 1.0, [&](double bound) {
     clean();
     arcs.clear();
     arc_of.clear();
@@ -730,20 +729,21 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
                  graph, arcs, arc_of);
     }
     const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (nodes[v].p - g).norm(); };
-    found = shortest_path(graph, 0, 1, algorithm, h);
-    if (bound >= farthest || (found.found && found.cost <= bound)) break;
-    bound = found.found ? std::max(found.cost, bound) : std::min(2.0 * bound, farthest);
-  }
+    return shortest_path(graph, 0, 1, algorithm, h, {}, budget);
+  });
 
   PlanResult result;
   result.stats.graph_vertices = nodes.size();  // the spare vertices the query did not take do not count
   result.stats.graph_edges = boost::num_edges(graph) / 2;
   result.stats.expanded = found.expanded;
+  result.stats.stopped = found.stopped;
   result.stats.build_ms = m.build_ms;
   result.found = found.found;
   result.cost = found.cost;
   if (!found.found) {
-    result.message = "the goal cannot be reached from the start without entering a safety zone";
+    result.message = found.stopped != SearchStop::none
+                         ? search_stop_message(found.stopped, found.expanded)
+                         : "the goal cannot be reached from the start without entering a safety zone";
     result.stats.query_ms = elapsed_ms(t0);
     return result;
   }

@@ -19,12 +19,13 @@
 
 #include <memory>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 class TangentGraph {
  public:
@@ -42,7 +43,7 @@ class TangentGraph {
   TangentGraph(TangentGraph&&) noexcept;
   TangentGraph& operator=(TangentGraph&&) noexcept;
 
-  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm);
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const SearchBudget& budget = {});
 
   std::size_t piece_count() const;
   std::size_t tangent_count() const;  ///< collision-free common tangents found at build

@@ -26,10 +26,11 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct TurningCircle {
   Vec2 centre;

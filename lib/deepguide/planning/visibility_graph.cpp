@@ -8,6 +8,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/parallel_blocks.hpp"
+#include "deepguide/planning/informed_bound.hpp"
 #include "deepguide/planning/occlusion_horizon.hpp"
 
 namespace deepguide {
@@ -16,7 +17,7 @@ namespace bgi = boost::geometry::index;
 
 namespace {
 
-// The first query bound: a little more than the straight line (see solve()).
+// The first informed bound (informed_bound.hpp): a little more than the straight line.
 constexpr double kFirstBoundStretch = 1.05;
 
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
@@ -378,7 +379,8 @@ bool VisibilityGraph::supporting_at(const Corner& c, const Vec2& other) const {
   return supports_line(c.prev - c.p, c.next - c.p, other - c.p, visibility_->eps());
 }
 
-PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost) {
+PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost,
+                                  const SearchBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   const Vec2 s = problem.start - origin_;
   const Vec2 g = problem.goal - origin_;
@@ -400,24 +402,19 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
     };
   }
 
-  // Start and goal join only the corners within the ellipse
-  // |x - s| + |x - g| <= bound: a path of length L passes only corners with
-  // |c - s| + |c - g| <= L, and a path of cost C is at most C / per_metre
-  // long, so once the search returns a cost within the bound, no corner left
-  // out could have made it cheaper (the rest of the graph is complete).
-  // Otherwise the bound grows to what the cost found allows (then one more
-  // round is final) or, with no path, doubles until it holds every corner.
+  // Start and goal join only the corners within the informed bound
+  // (informed_bound.hpp): a path of length L passes only corners with
+  // |c - s| + |c - g| <= L; the rest of the graph is complete.
   std::vector<double> reach(n);
   double farthest = (g - s).norm();
   for (std::size_t i = 0; i < n; ++i) {
-    reach[i] = (corners_[i].p - s).norm() + (corners_[i].p - g).norm();
+    reach[i] = informed_reach(corners_[i].p, s, g);
     farthest = std::max(farthest, reach[i]);
   }
   const bool direct = visibility_->segment_visible(s, g);
-  double bound = focus_.active() ? focus_.bound_m : kFirstBoundStretch * (g - s).norm();
-  SearchResult found;
+  const double first = focus_.active() ? focus_.bound_m : kFirstBoundStretch * (g - s).norm();
   std::size_t attached = 0;
-  for (int round = 0;; ++round) {
+  const SearchResult found = search_in_growing_bound(first, farthest, per_metre, [&](double bound) {
     boost::clear_vertex(sv, graph_);
     boost::clear_vertex(gv, graph_);
     // Start and goal join every corner they see (full), or the corners where
@@ -437,16 +434,14 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
     }
     if (direct) link(sv, gv, (g - s).norm());
     attached = boost::out_degree(sv, graph_) + boost::in_degree(gv, graph_);
-    found = shortest_path(graph_, sv, gv, algorithm, h, priced);
-    const double reach_needed = found.cost / per_metre;
-    if (bound >= farthest || (found.found && reach_needed <= bound)) break;
-    bound = found.found ? std::max(reach_needed, bound) : std::min(2.0 * bound, farthest);
-  }
+    return shortest_path(graph_, sv, gv, algorithm, h, priced, budget);
+  });
   // No way at all, or none the current allows? The length search tells.
   bool current_blocks = false;
-  if (!found.found && cost != nullptr) {
-    current_blocks = shortest_path(graph_, sv, gv, algorithm, [&](GraphVertex v) { return (position(v) - g).norm(); })
-                         .found;
+  if (!found.found && found.stopped == SearchStop::none && cost != nullptr) {
+    current_blocks =
+        shortest_path(graph_, sv, gv, algorithm, [&](GraphVertex v) { return (position(v) - g).norm(); }, {}, budget)
+            .found;
   }
 
   PlanResult result;
@@ -454,6 +449,7 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   result.stats.open_water_vertices = lattice_points_;
   result.stats.graph_edges = base_edges_ + attached;
   result.stats.expanded = found.expanded;
+  result.stats.stopped = found.stopped;
   result.stats.build_ms = build_ms_;
   boost::clear_vertex(sv, graph_);
   boost::clear_vertex(gv, graph_);
@@ -462,7 +458,8 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   if (found.found) {
     for (GraphVertex v : found.path) result.route.points.push_back(position(v) + origin_);
   } else {
-    result.message = current_blocks
+    result.message = found.stopped != SearchStop::none ? search_stop_message(found.stopped, found.expanded)
+                     : current_blocks
                          ? "on every way to the goal the current is stronger than the vehicle: no feasible route"
                          : "the goal cannot be reached from the start without entering a safety zone";
   }

@@ -18,6 +18,7 @@
 #include <memory>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
@@ -25,7 +26,7 @@
 #include "deepguide/planning/route.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class VisibilityVariant { full, reduced };
 
@@ -47,7 +48,8 @@ class VisibilityGraph {
   /// Cheapest route from start to goal in this graph: shortest, or by `cost`
   /// (time or energy in a current, cost_model.hpp) when given. Start and goal
   /// must not lie strictly inside a zone polygon (the planner facade checks and explains).
-  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost = nullptr);
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost = nullptr,
+                   const SearchBudget& budget = {});
 
   VisibilityVariant variant() const { return variant_; }
   std::size_t vertex_count() const { return corners_.size(); }

@@ -22,9 +22,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct WaypointGrid {
   double spacing_m = 0.0;  ///< 0 = no lattice

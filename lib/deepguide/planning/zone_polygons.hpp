@@ -11,10 +11,11 @@
 // hazards, through GEOS: world/no_go_union.hpp), so no vertex of one zone
 // hides inside another.
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct ZoneOptions {
   double margin = 0.0;      ///< safety margin d >= 0 (m)

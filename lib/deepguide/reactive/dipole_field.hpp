@@ -64,9 +64,10 @@
 #include <span>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// A zone of the dipole method: one object's security ellipse, or the circle
 /// that merged several close ones (members: their indices).

@@ -73,9 +73,10 @@
 
 #include <span>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input);
 

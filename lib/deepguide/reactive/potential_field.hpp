@@ -28,9 +28,10 @@
 
 #include <span>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 ReactiveCommand potential_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input);
 

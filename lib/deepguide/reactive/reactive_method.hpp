@@ -37,10 +37,11 @@
 #include <span>
 #include <string_view>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class ReactiveMethod { dipole, geometric, potential };
 

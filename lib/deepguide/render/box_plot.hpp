@@ -11,9 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/canvas.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct BoxGroup {
   std::string label;

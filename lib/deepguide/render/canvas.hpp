@@ -19,9 +19,10 @@
 #include <utility>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class ImageFormat { png, svg };
 

@@ -26,9 +26,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/canvas.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct ChartStyle {
   Rgba background = rgb_hex(0xffffff);

@@ -14,9 +14,10 @@
 
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/depth_planning.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct DepthProfileLayout {
   int width = 0;

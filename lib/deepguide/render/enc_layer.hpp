@@ -13,11 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct EncLayer {
   struct DepthArea {

@@ -22,10 +22,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/gradient_lines.hpp"
 #include "deepguide/render/reactive_map.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Scenario;
 

@@ -31,10 +31,11 @@
 #include <span>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/render/canvas.hpp"  // WorldBox
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class LineEnd { target, stalled, left_area, step_limit };
 

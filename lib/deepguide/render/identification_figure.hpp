@@ -15,11 +15,12 @@
 
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/reactive_map.hpp"
 #include "deepguide/simulation/identification_run.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct IdentificationFigure {
   ReactiveMap map;

@@ -6,9 +6,10 @@
 #include <optional>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/canvas.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct FurnitureColors {
   Rgba text;        ///< bar, arrow and labels

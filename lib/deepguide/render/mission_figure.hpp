@@ -13,12 +13,13 @@
 #include <utility>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/render/chart_scene.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MissionFigure {
   std::vector<std::string> charts;     ///< drawn as `render chart` draws them

@@ -14,9 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/canvas.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Throws InputError unless width_px lies in [kMinImageWidth, kMaxImageWidth]
 /// (route_scene.hpp), the widths every figure accepts.

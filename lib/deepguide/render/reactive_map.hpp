@@ -23,12 +23,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/plot_furniture.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct Scenario;
 

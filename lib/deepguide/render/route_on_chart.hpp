@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/chart_scene.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct RouteOnChart {
   std::vector<std::string> charts;

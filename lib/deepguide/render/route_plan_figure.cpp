@@ -10,7 +10,7 @@ namespace {
 const char* kTitle = "deepguide plan";
 
 void add_replay(const RoutePlanReport& report, RouteScene& scene, ObstacleSet& detected) {
-  for (const Detection& d : report.detections) {
+  for (const ReplanEvent& d : report.detections) {
     detected.ellipses.insert(detected.ellipses.end(), d.obstacles.ellipses.begin(), d.obstacles.ellipses.end());
     detected.polygons.insert(detected.polygons.end(), d.obstacles.polygons.begin(), d.obstacles.polygons.end());
   }

@@ -7,9 +7,10 @@
 
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Writes the figure (.png or .svg). `draw_graph`: the zone polygons, the
 /// graph's edges and the quadtree's cells too (not over S-57 cells).

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/render/canvas.hpp"
@@ -20,7 +21,7 @@
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Colours of the route chart (tests read them back from the pixels).
 struct RouteStyle {

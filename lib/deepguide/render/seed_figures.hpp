@@ -38,7 +38,9 @@
 #include <string>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// One of the seed's figures, as this module redraws it.
 struct SeedFigureSpec {

@@ -15,10 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/reactive_map.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct TrajectoryFigure {
   ReactiveMap map;

@@ -17,10 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/render/plot_furniture.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct TurnRatePlot {
   std::vector<SimulationResult> runs;  ///< with trajectories

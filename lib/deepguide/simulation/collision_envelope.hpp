@@ -19,10 +19,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/vehicle/vehicle_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct CollisionCause {
   std::size_t obstacle = 0;         ///< index into the scenario's obstacles

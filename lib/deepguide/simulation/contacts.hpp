@@ -36,10 +36,11 @@
 #include <span>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/world/sonar.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct ContactParams {
   double gate_m = 2.0;                                        ///< association gate for exact detections (m)

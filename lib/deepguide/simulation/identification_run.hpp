@@ -47,10 +47,11 @@
 #include <string_view>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The unit's mode: aligning's areas, going around's modes, and overpowered.
 enum class IdentifyPhase { evasive, positioning, steering, tracking, done, overpowered };

@@ -48,9 +48,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/mission/mission_control.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MissionRunOptions {
   double lookahead_m = 0.0;       ///< the path follower's; 0: 0.3 x the turn radius at the manoeuvre's speed (path_lookahead)

@@ -11,12 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/output_paths.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
 #include "deepguide/simulation/mission_run.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct MissionRunRequest {
   std::string mission;               ///< the mission file

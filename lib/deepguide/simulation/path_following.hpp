@@ -28,9 +28,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/route.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The point of one leg nearest to p (clamped to the leg).
 struct PathPoint {

@@ -22,11 +22,12 @@
 #include <cstddef>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/vehicle/autopilot.hpp"
 #include "deepguide/vehicle/vehicle_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The exact clearance to the nearest of `obstacles`' footprints (header); +inf without obstacles.
 class NearestClearance {

@@ -21,10 +21,11 @@
 // away from the target for a while, so the no-progress rule is off and the
 // time limit, unless the scenario sets one, is 3 x the route's time + 300 s.
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// How far the vehicle strays from a route within route_turn_radius()
 /// (basic_manoeuvres.hpp) where its curvature changes: the course reference

@@ -81,6 +81,7 @@
 #include <string_view>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/identification/aligning.hpp"
 #include "deepguide/identification/going_around.hpp"
@@ -93,7 +94,7 @@
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sonar.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 class CurrentSampler;
 

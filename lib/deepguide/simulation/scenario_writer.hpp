@@ -19,9 +19,10 @@
 
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The scenario as YAML text, with `comment` (lines without '#') on top.
 std::string scenario_yaml(const Scenario& scenario, const std::string& comment = "");

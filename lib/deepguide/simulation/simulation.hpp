@@ -56,12 +56,13 @@
 #include <string_view>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/collision_envelope.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/vehicle/vehicle_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct TrajectorySample {
   double time_s = 0.0;

@@ -27,10 +27,11 @@
 #include <span>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/simulation/identification_run.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The CSV text of a trajectory (header above).
 std::string trajectory_csv(std::span<const TrajectorySample> trajectory);

@@ -48,9 +48,10 @@
 
 #include <optional>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/vehicle/vehicle_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct AutopilotSetpoint {
   double course = 0.0;  ///< course over ground, math angle (rad)

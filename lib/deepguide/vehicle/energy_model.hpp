@@ -8,7 +8,9 @@
 
 #include <cmath>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 struct EnergyModel {
   double hotel_power_w = 1050.0;

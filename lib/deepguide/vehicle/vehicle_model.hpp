@@ -32,11 +32,12 @@
 
 #include <functional>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/current_sampling.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct VehicleState {
   double time_s = 0.0;

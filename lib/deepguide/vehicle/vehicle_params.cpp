@@ -178,53 +178,29 @@ const Field* field_named(const char* key) {
   return nullptr;
 }
 
-std::string known_keys(const Field* begin, const Field* end, const char* extra) {
-  std::string s;
-  for (const Field* f = begin; f != end; ++f) s += (s.empty() ? "" : ", ") + std::string(f->key);
-  if (extra) s += std::string(", ") + extra;
-  return s;
+// The keys of a table of fields, for the known-key reader (core/yaml_mapping.hpp).
+template <std::size_t N>
+std::vector<std::string> keys_of(const Field (&fields)[N], std::initializer_list<const char*> extra) {
+  std::vector<std::string> keys;
+  for (const Field& f : fields) keys.emplace_back(f.key);
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  return keys;
 }
 
-double read_number(const YAML::Node& value, const std::string& source, const std::string& key, const Field& f) {
-  const InputLocation at{source, line_of(value.Mark()), key};
-  if (!value.IsScalar()) throw input_error(at, f.what + std::string(" (a number)"), "a list or mapping");
-  double v = 0.0;
-  try {
-    v = value.as<double>();
-  } catch (const YAML::Exception&) {
-    throw input_error(at, f.what + std::string(" (a number)"), "'" + printable(value.Scalar()) + "'");
-  }
-  if (!std::isfinite(v)) throw input_error(at, f.what + std::string(" (a finite number)"), printable(value.Scalar()));
-  return v;
-}
-
-// Reads the numeric keys of one mapping; records the key each field came from.
-void read_section(const YAML::Node& map, const Field* begin, const Field* end, const char* extra,
-                  const std::string& prefix, const std::string& source, VehicleParams& p, KeyLines& lines,
-                  std::map<double*, const Field*>& filled_by, const std::function<bool(const std::string&,
-                                                                                       const YAML::Node&)>& other) {
-  for (const auto& kv : map) {
-    const YAML::Node& k = kv.first;
-    const std::string key = k.IsScalar() ? k.Scalar() : std::string("?");
-    const std::string full = prefix + key;
-    const std::string line = line_of(k.Mark());
-    if (lines.count(full)) {
-      throw input_error({source, line, printable(full)}, "each key once", "a duplicate (first at " + lines[full] + ")");
+// Reads a mapping's numeric keys into `p` (SI), noting each key's line and
+// which key filled a field (two keys, knots and m/s, may fill one; not both).
+template <std::size_t N>
+void read_fields(const Mapping& m, const Field (&fields)[N], VehicleParams& p, KeyLines& lines,
+                 std::map<double*, const Field*>& filled_by) {
+  for (const Field& f : fields) {
+    if (!m.has(f.key)) continue;
+    lines[m.full(f.key)] = m.where(f.key).feature;
+    double& slot = f.ref(p);
+    if (const auto other = filled_by.find(&slot); other != filled_by.end()) {
+      throw input_error(m.where(f.key), "one unit only, not both", "also " + m.full(other->second->key));
     }
-    lines[full] = line;
-    if (other(key, kv.second)) continue;
-    const Field* f = std::find_if(begin, end, [&](const Field& x) { return key == x.key; });
-    if (f == end) {
-      throw input_error({source, line, printable(full)}, "one of the known keys (" + known_keys(begin, end, extra) + ")",
-                        "an unknown key");
-    }
-    double& slot = f->ref(p);
-    if (filled_by.count(&slot)) {
-      throw input_error({source, line, printable(full)}, "one unit only, not both",
-                        std::string("also ") + prefix + filled_by[&slot]->key);
-    }
-    filled_by[&slot] = f;
-    slot = to_si(f->scale, read_number(kv.second, source, full, *f));
+    filled_by[&slot] = &f;
+    slot = to_si(f.scale, m.finite_number(f.key, f.what));
   }
 }
 
@@ -241,31 +217,20 @@ VehicleParams parse_vehicle_yaml(const std::string& text, const std::string& sou
   } catch (const YAML::Exception& e) {
     throw input_error({source, line_of(e.mark), ""}, "a YAML vehicle file", printable(e.msg, 100));
   }
-  if (!root.IsMap()) {
-    throw input_error({source, line_of(root.Mark()), ""}, "a YAML mapping of vehicle keys (see data/vehicles/deepc.yaml)",
-                      root.IsNull() ? "an empty document" : "a scalar or list");
-  }
 
+  const char* expected = "a YAML mapping of vehicle keys (see data/vehicles/deepc.yaml)";
+  if (root.IsNull()) throw input_error({source, line_of(root.Mark()), ""}, expected, "an empty document");
+  const Mapping top(root, source, "", keys_of(kFields, {"name", "autopilot"}), expected);
   VehicleParams p;
   KeyLines lines;
   std::map<double*, const Field*> filled_by;
-  auto nested = [&](const std::string& key, const YAML::Node& value) {
-    const InputLocation at{source, line_of(value.Mark()), key};
-    if (key == "name") {
-      if (!value.IsScalar() || value.Scalar().empty()) throw input_error(at, "a vehicle name (text)");
-      p.name = value.Scalar();
-      return true;
-    }
-    if (key == "autopilot") {
-      if (!value.IsMap()) throw input_error(at, "a mapping of autopilot keys");
-      read_section(value, std::begin(kAutopilotFields), std::end(kAutopilotFields), nullptr, "autopilot.", source, p,
-                   lines, filled_by, [](const std::string&, const YAML::Node&) { return false; });
-      return true;
-    }
-    return false;
-  };
-  read_section(root, std::begin(kFields), std::end(kFields), "name, autopilot", "", source, p, lines, filled_by, nested);
-
+  read_fields(top, kFields, p, lines, filled_by);
+  if (top.has("name")) p.name = top.text("name", "a vehicle name (text)");
+  if (top.has("autopilot")) {
+    const Mapping autopilot(top.value("autopilot"), source, "autopilot.", keys_of(kAutopilotFields, {}),
+                            "a mapping of autopilot keys");
+    read_fields(autopilot, kAutopilotFields, p, lines, filled_by);
+  }
   // Messages name the key as written (knots or m/s) and its line.
   check(p, source, lines, [&](const char* key) -> const Field* {
     const Field* canonical = field_named(key);

@@ -22,10 +22,11 @@
 
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/angles.hpp"
 #include "deepguide/vehicle/energy_model.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 inline constexpr double kMetresPerSecondPerKnot = 1852.0 / 3600.0;
 

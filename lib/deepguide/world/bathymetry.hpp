@@ -25,9 +25,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/s57_chart.hpp"  // LonLatExtent
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class VerticalSense {
   elevation,  ///< up positive: the sea floor is negative

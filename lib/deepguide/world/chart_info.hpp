@@ -30,9 +30,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/s57_chart.hpp"  // LonLatExtent
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 enum class ChartKind { raster, s57, vector };
 const char* to_string(ChartKind kind);

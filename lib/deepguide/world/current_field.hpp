@@ -57,10 +57,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/s57_chart.hpp"  // LonLatExtent
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct CurrentOptions {
   /// Depth at which to take the current (m, positive down); 0 = surface.

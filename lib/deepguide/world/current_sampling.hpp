@@ -29,10 +29,11 @@
 #include <memory>
 #include <optional>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The velocity (m/s, along the field CRS's axes) at field coordinates
 /// (x, y) and time; std::nullopt outside the nodes, outside a time-dependent

@@ -6,9 +6,10 @@
 #include <limits>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/current_field.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// For `deepguide chart info`: what a field holds.
 struct CurrentSummary {

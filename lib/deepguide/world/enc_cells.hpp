@@ -20,7 +20,9 @@
 #include <string>
 #include <vector>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 struct EncCellFiles {
   std::string base;                  ///< the base cell, *.000

@@ -32,12 +32,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/enc_reader.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// What a zone of confidence promises (IHO S-57 CATZOC): depths within
 /// depth_fixed_m + depth_fraction * depth, positions within position_m.

@@ -26,11 +26,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct EncFeature {
   std::string cls;     ///< S-57 object class (the OGR layer), e.g. "DEPARE"

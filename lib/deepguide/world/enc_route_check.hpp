@@ -20,10 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct ChartCrossing {
   std::size_t leg = 0;  ///< 0-based: from waypoint leg to leg + 1

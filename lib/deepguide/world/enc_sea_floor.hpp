@@ -15,10 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// The floor over [lo, hi] in `frame`. Throws what enc_no_go throws, and
 /// InputError for a spacing that is not finite and > 0 or an empty box.

@@ -64,3 +64,11 @@ class MemoryOutput {
 };
 
 }  // namespace deepguide::gdal
+
+namespace deepguide {
+
+/// The completeness check (raster_completeness.hpp) for the dataset's
+/// driver (netCDF, AAIGrid); other drivers pass.
+void require_complete_raster(GDALDataset& dataset, const std::string& path);
+
+}  // namespace deepguide

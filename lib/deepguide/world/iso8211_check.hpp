@@ -22,7 +22,9 @@
 
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// Why the S-57 file at `path` cannot be read as one, or "" when its
 /// structure is sound. `update`: the file is an update (*.001 ..), not a base cell.

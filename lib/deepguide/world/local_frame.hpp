@@ -13,7 +13,9 @@
 #include <memory>
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 class LocalFrame {
  public:

@@ -44,12 +44,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct NoGoOptions {
   /// Operating depth of the vehicle (m, positive down). Required (finite, >= 0).

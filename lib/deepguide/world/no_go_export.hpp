@@ -10,11 +10,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/no_go.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct NoGoExportRequest {
   /// One bathymetry raster, or S-57 cells (*.000 with their updates) and

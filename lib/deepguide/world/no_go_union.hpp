@@ -19,9 +19,10 @@
 
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Disjoint polygons covering every tile and every other area. `tiles` must
 /// not overlap one another (they may share edges and corners). Throws

@@ -33,11 +33,12 @@
 
 #include <boost/geometry/index/rtree.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 /// Smallest signed distance between a closed segment and one footprint, and
 /// where on the segment it is attained.

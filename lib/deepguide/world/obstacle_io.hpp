@@ -20,11 +20,12 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct ObstacleReadOptions {
   /// Local planning frame: empty = UTM zone of the obstacles' centre, else e.g. "EPSG:32632".

@@ -4,9 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct RangeStats {
   std::size_t n = 0;

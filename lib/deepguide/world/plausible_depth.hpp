@@ -8,10 +8,11 @@
 #include <cmath>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 inline constexpr double kDeepestSea_m = 11100.0;
 inline constexpr double kHighestLand_m = 9000.0;

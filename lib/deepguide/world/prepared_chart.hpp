@@ -19,9 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct PreparedChartInfo {
   double depth_m = 0;

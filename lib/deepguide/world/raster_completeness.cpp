@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "deepguide/world/gdal_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/input_files.hpp"

@@ -15,12 +15,12 @@
 // What no reader can see is listed in docs/RELIABILITY.md: a flipped byte in
 // the data section of a format without checksums is a different, valid value.
 
-#include <gdal_priv.h>
-
 #include <cstdint>
 #include <string>
 
-namespace deepguide {
+#include "deepguide/core/api.hpp"
+
+namespace DEEPGUIDE_API deepguide {
 
 /// InputError naming the file when a netCDF classic file is shorter than its
 /// header says; other formats (netCDF-4 among them) pass.
@@ -30,8 +30,5 @@ void require_complete_netcdf(const std::string& path);
 /// other than `columns` x `rows` numbers (the size GDAL read from its
 /// header), or a token that is not a number.
 void require_complete_ascii_grid(const std::string& path, std::uint64_t columns, std::uint64_t rows);
-
-/// The check for the dataset's driver (netCDF, AAIGrid); others pass.
-void require_complete_raster(GDALDataset& dataset, const std::string& path);
 
 }  // namespace deepguide

@@ -33,10 +33,11 @@
 #include <map>
 #include <string>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct S57Options {
   /// Operating depth of the vehicle (m, positive down); NaN = no depth filter.

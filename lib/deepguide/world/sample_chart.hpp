@@ -37,9 +37,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct SampleChartOptions {
   /// Files are DIR/<name>.tif and DIR/<name>_hazards.gpkg.

@@ -22,11 +22,12 @@
 #include <utility>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/local_frame.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 using Vec3 = Eigen::Vector3d;
 

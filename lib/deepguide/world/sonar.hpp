@@ -39,11 +39,12 @@
 #include <random>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/core/angles.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/world/obstacle.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 inline constexpr double kMinSonarAxis_m = 0.1;
 

@@ -30,10 +30,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/core/api.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
-namespace deepguide {
+namespace DEEPGUIDE_API deepguide {
 
 struct VolumeOptions {
   double vertical_clearance_m = 2.0;  ///< kept over the sea floor and over obstacle tops

@@ -1,0 +1,94 @@
+// The deepguide command tree and its exit codes: 0 success, 1 bad input, 2
+// usage, 3 no safe route, 4 done with some inputs skipped (evaluate: a broken
+// scenario). apps/main.cpp runs it; tests run it in-process
+// (tests/planning/test_toy_graph.cpp).
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <new>
+
+#include "commands.hpp"
+#include "deepguide/core/error.hpp"
+#include "deepguide/core/version.hpp"
+
+namespace deepguide::app {
+
+void add_frame_options(CLI::App& cmd, FrameOptions& options) {
+  cmd.add_option("--crs", options.crs,
+                 "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the data)");
+  cmd.add_option("--src-crs", options.src_crs,
+                 "CRS of input files that carry none, e.g. a CSV in UTM (default: EPSG:4326 lon/lat)");
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"deepguide: plan and analyse how an AUV is guided around obstacles and objects"};
+  app.set_version_flag("--version", std::string("deepguide ") + kVersion);
+  app.require_subcommand(1);
+
+  CLI::App* obstacles = app.add_subcommand("obstacles", "Inspect and convert obstacle files");
+  obstacles->require_subcommand(1);
+  register_obstacles_info(*obstacles);
+  register_obstacles_convert(*obstacles);
+  register_obstacles_import(*obstacles);
+  CLI::App* chart = app.add_subcommand("chart", "Sea charts: bathymetry, S-57 cells, no-go areas, the sample chart");
+  chart->require_subcommand(1);
+  register_chart_synth(*chart);
+  register_chart_info(*chart);
+  register_chart_nogo(*chart);
+  register_chart_prepare(*chart);
+  register_plan(app);
+  register_mission(app);
+  register_simulate(app);
+  register_identify(app);
+  register_suite(app);
+  register_evaluate(app);
+  register_figures(app);
+  CLI::App* check = app.add_subcommand("check", "Check routes against obstacles");
+  check->require_subcommand(1);
+  register_check_route(*check);
+  CLI::App* render = app.add_subcommand("render", "Draw charts as PNG or SVG");
+  render->require_subcommand(1);
+  register_render_route(*render);
+  register_render_chart(*render);
+  register_render_reactive(*render);
+  register_render_identification(*render);
+  register_render_mission(*render);
+
+  // Every message is one line a terminal shows as it is: what a file put in
+  // an id or a name (a newline, an escape sequence, U+202E) is escaped here
+  // whatever the message that carries it.
+  const auto one_line = [](const char* what) { return printable(what, 4000); };
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "deepguide: error: " << one_line(e.what()) << "\n";
+    return 1;
+  } catch (const NoRouteError& e) {
+    std::cerr << "deepguide: no safe route: " << one_line(e.what()) << "\n";
+    return 3;
+  } catch (const ManoeuvreError& e) {
+    std::cerr << "deepguide: manoeuvre failed: " << one_line(e.what()) << "\n";
+    return 3;
+  } catch (const PartialError& e) {
+    std::cerr << "deepguide: incomplete: " << one_line(e.what()) << "\n";
+    return 4;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "deepguide: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "deepguide: internal error: " << one_line(e.what()) << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace deepguide::app
