@@ -418,7 +418,7 @@ TEST(EncNoGo, ClippedPartRoutesMatchTheFullGraphAndTheExactOptimum) {
     }
   }
   for (const EllipticCylinder& e : no_go.obstacles.ellipses) {
-    const Vec2 c = e.footprint.center;
+    const Vec2 c = e.footprint.centre;
     if (c.x() > lo.x() - e.footprint.a && c.x() < hi.x() + e.footprint.a && c.y() > lo.y() - e.footprint.a &&
         c.y() < hi.y() + e.footprint.a) {
       part.ellipses.push_back(e);

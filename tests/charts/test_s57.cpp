@@ -184,7 +184,7 @@ TEST(S57Hazards, KeyWestMatchesTheGeoJsonExportsFeatureByFeature) {
         const EllipticCylinder& e = *ellipses[id];
         const Vec2 expected_xy = frame.from_lonlat(g->toPoint()->getX(), g->toPoint()->getY());
         // The export keeps 7 decimals (about 1 cm); the cell stores 1e-7 degree units too.
-        EXPECT_LT((e.footprint.center - expected_xy).norm(), 0.02) << id;
+        EXPECT_LT((e.footprint.centre - expected_xy).norm(), 0.02) << id;
         EXPECT_DOUBLE_EQ(e.footprint.a, 10.0) << id;
         EXPECT_DOUBLE_EQ(e.footprint.b, 10.0) << id;
         EXPECT_EQ(e.top_depth_m.has_value(), valsou.has_value()) << id;
@@ -358,7 +358,7 @@ TEST(S57Hazards, EveryObstacleLiesInsideTheCell) {
       EXPECT_GE(ll.y(), s.extent.south - tol) << rel << " " << id;
       EXPECT_LE(ll.y(), s.extent.north + tol) << rel << " " << id;
     };
-    for (const auto& e : h.obstacles.ellipses) inside(e.footprint.center, e.id);
+    for (const auto& e : h.obstacles.ellipses) inside(e.footprint.centre, e.id);
     for (const auto& p : h.obstacles.polygons) {
       for (const auto& v : p.footprint.outer()) inside(Vec2(v.x(), v.y()), p.id);
     }

@@ -169,12 +169,12 @@ TEST(SampleChart, WritesTwiceTheSameAndReadsBack) {
   for (const EllipticCylinder& c : loaded.obstacles.ellipses) {
     const auto it = std::find_if(chart.hazards.begin(), chart.hazards.end(), [&](const auto& z) { return z.id == c.id; });
     ASSERT_NE(it, chart.hazards.end()) << c.id;
-    EXPECT_NEAR((c.footprint.center - it->position).norm(), 0.0, 1e-6) << c.id;
+    EXPECT_NEAR((c.footprint.centre - it->position).norm(), 0.0, 1e-6) << c.id;
     EXPECT_DOUBLE_EQ(c.footprint.a, it->semi_major_m);
     ASSERT_TRUE(c.top_depth_m.has_value());
     EXPECT_DOUBLE_EQ(*c.top_depth_m, it->top_depth_m);
     // orientation_deg is from TRUE north; the frame turns it by the convergence.
-    EXPECT_NEAR(loaded.frame.local_to_heading(c.footprint.theta, c.footprint.center), it->orientation_deg, 1e-6);
+    EXPECT_NEAR(loaded.frame.local_to_heading(c.footprint.theta, c.footprint.centre), it->orientation_deg, 1e-6);
   }
 }
 

@@ -36,7 +36,7 @@ TEST(MonteCarlo, ScenariosAreReproducibleAndStartInOpenWater) {
   const Scenario b = monte_carlo_scenario(p, 17);
   ASSERT_EQ(a.obstacles.size(), b.obstacles.size());
   for (std::size_t i = 0; i < a.obstacles.size(); ++i) {
-    EXPECT_EQ(a.obstacles[i].footprint.center, b.obstacles[i].footprint.center);
+    EXPECT_EQ(a.obstacles[i].footprint.centre, b.obstacles[i].footprint.centre);
     EXPECT_EQ(a.obstacles[i].footprint.a, b.obstacles[i].footprint.a);
   }
   EXPECT_EQ(a.target, b.target);

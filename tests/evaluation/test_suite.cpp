@@ -27,7 +27,7 @@ void expect_same(const Scenario& a, const Scenario& b) {
   for (std::size_t i = 0; i < a.obstacles.size(); ++i) {
     const Ellipse &x = a.obstacles[i].footprint, &y = b.obstacles[i].footprint;
     EXPECT_EQ(a.obstacles[i].id, b.obstacles[i].id);
-    EXPECT_EQ(x.center, y.center);
+    EXPECT_EQ(x.centre, y.centre);
     EXPECT_EQ(x.a, y.a);
     EXPECT_EQ(x.b, y.b);
     EXPECT_LT(angle_gap(x.theta, y.theta), 1e-12);

@@ -35,7 +35,7 @@ struct Frame {
   Vec2 v;  // minor axis
 
   explicit Frame(const Ellipse& e)
-      : c(e.center), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
+      : c(e.centre), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
         v(-std::sin(e.theta), std::cos(e.theta)) {}
 
   // Boundary point x(t) and its first and second derivatives.

@@ -108,7 +108,7 @@ Ellipse random_ellipse(std::mt19937& rng) {
   const double tp = u01(rng);
   // Mostly rotated; some exactly axis-aligned so that "on the axis" is exact.
   e.theta = tp < 0.15 ? 0.0 : (tp < 0.2 ? kPi / 2.0 : -kPi + 2.0 * kPi * u01(rng));
-  e.center = Vec2(-50.0 + 100.0 * u01(rng), -50.0 + 100.0 * u01(rng));
+  e.centre = Vec2(-50.0 + 100.0 * u01(rng), -50.0 + 100.0 * u01(rng));
   return e;
 }
 
@@ -215,8 +215,8 @@ std::string check_case(const Case& c, double& rel, double& abs_err, double& dist
   if (why.str().empty()) return {};
   std::ostringstream out;
   out.precision(17);
-  out << "a=" << c.e.a << " b=" << c.e.b << " theta=" << c.e.theta << " c=(" << c.e.center.x()
-      << ", " << c.e.center.y() << ") p=(" << c.p.x() << ", " << c.p.y() << ") local=("
+  out << "a=" << c.e.a << " b=" << c.e.b << " theta=" << c.e.theta << " c=(" << c.e.centre.x()
+      << ", " << c.e.centre.y() << ") p=(" << c.p.x() << ", " << c.p.y() << ") local=("
       << f.u.dot(c.p - f.c) << ", " << f.v.dot(c.p - f.c) << "):" << why.str();
   return out.str();
 }
@@ -345,15 +345,15 @@ TEST(EllipseDistance, CircleIsRadialDistance) {
                     -kPi + 2.0 * kPi * u01(rng)};
     const double phi = 2.0 * kPi * u01(rng);
     const double rho = 3.0 * r * u01(rng);
-    const Vec2 p = e.center + rho * Vec2(std::cos(phi), std::sin(phi));
-    const double radial = (p - e.center).norm();
+    const Vec2 p = e.centre + rho * Vec2(std::cos(phi), std::sin(phi));
+    const double radial = (p - e.centre).norm();
     const double expected = std::abs(radial - r);
     const EllipseProjection pr = project_to_ellipse(e, p);
     ASSERT_NEAR(pr.distance, expected, 1e-12 * (1.0 + r)) << i;
     ASSERT_EQ(pr.inside, radial < r) << i;
     // The closest point is on the ray from the centre through p.
     if (radial > 1e-9) {
-      ASSERT_NEAR((pr.point - (e.center + r * (p - e.center) / radial)).norm(), 0.0,
+      ASSERT_NEAR((pr.point - (e.centre + r * (p - e.centre) / radial)).norm(), 0.0,
                   1e-12 * (1.0 + r))
           << i;
     }
@@ -363,7 +363,7 @@ TEST(EllipseDistance, CircleIsRadialDistance) {
   const EllipseProjection pc = project_to_ellipse(circle, Vec2(1.0, 2.0));
   EXPECT_NEAR(pc.distance, 4.0, 1e-14);
   EXPECT_TRUE(pc.inside);
-  EXPECT_NEAR((pc.point - circle.center).norm(), 4.0, 1e-14);
+  EXPECT_NEAR((pc.point - circle.centre).norm(), 4.0, 1e-14);
 }
 
 // ---- The reference itself is checked on the hand cases first ---------------
@@ -435,7 +435,7 @@ TEST(EllipseDistance, TinyOffsetFromMajorAxisInsideCusp) {
   // Expected 3 sqrt(1 - 0.25 / 16) = 2.97647... (the s-based version: inf).
   const double th = 0.7;
   const Ellipse r{Vec2(3.0, -2.0), 5.0, 3.0, th};
-  const Vec2 p = r.center + 0.5 * Vec2(std::cos(th), std::sin(th));
+  const Vec2 p = r.centre + 0.5 * Vec2(std::cos(th), std::sin(th));
   EXPECT_NEAR(signed_distance(r, p), -3.0 * std::sqrt(1.0 - 0.25 / 16.0), 1e-12);
   // Near the centre: (1e-15, 1e-15) -> expected 3 (to 1e-15; the s-based version: 2.2518).
   EXPECT_NEAR(signed_distance(e, Vec2(1e-15, 1e-15)), -3.0, 1e-12);

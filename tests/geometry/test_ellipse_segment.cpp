@@ -195,7 +195,7 @@ TEST(EllipseSegment, RandomAgainstDenseSampling) {
     e.b = 0.2 + 5.0 * u01(rng);
     e.a = e.b * (u01(rng) < 0.2 ? 1.0 : std::exp(std::log(20.0) * u01(rng)));
     e.theta = -kPi + 2.0 * kPi * u01(rng);
-    e.center = Vec2(-100.0 + 200.0 * u01(rng), -100.0 + 200.0 * u01(rng));
+    e.centre = Vec2(-100.0 + 200.0 * u01(rng), -100.0 + 200.0 * u01(rng));
     const Frame f(e);
     // Endpoints uniform in [-2.5, 2.5]^2 of the unit-circle frame; sometimes a short
     // segment, so that both ends inside (or both outside, close together) occur.

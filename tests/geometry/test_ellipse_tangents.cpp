@@ -48,7 +48,7 @@ Ellipse random_ellipse(std::mt19937& rng, double max_b = 5.0) {
   const double pick = u01(rng);
   e.a = e.b * (pick < 0.15 ? 1.0 : (pick < 0.25 ? 20.0 : std::exp(std::log(20.0) * u01(rng))));
   e.theta = -kPi + 2.0 * kPi * u01(rng);
-  e.center = Vec2(-100.0 + 200.0 * u01(rng), -100.0 + 200.0 * u01(rng));
+  e.centre = Vec2(-100.0 + 200.0 * u01(rng), -100.0 + 200.0 * u01(rng));
   return e;
 }
 
@@ -126,7 +126,7 @@ TEST(PointTangents, InsideOrOnTheEllipseHasNone) {
     const Frame f(r);
     const double rho = 0.999999 * std::sqrt(u01(rng));
     const double phi = 2.0 * kPi * u01(rng);
-    const Vec2 p = r.center + r.a * rho * std::cos(phi) * f.u + r.b * rho * std::sin(phi) * f.v;
+    const Vec2 p = r.centre + r.a * rho * std::cos(phi) * f.u + r.b * rho * std::sin(phi) * f.v;
     ASSERT_LT(f.implicit(p), 1.0);
     EXPECT_FALSE(tangent_points(r, p).has_value()) << i;
   }
@@ -144,12 +144,12 @@ TEST(PointTangents, RandomRotatedEllipses) {
     // Outside: radius 1.001 .. 20 in the unit-circle frame.
     const double rho = 1.001 + 19.0 * u01(rng) * u01(rng);
     const double phi = 2.0 * kPi * u01(rng);
-    const Vec2 p = e.center + e.a * rho * std::cos(phi) * f.u + e.b * rho * std::sin(phi) * f.v;
+    const Vec2 p = e.centre + e.a * rho * std::cos(phi) * f.u + e.b * rho * std::sin(phi) * f.v;
     SCOPED_TRACE(::testing::Message() << "case " << i << " a=" << e.a << " b=" << e.b
                                       << " theta=" << e.theta << " rho=" << rho);
     const std::optional<PointTangents> t = tangent_points(e, p);
     ASSERT_TRUE(t.has_value());
-    const Vec2 ray = e.center - p;
+    const Vec2 ray = e.centre - p;
     for (const Vec2& x : {t->left, t->right}) {
       // On the ellipse.
       const double on = std::abs(f.implicit(x) - 1.0);
@@ -165,7 +165,7 @@ TEST(PointTangents, RandomRotatedEllipses) {
     // The two tangent points differ and the whole ellipse lies between the two
     // tangent lines: every boundary point is right of p->left and left of p->right.
     EXPECT_GT((t->left - t->right).norm(), 0.0);
-    const double scale = (p - e.center).norm() + e.a;
+    const double scale = (p - e.centre).norm() + e.a;
     for (int k = 0; k < 360; ++k) {
       const Vec2 x = f.point(2.0 * kPi * k / 360.0);
       ASSERT_LE(cross(t->left - p, x - p), 1e-9 * scale * scale) << k;
@@ -191,8 +191,8 @@ void check_common_tangents(const Ellipse& e1, const Ellipse& e2,
   EXPECT_EQ(ts[1].kind, TangentKind::outer);
   EXPECT_EQ(ts[2].kind, TangentKind::inner);
   EXPECT_EQ(ts[3].kind, TangentKind::inner);
-  const double scale = std::max({e1.center.norm(), e2.center.norm(), e1.a, e2.a,
-                                 (e1.center - e2.center).norm()});
+  const double scale = std::max({e1.centre.norm(), e2.centre.norm(), e1.a, e2.a,
+                                 (e1.centre - e2.centre).norm()});
   constexpr int kBoundary = 20000;
   for (std::size_t j = 0; j < ts.size(); ++j) {
     const CommonTangent& t = ts[j];
@@ -289,11 +289,11 @@ TEST(CommonTangents, RandomDisjointRotatedPairs) {
       // of the size.
       const double size = std::max(e1.a, e2.a);
       const double gap = (i % 3 == 1 ? 1e-3 : 1e-6) * size;
-      e2.center = e1.center + (Frame(e1).support_centered(n) + Frame(e2).support_centered(n) + gap) * n;
+      e2.centre = e1.centre + (Frame(e1).support_centered(n) + Frame(e2).support_centered(n) + gap) * n;
       ++near_pairs;
     } else {
       // Centres farther apart than the sum of the semi-major axes.
-      e2.center = e1.center + (e1.a + e2.a) * (1.05 + 2.0 * u01(rng)) * n;
+      e2.centre = e1.centre + (e1.a + e2.a) * (1.05 + 2.0 * u01(rng)) * n;
       ++far_pairs;
     }
     SCOPED_TRACE(::testing::Message() << "pair " << i << (nearly_touching ? " (near)" : "")
@@ -325,9 +325,9 @@ TEST(CommonTangents, OverlappingEllipsesGiveNone) {
     Ellipse e2 = random_ellipse(rng);
     const Frame f1(e1);
     const double depth = i % 2 == 0 ? 0.99 : 0.5;  // how far inside (unit-circle radius)
-    const Vec2 p = e1.center + depth * (f1.point(2.0 * kPi * u01(rng)) - e1.center);
+    const Vec2 p = e1.centre + depth * (f1.point(2.0 * kPi * u01(rng)) - e1.centre);
     const Frame f2(e2);
-    e2.center = p - depth * (f2.point(2.0 * kPi * u01(rng)) - e2.center);
+    e2.centre = p - depth * (f2.point(2.0 * kPi * u01(rng)) - e2.centre);
     ASSERT_LT(Frame(e1).implicit(p), 1.0);
     ASSERT_LT(Frame(e2).implicit(p), 1.0);
     EXPECT_TRUE(common_tangents(e1, e2).empty()) << i;

@@ -49,7 +49,7 @@ struct PolygonReport {
 PolygonReport check_polygon(const SafetyZone& zone, const std::vector<Vec2>& poly, double tol) {
   const Frame f(zone.ellipse);
   const double d = zone.margin;
-  const double scale = zone.ellipse.center.norm() + zone.ellipse.a + d;
+  const double scale = zone.ellipse.centre.norm() + zone.ellipse.a + d;
   const std::size_t n = poly.size();
   PolygonReport rep;
   rep.vertices = n;

@@ -42,7 +42,7 @@ TEST(Aligning, ModesFollowTheShadeAndTheHeading) {
   EXPECT_EQ(memory.switches, 2);
   // The held point: the lee goal on the 10 m safety ellipse plus the 1 m buffer, on the axis.
   EXPECT_NEAR(c.goal.y(), 0.0, 1e-12);
-  EXPECT_NEAR(kObject.center.x() + (c.goal - kObject.center).norm(),
+  EXPECT_NEAR(kObject.centre.x() + (c.goal - kObject.centre).norm(),
               lee_goal_point(security_ellipse(kObject, 10.0), Vec2(1, 0)).x() + 1.0, 1e-12);
 }
 

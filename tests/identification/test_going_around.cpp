@@ -25,7 +25,7 @@ TEST(GoingAround, ModesSwitchAtTheBordersWithHysteresis) {
   params.switch_m = 10.0;
   AroundMemory memory;
   // Points on the major axis beyond the path: e = x - (25 + 20) along it.
-  auto at = [&](double e) -> Vec2 { return kObject.center + (45.0 + e) * kObject.major_dir(); };
+  auto at = [&](double e) -> Vec2 { return kObject.centre + (45.0 + e) * kObject.major_dir(); };
   EXPECT_EQ(around_command(kObject, params, memory, at(10.1)).mode, AroundMode::steering);
   EXPECT_NEAR(around_command(kObject, params, memory, at(10.1)).cross_track_m, 10.1, 1e-9);
   EXPECT_EQ(around_command(kObject, params, memory, at(9.9)).mode, AroundMode::tracking);
@@ -37,7 +37,7 @@ TEST(GoingAround, ModesSwitchAtTheBordersWithHysteresis) {
 TEST(GoingAround, SteeringHeadsForTheNearestPathPoint) {
   AroundParams params;
   AroundMemory memory;
-  const Vec2 p = kObject.center + 120.0 * kObject.minor_dir();  // on the minor axis: nearest point along it
+  const Vec2 p = kObject.centre + 120.0 * kObject.minor_dir();  // on the minor axis: nearest point along it
   const AroundCommand c = around_command(kObject, params, memory, p);
   EXPECT_EQ(c.mode, AroundMode::steering);
   EXPECT_NEAR(wrap_pi(c.course - math_angle(-kObject.minor_dir())), 0.0, 1e-9);
@@ -49,7 +49,7 @@ TEST(GoingAround, LineOfSightTurnsTowardsThePath) {
   // the course turns left of it by atan(5 / lookahead); clockwise it runs along -minor and turns right.
   AroundParams params;
   params.switch_m = 10.0;
-  const Vec2 p = kObject.center + 50.0 * kObject.major_dir();
+  const Vec2 p = kObject.centre + 50.0 * kObject.major_dir();
   const double along = math_angle(kObject.minor_dir());
   for (int direction : {1, -1}) {
     params.direction = direction;
@@ -104,7 +104,7 @@ TEST(GoingAround, KinematicVehicleCompletesTheLapsOnThePath) {
   check_offset_path_fits(kObject, params.distance_m, params.speed_mps / deg_to_rad(5.0), "test");
   for (int direction : {1, -1}) {
     params.direction = direction;
-    const Flight run = fly(params, kObject.center + Vec2(-150.0, 30.0), 0.0);
+    const Flight run = fly(params, kObject.centre + Vec2(-150.0, 30.0), 0.0);
     SCOPED_TRACE(direction);
     EXPECT_TRUE(run.done);
     EXPECT_GE(run.laps, 2.0);
@@ -164,7 +164,7 @@ TEST(GoingAround, CourseRateIsTheDerivativeOfTheCourse) {
   EXPECT_EQ(checked, 120);
   // Steering has no rate to feed forward.
   AroundMemory m;
-  EXPECT_EQ(around_command(object, params, m, object.center + Vec2(300, 0), Vec2(2, 0)).course_rate, 0.0);
+  EXPECT_EQ(around_command(object, params, m, object.centre + Vec2(300, 0), Vec2(2, 0)).course_rate, 0.0);
 }
 
 }  // namespace

@@ -26,19 +26,19 @@ TEST(LeeGoal, HandGeometryOnARotatedEllipse) {
   // Along the major axis, the minor axis, and 45 degrees between them (local frame):
   // t* = 1 / sqrt((cos 45 / 30)^2 + (sin 45 / 10)^2) = 13.4164...
   const double th = kPi / 6;
-  EXPECT_LT((lee_goal_point(kSafety, unit(th)) - (kSafety.center + 30.0 * unit(th))).norm(), 1e-12);
-  EXPECT_LT((lee_goal_point(kSafety, unit(th + kPi)) - (kSafety.center - 30.0 * unit(th))).norm(), 1e-12);
-  EXPECT_LT((lee_goal_point(kSafety, unit(th + kPi / 2)) - (kSafety.center + 10.0 * unit(th + kPi / 2))).norm(), 1e-12);
+  EXPECT_LT((lee_goal_point(kSafety, unit(th)) - (kSafety.centre + 30.0 * unit(th))).norm(), 1e-12);
+  EXPECT_LT((lee_goal_point(kSafety, unit(th + kPi)) - (kSafety.centre - 30.0 * unit(th))).norm(), 1e-12);
+  EXPECT_LT((lee_goal_point(kSafety, unit(th + kPi / 2)) - (kSafety.centre + 10.0 * unit(th + kPi / 2))).norm(), 1e-12);
   const double t45 = 1.0 / std::hypot(std::cos(kPi / 4) / 30.0, std::sin(kPi / 4) / 10.0);
   EXPECT_NEAR(t45, 13.416407864998739, 1e-12);
-  EXPECT_LT((lee_goal_point(kSafety, unit(th + kPi / 4)) - (kSafety.center + t45 * unit(th + kPi / 4))).norm(), 1e-12);
+  EXPECT_LT((lee_goal_point(kSafety, unit(th + kPi / 4)) - (kSafety.centre + t45 * unit(th + kPi / 4))).norm(), 1e-12);
 }
 
 TEST(LeeGoal, OnTheEllipseAndOnTheDownstreamRayForEveryCurrent) {
   for (int k = 0; k < 72; ++k) {
     const Vec2 e = unit(2 * kPi * k / 72);
     const Vec2 goal = lee_goal_point(kSafety, e);
-    const Vec2 d = goal - kSafety.center;
+    const Vec2 d = goal - kSafety.centre;
     EXPECT_NEAR(kSafety.implicit_value(goal), 1.0, 1e-12) << k;
     EXPECT_NEAR(e.x() * d.y() - e.y() * d.x(), 0.0, 1e-9) << k;  // on the line along the current
     EXPECT_GT(d.dot(e), 0.0) << k;                               // downstream
@@ -51,7 +51,7 @@ TEST(LeeGoal, ShadeHalfWidthAndAreas) {
   EXPECT_NEAR(shade_half_width(kSafety, unit(th)), 10.0, 1e-12);           // current along the major axis
   EXPECT_NEAR(shade_half_width(kSafety, unit(th + kPi / 2)), 30.0, 1e-12);  // across it
   // Current along the major axis: the shade is the strip |across| <= 10 downstream of the centre.
-  const Vec2 e = unit(th), n = unit(th + kPi / 2), c = kSafety.center;
+  const Vec2 e = unit(th), n = unit(th + kPi / 2), c = kSafety.centre;
   EXPECT_EQ(align_area(kSafety, e, c + 50.0 * e), AlignArea::positioning);
   EXPECT_EQ(align_area(kSafety, e, c + 50.0 * e + 9.99 * n), AlignArea::positioning);
   EXPECT_EQ(align_area(kSafety, e, c + 50.0 * e - 9.99 * n), AlignArea::positioning);
@@ -100,7 +100,7 @@ TEST(OffsetPath, ProjectionIsAlongTheNormal) {
   std::uniform_real_distribution<double> pos(-120.0, 120.0);
   const double d = 10.0;
   for (int k = 0; k < 500; ++k) {
-    const Vec2 p = kObject.center + Vec2(pos(rng), pos(rng));
+    const Vec2 p = kObject.centre + Vec2(pos(rng), pos(rng));
     if (kObject.contains(p)) continue;
     const OffsetProjection q = project_to_offset(kObject, d, p);
     EXPECT_NEAR(signed_distance(kObject, q.point), d, 1e-9) << k;

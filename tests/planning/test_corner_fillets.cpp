@@ -25,7 +25,7 @@ TEST(CornerFillets, ARightAngleTurnsOnAQuarterCircle) {
   EXPECT_EQ(arc.turn, 1);
   EXPECT_LT((arc.from - Vec2(90, 0)).norm(), 1e-12);
   EXPECT_LT((arc.to - Vec2(100, 10)).norm(), 1e-12);
-  EXPECT_LT((arc.core.center - Vec2(90, 10)).norm(), 1e-12);
+  EXPECT_LT((arc.core.centre - Vec2(90, 10)).norm(), 1e-12);
   EXPECT_NEAR(arc.length_m, 5 * kPi, 1e-12);
   EXPECT_DOUBLE_EQ(min_turn_radius(arc), 10.0);
   EXPECT_LT((arc_point(arc, arc.phi_from) - arc.from).norm(), 1e-12);
@@ -48,7 +48,7 @@ TEST(CornerFillets, RightTurnsGoClockwiseAndStraightPointsStay) {
   EXPECT_LT((arc.from - Vec2(50 - t, 0)).norm(), 1e-12);
   EXPECT_LT((arc.to - (Vec2(50, 0) + t * out)).norm(), 1e-12);
   EXPECT_NEAR(arc.phi_to - arc.phi_from, -kPi / 3, 1e-12);
-  EXPECT_NEAR(arc.core.center.y(), -12.0, 1e-12);
+  EXPECT_NEAR(arc.core.centre.y(), -12.0, 1e-12);
 }
 
 TEST(CornerFillets, CornersTooCloseForTheRadiusAreNamed) {

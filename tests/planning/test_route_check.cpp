@@ -230,7 +230,7 @@ TEST(RouteCheck, HundredThousandObstacles) {
     double lower;
     if (i < obstacles.ellipses.size()) {
       const Ellipse& e = obstacles.ellipses[i].footprint;
-      lower = segment_point(e.center) - e.a;
+      lower = segment_point(e.centre) - e.a;
     } else {
       const BgBox box = boost::geometry::return_envelope<BgBox>(obstacles.polygons[i - obstacles.ellipses.size()].footprint);
       const Vec2 lo = to_eigen(box.min_corner());

@@ -36,7 +36,7 @@ double offset_arc_by_chords(const Ellipse& e, double d, double phi0, double phi1
     // Support point of the ellipse for u, from its definition.
     const Vec2 ul(u.dot(e.major_dir()), u.dot(e.minor_dir()));
     const double h = std::hypot(e.a * ul.x(), e.b * ul.y());
-    const Vec2 q = e.center + (e.a * e.a * ul.x() / h) * e.major_dir() + (e.b * e.b * ul.y() / h) * e.minor_dir() + d * u;
+    const Vec2 q = e.centre + (e.a * e.a * ul.x() / h) * e.major_dir() + (e.b * e.b * ul.y() / h) * e.minor_dir() + d * u;
     if (k > 0) sum += (q - prev).norm();
     prev = q;
   }

@@ -40,7 +40,7 @@ class ToyGraph : public RouteGraph {
     };
     for (const EllipticCylinder& c : in.obstacles.ellipses) {
       const double r = std::max(c.footprint.a, c.footprint.b);  // the box of the circle round the ellipse
-      corners(c.footprint.center - Vec2::Constant(r), c.footprint.center + Vec2::Constant(r));
+      corners(c.footprint.centre - Vec2::Constant(r), c.footprint.centre + Vec2::Constant(r));
     }
     for (const PolygonObstacle& p : in.obstacles.polygons) {
       BgBox box;

@@ -107,7 +107,7 @@ TEST(SecurityEllipse, CircleGrowsByTheMargin) {
   const Ellipse z = security_ellipse(disc(3, 4, 10), 5);
   EXPECT_DOUBLE_EQ(z.a, 15.0);
   EXPECT_DOUBLE_EQ(z.b, 15.0);
-  EXPECT_EQ(z.center, Vec2(3, 4));
+  EXPECT_EQ(z.centre, Vec2(3, 4));
 }
 
 TEST(SecurityEllipse, ContainsTheOffsetZoneAndTouchesItAtTheTips) {
@@ -125,7 +125,7 @@ TEST(SecurityEllipse, ContainsTheOffsetZoneAndTouchesItAtTheTips) {
   EXPECT_LE(max_value, 1.0 + 1e-12);
   EXPECT_NEAR(max_value, 1.0, 1e-9);  // touches at t = 0 (the tip)
   // The naive (a + d, b + d) ellipse does not contain the offset curve.
-  const Ellipse naive{object.center, 15, 7, object.theta};
+  const Ellipse naive{object.centre, 15, 7, object.theta};
   EXPECT_GT(naive.implicit_value(object.point_at(0.6) + 5.0 * object.normal_at(0.6)), 1.0);
 }
 
@@ -412,13 +412,13 @@ TEST(Geometric, ReorderedObjectsKeepTheLatchedSide) {
   command(ReactiveMethod::geometric, params, memory, Vec2(-100, 0.5), 0.0, Vec2(150, 0), objects);
   ASSERT_EQ(memory.side, 1);
   std::swap(objects[0], objects[1]);
-  objects[1].center.x() += 0.3;  // re-estimated a little off
+  objects[1].centre.x() += 0.3;  // re-estimated a little off
   const ReactiveCommand c =
       command(ReactiveMethod::geometric, params, memory, Vec2(-95, -0.5), 0.0, Vec2(150, 0), objects);
   EXPECT_EQ(memory.side, 1);
   EXPECT_EQ(memory.engaged_object, 1);
   EXPECT_EQ(c.active_object, 1);
-  EXPECT_LT(line_offset(Vec2(-95, -0.5), c.course, objects[1].center), 0.0);  // still passing north
+  EXPECT_LT(line_offset(Vec2(-95, -0.5), c.course, objects[1].centre), 0.0);  // still passing north
 }
 
 // --- (a) dipole ---
@@ -548,7 +548,7 @@ TEST(Dipole, CloseObjectsMergeIntoOneCircle) {
   const std::vector<DipoleZone> zones = dipole_zones(objects, 10, 5);
   ASSERT_EQ(zones.size(), 2u);
   EXPECT_NEAR(zones[0].shape.a, 35.0, 1e-12);
-  EXPECT_NEAR(zones[0].shape.center.norm(), 0.0, 1e-12);
+  EXPECT_NEAR(zones[0].shape.centre.norm(), 0.0, 1e-12);
   EXPECT_EQ(zones[0].members, (std::vector<std::ptrdiff_t>{0, 1}));
   // A gap of 4 m < dipole_blend 5 m merges, a gap of 6 m does not.
   EXPECT_EQ(dipole_zones(std::vector<Ellipse>{disc(0, 0, 10), disc(44, 0, 10)}, 10, 5).size(), 1u);

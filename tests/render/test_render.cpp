@@ -81,7 +81,7 @@ struct SmallScene {
   SmallScene() {
     EllipticCylinder e;
     e.id = "e1";
-    e.footprint.center = Vec2(0.0, 0.0);
+    e.footprint.centre = Vec2(0.0, 0.0);
     e.footprint.a = 40.0;
     e.footprint.b = 20.0;
     e.footprint.theta = 0.3;

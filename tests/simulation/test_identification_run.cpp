@@ -43,7 +43,7 @@ Scenario identify_scenario(IdentifyMode mode, const Ellipse& object, Vec2 start,
   Scenario sc;
   sc.name = "test";
   sc.start = start;
-  sc.target = object.center;
+  sc.target = object.centre;
   sc.depth_m = 30.0;
   sc.current = current;
   sc.obstacles = {{"wreck", object, {}, {}}};
@@ -85,7 +85,7 @@ TEST(IdentificationRun, AligningHoldsTheShadeInCurrentsUpTo1MetrePerSecond) {
     // The held point lies on the lee (or, in still water, the near) side, past the standoff.
     EXPECT_GT(r.stats.requested_distance_m, sc.identify->align.standoff_m);
     if (c.speed > 0.0) {
-      const Vec2 lee = r.goal - kWreck.center;
+      const Vec2 lee = r.goal - kWreck.centre;
       EXPECT_GT(lee.normalized().dot(sc.current.normalized()), 0.999);
       // The bow into the current at the end.
       EXPECT_LT(std::abs(wrap_pi(r.trajectory.back().vehicle.heading - math_angle(-sc.current))), deg_to_rad(10.0));
@@ -131,7 +131,7 @@ TEST(IdentificationRun, GoingAroundCompletesTheLapsOnThePathInCurrents) {
       for (std::size_t k = 1; k < r.trajectory.size(); ++k) {
         const IdentifySample& x = r.trajectory[k];
         if (x.vehicle.time_s < r.stats.time_to_position_s) continue;
-        const Vec2 rel = x.vehicle.position - kLongWreck.center;
+        const Vec2 rel = x.vehicle.position - kLongWreck.centre;
         const Vec2 v = x.vehicle.position - r.trajectory[k - 1].vehicle.position;
         if (direction * (rel.x() * v.y() - rel.y() * v.x()) <= 0.0) ++wrong_side;
       }
@@ -234,7 +234,7 @@ TEST(IdentifySection, SampleScenariosRead) {
   EXPECT_EQ(al.identify->object_id, "wreck");
   EXPECT_EQ(al.identify->mode, IdentifyMode::align);
   EXPECT_EQ(al.identify->around.direction, 1);  // side: port
-  EXPECT_EQ(al.target, al.identify->object.center);  // no target key: the object's centre
+  EXPECT_EQ(al.target, al.identify->object.centre);  // no target key: the object's centre
   const Scenario ar = read_scenario_file(test::source_file("data/scenarios/around_object.yaml"));
   ASSERT_TRUE(ar.identify);
   EXPECT_EQ(ar.identify->mode, IdentifyMode::around);
@@ -348,7 +348,7 @@ TEST(IdentificationRun, AnOverpoweredAlignStillKnowsItsHeldPointAndDraws) {
   const IdentifyResult r = simulate_identification(sc);
   ASSERT_EQ(r.end, IdentifyEnd::overpowered);
   // The held point lies down the current (east) from the wreck, past the standoff, not at the origin.
-  EXPECT_GT(r.goal.x(), kWreck.center.x() + 10.0);
+  EXPECT_GT(r.goal.x(), kWreck.centre.x() + 10.0);
   EXPECT_NEAR(r.goal.y(), 0.0, 1e-9);
   ASSERT_EQ(r.trajectory.size(), 1u);
   EXPECT_EQ(r.trajectory[0].phase, IdentifyPhase::overpowered);

@@ -129,7 +129,7 @@ TEST(MissionRun, ObjectsNearAheadOrLongAreEvadedNotHit) {
   other.seed = 7;
   const MissionRun c = run_mission(m, {}, plan, along, other);
   ASSERT_EQ(c.detected.size(), 1u);
-  EXPECT_NE(c.detected.ellipses[0].footprint.center, b.detected.ellipses[0].footprint.center);
+  EXPECT_NE(c.detected.ellipses[0].footprint.centre, b.detected.ellipses[0].footprint.centre);
 }
 
 TEST(MissionRun, ThePlanLevelKeepsToTheLapsArcs) {

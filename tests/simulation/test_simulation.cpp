@@ -133,7 +133,7 @@ TEST(Contacts, HausdorffDistanceOfEllipses) {
   const Ellipse a{{0, 0}, 10, 4, 0.0};
   EXPECT_EQ(ellipse_hausdorff_distance(a, a), 0.0);
   Ellipse shifted = a;
-  shifted.center = {3, 4};
+  shifted.centre = {3, 4};
   EXPECT_NEAR(ellipse_hausdorff_distance(a, shifted), 5.0, 0.2);  // a translation by 5 m (16 directions)
   const Ellipse crossed{{0, 0}, 10, 4, kPi / 2};
   EXPECT_NEAR(ellipse_hausdorff_distance(a, crossed), 6.0, 1e-12);  // a - b along the axes
@@ -166,21 +166,21 @@ TEST(Contacts, NewestEstimateWithinTheGateNewContactBeyondAndForgetting) {
   memory.update(std::span(&d, 1), 0.0);
   // Gate at ranges 100 and 50: 2 + 3 (2.75 + 1.75) = 15.5 m. A 12 m shift is the same contact...
   Ellipse moved = first;
-  moved.center = {112, 0};
+  moved.centre = {112, 0};
   d = detection(moved, 50.0, 1.0);
   memory.update(std::span(&d, 1), 1.0);
   ASSERT_EQ(memory.size(), 1u);
-  EXPECT_EQ(memory.ellipses()[0].center, Vec2(112, 0));  // the newest estimate
+  EXPECT_EQ(memory.ellipses()[0].centre, Vec2(112, 0));  // the newest estimate
   // ... a 17 m shift at ranges 50 and 50 (gate 2 + 3 x 3.5 = 12.5 m) is a new one.
   Ellipse far = moved;
-  far.center = {129, 0};
+  far.centre = {129, 0};
   d = detection(far, 50.0, 2.0);
   memory.update(std::span(&d, 1), 2.0);
   ASSERT_EQ(memory.size(), 2u);
   // memory_s = 10: at t = 11.5 the contact last seen at t = 1 is forgotten, the one from t = 2 kept.
   memory.update({}, 11.5);
   ASSERT_EQ(memory.size(), 1u);
-  EXPECT_EQ(memory.ellipses()[0].center, Vec2(129, 0));
+  EXPECT_EQ(memory.ellipses()[0].centre, Vec2(129, 0));
 }
 
 TEST(Contacts, OneScanNeverMergesTwoDetections) {
@@ -496,7 +496,7 @@ TEST(ScenarioFile, LonLatPositionsAndObstacleFile) {
   ASSERT_EQ(sc.obstacles.size(), 1u);
   // 0.02 deg of longitude at 54.45 N is about 1294 m; the obstacle lies midway.
   EXPECT_NEAR((sc.target - sc.start).norm(), 1294.0, 5.0);
-  EXPECT_NEAR((sc.obstacles[0].footprint.center - 0.5 * (sc.start + sc.target)).norm(), 0.0, 2.0);
+  EXPECT_NEAR((sc.obstacles[0].footprint.centre - 0.5 * (sc.start + sc.target)).norm(), 0.0, 2.0);
 
   // A polygon in the obstacle file is refused: the sonar reports ellipses.
   dir.write("poly.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},

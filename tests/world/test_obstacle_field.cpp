@@ -228,12 +228,12 @@ TEST(ObstacleField, SegmentCrossingEllipseIsNegative) {
   // A rotated ellipse crossed off-centre: negative, and agrees with the crossing test.
   const Ellipse e{Vec2(50.0, 20.0), 12.0, 4.0, 0.4};
   const ObstacleField rotated(one_ellipse(e), 0.0);
-  const Vec2 a = e.center + Vec2(-20.0, 1.0);
-  const Vec2 b = e.center + Vec2(20.0, 3.0);
+  const Vec2 a = e.centre + Vec2(-20.0, 1.0);
+  const Vec2 b = e.centre + Vec2(20.0, 3.0);
   ASSERT_TRUE(segment_intersects(e, a, b));
   EXPECT_LT(rotated.segment_clearance(a, b).distance, -1.0);
   // A chord that only just dips in stays negative.
-  const Vec2 top = e.center + 4.0 * e.minor_dir();
+  const Vec2 top = e.centre + 4.0 * e.minor_dir();
   const Vec2 dip = top - 1e-9 * e.minor_dir();
   const auto grazing = rotated.segment_clearance(dip - 30.0 * e.major_dir(), dip + 30.0 * e.major_dir());
   EXPECT_LT(grazing.distance, 0.0);
@@ -463,7 +463,7 @@ Brute brute_segment(const ObstacleField& field, const Vec2& a, const Vec2& b) {
     double lower = -kInf;
     if (i < set.ellipses.size()) {
       const Ellipse& e = set.ellipses[i].footprint;
-      lower = reference_segment_distance(e.center, a, b) - e.a;
+      lower = reference_segment_distance(e.centre, a, b) - e.a;
     }
     if (lower > best.distance) continue;
     const double d = field.segment_distance_to(i, a, b).distance;

@@ -31,7 +31,7 @@ ObstacleSet random_set(std::mt19937& rng, int n_ellipses, int n_polygons) {
   for (int i = 0; i < n_ellipses; ++i) {
     EllipticCylinder c;
     c.id = "e" + std::to_string(i);
-    c.footprint.center = {x(rng), y(rng)};
+    c.footprint.centre = {x(rng), y(rng)};
     const double a = axis(rng), b = axis(rng);
     c.footprint.a = std::max(a, b);
     c.footprint.b = std::min(a, b);
@@ -63,7 +63,7 @@ void expect_same(const ObstacleSet& want, const ObstacleSet& got, double tol_m) 
     const auto& w = want.ellipses[i];
     const auto& g = got.ellipses[i];
     EXPECT_EQ(g.id, w.id);
-    EXPECT_LT((g.footprint.center - w.footprint.center).norm(), tol_m) << w.id;
+    EXPECT_LT((g.footprint.centre - w.footprint.centre).norm(), tol_m) << w.id;
     EXPECT_NEAR(g.footprint.a, w.footprint.a, 1e-9);
     EXPECT_NEAR(g.footprint.b, w.footprint.b, 1e-9);
     // Angle error times the semi-major axis is the displacement of the axis tip.
@@ -165,9 +165,9 @@ TEST(ObstacleRead, OrientationIsFromTrueNorthNotGridNorth) {
   const LoadedObstacles l = load_obstacles({path}, {"EPSG:32632", ""});
   const Ellipse& e = l.obstacles.ellipses.at(0).footprint;
   // The tip of the major axis and the point 100 m due north (from the frame) coincide.
-  const Eigen::Vector2d centre_ll = l.frame.to_lonlat(e.center);
+  const Eigen::Vector2d centre_ll = l.frame.to_lonlat(e.centre);
   const Eigen::Vector2d north_tip = l.frame.from_lonlat(centre_ll.x(), centre_ll.y() + 100.0 / 111400.0);
-  const Vec2 dir_north = (north_tip - e.center).normalized();
+  const Vec2 dir_north = (north_tip - e.centre).normalized();
   EXPECT_LT(axis_diff(math_angle(dir_north), e.theta), 1e-6);
   EXPECT_GT(std::abs(e.theta - kPi / 2), deg_to_rad(2.0));  // and it is not grid north
 }
@@ -178,8 +178,8 @@ TEST(ObstacleRead, PointAtCentralMeridianLandsAtFalseEasting) {
   const LoadedObstacles l = load_obstacles({path}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   const Ellipse& e = l.obstacles.ellipses[0].footprint;
-  EXPECT_NEAR(e.center.x(), 500000.0, 1e-6);
-  EXPECT_NEAR(e.center.y(), 0.0, 1e-6);
+  EXPECT_NEAR(e.centre.x(), 500000.0, 1e-6);
+  EXPECT_NEAR(e.centre.y(), 0.0, 1e-6);
   EXPECT_NEAR(e.theta, deg_to_rad(60.0), 1e-9);  // heading 30 = math 60 degrees here
   EXPECT_EQ(e.a, 10.0);
   EXPECT_EQ(e.b, 5.0);
@@ -207,8 +207,8 @@ TEST(ObstacleRead, CsvWithWktColumnAndProjectedSourceCrs) {
   const LoadedObstacles l = load_obstacles({path}, {"EPSG:32632", "EPSG:32632"});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   ASSERT_EQ(l.obstacles.polygons.size(), 1u);
-  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.center.x(), 500000.0, 1e-6);
-  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.center.y(), 6000000.0, 1e-6);
+  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.centre.x(), 500000.0, 1e-6);
+  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.centre.y(), 6000000.0, 1e-6);
   EXPECT_EQ(*l.obstacles.polygons[0].top_depth_m, 12.5);
   EXPECT_NEAR(std::abs(boost::geometry::area(l.obstacles.polygons[0].footprint)), 5000.0, 1e-6);
   EXPECT_EQ(l.obstacles.polygons[0].id, "b");
@@ -248,12 +248,12 @@ TEST(ObstacleRead, ShapefileInAProjectedCrsWithTruncatedFieldNames) {
   const LoadedObstacles l = load_obstacles({shp}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   const EllipticCylinder& c = l.obstacles.ellipses[0];
-  EXPECT_NEAR(c.footprint.center.x(), 512345.0, 1e-6);
-  EXPECT_NEAR(c.footprint.center.y(), 6012345.0, 1e-6);
+  EXPECT_NEAR(c.footprint.centre.x(), 512345.0, 1e-6);
+  EXPECT_NEAR(c.footprint.centre.y(), 6012345.0, 1e-6);
   EXPECT_EQ(c.footprint.a, 30.0);
   EXPECT_EQ(c.footprint.b, 12.0);
   EXPECT_EQ(*c.top_depth_m, 17.0);
-  EXPECT_NEAR(l.frame.local_to_heading(c.footprint.theta, c.footprint.center), 90.0, 1e-9);
+  EXPECT_NEAR(l.frame.local_to_heading(c.footprint.theta, c.footprint.centre), 90.0, 1e-9);
   EXPECT_EQ(l.sources[0].driver, "ESRI Shapefile");
 }
 
@@ -264,10 +264,10 @@ TEST(ObstacleRead, GeoPackageInAProjectedCrsWithCorrectFields) {
                   512345.0, 6012345.0);
   const LoadedObstacles l = load_obstacles({gpkg}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
-  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.center.x(), 512345.0, 1e-6);
-  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.center.y(), 6012345.0, 1e-6);
+  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.centre.x(), 512345.0, 1e-6);
+  EXPECT_NEAR(l.obstacles.ellipses[0].footprint.centre.y(), 6012345.0, 1e-6);
   EXPECT_NEAR(l.frame.local_to_heading(l.obstacles.ellipses[0].footprint.theta,
-                                       l.obstacles.ellipses[0].footprint.center), 45.0, 1e-9);
+                                       l.obstacles.ellipses[0].footprint.centre), 45.0, 1e-9);
   EXPECT_EQ(l.sources[0].crs, "EPSG:32632");
   EXPECT_EQ(l.sources[0].driver, "GPKG");
 }
@@ -292,7 +292,7 @@ TEST(ObstacleRead, BundledSampleHasSixEllipsesAndOneArea) {
   EXPECT_EQ(c3.footprint.a, 60.0);
   EXPECT_EQ(c3.footprint.b, 8.0);
   EXPECT_EQ(*c3.top_depth_m, 12.0);
-  EXPECT_NEAR(l.frame.local_to_heading(c3.footprint.theta, c3.footprint.center), 115.0, 1e-9);
+  EXPECT_NEAR(l.frame.local_to_heading(c3.footprint.theta, c3.footprint.centre), 115.0, 1e-9);
 }
 
 TEST(ObstacleWrite, EmptySetWritesAValidEmptyFile) {

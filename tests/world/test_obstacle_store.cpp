@@ -108,7 +108,7 @@ const StoredObstacle& by_id(const ObstacleStore& s, const std::string& id) {
 }
 
 double heading_of(const ObstacleStore& s, const StoredObstacle& o) {
-  return std::fmod(s.frame.local_to_heading(o.obstacle.footprint.theta, o.obstacle.footprint.center), 180.0);
+  return std::fmod(s.frame.local_to_heading(o.obstacle.footprint.theta, o.obstacle.footprint.centre), 180.0);
 }
 
 template <typename F>
@@ -144,8 +144,8 @@ TEST(ObstacleStore, NewStoreFromOneMission) {
   ASSERT_EQ(st.obstacles.size(), 4u);
   ASSERT_EQ(st.detections.size(), 4u);
   const StoredObstacle& c1 = by_id(st, "a.csv/c1");
-  EXPECT_NEAR(c1.obstacle.footprint.center.x(), kX0, 1e-6);
-  EXPECT_NEAR(c1.obstacle.footprint.center.y(), kY0, 1e-6);
+  EXPECT_NEAR(c1.obstacle.footprint.centre.x(), kX0, 1e-6);
+  EXPECT_NEAR(c1.obstacle.footprint.centre.y(), kY0, 1e-6);
   EXPECT_DOUBLE_EQ(c1.obstacle.footprint.a, 10.0);
   EXPECT_DOUBLE_EQ(c1.obstacle.footprint.b, 4.0);
   EXPECT_NEAR(heading_of(st, c1), 30.0, 1e-9);
@@ -200,8 +200,8 @@ TEST(ObstacleStore, SecondMissionMergesByHandDerivedValues) {
   // doubled-angle mean of 30 and 50 = 40, height max 7. Then b4 (0,3) 12x5 @40
   // h3 counted once against 2: centre ((2*3+0)/3, (0+3)/3) = (2,1), 12x5, 40, h7.
   const StoredObstacle& c1 = by_id(st, "a.csv/c1");
-  EXPECT_NEAR(c1.obstacle.footprint.center.x(), kX0 + 2.0, 1e-6);
-  EXPECT_NEAR(c1.obstacle.footprint.center.y(), kY0 + 1.0, 1e-6);
+  EXPECT_NEAR(c1.obstacle.footprint.centre.x(), kX0 + 2.0, 1e-6);
+  EXPECT_NEAR(c1.obstacle.footprint.centre.y(), kY0 + 1.0, 1e-6);
   EXPECT_NEAR(c1.obstacle.footprint.a, 12.0, 1e-12);
   EXPECT_NEAR(c1.obstacle.footprint.b, 5.0, 1e-12);
   EXPECT_NEAR(heading_of(st, c1), 40.0, 1e-6);
@@ -215,8 +215,8 @@ TEST(ObstacleStore, SecondMissionMergesByHandDerivedValues) {
   // c2's centre, inside it. Merge: centre (515,0), 17.5x12.5, headings 0 and 60
   // -> 30, top depth min(30, 25) = 25; b2 has no time: the import time.
   const StoredObstacle& c2 = by_id(st, "a.csv/c2");
-  EXPECT_NEAR(c2.obstacle.footprint.center.x(), kX0 + 515.0, 1e-6);
-  EXPECT_NEAR(c2.obstacle.footprint.center.y(), kY0, 1e-6);
+  EXPECT_NEAR(c2.obstacle.footprint.centre.x(), kX0 + 515.0, 1e-6);
+  EXPECT_NEAR(c2.obstacle.footprint.centre.y(), kY0, 1e-6);
   EXPECT_NEAR(c2.obstacle.footprint.a, 17.5, 1e-12);
   EXPECT_NEAR(c2.obstacle.footprint.b, 12.5, 1e-12);
   EXPECT_NEAR(heading_of(st, c2), 30.0, 1e-6);
@@ -229,17 +229,17 @@ TEST(ObstacleStore, SecondMissionMergesByHandDerivedValues) {
   // b5 at (1009,0) is 9 m from c3 and 7 m from c4: the nearest, c4, takes it.
   const StoredObstacle& c3 = by_id(st, "a.csv/c3");
   EXPECT_EQ(c3.sightings, 1);
-  EXPECT_NEAR(c3.obstacle.footprint.center.x(), kX0 + 1000.0, 1e-6);
+  EXPECT_NEAR(c3.obstacle.footprint.centre.x(), kX0 + 1000.0, 1e-6);
   const StoredObstacle& c4 = by_id(st, "a.csv/c4");
   EXPECT_EQ(c4.sightings, 2);
-  EXPECT_NEAR(c4.obstacle.footprint.center.x(), kX0 + 1012.5, 1e-6);
+  EXPECT_NEAR(c4.obstacle.footprint.centre.x(), kX0 + 1012.5, 1e-6);
   EXPECT_NEAR(c4.obstacle.footprint.a, 2.5, 1e-12);
   EXPECT_EQ(c4.last_seen, "2024-06-01T09:30:00Z");
 
   // b3 is far from everything: a new object.
   const StoredObstacle& b3 = by_id(st, "b.csv/b3");
   EXPECT_EQ(b3.sightings, 1);
-  EXPECT_NEAR(b3.obstacle.footprint.center.x(), kX0 + 2000.0, 1e-6);
+  EXPECT_NEAR(b3.obstacle.footprint.centre.x(), kX0 + 2000.0, 1e-6);
   EXPECT_EQ(b3.first_seen, "2024-06-01T08:20:00Z");
 
   // Each detection row points at the object it went into.
@@ -296,9 +296,9 @@ TEST(ObstacleStore, OverlapDecidesBeyondTheMergeDistance) {
   EXPECT_EQ(hit.merged, 1u);
   EXPECT_EQ(hit.obstacles_in_store, 2u);
   const ObstacleStore st = read_obstacle_store(store, "EPSG:32632");
-  EXPECT_NEAR(by_id(st, "a.csv/o").obstacle.footprint.center.x(), kX0 - 19.5, 1e-6);
+  EXPECT_NEAR(by_id(st, "a.csv/o").obstacle.footprint.centre.x(), kX0 - 19.5, 1e-6);
   EXPECT_EQ(by_id(st, "a.csv/o").sightings, 2);
-  EXPECT_NEAR(by_id(st, "b.csv/m").obstacle.footprint.center.x(), kX0 + 41.0, 1e-6);
+  EXPECT_NEAR(by_id(st, "b.csv/m").obstacle.footprint.centre.x(), kX0 + 41.0, 1e-6);
 }
 
 TEST(ObstacleStore, AttributeTablesAreSkippedOnlyBesideGeometry) {

@@ -95,7 +95,7 @@ TEST(Sonar, ZeroSigmasReportTheTruth) {
   EXPECT_EQ(d[1].obstacle, 2u);
   for (const Detection& x : d) {
     const Ellipse& truth = obstacles[x.obstacle].footprint;
-    EXPECT_EQ(x.estimate.center, truth.center);
+    EXPECT_EQ(x.estimate.centre, truth.centre);
     EXPECT_EQ(x.estimate.a, truth.a);
     EXPECT_EQ(x.estimate.b, truth.b);
     EXPECT_EQ(x.estimate.theta, truth.theta);
@@ -127,8 +127,8 @@ TEST(Sonar, ErrorStatisticsMatchConfiguredSigmasAtTwoRanges) {
       ASSERT_EQ(sonar.detections().size(), 1u);
       const Detection& d = sonar.detections()[0];
       ASSERT_NEAR(d.range_m, range, 1e-9);
-      ex.push_back(d.estimate.center.x());
-      ey.push_back(d.estimate.center.y() - (range + b));
+      ex.push_back(d.estimate.centre.x());
+      ey.push_back(d.estimate.centre.y() - (range + b));
       ea.push_back(d.estimate.a - a);
       eb.push_back(d.estimate.b - b);
     }

@@ -9,7 +9,7 @@ Vec2 Ellipse::major_dir() const { return {std::cos(theta), std::sin(theta)}; }
 Vec2 Ellipse::minor_dir() const { return {-std::sin(theta), std::cos(theta)}; }
 
 Vec2 Ellipse::point_at(double t) const {
-  return center + a * std::cos(t) * major_dir() + b * std::sin(t) * minor_dir();
+  return centre + a * std::cos(t) * major_dir() + b * std::sin(t) * minor_dir();
 }
 
 Vec2 Ellipse::normal_at(double t) const {
@@ -21,14 +21,14 @@ Vec2 Ellipse::normal_at(double t) const {
 // One cosine and one sine per call (not one pair per axis): reactive
 // methods transform points into every zone's frame at each 10 Hz step.
 Vec2 Ellipse::to_local(const Vec2& p) const {
-  const Vec2 d = p - center;
+  const Vec2 d = p - centre;
   const double c = std::cos(theta), s = std::sin(theta);
   return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};
 }
 
 Vec2 Ellipse::from_local(const Vec2& q) const {
   const double c = std::cos(theta), s = std::sin(theta);
-  return center + Vec2(c * q.x() - s * q.y(), s * q.x() + c * q.y());
+  return centre + Vec2(c * q.x() - s * q.y(), s * q.x() + c * q.y());
 }
 
 Vec2 Ellipse::to_unit(const Vec2& p) const {
@@ -48,7 +48,7 @@ Eigen::Matrix2d Ellipse::shape_matrix() const {
 double Ellipse::support(const Vec2& u) const {
   const double ul = u.dot(major_dir());
   const double vl = u.dot(minor_dir());
-  return u.dot(center) + std::hypot(a * ul, b * vl);
+  return u.dot(centre) + std::hypot(a * ul, b * vl);
 }
 
 Vec2 Ellipse::support_point(const Vec2& u) const {

@@ -17,7 +17,7 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct Ellipse {
-  Vec2 center{0.0, 0.0};
+  Vec2 centre{0.0, 0.0};
   double a = 1.0;      ///< semi-major axis (m), a >= b > 0
   double b = 1.0;      ///< semi-minor axis (m)
   double theta = 0.0;  ///< direction of the major axis, math angle (rad, ccw from east)

@@ -27,7 +27,7 @@ Vec2 unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
 }  // namespace
 
 std::vector<CommonTangent> common_tangents(const Ellipse& e1, const Ellipse& e2) {
-  const Vec2 dc = e1.center - e2.center;
+  const Vec2 dc = e1.centre - e2.centre;
   // Centred support functions h_i(n) = sqrt(n^T A_i n), with the shape matrices
   // computed once (this runs ~150 times per pair).
   const Eigen::Matrix2d A1 = e1.shape_matrix();

@@ -39,7 +39,7 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
     throw InputError("aligning: position, course and current: expected finite values");
   }
   const Ellipse safety = security_ellipse(object, params.standoff_m);
-  if (!memory.direction) memory.direction = align_direction(current_mps, params.still_mps, object.center, p);
+  if (!memory.direction) memory.direction = align_direction(current_mps, params.still_mps, object.centre, p);
   // A current that turns (the tide) turns the lee side with it.
   if (current_mps.norm() > params.still_mps) memory.direction = current_mps.normalized();
   memory.strongest = std::max(memory.strongest, current_mps.norm());

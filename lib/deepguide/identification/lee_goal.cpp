@@ -15,7 +15,7 @@ Vec2 align_direction(const Vec2& current_mps, double still_mps, const Vec2& cent
 Vec2 lee_goal_point(const Ellipse& safety, const Vec2& e) {
   const double ux = e.dot(safety.major_dir()) / safety.a;
   const double uy = e.dot(safety.minor_dir()) / safety.b;
-  return safety.center + e / std::hypot(ux, uy);
+  return safety.centre + e / std::hypot(ux, uy);
 }
 
 double shade_half_width(const Ellipse& safety, const Vec2& e) {
@@ -24,7 +24,7 @@ double shade_half_width(const Ellipse& safety, const Vec2& e) {
 }
 
 AlignArea align_area(const Ellipse& safety, const Vec2& e, const Vec2& p) {
-  const Vec2 d = p - safety.center;
+  const Vec2 d = p - safety.centre;
   const double along = d.dot(e), across = std::abs(e.x() * d.y() - e.y() * d.x());
   return along > 0.0 && across <= shade_half_width(safety, e) ? AlignArea::positioning : AlignArea::evasive;
 }

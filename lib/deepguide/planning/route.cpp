@@ -69,7 +69,7 @@ double offset_ellipse_radius(const Ellipse& e, double offset, double phi) {
 Vec2 arc_point(const RouteLeg& leg, double phi) {
   const Vec2 u(std::cos(phi), std::sin(phi));
   // A point core (a polygon corner's) is its own support point.
-  const Vec2 core = leg.core.a > 0.0 ? leg.core.support_point(u) : leg.core.center;
+  const Vec2 core = leg.core.a > 0.0 ? leg.core.support_point(u) : leg.core.centre;
   return core + leg.offset_m * u;
 }
 

@@ -37,7 +37,7 @@ struct RouteLeg {
   /// Arcs: the curve itself, the boundary of core (+) disc(offset_m) from the
   /// point whose outward normal has angle phi_from to the one at phi_to
   /// (phi_to - phi_from has the sign of turn). A circle when core.a == core.b:
-  /// centre core.center, radius core.a + offset_m.
+  /// centre core.centre, radius core.a + offset_m.
   Ellipse core{{0.0, 0.0}, 0.0, 0.0, 0.0};
   double offset_m = 0.0;
   double phi_from = 0.0, phi_to = 0.0;

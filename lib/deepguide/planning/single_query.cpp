@@ -22,7 +22,7 @@ struct Disc {
 };
 
 // A disc holding the obstacle's footprint (before the margin).
-Disc footprint_disc(const EllipticCylinder& c) { return {c.footprint.center, c.footprint.a}; }
+Disc footprint_disc(const EllipticCylinder& c) { return {c.footprint.centre, c.footprint.a}; }
 Disc footprint_disc(const PolygonObstacle& p) {
   BgBox box;
   bg::envelope(p.footprint, box);

@@ -56,7 +56,7 @@ struct Segment {
 };
 
 ObstacleSet shifted(ObstacleSet set, const Vec2& origin) {
-  for (auto& c : set.ellipses) c.footprint.center -= origin;
+  for (auto& c : set.ellipses) c.footprint.centre -= origin;
   for (auto& poly : set.polygons) {
     auto shift = [&](auto& ring) {
       for (auto& pt : ring) pt = to_bg(to_eigen(pt) - origin);
@@ -78,7 +78,7 @@ Vec2 centre_of(const ObstacleSet& set) {
       bg::expand(box, to_bg(p));
     }
   };
-  for (const auto& c : set.ellipses) grow(c.footprint.center);
+  for (const auto& c : set.ellipses) grow(c.footprint.centre);
   for (const auto& poly : set.polygons) {
     for (const auto& pt : poly.footprint.outer()) grow(to_eigen(pt));
   }
@@ -502,7 +502,7 @@ std::vector<RouteLeg> TangentGraph::Impl::arc_legs(std::size_t piece, double phi
     leg.kind = RouteLeg::Kind::arc;
     leg.turn = turn;
     leg.core = core;
-    leg.core.center += origin;
+    leg.core.centre += origin;
     leg.offset_m = z.margin;
     leg.phi_from = from;
     leg.phi_to = to;
@@ -805,7 +805,7 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
     if (!legs.empty() && leg.kind == RouteLeg::Kind::arc && legs.back().kind == RouteLeg::Kind::arc) {
       RouteLeg& prev = legs.back();
       const Ellipse &c0 = prev.core, &c1 = leg.core;
-      if (prev.turn == leg.turn && c0.center == c1.center && c0.a == c1.a && c0.b == c1.b && c0.theta == c1.theta &&
+      if (prev.turn == leg.turn && c0.centre == c1.centre && c0.a == c1.a && c0.b == c1.b && c0.theta == c1.theta &&
           prev.offset_m == leg.offset_m && std::abs(prev.phi_to - leg.phi_from) < 1e-9) {
         prev.to = leg.to;
         prev.phi_to = prev.phi_from + (leg.phi_to - leg.phi_from) + (prev.phi_to - prev.phi_from);

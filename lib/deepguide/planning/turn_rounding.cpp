@@ -31,7 +31,7 @@ std::vector<TurningCircle> turning_circles(const ObstacleSet& obstacles, double 
     const Ellipse& e = obstacles.ellipses[i].footprint;
     if (e.b * e.b / e.a + margin >= turn_radius) continue;
     for (double side : {1.0, -1.0}) {
-      out.push_back({e.center + side * (e.a + margin + kPush - turn_radius) * e.major_dir(), i});
+      out.push_back({e.centre + side * (e.a + margin + kPush - turn_radius) * e.major_dir(), i});
     }
   }
   for (std::size_t k = 0; k < obstacles.polygons.size(); ++k) {

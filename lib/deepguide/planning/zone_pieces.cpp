@@ -26,7 +26,7 @@ double param_of_normal(const Ellipse& e, double phi_l) {
 double ZonePiece::support(const Vec2& u) const {
   if (kind == Kind::ellipse) {
     const double ul = u.dot(axis), vl = axis.x() * u.y() - axis.y() * u.x();
-    return u.dot(ellipse.center) + std::sqrt(ellipse.a * ellipse.a * ul * ul + ellipse.b * ellipse.b * vl * vl) +
+    return u.dot(ellipse.centre) + std::sqrt(ellipse.a * ellipse.a * ul * ul + ellipse.b * ellipse.b * vl * vl) +
            margin;
   }
   return std::max(u.dot(a), u.dot(b)) + margin;
@@ -38,8 +38,8 @@ ZonePiece::Support ZonePiece::support_at(const Vec2& u) const {
     const double aa = ellipse.a * ellipse.a, bb = ellipse.b * ellipse.b;
     const double h = std::sqrt(aa * ul * ul + bb * vl * vl);
     const Vec2 minor(-axis.y(), axis.x());
-    return {u.dot(ellipse.center) + h + margin,
-            ellipse.center + (aa * ul / h) * axis + (bb * vl / h) * minor + margin * u};
+    return {u.dot(ellipse.centre) + h + margin,
+            ellipse.centre + (aa * ul / h) * axis + (bb * vl / h) * minor + margin * u};
   }
   const Vec2& end = u.dot(b) > u.dot(a) ? b : a;
   return {u.dot(end) + margin, end + margin * u};
@@ -98,7 +98,7 @@ double ZonePiece::max_curvature_radius() const {
   return ellipse.a * ellipse.a / ellipse.b + margin;
 }
 
-Vec2 ZonePiece::inner_point() const { return kind == Kind::ellipse ? ellipse.center : 0.5 * (a + b); }
+Vec2 ZonePiece::inner_point() const { return kind == Kind::ellipse ? ellipse.centre : 0.5 * (a + b); }
 
 double ZonePiece::bounding_radius() const {
   return (kind == Kind::ellipse ? ellipse.a : 0.5 * (b - a).norm()) + margin;

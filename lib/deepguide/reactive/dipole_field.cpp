@@ -24,16 +24,16 @@ double smoothstep(double x) {
 
 /// The circle enclosing the enclosing circles of two zones.
 Ellipse enclosing_circle(const Ellipse& e1, const Ellipse& e2) {
-  const Vec2 d = e2.center - e1.center;
+  const Vec2 d = e2.centre - e1.centre;
   const double dist = d.norm();
   Ellipse c;
   if (dist + e2.a <= e1.a) {
-    c.center = e1.center, c.a = e1.a;
+    c.centre = e1.centre, c.a = e1.a;
   } else if (dist + e1.a <= e2.a) {
-    c.center = e2.center, c.a = e2.a;
+    c.centre = e2.centre, c.a = e2.a;
   } else {
     c.a = 0.5 * (dist + e1.a + e2.a);
-    c.center = e1.center + (c.a - e1.a) / dist * d;
+    c.centre = e1.centre + (c.a - e1.a) / dist * d;
   }
   c.b = c.a;
   return c;
@@ -44,7 +44,7 @@ std::ptrdiff_t nearest_member(const DipoleZone& z, std::span<const Ellipse> obje
   std::ptrdiff_t best = z.members.front();
   for (std::ptrdiff_t m : z.members) {
     const auto i = static_cast<std::size_t>(m);
-    if ((objects[i].center - p).norm() < (objects[static_cast<std::size_t>(best)].center - p).norm()) best = m;
+    if ((objects[i].centre - p).norm() < (objects[static_cast<std::size_t>(best)].centre - p).norm()) best = m;
   }
   return best;
 }
@@ -99,7 +99,7 @@ Vec2 field(const std::vector<DipoleZone>& zones, const Vec2& p, const Vec2& g, d
   const double reach = std::max(influence, blend);
   for (std::size_t i = 0; i < n; ++i) {
     const Ellipse& z = zones[i].shape;
-    if ((p - z.center).norm() - z.a >= reach) continue;  // cheap: farther than reach from the zone
+    if ((p - z.centre).norm() - z.a >= reach) continue;  // cheap: farther than reach from the zone
     const double d = std::max(0.0, signed_distance(z, p));
     lambda[i] = 1.0 - smoothstep(d / influence);
     shadow[i] = smoothstep(d / blend);
@@ -137,7 +137,7 @@ AxisClamp engage(const std::vector<DipoleZone>& zones, const Vec2& p, const Vec2
     const Ellipse& z = zones[i].shape;
     // |p - c| - a bounds the distance from below: most zones are skipped
     // without the exact distance (the cost of a step among 100 objects).
-    if ((p - z.center).norm() - z.a >= params.influence_m) continue;
+    if ((p - z.centre).norm() - z.a >= params.influence_m) continue;
     if (signed_distance(z, p) < params.influence_m) {
       near.push_back(zones[i].shape);
       index.push_back(i);
@@ -145,7 +145,7 @@ AxisClamp engage(const std::vector<DipoleZone>& zones, const Vec2& p, const Vec2
   }
   std::ptrdiff_t k = -1;
   for (std::size_t i = 0; i < near.size() && k < 0; ++i) {
-    if (engaged_with(memory, near[i].center, 0.5 * near[i].b) && segment_intersects(near[i], p, g)) {
+    if (engaged_with(memory, near[i].centre, 0.5 * near[i].b) && segment_intersects(near[i], p, g)) {
       k = static_cast<std::ptrdiff_t>(i);
     }
   }
@@ -160,11 +160,11 @@ AxisClamp engage(const std::vector<DipoleZone>& zones, const Vec2& p, const Vec2
   const double band = params.dipole_axis_band_m;
   int side = side_of(offset, e, course, band);
   // Clearly across on the other side (more than the band): that side is taken.
-  if (engaged_with(memory, zone.center, 0.5 * zone.b) && memory.side * offset > -band) side = memory.side;
+  if (engaged_with(memory, zone.centre, 0.5 * zone.b) && memory.side * offset > -band) side = memory.side;
   const auto zi = index[static_cast<std::size_t>(k)];
   memory.side = side;
   memory.engaged_object = zones[zi].members.front();
-  memory.engaged_center = zone.center;
+  memory.engaged_centre = zone.centre;
   return {static_cast<std::ptrdiff_t>(zi), side, band};
 }
 
@@ -183,7 +183,7 @@ std::vector<DipoleZone> dipole_zones(std::span<const Ellipse> objects, double ma
         const Ellipse& a = zones[i].shape;
         const Ellipse& b = zones[j].shape;
         const double reach = a.a + b.a + blend_m;
-        if ((a.center - b.center).squaredNorm() >= reach * reach) continue;  // cheap: far apart
+        if ((a.centre - b.centre).squaredNorm() >= reach * reach) continue;  // cheap: far apart
         if (zone_gap(a, b) >= blend_m) continue;
         zones[i].shape = enclosing_circle(a, b);
         zones[i].members.insert(zones[i].members.end(), zones[j].members.begin(), zones[j].members.end());
@@ -212,7 +212,7 @@ Vec2 leave_zone(const std::vector<DipoleZone>& zones, std::size_t k, const Vec2&
   Vec2 n = outward_normal(zone, near.point);
   const Vec2 outside = near.point + kZoneClearance_m * n;
   Vec2 along = direction_of(field(zones, outside, g, params.influence_m, params.dipole_blend_m, clamp));
-  const int side = clamp.zone == static_cast<std::ptrdiff_t>(k) ? clamp.side : axis_side(zone.center, g, p, course);
+  const int side = clamp.zone == static_cast<std::ptrdiff_t>(k) ? clamp.side : axis_side(zone.centre, g, p, course);
   // At a stagnation point of the boundary: round it on the passing side.
   if (along.squaredNorm() == 0.0) along = along_boundary(n, side);
   return exit_direction(along, n, depth_fraction(zone, p), params.exit_blend_fraction);

@@ -34,9 +34,9 @@ double match_radius(const Ellipse& zone) { return 0.5 * zone.b; }
 int side_for(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p, const Vec2& g,
              std::optional<double> course, ReactiveMemory* memory, bool keep_any) {
   const Ellipse& zone = zones[static_cast<std::size_t>(k)];
-  const int fresh = (keep_any && memory && memory->side != 0) ? memory->side : axis_side(zone.center, g, p, course);
+  const int fresh = (keep_any && memory && memory->side != 0) ? memory->side : axis_side(zone.centre, g, p, course);
   if (!memory) return fresh;
-  return latched_side(*memory, k, zone.center, match_radius(zone), fresh);
+  return latched_side(*memory, k, zone.centre, match_radius(zone), fresh);
 }
 
 struct Tuning {
@@ -60,7 +60,7 @@ double sailing_band(const Tuning& tuning) {
 /// lies outside the margin's offset curve) before another course is sought.
 double sailed_cut(const Tuning& tuning) { return 0.2 * tuning.margin; }
 
-Ellipse widened(const Ellipse& zone, double band) { return {zone.center, zone.a + band, zone.b + band, zone.theta}; }
+Ellipse widened(const Ellipse& zone, double band) { return {zone.centre, zone.a + band, zone.b + band, zone.theta}; }
 
 constexpr double kSmallTurn = 20.0 * std::numbers::pi / 180.0;
 constexpr int kMaxTurnSwitches = 3;
@@ -85,7 +85,7 @@ double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double
   std::vector<std::size_t> near;
   for (std::size_t k = 0; k < zones.size(); ++k) {
     const double reach = zones[k].a + speed * horizon;
-    if ((zones[k].center - p).squaredNorm() < reach * reach && !zones[k].contains(p)) near.push_back(k);
+    if ((zones[k].centre - p).squaredNorm() < reach * reach && !zones[k].contains(p)) near.push_back(k);
   }
   double least = std::numeric_limits<double>::infinity();
   if (near.empty()) return least;
@@ -143,7 +143,7 @@ std::vector<std::size_t> zone_groups(const std::vector<Ellipse>& zones, double p
   for (std::size_t i = 0; i < zones.size(); ++i) {
     for (std::size_t j = i + 1; j < zones.size(); ++j) {
       const double reach = zones[i].a + zones[j].a + passage;
-      if ((zones[i].center - zones[j].center).squaredNorm() >= reach * reach) continue;  // cheap: far apart
+      if ((zones[i].centre - zones[j].centre).squaredNorm() >= reach * reach) continue;  // cheap: far apart
       if (root(i) == root(j) || zone_gap(zones[i], zones[j]) >= passage) continue;
       label[root(j)] = root(i);
     }
@@ -159,15 +159,15 @@ Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, con
   const int side = side_for(zones, k, p, g, course, memory, true);
   Vec2 x = project_to_ellipse(zone, p).point;
   Vec2 n = outward_normal(zone, x);
-  if (zone.a == zone.b && (p - zone.center).norm() < 1e-9 * zone.a) {
+  if (zone.a == zone.b && (p - zone.centre).norm() < 1e-9 * zone.a) {
     // At the very centre of a circle every boundary point is nearest: out on the passing side.
-    n = static_cast<double>(side) * left_normal(unit_or_zero(g - zone.center));
+    n = static_cast<double>(side) * left_normal(unit_or_zero(g - zone.centre));
     if (n.squaredNorm() == 0.0) n = zone.minor_dir();
-    x = zone.center + zone.a * n;
+    x = zone.centre + zone.a * n;
   }
   // The outside course from the boundary point itself (its tangent is the boundary's), with the same
   // side (a copy of the latch: only this call's counts).
-  ReactiveMemory probe{side, k, zone.center};
+  ReactiveMemory probe{side, k, zone.centre};
   Vec2 along = construct(zones, x, g, course, &probe, tuning, true).direction;
   if (along.squaredNorm() == 0.0 || along.dot(n) < -1e-9) along = along_boundary(n, side);
   return {exit_direction(along, n, depth_fraction(zone, p), tuning.blend), 3, k};
@@ -191,7 +191,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     const double band = sailing_band(tuning);
     for (std::size_t i = 0; i < zones.size() && active < 0; ++i) {
       const Ellipse& z = zones[i];
-      if (engaged_with(*memory, z.center, match_radius(z)) &&
+      if (engaged_with(*memory, z.centre, match_radius(z)) &&
           segment_intersects(widened(z, band), p, g)) {
         active = static_cast<std::ptrdiff_t>(i);
       }
@@ -206,7 +206,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     if (std::abs(wrap_pi(math_angle(direct) - *course)) >= kSmallTurn &&
         sailed_clearance(zones, p, *course, direct, tuning) < -sailed_cut(tuning)) {
       for (std::size_t i = 0; i < zones.size() && active < 0; ++i) {
-        if (engaged_with(*memory, zones[i].center, match_radius(zones[i]))) active = static_cast<std::ptrdiff_t>(i);
+        if (engaged_with(*memory, zones[i].centre, match_radius(zones[i]))) active = static_cast<std::ptrdiff_t>(i);
       }
     }
   }
@@ -222,7 +222,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
   // has no tangent at all: zone k alone then, as without groups, and the
   // cascade ends stalled if it finds no free tangent.
   auto group_tangent = [&](std::ptrdiff_t k, int side) {
-    const Vec2 ref = unit_or_zero(zones[static_cast<std::size_t>(k)].center - p);
+    const Vec2 ref = unit_or_zero(zones[static_cast<std::size_t>(k)].centre - p);
     const bool alone = surrounded(zones, group, group[static_cast<std::size_t>(k)], p);
     std::ptrdiff_t best = k;
     Vec2 best_touch = p;
@@ -289,7 +289,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
         if (theirs >= -cut || theirs > mine + cut) {
           memory->side = -side;
           memory->engaged_object = active;
-          memory->engaged_center = engaged.center;
+          memory->engaged_centre = engaged.centre;
           ++memory->turn_switches;
           return other;
         }
@@ -316,7 +316,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     }
     return {safest, chosen.sector, chosen.object};
   };
-  if (memory && course && !engaged_with(*memory, engaged.center, match_radius(engaged))) {
+  if (memory && course && !engaged_with(*memory, engaged.centre, match_radius(engaged))) {
     // A zone engaged afresh while under way: the side whose course is the
     // smaller turn from the present one. The axis rule alone can ask for a
     // 60 degree turn when a second zone blocks the first's tangent close by,
@@ -328,8 +328,8 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
       return c.direction.squaredNorm() == 0.0 ? 4.0 : std::abs(wrap_pi(math_angle(c.direction) - *course));
     };
     const double tl = turn(left), tr = turn(right);
-    const int side = std::abs(tl - tr) < 1e-9 ? axis_side(engaged.center, g, p, course) : tl < tr ? +1 : -1;
-    latched_side(*memory, active, engaged.center, match_radius(engaged), side);
+    const int side = std::abs(tl - tr) < 1e-9 ? axis_side(engaged.centre, g, p, course) : tl < tr ? +1 : -1;
+    latched_side(*memory, active, engaged.centre, match_radius(engaged), side);
     return sailed(side > 0 ? left : right, side);
   }
   const int side = side_for(zones, active, p, g, course, memory, false);

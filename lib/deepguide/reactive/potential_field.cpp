@@ -31,7 +31,7 @@ Force force(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, con
   f.value = unit_or_zero(g - p);
   double strongest = 0.0;
   for (std::size_t i = 0; i < zones.size(); ++i) {
-    if ((p - zones[i].center).norm() - zones[i].a >= rho0) continue;  // cheap: beyond the influence
+    if ((p - zones[i].centre).norm() - zones[i].a >= rho0) continue;  // cheap: beyond the influence
     const EllipseProjection near = project_to_ellipse(zones[i], p);
     const double rho = near.distance;
     if (rho >= rho0 || rho <= 0.0) continue;  // rho = 0: on the boundary, no direction; the step after has one

@@ -140,13 +140,13 @@ struct ReactiveCommand {
 /// flipping left/right. Set when an object is first engaged (the geometric
 /// method's sector 1 or 3, the dipole method's object blocking the line of
 /// sight), kept while that object stays engaged, cleared when none is. The
-/// object is recognised in later scans by its centre (engaged_center), not by
+/// object is recognised in later scans by its centre (engaged_centre), not by
 /// its index, since the sonar's list can change order.
 struct ReactiveMemory {
   /// +1 / -1: the side of the object passed, as the sign of cross(target - centre, position - centre); 0 none
   int side = 0;
   std::ptrdiff_t engaged_object = -1;  ///< the object the side was latched for
-  Vec2 engaged_center{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
+  Vec2 engaged_centre{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
   /// How often the geometric method changed the side for this object
   /// because the turn to the present one would have cut into a zone (a few
   /// times at most, or it could dither).

@@ -62,7 +62,7 @@ void require_point(const Vec2& p, const char* field) {
 void require_objects(std::span<const Ellipse> objects) {
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Ellipse& e = objects[i];
-    const bool ok = std::isfinite(e.center.x()) && std::isfinite(e.center.y()) && std::isfinite(e.a) &&
+    const bool ok = std::isfinite(e.centre.x()) && std::isfinite(e.centre.y()) && std::isfinite(e.a) &&
                     std::isfinite(e.b) && std::isfinite(e.theta) && e.b > 0.0 && e.a >= e.b;
     if (ok) continue;
     std::ostringstream text;
@@ -104,7 +104,7 @@ double zone_gap(const Ellipse& e1, const Ellipse& e2) {
   auto project_onto = [](const Ellipse& e, const Vec2& x) {
     return e.contains(x) ? x : project_to_ellipse(e, x).point;
   };
-  Vec2 x = e2.center;
+  Vec2 x = e2.centre;
   Vec2 y = project_onto(e1, x);
   for (int i = 0; i < 64; ++i) {
     x = project_onto(e2, y);
@@ -166,21 +166,21 @@ int side_of(double offset, const Vec2& axis, std::optional<double> course, doubl
   return -1;
 }
 
-int axis_side(const Vec2& center, const Vec2& target, const Vec2& p, std::optional<double> course) {
-  Vec2 axis = unit_or_zero(target - center);
+int axis_side(const Vec2& centre, const Vec2& target, const Vec2& p, std::optional<double> course) {
+  Vec2 axis = unit_or_zero(target - centre);
   // Target at the centre (a substitute target on a degenerate zone): any axis will do.
   if (axis.squaredNorm() == 0.0) axis = Vec2(1.0, 0.0);
-  return side_of(cross(axis, p - center), axis, course, 0.0);
+  return side_of(cross(axis, p - centre), axis, course, 0.0);
 }
 
-bool engaged_with(const ReactiveMemory& memory, const Vec2& center, double match_m) {
-  return memory.side != 0 && (memory.engaged_center - center).norm() <= match_m;
+bool engaged_with(const ReactiveMemory& memory, const Vec2& centre, double match_m) {
+  return memory.side != 0 && (memory.engaged_centre - centre).norm() <= match_m;
 }
 
-int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& center, double match_m, int fresh) {
-  if (!engaged_with(memory, center, match_m)) memory.side = fresh, memory.turn_switches = 0;
+int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& centre, double match_m, int fresh) {
+  if (!engaged_with(memory, centre, match_m)) memory.side = fresh, memory.turn_switches = 0;
   memory.engaged_object = index;
-  memory.engaged_center = center;
+  memory.engaged_centre = centre;
   return memory.side;
 }
 
@@ -208,7 +208,7 @@ std::ptrdiff_t deepest_zone(std::span<const Ellipse> zones, const Vec2& p) {
   double best_depth = 0.0;
   for (std::size_t i = 0; i < zones.size(); ++i) {
     // Beyond the semi-major axis from the centre: outside, no transform needed.
-    if ((p - zones[i].center).squaredNorm() >= zones[i].a * zones[i].a) continue;
+    if ((p - zones[i].centre).squaredNorm() >= zones[i].a * zones[i].a) continue;
     const double d = depth_fraction(zones[i], p);
     if (d > best_depth) {
       best_depth = d;

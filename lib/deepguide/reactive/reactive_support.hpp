@@ -71,14 +71,14 @@ ReactiveCommand course_command(const ReactiveParams& params, const ReactiveInput
 /// vector `axis` (negative: to the right); `course` empty for memoryless queries.
 int side_of(double offset, const Vec2& axis, std::optional<double> course, double band_m);
 /// Side rule for the axis centre -> target.
-int axis_side(const Vec2& center, const Vec2& target, const Vec2& p, std::optional<double> course);
+int axis_side(const Vec2& centre, const Vec2& target, const Vec2& p, std::optional<double> course);
 
-/// The latched side for object `index` (zone centre `center`): the memory's if
+/// The latched side for object `index` (zone centre `centre`): the memory's if
 /// it is engaged with the same object (matched by centre within `match_m`),
 /// else `fresh` side, which is then latched.
-int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& center, double match_m, int fresh);
-/// True if the memory is engaged with the object at `center` (within `match_m`).
-bool engaged_with(const ReactiveMemory& memory, const Vec2& center, double match_m);
+int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& centre, double match_m, int fresh);
+/// True if the memory is engaged with the object at `centre` (within `match_m`).
+bool engaged_with(const ReactiveMemory& memory, const Vec2& centre, double match_m);
 void release(ReactiveMemory& memory);
 
 /// The first zone the segment p -> q enters (p outside every zone), -1 none.

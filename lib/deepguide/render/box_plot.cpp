@@ -86,10 +86,10 @@ void render_box_plot(const BoxPlot& plot, const std::string& path) {
     const BoxGroup& g = plot.groups[i];
     const std::vector<double>& v = data[i];
     const double cx = area.x + (static_cast<double>(i) + 0.5) * slot;
-    canvas.text({cx, area.y + area.height + 24.0 * u}, g.label, 15.0 * u, kText, TextAlign::center, true);
+    canvas.text({cx, area.y + area.height + 24.0 * u}, g.label, 15.0 * u, kText, TextAlign::centre, true);
     std::string count = "n = " + std::to_string(v.size());
     if (left_out[i] > 0) count += " (+" + std::to_string(left_out[i]) + " not drawn)";
-    canvas.text({cx, area.y + area.height + 44.0 * u}, count, 12.0 * u, kFrame, TextAlign::center);
+    canvas.text({cx, area.y + area.height + 44.0 * u}, count, 12.0 * u, kFrame, TextAlign::centre);
     if (v.empty()) continue;
     const double q1 = rank(v, 0.25), med = rank(v, 0.5), q3 = rank(v, 0.75), p5 = rank(v, 0.05), p95 = rank(v, 0.95);
     const Stroke line{g.color, 1.6 * u, {}};

@@ -63,18 +63,18 @@ ViewTransform::ViewTransform(const WorldBox& world, const PixelRect& frame) {
   const double sx = w > 0.0 ? frame.width / w : kInf;
   const double sy = h > 0.0 ? frame.height / h : kInf;
   scale_ = std::min(sx, sy);
-  world_center_ = world.center();
-  pixel_center_ = Vec2(frame.x + 0.5 * frame.width, frame.y + 0.5 * frame.height);
+  world_centre_ = world.centre();
+  pixel_centre_ = Vec2(frame.x + 0.5 * frame.width, frame.y + 0.5 * frame.height);
 }
 
 Vec2 ViewTransform::to_pixel(const Vec2& world) const {
-  const Vec2 d = world - world_center_;
-  return {pixel_center_.x() + scale_ * d.x(), pixel_center_.y() - scale_ * d.y()};
+  const Vec2 d = world - world_centre_;
+  return {pixel_centre_.x() + scale_ * d.x(), pixel_centre_.y() - scale_ * d.y()};
 }
 
 Vec2 ViewTransform::to_world(const Vec2& pixel) const {
-  const Vec2 d = pixel - pixel_center_;
-  return {world_center_.x() + d.x() / scale_, world_center_.y() - d.y() / scale_};
+  const Vec2 d = pixel - pixel_centre_;
+  return {world_centre_.x() + d.x() / scale_, world_centre_.y() - d.y() / scale_};
 }
 
 Rgba rgb_hex(unsigned hex, double alpha) {
@@ -300,7 +300,7 @@ void Canvas::text(const Vec2& anchor, const std::string& text, double size_px, c
   cairo_text_extents_t ext;
   cairo_text_extents(impl_->cr, text.c_str(), &ext);
   double x = anchor.x();
-  if (align == TextAlign::center) x -= 0.5 * ext.x_advance;
+  if (align == TextAlign::centre) x -= 0.5 * ext.x_advance;
   if (align == TextAlign::right) x -= ext.x_advance;
   impl_->set_color(color);
   cairo_move_to(impl_->cr, x, anchor.y());
@@ -315,7 +315,7 @@ void Canvas::text_with_halo(const Vec2& anchor, const std::string& text, double 
   cairo_text_extents_t ext;
   cairo_text_extents(impl_->cr, text.c_str(), &ext);
   double x = anchor.x();
-  if (align == TextAlign::center) x -= 0.5 * ext.x_advance;
+  if (align == TextAlign::centre) x -= 0.5 * ext.x_advance;
   if (align == TextAlign::right) x -= ext.x_advance;
   cairo_move_to(impl_->cr, x, anchor.y());
   cairo_text_path(impl_->cr, text.c_str());

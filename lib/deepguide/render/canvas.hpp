@@ -40,7 +40,7 @@ struct WorldBox {
   void extend(const WorldBox& other);
   double width() const { return empty() ? 0.0 : max.x() - min.x(); }
   double height() const { return empty() ? 0.0 : max.y() - min.y(); }
-  Vec2 center() const { return 0.5 * (min + max); }
+  Vec2 centre() const { return 0.5 * (min + max); }
   bool contains(const Vec2& p) const {
     return p.x() >= min.x() && p.x() <= max.x() && p.y() >= min.y() && p.y() <= max.y();
   }
@@ -72,8 +72,8 @@ class ViewTransform {
   double scale() const { return scale_; }
 
  private:
-  Vec2 world_center_{0.0, 0.0};
-  Vec2 pixel_center_{0.0, 0.0};
+  Vec2 world_centre_{0.0, 0.0};
+  Vec2 pixel_centre_{0.0, 0.0};
   double scale_ = 1.0;
 };
 
@@ -96,7 +96,7 @@ struct Stroke {
   bool antialias = true;
 };
 
-enum class TextAlign { left, center, right };
+enum class TextAlign { left, centre, right };
 
 /// Advance width in pixels of `text` in the canvases' sans-serif, without a
 /// canvas: for layouts that must know how much room text takes before drawing.
@@ -133,7 +133,7 @@ class Canvas {
   /// A closed polygon, filled and/or outlined.
   void shape(const std::vector<Vec2>& points, const std::optional<Rgba>& fill,
              const std::optional<Stroke>& outline);
-  void circle(const Vec2& center, double radius, const std::optional<Rgba>& fill,
+  void circle(const Vec2& centre, double radius, const std::optional<Rgba>& fill,
               const std::optional<Stroke>& outline);
 
   /// Paints an image of width x height pixels (0xAARRGGBB, premultiplied

@@ -299,7 +299,7 @@ struct Painter {
         for (const auto& ring : rings) canvas.stroke_polyline(ring, danger_line(p.id), true);
       }
       for (const EllipticCylinder& c : set.ellipses) {
-        const Vec2 centre = px(c.footprint.center);
+        const Vec2 centre = px(c.footprint.centre);
         // Small hazards would vanish: a danger circle a few pixels out marks them.
         const double r = std::max(c.footprint.a * layout.view.scale() + 4.0 * u, 7.0 * u);
         canvas.circle(centre, r, Rgba{1.0, 1.0, 1.0, 0.25}, danger_line(c.id));
@@ -320,13 +320,13 @@ struct Painter {
     const Rgba halo{1.0, 1.0, 1.0, 0.85};
     for (const EllipticCylinder& c : set.ellipses) {
       const double r = std::max(c.footprint.a * layout.view.scale() + 4.0 * u, 7.0 * u);
-      canvas.text_with_halo(px(c.footprint.center) + Vec2(r + 3.0 * u, 4.0 * u), c.id, 11.5 * u, color, halo, 2.5 * u);
+      canvas.text_with_halo(px(c.footprint.centre) + Vec2(r + 3.0 * u, 4.0 * u), c.id, 11.5 * u, color, halo, 2.5 * u);
     }
     for (const PolygonObstacle& p : set.polygons) {
       WorldBox box;
       for (const BgPoint& q : p.footprint.outer()) box.extend(to_eigen(q));
-      canvas.text_with_halo(px(box.center()) + Vec2(0.0, 4.0 * u), p.id, 11.5 * u, color, halo, 2.5 * u,
-                            TextAlign::center);
+      canvas.text_with_halo(px(box.centre()) + Vec2(0.0, 4.0 * u), p.id, 11.5 * u, color, halo, 2.5 * u,
+                            TextAlign::centre);
     }
   }
 
@@ -353,7 +353,7 @@ struct Painter {
       }
       canvas.stroke_rect({x, y, bw * layout.band_colors.size(), 16.0 * u}, Stroke{style.frame, 1.0 * u, {}});
       for (std::size_t i = 0; i < sh.edges.size(); ++i) {
-        canvas.text({x + bw * i, y + 30.0 * u}, format_number(sh.edges[i]), 11.5 * u, style.text, TextAlign::center);
+        canvas.text({x + bw * i, y + 30.0 * u}, format_number(sh.edges[i]), 11.5 * u, style.text, TextAlign::centre);
       }
     }
     struct Entry {
@@ -515,8 +515,8 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   if (scene.enc) content.extend(scene.enc->box());
   for (const ObstacleSet* set : {&scene.hazards, &scene.obstacles}) {
     for (const auto& c : set->ellipses) {
-      content.extend(c.footprint.center - Vec2(c.footprint.a, c.footprint.a));
-      content.extend(c.footprint.center + Vec2(c.footprint.a, c.footprint.a));
+      content.extend(c.footprint.centre - Vec2(c.footprint.a, c.footprint.a));
+      content.extend(c.footprint.centre + Vec2(c.footprint.a, c.footprint.a));
     }
     for (const auto& p : set->polygons) {
       for (const BgPoint& q : p.footprint.outer()) content.extend(to_eigen(q));
@@ -543,7 +543,7 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   l.footer = {0.0, l.map.y + l.map.height, static_cast<double>(options.width_px), footer * u};
   l.height = static_cast<int>(std::ceil(l.footer.y + l.footer.height));
   l.view = ViewTransform(l.extent, l.map);
-  l.true_north_deg = 90.0 - frame.true_north_angle(l.extent.center()) * 180.0 / kPi;
+  l.true_north_deg = 90.0 - frame.true_north_angle(l.extent.centre()) * 180.0 / kPi;
   l.no_go_polygons = scene.no_go.size();
   l.hazards = scene.hazards.size();
 

@@ -141,7 +141,7 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
       return a.second - a.first < b.second - b.first;
     });
     canvas.text_with_halo({plot.x + 0.5 * (widest.first + widest.second + 1), y.to_px(top) - 6.0 * u},
-                          field.obstacle_name(i), 11.5 * u, kObstacle, rgb_hex(0xffffff), 2.5 * u, TextAlign::center);
+                          field.obstacle_name(i), 11.5 * u, kObstacle, rgb_hex(0xffffff), 2.5 * u, TextAlign::centre);
   }
   // The sea floor and its clearance line.
   if (const SeaFloor* floor = volume.floor()) {

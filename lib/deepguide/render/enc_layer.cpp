@@ -38,7 +38,7 @@ std::vector<BgPolygon> disc_union(const ObstacleSet& set) {
     const int n = 48;
     for (int i = n; i >= 0; --i) {  // clockwise, closed
       const double a = 2.0 * std::numbers::pi * i / n;
-      p.outer().push_back(to_bg(e.footprint.center + e.footprint.a * Vec2(std::cos(a), std::sin(a))));
+      p.outer().push_back(to_bg(e.footprint.centre + e.footprint.a * Vec2(std::cos(a), std::sin(a))));
     }
     discs.push_back(std::move(p));
   }
@@ -185,7 +185,7 @@ void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& l
     const std::string t = depth_text(s->depth);
     const double w = canvas.text_width(t, size);
     if (!labels.place({c.x() - 0.5 * w, c.y() - size, w, size * 1.1})) continue;
-    canvas.text(c + Vec2(0.0, 0.0), t, size, too_shallow(s->depth) ? style.no_go : style.sounding, TextAlign::center);
+    canvas.text(c + Vec2(0.0, 0.0), t, size, too_shallow(s->depth) ? style.no_go : style.sounding, TextAlign::centre);
   }
   // Dangers: a symbol by kind at each point, an outline round each area.
   for (const EncLayer::Danger& d : layer.dangers) {

@@ -114,7 +114,7 @@ std::vector<int> passing_sides(const GradientLine& line, const Vec2& target, std
   std::vector<int> sides;
   sides.reserve(objects.size());
   for (const Ellipse& o : objects) {
-    const Vec2 c = o.center;
+    const Vec2 c = o.centre;
     const auto nearest = std::min_element(line.points.begin(), line.points.end(), [&](const Vec2& a, const Vec2& b) {
       return (a - c).squaredNorm() < (b - c).squaredNorm();
     });

@@ -33,7 +33,7 @@ Vec2 current_at(const Scenario& sc, const Vec2& p) {
 std::vector<Vec2> shade_polygon(const Ellipse& safety, const Vec2& e, double length) {
   const Vec2 n(-e.y(), e.x());
   const double w = shade_half_width(safety, e);
-  const Vec2 c = safety.center;
+  const Vec2 c = safety.centre;
   return {c + w * n, c - w * n, c - w * n + length * e, c + w * n + length * e};
 }
 
@@ -166,7 +166,7 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
 
   if (aligning) {
     const Ellipse safety = security_ellipse(id.object, id.align.standoff_m);
-    const Vec2 e = (run.goal - id.object.center).normalized();
+    const Vec2 e = (run.goal - id.object.centre).normalized();
     std::vector<Vec2> shade = shade_polygon(safety, e, diagonal);
     for (Vec2& p : shade) p = px(p);
     canvas.shape(shade, with_alpha(area_color, 0.18), Stroke{area_color, 1.4 * u, {}});
@@ -175,7 +175,7 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
     for (Vec2& p : object) p = px(p);
     canvas.fill_rings({object}, style.obstacle);
     const Vec2 n(-e.y(), e.x());
-    canvas.stroke_polyline({px(id.object.center - diagonal * n), px(id.object.center + diagonal * n)}, guide);
+    canvas.stroke_polyline({px(id.object.centre - diagonal * n), px(id.object.centre + diagonal * n)}, guide);
     const Vec2 lee = px(lee_goal_point(safety, e));
     canvas.circle(lee, 4.0 * u, style.background, Stroke{style.text, 1.6 * u, {}});
     // The shade's label near the far end of the stretch the plot shows, on the side away from the approach.
@@ -184,8 +184,8 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
     canvas.text_with_halo(px(run.goal + 0.9 * reach * e - 0.8 * shade_half_width(safety, e) * n),
                           "positioning area (flow shade)", 13.0 * u, style.text, style.sea, 2.5 * u,
                           TextAlign::right);
-    canvas.text_with_halo(px(id.object.center - 0.22 * diagonal * e + 0.08 * diagonal * n), "evasive area",
-                          13.0 * u, style.text, style.sea, 2.5 * u, TextAlign::center);
+    canvas.text_with_halo(px(id.object.centre - 0.22 * diagonal * e + 0.08 * diagonal * n), "evasive area",
+                          13.0 * u, style.text, style.sea, 2.5 * u, TextAlign::centre);
   } else {
     std::vector<Vec2> ring;
     for (int i = 0; i < 360; ++i) {

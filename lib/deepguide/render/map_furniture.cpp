@@ -43,9 +43,9 @@ void draw_scale_bar(Canvas& canvas, double scale, double x0, double y, double ma
   }
   canvas.stroke_rect({x0, y, length_px, h}, Stroke{c.text, 1.0 * u, {}});
   const double size = 13.0 * u;
-  canvas.text({x0, y - 6.0 * u}, "0", size, c.text, TextAlign::center);
-  canvas.text({x0 + length_px / 2.0, y - 6.0 * u}, format_length(length_m / 2.0), size, c.text, TextAlign::center);
-  canvas.text({x0 + length_px, y - 6.0 * u}, format_length(length_m), size, c.text, TextAlign::center);
+  canvas.text({x0, y - 6.0 * u}, "0", size, c.text, TextAlign::centre);
+  canvas.text({x0 + length_px / 2.0, y - 6.0 * u}, format_length(length_m / 2.0), size, c.text, TextAlign::centre);
+  canvas.text({x0 + length_px, y - 6.0 * u}, format_length(length_m), size, c.text, TextAlign::centre);
   canvas.text({x0, y + h + 18.0 * u}, "scale  1 px = " + format_number(std::round(1000.0 / scale) / 1000.0) + " m",
               11.5 * u, c.muted, TextAlign::left);
 }
@@ -69,7 +69,7 @@ void draw_north_arrow(Canvas& canvas, double cx, double top, double u, double ro
   const Vec2 right = turn({cx + half, bottom});
   canvas.shape({tip, left, base}, c.background, Stroke{c.text, 1.2 * u, {}});
   canvas.shape({tip, base, right}, c.text, Stroke{c.text, 1.2 * u, {}});
-  canvas.text(tip + 5.0 * u * Vec2(sa, -ca), "N", 15.0 * u, c.text, TextAlign::center, true);
+  canvas.text(tip + 5.0 * u * Vec2(sa, -ca), "N", 15.0 * u, c.text, TextAlign::centre, true);
   canvas.text({note_right_x, bottom + 18.0 * u}, note, 11.5 * u, c.muted, TextAlign::right);
 }
 

@@ -59,7 +59,7 @@ MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan
   }
   f.detected = &run.detected;
   if (zoom_m > 0.0 && !run.detected.ellipses.empty()) {
-    const Vec2 c = run.detected.ellipses.front().footprint.center;
+    const Vec2 c = run.detected.ellipses.front().footprint.centre;
     f.extent.extend(c - Vec2::Constant(zoom_m));
     f.extent.extend(c + Vec2::Constant(zoom_m));
   }

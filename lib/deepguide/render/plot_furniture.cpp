@@ -93,7 +93,7 @@ void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const P
   canvas.stroke_segments(marks, Stroke{style.frame, 1.0 * u, {}});
   if (options.x_labels) {
     for (const double v : xt) {
-      canvas.text({x.to_px(v), bottom + tick + 15.0 * u}, format_tick(v, x_step), size, style.text, TextAlign::center);
+      canvas.text({x.to_px(v), bottom + tick + 15.0 * u}, format_tick(v, x_step), size, style.text, TextAlign::centre);
     }
     canvas.text({right, bottom + tick + 36.0 * u}, options.x_title, size, style.text, TextAlign::right);
   }

@@ -96,7 +96,7 @@ ReactiveMapLayout reactive_map_layout(const ReactiveMap& map, const WorldBox& ex
   content.extend(map.start);
   content.extend(map.target);
   for (const Ellipse& e : map.objects) {
-    if (!finite(e.center) || !(e.a > 0.0) || !(e.b > 0.0) || !std::isfinite(e.a) || !std::isfinite(e.theta)) {
+    if (!finite(e.centre) || !(e.a > 0.0) || !(e.b > 0.0) || !std::isfinite(e.a) || !std::isfinite(e.theta)) {
       throw InputError("reactive map: expected obstacles with a finite centre and positive finite axes");
     }
     content.extend(ellipse_box(e));
@@ -163,9 +163,9 @@ void end_reactive_map(Canvas& canvas, const ReactiveMap& map, const ReactiveMapL
   const Vec2 target = l.view.to_pixel(map.target);
   start_marker(canvas, start, s, u);
   target_marker(canvas, target, s, u);
-  canvas.text_with_halo(start + Vec2(0.0, -13.0 * u), "start", 14.0 * u, s.text, s.sea, 2.5 * u, TextAlign::center);
+  canvas.text_with_halo(start + Vec2(0.0, -13.0 * u), "start", 14.0 * u, s.text, s.sea, 2.5 * u, TextAlign::centre);
   canvas.text_with_halo(target + Vec2(0.0, -15.0 * u), map.target_label, 14.0 * u, s.text, s.sea, 2.5 * u,
-                        TextAlign::center);
+                        TextAlign::centre);
   canvas.unclip();
   draw_axes(canvas, l.plot, l.x, l.y, {"x, east (m)", "y, north (m)", 12, 8, true}, u,
             {s.text, s.frame, with_alpha(s.grid, 0.0)});

@@ -34,8 +34,8 @@ WorldBox ellipse_box(const Ellipse& e, double d) {
   const double hx = std::hypot(e.a * c, e.b * s) + d;
   const double hy = std::hypot(e.a * s, e.b * c) + d;
   WorldBox box;
-  box.extend(e.center - Vec2(hx, hy));
-  box.extend(e.center + Vec2(hx, hy));
+  box.extend(e.centre - Vec2(hx, hy));
+  box.extend(e.centre + Vec2(hx, hy));
   return box;
 }
 
@@ -54,7 +54,7 @@ WorldBox content_box(const RouteScene& scene) {
   if (scene.obstacles != nullptr) {
     for (const EllipticCylinder& c : scene.obstacles->ellipses) {
       const Ellipse& e = c.footprint;
-      if (!finite(e.center) || !std::isfinite(e.a) || !std::isfinite(e.b) || !std::isfinite(e.theta) ||
+      if (!finite(e.centre) || !std::isfinite(e.a) || !std::isfinite(e.b) || !std::isfinite(e.theta) ||
           !(e.a > 0.0) || !(e.b > 0.0)) {
         throw InputError("route chart: obstacle '" + c.id + "': expected a finite ellipse with positive axes");
       }
@@ -327,7 +327,7 @@ struct Painter {
       normal = -normal / len;                  // ...so flip it to the left of travel
       const Vec2 mid = 0.5 * (a + b) + 12.0 * u * normal;
       const TextAlign align = normal.x() < -0.3 ? TextAlign::right : normal.x() > 0.3 ? TextAlign::left
-                                                                                      : TextAlign::center;
+                                                                                      : TextAlign::centre;
       canvas.text_with_halo(mid + Vec2(0.0, 4.0 * u), scene.leg_labels[i], size, style.route, style.sea, 2.5 * u,
                             align);
     }
@@ -337,7 +337,7 @@ struct Painter {
   void labels(const ObstacleSet& obs) {
     const double d = std::max(0.0, scene.margin);
     auto label = [&](const std::string& id, const WorldBox& zone) {
-      const Vec2 at = px(Vec2(zone.max.x(), zone.center().y()));
+      const Vec2 at = px(Vec2(zone.max.x(), zone.centre().y()));
       canvas.text_with_halo(at + Vec2(5.0 * u, 4.5 * u), id, 12.5 * u, style.text, style.sea, 2.5 * u);
     };
     for (const EllipticCylinder& c : obs.ellipses) label(c.id, ellipse_box(c.footprint, d));

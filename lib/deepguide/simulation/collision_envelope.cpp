@@ -33,7 +33,7 @@ void CollisionWatch::observe(const VehicleState& state) {
   const SonarParams& sonar = scenario_.sonar;
   for (std::size_t i = 0; i < scenario_.obstacles.size(); ++i) {
     const Ellipse& e = scenario_.obstacles[i].footprint;
-    const double reach = (e.center - state.position).norm() - e.a;  // a lower bound of the distance
+    const double reach = (e.centre - state.position).norm() - e.a;  // a lower bound of the distance
     if (!first_seen_[i] && sonar.range_m > 0.0 && reach <= sonar.range_m) {
       double range = 0.0;
       Vec2 nearest;

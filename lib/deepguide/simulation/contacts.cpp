@@ -30,7 +30,7 @@ double half_width(const Ellipse& e, const Vec2& major, const Vec2& u) {
 }  // namespace
 
 double ellipse_hausdorff_distance(const Ellipse& a, const Ellipse& b) {
-  const Vec2 dc = a.center - b.center;
+  const Vec2 dc = a.centre - b.centre;
   const Vec2 ma = a.major_dir(), mb = b.major_dir();
   double worst = 0.0;
   for (const Vec2& u : directions()) {
@@ -55,7 +55,7 @@ void ContactMemory::update(std::span<const Detection> detections, double time_s)
     for (std::size_t c = 0; c < n_old; ++c) {
       const double gate = params_.gate_m + 3.0 * (noise_m_[c] + det_noise);
       // The centre distance is a lower bound of d_H: prune before the 16 directions.
-      if ((ellipses_[c].center - det.center).squaredNorm() > gate * gate) continue;
+      if ((ellipses_[c].centre - det.centre).squaredNorm() > gate * gate) continue;
       const double dist = ellipse_hausdorff_distance(ellipses_[c], det);
       if (dist <= gate) pairs_.push_back({dist, c, d});
     }

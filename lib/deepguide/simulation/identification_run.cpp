@@ -99,7 +99,7 @@ std::string_view to_string(IdentifyEnd end) {
 double identify_max_time_s(const Scenario& sc) {
   if (!std::isnan(sc.max_time_s)) return sc.max_time_s;
   const IdentifySpec& id = *sc.identify;
-  const double approach = (id.object.center - sc.start).norm();
+  const double approach = (id.object.centre - sc.start).norm();
   double t = 0.0;
   if (id.mode == IdentifyMode::align) {
     t = 3.0 * approach / id.align.speed_mps + 300.0 + id.hold_time_s;
@@ -123,7 +123,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
   const auto max_steps = static_cast<std::size_t>(std::ceil(identify_max_time_s(sc) / h - 1e-9));
 
   const double speed0 = aligning ? id.align.speed_mps : id.around.speed_mps;
-  const double heading0 = sc.start_heading.value_or(math_angle(object.center - sc.start));
+  const double heading0 = sc.start_heading.value_or(math_angle(object.centre - sc.start));
   Plant plant(sc, sc.start, heading0, speed0);
   const VehicleState& state = plant.state();
   NearestClearance clearance(sc.obstacles);

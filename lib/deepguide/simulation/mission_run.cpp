@@ -137,8 +137,8 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
   // footprint and is no bigger than it (+ the slack): a small object beside a
   // big wreck is not the wreck.
   const auto is_known = [&](const Ellipse& c) {
-    for (std::size_t i : known_field.near(c.center, c.center, kKnownSlack_m)) {
-      if (known_field.distance_to(i, c.center) > kKnownSlack_m) continue;
+    for (std::size_t i : known_field.near(c.centre, c.centre, kKnownSlack_m)) {
+      if (known_field.distance_to(i, c.centre) > kKnownSlack_m) continue;
       if (i < env.obstacles.ellipses.size() && c.a > env.obstacles.ellipses[i].footprint.a + kKnownSlack_m) continue;
       return true;
     }
@@ -217,7 +217,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     if (sonar.update(t, pos, s.heading, sc.obstacles)) {
       contacts.update(sonar.detections(), t);
       for (const Ellipse& c : contacts.ellipses()) {
-        const auto near = [&](const Vec2& p) { return (p - c.center).norm() <= kSameContact_m; };
+        const auto near = [&](const Vec2& p) { return (p - c.centre).norm() <= kSameContact_m; };
         if (reactive || is_known(c) || std::any_of(handled.begin(), handled.end(), near)) continue;
         if (std::any_of(waiting.begin(), waiting.end(), [&](const auto& w) { return near(w.first) && t < w.second; })) {
           continue;
@@ -249,12 +249,12 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         // In view ahead, before the planner can be done, the reactive level must act now.
         const bool imminent = danger->along_m - plan_track.along() <= speed * options.planning_delay_s + 2.0 * lead;
         if (!ok && !imminent) {
-          waiting.emplace_back(c.center, t + kRetry_s);  // try again as it comes nearer
+          waiting.emplace_back(c.centre, t + kRetry_s);  // try again as it comes nearer
           continue;
         }
-        handled.push_back(c.center);
+        handled.push_back(c.centre);
         run.detected.ellipses.push_back(object);
-        event(t, pos, object.id + " at " + point_text(c.center) + " is on no chart and endangers the plan " +
+        event(t, pos, object.id + " at " + point_text(c.centre) + " is on no chart and endangers the plan " +
                           fixed(danger->along_m - plan_track.along(), 0) + " m ahead");
         if (ok) {
           // The rendezvous is on the route as written, so the new plan's point for it is the place.

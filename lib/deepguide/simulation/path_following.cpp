@@ -29,8 +29,8 @@ PathPoint nearest_on_leg(const RouteLeg& leg, const Vec2& p) {
   // The nearest point of core (+) disc(offset) has the normal from the core's
   // nearest point towards p.
   const Ellipse& e = leg.core;
-  Vec2 from_core = e.a == e.b ? Vec2(p - e.center) : Vec2(p - project_to_ellipse(e, p).point);
-  if (from_core.norm() == 0.0) from_core = arc_point(leg, leg.phi_from) - e.center;
+  Vec2 from_core = e.a == e.b ? Vec2(p - e.centre) : Vec2(p - project_to_ellipse(e, p).point);
+  if (from_core.norm() == 0.0) from_core = arc_point(leg, leg.phi_from) - e.centre;
   double phi = std::atan2(from_core.y(), from_core.x());
   // Unwrap next to the arc's middle, then clamp to the arc in the direction of travel.
   const double mid = 0.5 * (leg.phi_from + leg.phi_to);

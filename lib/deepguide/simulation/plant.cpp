@@ -32,7 +32,7 @@ double NearestClearance::at(const Vec2& p) {
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
     if (i == nearest_) continue;
     const Ellipse& e = obstacles_[i].footprint;
-    if ((p - e.center).norm() - e.a >= best) continue;
+    if ((p - e.centre).norm() - e.a >= best) continue;
     const double d = signed_distance(e, p);
     if (d < best) {
       best = d;

@@ -83,14 +83,14 @@ void read_obstacles(const Mapping& root, const std::optional<LocalFrame>& frame,
                     "an obstacle mapping {x, y, semi_major_m, semi_minor_m, orientation_deg}");
     EllipticCylinder c;
     c.id = m.has("id") ? m.text("id", "an obstacle id (text)") : "obstacle " + std::to_string(i + 1);
-    c.footprint.center = read_position(m, frame);
+    c.footprint.centre = read_position(m, frame);
     c.footprint.a = m.number("semi_major_m", kAxis);
     c.footprint.b = m.number_or("semi_minor_m", kAxis, c.footprint.a);
     if (c.footprint.b > c.footprint.a) {
       throw input_error(m.where("semi_minor_m"), "semi_minor_m <= semi_major_m (" + yaml_number(c.footprint.a) + ")",
                         yaml_number(c.footprint.b));
     }
-    c.footprint.theta = to_math(m.number_or("orientation_deg", kAngle, 0.0), c.footprint.center, frame);
+    c.footprint.theta = to_math(m.number_or("orientation_deg", kAngle, 0.0), c.footprint.centre, frame);
     sc.obstacles.push_back(std::move(c));
   }
 }
@@ -255,8 +255,8 @@ std::pair<Vec2, Vec2> work_box(const Scenario& sc) {
     const double reach = id.object.a + std::max(id.align.standoff_m + id.align.hold_buffer_m + id.align.approach_m +
                                                     id.align.approach_radius_m,
                                                 id.around.distance_m + 2.0 * id.around.switch_m);
-    lo = lo.cwiseMin(id.object.center - Vec2(reach, reach));
-    hi = hi.cwiseMax(id.object.center + Vec2(reach, reach));
+    lo = lo.cwiseMin(id.object.centre - Vec2(reach, reach));
+    hi = hi.cwiseMax(id.object.centre + Vec2(reach, reach));
   }
   return {lo, hi};
 }
@@ -352,7 +352,7 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
   read_reactive(root, sc);
   read_run_rules(root, sc);
   read_identify(root, sc);
-  if (sc.identify && !root.has("target")) sc.target = sc.identify->object.center;
+  if (sc.identify && !root.has("target")) sc.target = sc.identify->object.centre;
   read_current(root, base_dir, sc);
   validate(sc);
   return sc;
@@ -381,7 +381,7 @@ void validate_identify(const Scenario& sc, const Fail& fail, const Within& withi
   const IdentifySpec& id = *sc.identify;
   const Ellipse& e = id.object;
   const std::string object = "object '" + printable(id.object_id) + "'";
-  if (!e.center.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6))
+  if (!e.centre.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6))
     fail("identify.object", "a finite ellipse with 0 < semi-minor <= semi-major <= 1e6 m", object);
   // The object is one of the obstacles (it counts for the clearance), named by one id only.
   const auto named = std::count_if(sc.obstacles.begin(), sc.obstacles.end(),
@@ -393,7 +393,7 @@ void validate_identify(const Scenario& sc, const Fail& fail, const Within& withi
   const auto it = std::find_if(sc.obstacles.begin(), sc.obstacles.end(),
                                [&](const EllipticCylinder& o) { return o.id == id.object_id; });
   const Ellipse& f = it->footprint;
-  if (f.center != e.center || f.a != e.a || f.b != e.b || f.theta != e.theta)
+  if (f.centre != e.centre || f.a != e.a || f.b != e.b || f.theta != e.theta)
     fail("identify.object", "the obstacle's own footprint", "a different ellipse");
   within([&] { validate(id.align); });
   within([&] { validate(id.around); });
@@ -472,7 +472,7 @@ void validate(const Scenario& sc) {
     fail("current", "a finite current of at most 20 m/s", yaml_number(sc.current.norm()));
   for (const EllipticCylinder& o : sc.obstacles) {
     const Ellipse& e = o.footprint;
-    if (!e.center.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6)) {
+    if (!e.centre.allFinite() || !std::isfinite(e.theta) || !(e.b > 0.0 && e.b <= e.a && e.a <= 1e6)) {
       fail("obstacle '" + printable(o.id) + "'", "a finite ellipse with 0 < semi-minor <= semi-major <= 1e6 m",
            "a = " + yaml_number(e.a) + ", b = " + yaml_number(e.b));
     }

@@ -53,7 +53,7 @@ std::string scenario_yaml(const Scenario& sc, const std::string& comment) {
   o << "obstacles:" << (sc.obstacles.empty() ? " []" : "") << "\n";
   for (const EllipticCylinder& c : sc.obstacles) {
     const Ellipse& e = c.footprint;
-    o << "  - {id: " << quoted(c.id) << ", x: " << yaml_exact_number(e.center.x()) << ", y: " << yaml_exact_number(e.center.y())
+    o << "  - {id: " << quoted(c.id) << ", x: " << yaml_exact_number(e.centre.x()) << ", y: " << yaml_exact_number(e.centre.y())
       << ", semi_major_m: " << yaml_exact_number(e.a) << ", semi_minor_m: " << yaml_exact_number(e.b)
       << ", orientation_deg: " << yaml_exact_number(math_rad_to_heading_deg(e.theta)) << "}\n";
   }

@@ -161,7 +161,7 @@ void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
       for (const BgPolygon& p : f.area) areas.push_back(p);
       if (f.point) {
         Ellipse disc;
-        disc.center = *f.point;
+        disc.centre = *f.point;
         disc.a = disc.b = f.radius_m;
         areas.push_back(enclosing_bg_polygon({disc, 0.0}, {0.1}));
       }

@@ -490,7 +490,7 @@ void planning_obstacles(EncNoGo& out, const std::vector<std::size_t>& tiles, dou
     if (!locator.covering(*f.point).empty() && locator.distance_to_edges(*f.point) >= f.radius_m) continue;
     EllipticCylinder e;
     e.id = f.id;
-    e.footprint.center = *f.point;
+    e.footprint.centre = *f.point;
     e.footprint.a = e.footprint.b = f.radius_m;
     e.footprint.theta = 0.0;
     out.obstacles.ellipses.push_back(std::move(e));

@@ -26,8 +26,8 @@ std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double verti
 std::pair<Vec2, Vec2> footprint_box(const ObstacleSet& obstacles) {
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const EllipticCylinder& c : obstacles.ellipses) {
-    lo = lo.cwiseMin(c.footprint.center - Vec2::Constant(c.footprint.a));
-    hi = hi.cwiseMax(c.footprint.center + Vec2::Constant(c.footprint.a));
+    lo = lo.cwiseMin(c.footprint.centre - Vec2::Constant(c.footprint.a));
+    hi = hi.cwiseMax(c.footprint.centre + Vec2::Constant(c.footprint.a));
   }
   for (const PolygonObstacle& p : obstacles.polygons) {
     for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));

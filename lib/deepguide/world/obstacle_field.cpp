@@ -57,9 +57,9 @@ BgBox ellipse_box(const Ellipse& e) {
   const double hx = std::hypot(e.a * c, e.b * s);
   const double hy = std::hypot(e.a * s, e.b * c);
   const double pad =
-      16.0 * std::numeric_limits<double>::epsilon() * (e.a + std::abs(e.center.x()) + std::abs(e.center.y()));
-  return {BgPoint(e.center.x() - hx - pad, e.center.y() - hy - pad),
-          BgPoint(e.center.x() + hx + pad, e.center.y() + hy + pad)};
+      16.0 * std::numeric_limits<double>::epsilon() * (e.a + std::abs(e.centre.x()) + std::abs(e.centre.y()));
+  return {BgPoint(e.centre.x() - hx - pad, e.centre.y() - hy - pad),
+          BgPoint(e.centre.x() + hx + pad, e.centre.y() + hy + pad)};
 }
 
 bool finite(const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
@@ -127,7 +127,7 @@ double min_implicit(const Vec2& p0, const Vec2& p1, double A, double B) {
 Verdict quick_verdict(const Ellipse& e, const Vec2& axis, double t, const Vec2& a, const Vec2& b) {
   if (!(t > 0.0)) return Verdict::unknown;
   const auto local = [&](const Vec2& p) {
-    const Vec2 d = p - e.center;
+    const Vec2 d = p - e.centre;
     return Vec2(d.dot(axis), axis.x() * d.y() - axis.y() * d.x());
   };
   const Vec2 p0 = local(a), p1 = local(b);
@@ -162,9 +162,9 @@ SegmentDistance segment_signed_distance(const Ellipse& ellipse, const Vec2& a, c
   // it is smallest at clamp(t*, 0, 1): the gap itself, or an end point's distance.
   const double len2 = d.squaredNorm();
   Vec2 n = Vec2(-d.y(), d.x()) / std::sqrt(len2);
-  double side = n.dot(a - ellipse.center);
+  double side = n.dot(a - ellipse.centre);
   if (side < 0.0) n = -n, side = -side;
-  const double gap = side - (ellipse.support(n) - n.dot(ellipse.center));
+  const double gap = side - (ellipse.support(n) - n.dot(ellipse.centre));
   if (gap > 0.0) {
     const double t_foot = (ellipse.support_point(n) - a).dot(d) / len2;
     if (t_foot >= 0.0 && t_foot <= 1.0) return {gap, a + t_foot * d};
@@ -280,7 +280,7 @@ ObstacleField::ObstacleField(ObstacleSet obstacles, double margin, double slack)
   for (std::size_t i = 0; i < n_ellipses; ++i) {
     const Ellipse& e = obstacles_.ellipses[i].footprint;
     const InputLocation where{"obstacle field", obstacle_name(i), "footprint"};
-    if (!finite(e.center) || !std::isfinite(e.theta)) {
+    if (!finite(e.centre) || !std::isfinite(e.theta)) {
       throw input_error(where, "a finite centre and orientation");
     }
     if (!std::isfinite(e.a) || !(e.b > 0.0) || e.b > e.a) {

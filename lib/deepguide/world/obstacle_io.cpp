@@ -29,7 +29,7 @@ struct GeoRecord {
   std::vector<std::optional<std::string>> extra;
   std::string id;
   bool is_ellipse = false;
-  Eigen::Vector2d center;  // lon, lat
+  Eigen::Vector2d centre;  // lon, lat
   double a = 0.0;
   double b = 0.0;
   double heading_deg = 0.0;
@@ -393,7 +393,7 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
         case wkbPoint: {
           read_ellipse_fields(*feature, where, rec);
           const auto* p = g->toPoint();
-          rec.center = to_geo(*ct, p->getX(), p->getY(), where);
+          rec.centre = to_geo(*ct, p->getX(), p->getY(), where);
           result.records.push_back(std::move(rec));
           ++result.info.ellipses;
           break;
@@ -446,7 +446,7 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
         west = std::min(west, ll.x()), east = std::max(east, ll.x());
         south = std::min(south, ll.y()), north = std::max(north, ll.y());
       };
-      if (r.is_ellipse) grow(r.center);
+      if (r.is_ellipse) grow(r.centre);
       for (const auto& ring : r.rings) std::for_each(ring.begin(), ring.end(), grow);
     }
   }
@@ -459,15 +459,15 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
   LoadedObstacles out{{}, *frame, {}};
   for (SourceRead& src : sources) {
     for (const GeoRecord& r : src.records) {
-      ObstacleOrigin origin{out.sources.size(), r.fid, r.where, r.center, r.heading_deg, r.extra};
+      ObstacleOrigin origin{out.sources.size(), r.fid, r.where, r.centre, r.heading_deg, r.extra};
       (r.is_ellipse ? out.ellipse_origins : out.polygon_origins).push_back(std::move(origin));
       if (r.is_ellipse) {
         EllipticCylinder c;
         c.id = r.id;
-        c.footprint.center = to_local_checked(*frame, r.center, r.where);
+        c.footprint.centre = to_local_checked(*frame, r.centre, r.where);
         c.footprint.a = r.a;
         c.footprint.b = r.b;
-        c.footprint.theta = frame->heading_to_local(r.heading_deg, c.footprint.center);
+        c.footprint.theta = frame->heading_to_local(r.heading_deg, c.footprint.centre);
         c.height_m = r.height_m;
         c.top_depth_m = r.top_depth_m;
         out.obstacles.ellipses.push_back(std::move(c));
@@ -557,12 +557,12 @@ void write_obstacles(const std::string& path, const ObstacleSet& obstacles, cons
     for (const EllipticCylinder& c : obstacles.ellipses) {
       OGRFeature f(layer->GetLayerDefn());
       f.SetField("id", c.id.c_str());
-      const Eigen::Vector2d ll = to_ll(c.footprint.center);
+      const Eigen::Vector2d ll = to_ll(c.footprint.centre);
       f.SetGeometry(std::make_unique<OGRPoint>(ll.x(), ll.y()).get());
       f.SetField("semi_major_m", c.footprint.a);
       f.SetField("semi_minor_m", c.footprint.b);
       // An ellipse is symmetric: report its axis in [0, 180).
-      f.SetField("orientation_deg", std::fmod(frame.local_to_heading(c.footprint.theta, c.footprint.center), 180.0));
+      f.SetField("orientation_deg", std::fmod(frame.local_to_heading(c.footprint.theta, c.footprint.centre), 180.0));
       set_optional(f, "height_m", c.height_m);
       set_optional(f, "top_depth_m", c.top_depth_m);
       if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write obstacle '" + c.id + "'");

@@ -335,7 +335,7 @@ BgBox footprint_box(const Ellipse& e, double grow) {
   const double c = std::cos(e.theta), s = std::sin(e.theta);
   const double hx = std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s) + grow;
   const double hy = std::sqrt(e.a * e.a * s * s + e.b * e.b * c * c) + grow;
-  return {BgPoint(e.center.x() - hx, e.center.y() - hy), BgPoint(e.center.x() + hx, e.center.y() + hy)};
+  return {BgPoint(e.centre.x() - hx, e.centre.y() - hy), BgPoint(e.centre.x() + hx, e.centre.y() + hy)};
 }
 
 BgPolygon footprint_polygon(const Ellipse& e) {
@@ -363,7 +363,7 @@ void merge_into(Working& w, const Detection& d) {
   const double n = static_cast<double>(w.stored.sightings);
   Ellipse& e = w.stored.obstacle.footprint;
   const Ellipse& f = d.obstacle.footprint;
-  e.center = (n * e.center + f.center) / (n + 1.0);
+  e.centre = (n * e.centre + f.centre) / (n + 1.0);
   e.a = (n * e.a + f.a) / (n + 1.0);
   e.b = (n * e.b + f.b) / (n + 1.0);
   const Vec2 doubled = n * Vec2(std::cos(2.0 * e.theta), std::sin(2.0 * e.theta)) +
@@ -390,13 +390,13 @@ void merge_into(Working& w, const Detection& d) {
 void fill_feature(OGRFeature& f, const Working& w, const LocalFrame& frame) {
   const EllipticCylinder& o = w.stored.obstacle;
   const Ellipse& e = o.footprint;
-  const Eigen::Vector2d ll = w.as_read ? w.lonlat : frame.to_lonlat(e.center);
+  const Eigen::Vector2d ll = w.as_read ? w.lonlat : frame.to_lonlat(e.centre);
   OGRPoint point(ll.x(), ll.y());
   f.SetGeometry(&point);
   f.SetField("id", o.id.c_str());
   f.SetField("semi_major_m", e.a);
   f.SetField("semi_minor_m", e.b);
-  f.SetField("orientation_deg", axis_heading_deg(w.as_read ? w.heading_deg : frame.local_to_heading(e.theta, e.center)));
+  f.SetField("orientation_deg", axis_heading_deg(w.as_read ? w.heading_deg : frame.local_to_heading(e.theta, e.centre)));
   for (const auto& [name, v] : {std::pair{"height_m", o.height_m}, std::pair{"top_depth_m", o.top_depth_m}}) {
     if (v) {
       f.SetField(name, *v);
@@ -514,7 +514,7 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
     std::optional<BgPolygon> mine;
     for (const Entry& c : candidates) {
       const Ellipse& e = objects[c.second].stored.obstacle.footprint;
-      const double dist = (e.center - f.center).norm();
+      const double dist = (e.centre - f.centre).norm();
       if (dist > best_dist || (best && dist == best_dist && c.second > *best)) continue;
       bool match = dist <= d_max;
       if (!match) {

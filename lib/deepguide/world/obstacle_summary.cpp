@@ -40,9 +40,9 @@ ObstacleSummary summarize(const LoadedObstacles& loaded) {
   for (const EllipticCylinder& c : set.ellipses) {
     const Ellipse& e = c.footprint;
     // Half-widths of the bounding box are the support function along x and y.
-    const double hx = e.support(Vec2::UnitX()) - e.center.x();
-    const double hy = e.support(Vec2::UnitY()) - e.center.y();
-    grow(e.center.x() - hx, e.center.y() - hy, e.center.x() + hx, e.center.y() + hy);
+    const double hx = e.support(Vec2::UnitX()) - e.centre.x();
+    const double hy = e.support(Vec2::UnitY()) - e.centre.y();
+    grow(e.centre.x() - hx, e.centre.y() - hy, e.centre.x() + hx, e.centre.y() + hy);
     s.semi_major_m.add(e.a);
     s.semi_minor_m.add(e.b);
     s.footprint_area_m2.add(e.area());

@@ -181,7 +181,7 @@ S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S
       auto add_circle = [&](const OGRPoint& p, const std::string& pid) {
         EllipticCylinder c;
         c.id = pid;
-        c.footprint.center = local(p.getX(), p.getY());
+        c.footprint.centre = local(p.getX(), p.getY());
         c.footprint.a = c.footprint.b = options.point_hazard_radius_m;
         c.footprint.theta = 0.0;
         c.top_depth_m = top;

@@ -37,7 +37,7 @@ void validate(const SonarParams& p) {
 bool in_sonar_sector(const SonarParams& p, const Vec2& s, double heading, const Ellipse& e, double& range_m,
                      Vec2& nearest) {
   // Cheap rejection first: the ellipse lies within a of its centre.
-  const double centre_distance = (e.center - s).norm();
+  const double centre_distance = (e.centre - s).norm();
   if (centre_distance - e.a > p.range_m) return false;
 
   const EllipseProjection near = project_to_ellipse(e, s);
@@ -82,7 +82,7 @@ bool Sonar::update(double time_s, const Vec2& position, double heading,
     // Always four draws in this order, so one obstacle's errors never depend on a sigma being zero.
     const double ex = normal_(rng_), ey = normal_(rng_), ea = normal_(rng_), eb = normal_(rng_);
     d.estimate = truth;
-    d.estimate.center += Vec2(sp * ex, sp * ey);
+    d.estimate.centre += Vec2(sp * ex, sp * ey);
     d.estimate.a = std::max(kMinSonarAxis_m, truth.a + ss * ea);
     d.estimate.b = std::max(kMinSonarAxis_m, truth.b + ss * eb);
     if (d.estimate.b > d.estimate.a) {

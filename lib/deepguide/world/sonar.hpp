@@ -71,7 +71,7 @@ struct Detection {
 
   /// Bit-for-bit equality (for reproducibility checks).
   bool operator==(const Detection& o) const {
-    return estimate.center == o.estimate.center && estimate.a == o.estimate.a && estimate.b == o.estimate.b &&
+    return estimate.centre == o.estimate.centre && estimate.a == o.estimate.a && estimate.b == o.estimate.b &&
            estimate.theta == o.estimate.theta && range_m == o.range_m && bearing == o.bearing &&
            time_s == o.time_s && obstacle == o.obstacle;
   }

@@ -92,7 +92,7 @@ WaterVolume::WaterVolume(const ObstacleField& field, const SeaFloor* floor, cons
   for (const EllipticCylinder& e : set.ellipses) {
     const double r = e.footprint.a;
     zone_top_.push_back(resolve(e.top_depth_m, e.height_m,
-                                {e.footprint.center - Vec2::Constant(r), e.footprint.center + Vec2::Constant(r)}));
+                                {e.footprint.centre - Vec2::Constant(r), e.footprint.centre + Vec2::Constant(r)}));
   }
   for (const PolygonObstacle& p : set.polygons) {
     ObstacleSet one;
