@@ -34,8 +34,8 @@ void print_text(const ChartInfo& c) {
                 c.kind == ChartKind::raster ? "cells" : "feature(s)", l.detail.empty() ? "" : ", ", l.detail.c_str());
   }
   if (std::isfinite(c.extent.west)) {
-    std::printf("extent           lon %.6f .. %.6f, lat %.6f .. %.6f\n", c.extent.west, c.extent.east,
-                c.extent.south, c.extent.north);
+    std::printf("extent           lon %.6f .. %.6f, lat %.6f .. %.6f\n", c.extent.west, c.extent.east, c.extent.south,
+                c.extent.north);
     std::printf("                 %.1f m x %.1f m (east x north, %s)\n", c.width_m, c.height_m, c.local_crs.c_str());
   }
   if (c.kind == ChartKind::raster) {
@@ -64,9 +64,9 @@ void print_text(const ChartInfo& c) {
     std::printf("no-go at %g m    %.0f m2 (clearance %g m), %zu polygon(s)", n.depth_m, n.area_m2, n.clearance_m,
                 n.polygons);
     if (c.kind == ChartKind::raster) {
-      std::printf(", %zu of %zu cells (%.1f %%)", n.no_go_cells, n.total_cells,
-                  n.total_cells > 0 ? 100.0 * static_cast<double>(n.no_go_cells) / static_cast<double>(n.total_cells)
-                                    : 0.0);
+      std::printf(
+          ", %zu of %zu cells (%.1f %%)", n.no_go_cells, n.total_cells,
+          n.total_cells > 0 ? 100.0 * static_cast<double>(n.no_go_cells) / static_cast<double>(n.total_cells) : 0.0);
     } else {
       std::printf(", %zu %s passed over", n.hazards_passable, c.kind == ChartKind::s57 ? "feature(s)" : "hazard(s)");
     }

@@ -26,18 +26,19 @@ void register_chart_nogo(CLI::App& chart) {
       ->required();
   cmd->add_flag("--restricted", r.restricted_areas,
                 "S-57: areas whose RESTRN is entry prohibited, entry restricted or area to be avoided are no-go too");
-  cmd->add_flag("--no-zoc", f->no_zoc,
-                "S-57: take charted depths and positions as exact (default: less the zone of confidence's uncertainty)");
-  cmd->add_option("--depth", r.nogo.operating_depth_m, "Operating depth of the vehicle (m, positive down)")
-      ->required();
+  cmd->add_flag(
+      "--no-zoc", f->no_zoc,
+      "S-57: take charted depths and positions as exact (default: less the zone of confidence's uncertainty)");
+  cmd->add_option("--depth", r.nogo.operating_depth_m, "Operating depth of the vehicle (m, positive down)")->required();
   cmd->add_option("--clearance", r.nogo.vertical_clearance_m, "Water kept above the sea floor (m)")
       ->capture_default_str();
   cmd->add_option("--tolerance", r.nogo.simplify_tolerance_m,
                   "Simplification tolerance (m): polygons grow by at most this much, never shrink; 0 = exact cells")
       ->capture_default_str();
   cmd->add_option("-o,--output", r.output, "Output obstacle file (.geojson/.json, .gpkg, .csv)")->required();
-  cmd->add_option("--crs", r.crs,
-                  "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the raster's centre)");
+  cmd->add_option(
+      "--crs", r.crs,
+      "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the raster's centre)");
   cmd->add_option("--src-crs", r.src_crs,
                   "CRS of a raster that carries none, e.g. EPSG:4326 (default: such a raster is an error)");
   cmd->add_option("--sense", f->sense, "Cell values are elevation (up positive), depth, or auto (from the file)")

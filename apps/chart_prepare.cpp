@@ -24,11 +24,11 @@ struct PrepareOptions {
 void register_chart_prepare(CLI::App& chart) {
   auto o = std::make_shared<PrepareOptions>();
   CLI::App* cmd = chart.add_subcommand(
-      "prepare", "Judge S-57 cells at one depth once and keep their no-go in a GeoPackage that plan --chart and "
-                 "check route --chart read");
+      "prepare",
+      "Judge S-57 cells at one depth once and keep their no-go in a GeoPackage that plan --chart and "
+      "check route --chart read");
   cmd->add_option("CHART", o->charts, "S-57 cells (*.000, with their updates) and folders of cells")->required();
-  cmd->add_option("--depth", o->enc.operating_depth_m, "Operating depth of the vehicle (m, positive down)")
-      ->required();
+  cmd->add_option("--depth", o->enc.operating_depth_m, "Operating depth of the vehicle (m, positive down)")->required();
   cmd->add_option("--vertical-clearance", o->enc.vertical_clearance_m, "Water kept under the vehicle (m)")
       ->capture_default_str();
   cmd->add_option("--tolerance", o->enc.simplify_tolerance_m,
@@ -45,9 +45,8 @@ void register_chart_prepare(CLI::App& chart) {
     EncNoGoOptions opts = o->enc;
     opts.zone_of_confidence = !o->no_zoc;
     const auto t0 = std::chrono::steady_clock::now();
-    const EncNoGo no_go =
-        enc_no_go(o->charts, o->crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(o->crs)),
-                  opts);
+    const EncNoGo no_go = enc_no_go(
+        o->charts, o->crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(o->crs)), opts);
     write_prepared_chart(o->output, no_go, opts, o->overwrite);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (o->json) {

@@ -16,8 +16,9 @@ void register_check_route(CLI::App& check) {
   auto json = std::make_shared<bool>(false);
   auto no_zoc = std::make_shared<bool>(false);
   CLI::App* cmd = check.add_subcommand(
-      "route", "Check a route against obstacles (exact clearance) or S-57 charts at a depth (the first crossing "
-               "named); exit 1 when the route is unsafe");
+      "route",
+      "Check a route against obstacles (exact clearance) or S-57 charts at a depth (the first crossing "
+      "named); exit 1 when the route is unsafe");
   cmd->add_option("ROUTE", o->route, "Route file: RTZ (an ECDIS's), GPX (OpenCPN's), GeoJSON, KML, ... with a line")
       ->required();
   cmd->add_option("--obstacles", o->obstacles, "Obstacle files")->expected(1, -1);

@@ -8,15 +8,15 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/evaluation/evaluate.hpp"
 #include "deepguide/evaluation/eval_summary.hpp"
+#include "deepguide/evaluation/evaluate.hpp"
 #include "deepguide/evaluation/suite.hpp"
 
 namespace deepguide::app {
@@ -112,10 +112,10 @@ void register_evaluate(CLI::App& app) {
     if (o->output.empty()) throw CLI::RequiredError("--output");
     EvaluateOptions options;
     options.methods = parse_eval_methods(o->methods);
-    options.shard = o->shard == "slurm" ? slurm_array_shard(std::getenv("SLURM_ARRAY_TASK_ID"),
-                                                            std::getenv("SLURM_ARRAY_TASK_MIN"),
-                                                            std::getenv("SLURM_ARRAY_TASK_COUNT"))
-                                        : parse_shard(o->shard);
+    options.shard = o->shard == "slurm"
+                        ? slurm_array_shard(std::getenv("SLURM_ARRAY_TASK_ID"), std::getenv("SLURM_ARRAY_TASK_MIN"),
+                                            std::getenv("SLURM_ARRAY_TASK_COUNT"))
+                        : parse_shard(o->shard);
     options.threads = o->threads > 0 ? o->threads : slurm_cpus_per_task(std::getenv("SLURM_CPUS_PER_TASK"));
     options.fresh = o->fresh;
     options.timing = !o->no_timing;

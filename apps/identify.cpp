@@ -39,7 +39,8 @@ Scenario identify_scenario(const IdentifyOptions& o) {
   }
   Scenario scenario = read_scenario_file(o.scenario);
   if (!scenario.identify) {
-    throw InputError(o.scenario + ": field 'identify': expected an identify section naming the object "
+    throw InputError(o.scenario +
+                     ": field 'identify': expected an identify section naming the object "
                      "(see data/scenarios/align_in_current.yaml)");
   }
   if (mode) {
@@ -56,8 +57,8 @@ void print_error(const char* what, const ErrorStats& e) {
 void print_summary(const Scenario& sc, const IdentifyResult& r) {
   const IdentifyStats& s = r.stats;
   const bool aligning = r.mode == IdentifyMode::align;
-  std::printf("scenario %s, object %s, mode %s\n", printable(sc.name).c_str(), printable(sc.identify->object_id).c_str(),
-              std::string(to_string(r.mode)).c_str());
+  std::printf("scenario %s, object %s, mode %s\n", printable(sc.name).c_str(),
+              printable(sc.identify->object_id).c_str(), std::string(to_string(r.mode)).c_str());
   std::printf("  %-24s %s\n", "end", std::string(to_string(r.end)).c_str());
   if (!s.in_position) {
     std::printf("  %-24s never\n", "in position");
@@ -91,8 +92,7 @@ void register_identify(CLI::App& app) {
   auto o = std::make_shared<IdentifyOptions>();
   CLI::App* cmd = app.add_subcommand(
       "identify", "Simulate an identification manoeuvre: aligning to an object in a current, or going around it");
-  cmd->add_option("SCENARIO", o->scenario, "Scenario file with an identify section (see data/scenarios/)")
-      ->required();
+  cmd->add_option("SCENARIO", o->scenario, "Scenario file with an identify section (see data/scenarios/)")->required();
   cmd->add_option("--mode", o->mode, "align or around (default: the scenario's identify.mode)");
   cmd->add_option("-o,--output", o->output, "Trajectory file to write (CSV)");
   cmd->add_flag("--json", o->json, "Print the statistics and mode switches as JSON");
@@ -114,8 +114,7 @@ void register_render_identification(CLI::App& render) {
   auto o = std::make_shared<IdentifyOptions>();
   CLI::App* cmd = render.add_subcommand(
       "identification", "Simulate an identification manoeuvre and draw the areas, the current and the track");
-  cmd->add_option("SCENARIO", o->scenario, "Scenario file with an identify section (see data/scenarios/)")
-      ->required();
+  cmd->add_option("SCENARIO", o->scenario, "Scenario file with an identify section (see data/scenarios/)")->required();
   cmd->add_option("-o,--output", o->output, "Image to write: .png or .svg")->required();
   cmd->add_option("--mode", o->mode, "align or around (default: the scenario's identify.mode)");
   cmd->add_option("--width", o->width, "Image width in pixels")

@@ -26,8 +26,7 @@ void register_obstacles_import(CLI::App& obstacles) {
   cmd->add_option("DETECTIONS", opts->detections,
                   "Detection files: Points with semi_major_m etc., optional time, mission, contact_id")
       ->required();
-  cmd->add_option("--store", opts->store, "The obstacle store, a GeoPackage (.gpkg); created if missing")
-      ->required();
+  cmd->add_option("--store", opts->store, "The obstacle store, a GeoPackage (.gpkg); created if missing")->required();
   cmd->add_option("--merge-distance", opts->merge_distance_m,
                   "Centres closer than this (m) are one object; overlapping footprints merge too")
       ->capture_default_str();

@@ -37,8 +37,8 @@ void print_text(const ObstacleSummary& s) {
   std::cout << "semi-major axis  " << stats_line(s.semi_major_m, "m") << "\n";
   std::cout << "semi-minor axis  " << stats_line(s.semi_minor_m, "m") << "\n";
   std::cout << "footprint area   " << stats_line(s.footprint_area_m2, "m2") << "\n";
-  std::printf("vertical         %zu height above sea floor, %zu top depth, %zu whole water column\n",
-              s.with_height, s.with_top_depth, s.full_column);
+  std::printf("vertical         %zu height above sea floor, %zu top depth, %zu whole water column\n", s.with_height,
+              s.with_top_depth, s.full_column);
 }
 
 }  // namespace

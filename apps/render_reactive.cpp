@@ -52,9 +52,7 @@ CLI::App* add_figure_command(CLI::App& render, const std::string& name, const st
 }
 
 void add_methods_option(CLI::App& cmd, ReactiveFigureOptions& o) {
-  cmd.add_option("--methods", o.methods, "Methods to simulate, comma-separated")
-      ->delimiter(',')
-      ->capture_default_str();
+  cmd.add_option("--methods", o.methods, "Methods to simulate, comma-separated")->delimiter(',')->capture_default_str();
 }
 
 }  // namespace
@@ -98,8 +96,8 @@ void register_render_reactive(CLI::App& render) {
   }
   {
     auto o = std::make_shared<ReactiveFigureOptions>();
-    CLI::App* cmd = add_figure_command(
-        render, "turn-rates", "Simulate the reactive methods and plot r_ref and r over time (deg/s)", o);
+    CLI::App* cmd = add_figure_command(render, "turn-rates",
+                                       "Simulate the reactive methods and plot r_ref and r over time (deg/s)", o);
     add_methods_option(*cmd, *o);
     cmd->callback([o] {
       image_format_for(o->output);

@@ -25,10 +25,12 @@ void register_suite(CLI::App& app) {
   cmd->add_option("--max-obstacles", p.max_obstacles, "Most obstacles per scenario")->capture_default_str();
   cmd->add_option("--min-size", p.min_size_m, "Smallest semi-major axis (m)")->capture_default_str();
   cmd->add_option("--max-size", p.max_size_m, "Largest semi-major axis (m)")->capture_default_str();
-  cmd->add_option("--spread", p.cross_track_sigma_m, "Cross-track spread of the obstacles, sigma (m); with the count, the density")
+  cmd->add_option("--spread", p.cross_track_sigma_m,
+                  "Cross-track spread of the obstacles, sigma (m); with the count, the density")
       ->capture_default_str();
   cmd->add_option("--max-current", p.max_current_mps, "Fastest uniform current (m/s)")->capture_default_str();
-  cmd->add_option("--sonar-noise", p.sonar_noise, "Factor on the sonar's error sigmas (0 = exact)")->capture_default_str();
+  cmd->add_option("--sonar-noise", p.sonar_noise, "Factor on the sonar's error sigmas (0 = exact)")
+      ->capture_default_str();
   cmd->add_flag("--on-demand", flags->first, "Write only suite.yaml: evaluate makes the scenarios as it runs");
   cmd->add_flag("--overwrite", flags->second, "Replace the folder if it exists");
   cmd->callback([o, name, flags] {

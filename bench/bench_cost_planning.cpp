@@ -102,8 +102,11 @@ int main(int argc, char** argv) {
   };
   std::printf("%d random scenarios: 20 ellipses over 2 km x 2 km, a drift up to 0.6 m/s and an eddy up to 1.0 m/s\n",
               scenarios);
-  std::printf("(the tidal cases scale it by cos(2 pi t / 12.42 h) from a random departure); margin 5 m, cruise 2.06 m/s\n\n");
-  std::printf("| cost | routes | query ms (median / max) | A* examined | Dijkstra examined | saves vs shortest (mean / max) |\n");
+  std::printf(
+      "(the tidal cases scale it by cos(2 pi t / 12.42 h) from a random departure); margin 5 m, cruise 2.06 m/s\n\n");
+  std::printf(
+      "| cost | routes | query ms (median / max) | A* examined | Dijkstra examined | saves vs shortest (mean / max) "
+      "|\n");
   std::printf("|---|---|---|---|---|---|\n");
   std::uniform_real_distribution<double> departure(0.0, 12.42 * 3600.0);
   for (const Variant& v : variants) {
@@ -165,8 +168,11 @@ int main(int argc, char** argv) {
                  problem.start.cwiseMin(problem.goal), problem.start.cwiseMax(problem.goal));
   const SingleQueryPlan shortest = plan_single_query(banks.obstacles, problem, PlannerOptions{});
   const double base = price_route(*m, shortest.outcome.result.route.points).time_s;
-  std::printf("\nHYCOM Gulf Stream, 79 km south-west against the stream, --cost time (shortest route: %.0f s)\n\n", base);
-  std::printf("| --waypoint-grid | open-water vertices | edges | query ms | route time s | saves |\n|---|---|---|---|---|---|\n");
+  std::printf("\nHYCOM Gulf Stream, 79 km south-west against the stream, --cost time (shortest route: %.0f s)\n\n",
+              base);
+  std::printf(
+      "| --waypoint-grid | open-water vertices | edges | query ms | route time s | saves "
+      "|\n|---|---|---|---|---|---|\n");
   for (double grid : {0.0, 4000.0, 2000.0, 1000.0}) {
     PlannerOptions options;
     options.cost = m;

@@ -33,8 +33,9 @@ constexpr Row kCurrents[] = {{0.0, 0.0},   {0.5, 100.0}, {0.5, 10.0},  {0.5, 200
 int run(const std::string& dir) {
   const Scenario align = read_scenario_file(dir + "/align_in_current.yaml");
   const Scenario around = read_scenario_file(dir + "/around_object.yaml");
-  std::printf("| mode | current m/s towards deg | side | end | in position s | distance error RMS / max m | "
-              "station keeping or cross-track RMS / max m | laps | min clearance m | x real time |\n");
+  std::printf(
+      "| mode | current m/s towards deg | side | end | in position s | distance error RMS / max m | "
+      "station keeping or cross-track RMS / max m | laps | min clearance m | x real time |\n");
   std::printf("|---|---|---|---|---:|---|---|---:|---:|---:|\n");
   int failures = 0;
   double worst_align = 0.0, worst_around = 0.0;
@@ -65,9 +66,10 @@ int run(const std::string& dir) {
           std::max(pass == 0 ? worst_align : worst_around, pass == 0 ? s.distance_error_m.rms : s.cross_track_m.rms);
     }
   }
-  std::printf("\nWorst aligning distance-error RMS %.2f m, worst going-around cross-track RMS %.2f m; "
-              "%d run(s) missed the goal (RMS < 1 m, held or laps done, aligning never inside the standoff).\n",
-              worst_align, worst_around, failures);
+  std::printf(
+      "\nWorst aligning distance-error RMS %.2f m, worst going-around cross-track RMS %.2f m; "
+      "%d run(s) missed the goal (RMS < 1 m, held or laps done, aligning never inside the standoff).\n",
+      worst_align, worst_around, failures);
   return failures == 0 ? 0 : 1;
 }
 

@@ -56,10 +56,10 @@ double peak_rss_mib(int who) {
 // Separable terms are precomputed per row and per column by the caller.
 void write_seabed(const std::string& path, int n) {
   GDALAllRegister();
-  const char* co[] = {"TILED=YES", "BLOCKXSIZE=256", "BLOCKYSIZE=256", "COMPRESS=ZSTD", "ZSTD_LEVEL=1",
-                      "BIGTIFF=YES", nullptr};
-  GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      path.c_str(), n, n, 1, GDT_Float32, const_cast<char**>(co)));
+  const char* co[] = {"TILED=YES",    "BLOCKXSIZE=256", "BLOCKYSIZE=256", "COMPRESS=ZSTD",
+                      "ZSTD_LEVEL=1", "BIGTIFF=YES",    nullptr};
+  GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), n, n, 1, GDT_Float32,
+                                                                                   const_cast<char**>(co)));
   if (!ds) {
     std::fprintf(stderr, "bench_no_go: cannot create %s\n", path.c_str());
     std::exit(1);
@@ -74,7 +74,7 @@ void write_seabed(const std::string& path, int n) {
 
   const double two_pi = 2 * std::numbers::pi, side = n * kCell;
   // Islands: centre (fraction of the side), radius (m), height above the plain (m).
-  const double islands[6][4] = {{0.2, 0.3, 900, 90},  {0.7, 0.2, 1500, 110}, {0.5, 0.55, 600, 70},
+  const double islands[6][4] = {{0.2, 0.3, 900, 90},   {0.7, 0.2, 1500, 110},  {0.5, 0.55, 600, 70},
                                 {0.85, 0.8, 1200, 95}, {0.3, 0.85, 2000, 120}, {0.6, 0.75, 400, 60}};
   std::vector<double> sx(n), cx(n), s2x(n), c2x(n);
   for (int c = 0; c < n; ++c) {
@@ -91,7 +91,8 @@ void write_seabed(const std::string& path, int n) {
     const int h = std::min(rows, n - r0);
     for (int r = 0; r < h; ++r) {
       const double y = (r0 + r + 0.5) * kCell;
-      const double cy = std::cos(two_pi * y / 17000), s2y = std::sin(two_pi * y / 7000), c2y = std::cos(two_pi * y / 7000);
+      const double cy = std::cos(two_pi * y / 17000), s2y = std::sin(two_pi * y / 7000),
+                   c2y = std::cos(two_pi * y / 7000);
       float* row = strip.data() + static_cast<std::size_t>(r) * n;
       for (int c = 0; c < n; ++c) {
         const double swell = 25 * sx[c] * cy;
@@ -149,8 +150,8 @@ int main(int argc, char** argv) {
   }
   const double write_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double file_mib = static_cast<double>(fs::file_size(path)) / (1024.0 * 1024.0);
-  std::fprintf(stderr, "bench_no_go: wrote %s (%d x %d, %.0f MiB) in %.1f s, peak RSS %.0f MiB\n", path.c_str(),
-               a.size, a.size, file_mib, write_s, peak_rss_mib(RUSAGE_CHILDREN));
+  std::fprintf(stderr, "bench_no_go: wrote %s (%d x %d, %.0f MiB) in %.1f s, peak RSS %.0f MiB\n", path.c_str(), a.size,
+               a.size, file_mib, write_s, peak_rss_mib(RUSAGE_CHILDREN));
 
   deepguide::NoGoOptions o;
   o.operating_depth_m = a.depth;
@@ -160,26 +161,30 @@ int main(int argc, char** argv) {
   try {
     const double before_mib = peak_rss_mib(RUSAGE_SELF);
     const auto t1 = std::chrono::steady_clock::now();
-    const deepguide::NoGoArea area = deepguide::compute_no_go(path, deepguide::LocalFrame::from_user_crs("EPSG:32632"), o);
+    const deepguide::NoGoArea area =
+        deepguide::compute_no_go(path, deepguide::LocalFrame::from_user_crs("EPSG:32632"), o);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
     const double cpu = static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
                        1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-    std::printf("| cells | no-go cells | polygons | vertices before | vertices after | area km2 | tolerance m | "
-                "time s | CPU s | peak RSS MiB |\n");
+    std::printf(
+        "| cells | no-go cells | polygons | vertices before | vertices after | area km2 | tolerance m | "
+        "time s | CPU s | peak RSS MiB |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     std::printf("| %d x %d | %zu (%.1f%%) | %zu | %zu | %zu | %.2f | %.1f | %.1f | %.1f | %.0f |\n", a.size, a.size,
                 area.no_go_cells, 100.0 * static_cast<double>(area.no_go_cells) / static_cast<double>(area.total_cells),
                 area.polygons.size(), area.vertices_before_simplify, area.vertices_after_simplify, area.area_m2 / 1e6,
                 a.tolerance, s, cpu, peak_rss_mib(RUSAGE_SELF));
-    std::fprintf(stderr, "bench_no_go: peak RSS before compute_no_go %.0f MiB; raster written in %.1f s\n",
-                 before_mib, write_s);
+    std::fprintf(stderr, "bench_no_go: peak RSS before compute_no_go %.0f MiB; raster written in %.1f s\n", before_mib,
+                 write_s);
   } catch (const deepguide::InputError& e) {
     std::fprintf(stderr, "bench_no_go: %s\n", e.what());
     rc = 1;
   }
-  if (!a.keep) fs::remove_all(dir);
-  else std::fprintf(stderr, "bench_no_go: kept %s\n", path.c_str());
+  if (!a.keep)
+    fs::remove_all(dir);
+  else
+    std::fprintf(stderr, "bench_no_go: kept %s\n", path.c_str());
   return rc;
 }

@@ -38,12 +38,16 @@ int main(int argc, char** argv) {
   double min_cell = 1.0, dive = 45.0;
   bool header = false;
   CLI::App app{"bench_octree: one octree configuration over a 2 km synthetic sea floor, one markdown row"};
-  app.add_option("--min-cell", min_cell, "The smallest cell's height (m)")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--min-cell", min_cell, "The smallest cell's height (m)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--dive", dive, "The steepest dive (deg)")->check(CLI::Range(1.0, 89.0))->capture_default_str();
   app.add_flag("--header", header, "Print the table's header only");
   deepguide::bench::parse_or_exit(app, argc, argv);
   if (header) {
-    std::printf("| min cell (h x w) | dive | cells | free cells | build s | octree MiB | peak RSS MiB | query s | route m | expanded |\n");
+    std::printf(
+        "| min cell (h x w) | dive | cells | free cells | build s | octree MiB | peak RSS MiB | query s | route m | "
+        "expanded |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     return 0;
   }
@@ -88,8 +92,8 @@ int main(int argc, char** argv) {
   const PlanResult r = graph.solve(s, g);
   const double query_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const bool safe = r.found && check_route_in_depth(r.route, volume, dive).safe;
-  std::printf("| %.2f x %.2f m | %.0f deg | %zu | %zu | %.1f | %.0f | %.0f | %.2f | %.0f%s | %zu |\n", cell.z(), cell.x(),
-              dive, graph.tree().leaves().size(), graph.vertex_count(), graph.build_ms() / 1000.0,
+  std::printf("| %.2f x %.2f m | %.0f deg | %zu | %zu | %.1f | %.0f | %.0f | %.2f | %.0f%s | %zu |\n", cell.z(),
+              cell.x(), dive, graph.tree().leaves().size(), graph.vertex_count(), graph.build_ms() / 1000.0,
               static_cast<double>(graph.memory_bytes()) / (1024.0 * 1024.0), peak_rss_mib(), query_s,
               r.found ? r.route.length() : 0.0, safe ? "" : " (UNSAFE or none)", r.stats.expanded);
   return safe ? 0 : 1;

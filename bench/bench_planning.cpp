@@ -50,9 +50,8 @@ using namespace deepguide;
 namespace deepguide_bench {
 std::string ompl_peer_version();
 void ompl_peer_init(unsigned seed);
-bool ompl_peer_solve(const ObstacleField& field, const Vec2& lo, const Vec2& hi, const Vec2& start,
-                     const Vec2& goal, const std::string& planner, double budget_s, std::vector<Vec2>& path,
-                     double& elapsed_s);
+bool ompl_peer_solve(const ObstacleField& field, const Vec2& lo, const Vec2& hi, const Vec2& start, const Vec2& goal,
+                     const std::string& planner, double budget_s, std::vector<Vec2>& path, double& elapsed_s);
 }  // namespace deepguide_bench
 #endif
 
@@ -61,13 +60,11 @@ namespace {
 constexpr double kMargin = 5.0;
 const double kTolerance = deepguide::PlannerOptions{}.tolerance;  // the planner's default
 constexpr double kCoarseTolerance = 1.0;  // second full/reduced comparison where the full graph refuses 0.2 m
-constexpr double kCaseTimeoutS = 60.0;  // hard limit per build + query (child killed)
-constexpr double kSlowS = 20.0;         // slower than this: one scenario only, and no larger N
+constexpr double kCaseTimeoutS = 60.0;    // hard limit per build + query (child killed)
+constexpr double kSlowS = 20.0;           // slower than this: one scenario only, and no larger N
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 // CPU time of this process (ms): unlike wall time it hardly moves with other load on the machine.
 double cpu_ms() {
   timespec ts{};
@@ -189,9 +186,7 @@ struct CaseResult {  // plain data: crosses the pipe from the child
   char message[256] = {};
 };
 
-void set_message(CaseResult& r, const std::string& m) {
-  std::snprintf(r.message, sizeof r.message, "%s", m.c_str());
-}
+void set_message(CaseResult& r, const std::string& m) { std::snprintf(r.message, sizeof r.message, "%s", m.c_str()); }
 
 CaseResult measure(const Scenario& sc, GraphKind kind, double tolerance) {
   CaseResult r;
@@ -225,8 +220,9 @@ CaseResult measure(const Scenario& sc, GraphKind kind, double tolerance) {
   try {
     const double c0 = cpu_ms();
     const auto t0 = Clock::now();
-    const SingleQueryPlan one = plan_single_query(sc.obstacles, PlanningProblem{sc.start, sc.goal},
-                                                  PlannerOptions{.margin = kMargin, .tolerance = tolerance, .graph = kind});
+    const SingleQueryPlan one =
+        plan_single_query(sc.obstacles, PlanningProblem{sc.start, sc.goal},
+                          PlannerOptions{.margin = kMargin, .tolerance = tolerance, .graph = kind});
     r.single_ms = ms_since(t0);
     r.single_cpu_ms = cpu_ms() - c0;
     r.single_ok = true;
@@ -307,7 +303,9 @@ Options parse(int argc, char** argv) {
   bool quick = false;
   CLI::App app{"bench_planning: planning time, graph sizes and route lengths as markdown tables"};
   app.add_flag("--quick", quick, "N = 10, 50, 200; 2 scenarios; peer: N = 10, 50, 2 scenarios, 0.01 and 0.1 s");
-  app.add_option("--scenarios", o.scenarios, "Scenarios per obstacle count")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--scenarios", o.scenarios, "Scenarios per obstacle count")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--queries", o.queries, "Random queries on the prebuilt 200-obstacle graph")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -336,11 +334,12 @@ int main(int argc, char** argv) {
 
   std::printf("# bench_planning\n\n");
   std::printf("Load average at start: %s (1, 5, 15 min).\n\n", loadavg().c_str());
-  std::printf("Scenarios: N random ellipses (semi-major 5..40 m, b/a 0.2..1, any orientation), centres in a "
-              "square of side 150 m * sqrt(N); margin %.0f m, polygon tolerance %.1f m; start on the west edge, "
-              "goal on the east edge, both free, the straight line between them blocked; %d scenarios per N "
-              "(fixed seeds); A*. Times are wall-clock ms on one core.\n\n",
-              kMargin, kTolerance, opt.scenarios);
+  std::printf(
+      "Scenarios: N random ellipses (semi-major 5..40 m, b/a 0.2..1, any orientation), centres in a "
+      "square of side 150 m * sqrt(N); margin %.0f m, polygon tolerance %.1f m; start on the west edge, "
+      "goal on the east edge, both free, the straight line between them blocked; %d scenarios per N "
+      "(fixed seeds); A*. Times are wall-clock ms on one core.\n\n",
+      kMargin, kTolerance, opt.scenarios);
 
   std::map<int, std::vector<Scenario>> scenarios;
   for (int n : opt.sizes) {
@@ -352,7 +351,7 @@ int main(int argc, char** argv) {
 
   // ------------------------------------------------------------ graph table
   std::map<int, std::map<GraphKind, std::vector<CaseResult>>> res;  // [n][kind] per scenario (ok or not)
-  std::map<GraphKind, std::string> blocked;                        // why larger N are skipped
+  std::map<GraphKind, std::string> blocked;                         // why larger N are skipped
   for (int n : opt.sizes) {
     for (GraphKind kind : kinds) {
       auto& cases = res[n][kind];
@@ -364,8 +363,8 @@ int main(int argc, char** argv) {
         continue;
       }
       for (const Scenario& sc : scenarios[n]) {
-        std::fprintf(stderr, "[%6.1f s] N=%d %s scenario %d ...\n", ms_since(run_t0) / 1000.0, n, kind_name(kind).c_str(),
-                     sc.index);
+        std::fprintf(stderr, "[%6.1f s] N=%d %s scenario %d ...\n", ms_since(run_t0) / 1000.0, n,
+                     kind_name(kind).c_str(), sc.index);
         const CaseResult r = run_case(sc, kind);
         cases.push_back(r);
         if (r.status == Status::refused || r.status == Status::timeout) break;  // the others would do the same
@@ -378,8 +377,8 @@ int main(int argc, char** argv) {
       }
       const double t = median(totals);
       if (!std::isnan(t) && t > kSlowS) {
-        blocked[kind] = "skipped: N=" + std::to_string(n) + " took " + fmt("%.0f", t) + " s (> " +
-                        fmt("%.0f", kSlowS) + " s)";
+        blocked[kind] =
+            "skipped: N=" + std::to_string(n) + " took " + fmt("%.0f", t) + " s (> " + fmt("%.0f", kSlowS) + " s)";
       }
     }
   }
@@ -397,14 +396,16 @@ int main(int argc, char** argv) {
   };
 
   std::printf("## Build and first query (median over scenarios)\n\n");
-  std::printf("`ctor` is the Planner constructor (obstacle field + zones + graph), `build` the graph part of it "
-              "(stats.build_ms); `query` is stats.query_ms (attach start and goal, A*), `solve` the whole "
-              "Planner::solve call (start/goal checks, query, independent route check). `route / opt` is the "
-              "route polyline's length over the exact optimum (the tangent graph's exact length); for the "
-              "tangent graph the exact length itself is 1 and the polyline (arcs replaced by outside tangents) "
-              "is shown.\n\n");
-  std::printf("| N | side m | graph | n | ctor ms | build ms | query ms | solve ms | ctor+solve ms (max) | "
-              "ctor+solve CPU ms | vertices | edges | found | safe | route / opt |\n");
+  std::printf(
+      "`ctor` is the Planner constructor (obstacle field + zones + graph), `build` the graph part of it "
+      "(stats.build_ms); `query` is stats.query_ms (attach start and goal, A*), `solve` the whole "
+      "Planner::solve call (start/goal checks, query, independent route check). `route / opt` is the "
+      "route polyline's length over the exact optimum (the tangent graph's exact length); for the "
+      "tangent graph the exact length itself is 1 and the polyline (arcs replaced by outside tangents) "
+      "is shown.\n\n");
+  std::printf(
+      "| N | side m | graph | n | ctor ms | build ms | query ms | solve ms | ctor+solve ms (max) | "
+      "ctor+solve CPU ms | vertices | edges | found | safe | route / opt |\n");
   std::printf("|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : opt.sizes) {
     for (GraphKind kind : kinds) {
@@ -444,20 +445,21 @@ int main(int argc, char** argv) {
                   n, side, kind_name(kind).c_str(), ok.size(), note.c_str(), ms(median(ctor)).c_str(),
                   ms(median(build)).c_str(), ms(median(query)).c_str(), ms(median(solve)).c_str(),
                   ms(median(total)).c_str(), ms(max_of(total)).c_str(), ms(median(cpu)).c_str(), median(verts),
-                  median(edges), found, ok.size(), safe, found,
-                  fmt("%.5f", median(ratio)).c_str());
+                  median(edges), found, ok.size(), safe, found, fmt("%.5f", median(ratio)).c_str());
     }
   }
 
   std::printf("\n## One query: plan_single_query (what `deepguide plan` runs)\n\n");
-  std::printf("The graph is built only over the obstacles whose zone meets the ellipse |x-s| + |x-g| <= U, U "
-              "growing from 1.01 x the straight line until the route fits, each round's graph focused on the query "
-              "(only edges a path within U can use; src: lib/deepguide/planning/single_query.hpp, query_focus.hpp). "
-              "`time` = the whole call (rounds of build + query + the final check against all "
-              "obstacles). `route / planner` = its route length over the Planner's route on all obstacles (1 = the "
-              "same optimum).\n\n");
-  std::printf("| N | graph | n | time median ms | time max ms | CPU median ms | rounds median (max) | obstacles "
-              "used median | vertices median | found | safe | route / planner (max deviation) |\n");
+  std::printf(
+      "The graph is built only over the obstacles whose zone meets the ellipse |x-s| + |x-g| <= U, U "
+      "growing from 1.01 x the straight line until the route fits, each round's graph focused on the query "
+      "(only edges a path within U can use; src: lib/deepguide/planning/single_query.hpp, query_focus.hpp). "
+      "`time` = the whole call (rounds of build + query + the final check against all "
+      "obstacles). `route / planner` = its route length over the Planner's route on all obstacles (1 = the "
+      "same optimum).\n\n");
+  std::printf(
+      "| N | graph | n | time median ms | time max ms | CPU median ms | rounds median (max) | obstacles "
+      "used median | vertices median | found | safe | route / planner (max deviation) |\n");
   std::printf("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : opt.sizes) {
     for (GraphKind kind : kinds) {
@@ -489,11 +491,13 @@ int main(int argc, char** argv) {
   }
 
   std::printf("\n## Full versus reduced visibility graph (median of per-scenario ratios full / reduced)\n\n");
-  std::printf("Where the full graph refuses the default tolerance (more than 4000 corners), a second row compares "
-              "both graphs at tolerance %.0f m, where it may still fit.\n\n",
-              kCoarseTolerance);
-  std::printf("| N | tolerance m | n | full ctor+solve ms | reduced ctor+solve ms | build speed-up | query speed-up | "
-              "ctor+solve speed-up | edges full / reduced | reduced route / full route |\n");
+  std::printf(
+      "Where the full graph refuses the default tolerance (more than 4000 corners), a second row compares "
+      "both graphs at tolerance %.0f m, where it may still fit.\n\n",
+      kCoarseTolerance);
+  std::printf(
+      "| N | tolerance m | n | full ctor+solve ms | reduced ctor+solve ms | build speed-up | query speed-up | "
+      "ctor+solve speed-up | edges full / reduced | reduced route / full route |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   auto compare_row = [&](int n, double tol, const std::vector<CaseResult>& f, const std::vector<CaseResult>& r) {
     std::vector<double> b, q, t, e, len, ft, rt;
@@ -539,10 +543,12 @@ int main(int argc, char** argv) {
   const int qn = std::count(opt.sizes.begin(), opt.sizes.end(), 200) ? 200 : opt.sizes.back();
   std::printf("\n## Queries on a prebuilt %d-obstacle graph (%d random start/goal pairs, scenario 0)\n\n", qn,
               opt.queries);
-  std::printf("Start and goal uniform over the square, both outside every zone. `query` = stats.query_ms, "
-              "`solve` = the whole Planner::solve call including the route check.\n\n");
-  std::printf("| graph | build ms | found | query median ms | query p90 ms | query max ms | solve median ms | "
-              "solve p90 ms | solve max ms | solve CPU median ms |\n");
+  std::printf(
+      "Start and goal uniform over the square, both outside every zone. `query` = stats.query_ms, "
+      "`solve` = the whole Planner::solve call including the route check.\n\n");
+  std::printf(
+      "| graph | build ms | found | query median ms | query p90 ms | query max ms | solve median ms | "
+      "solve p90 ms | solve max ms | solve CPU median ms |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   std::map<GraphKind, double> prebuilt_solve_median;
   {
@@ -551,7 +557,8 @@ int main(int argc, char** argv) {
     for (GraphKind kind : kinds) {
       const auto& c0 = res[qn][kind];
       if (c0.empty() || c0.front().status != Status::ok) {
-        std::printf("| %s | %s | | | | | | | | |\n", kind_name(kind).c_str(), c0.empty() ? "not run" : c0.front().message);
+        std::printf("| %s | %s | | | | | | | | |\n", kind_name(kind).c_str(),
+                    c0.empty() ? "not run" : c0.front().message);
         continue;
       }
       std::fprintf(stderr, "[%6.1f s] prebuilt N=%d %s: %d queries ...\n", ms_since(run_t0) / 1000.0, qn,
@@ -571,19 +578,22 @@ int main(int argc, char** argv) {
         found += out.result.found;
       }
       prebuilt_solve_median[kind] = median(s);
-      std::printf("| %s | %s | %d/%zu | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind).c_str(), ms(build).c_str(),
-                  found, queries.size(), ms(median(q)).c_str(), ms(quantile(q, 0.9)).c_str(), ms(max_of(q)).c_str(),
-                  ms(median(s)).c_str(), ms(quantile(s, 0.9)).c_str(), ms(max_of(s)).c_str(), ms(median(c)).c_str());
+      std::printf("| %s | %s | %d/%zu | %s | %s | %s | %s | %s | %s | %s |\n", kind_name(kind).c_str(),
+                  ms(build).c_str(), found, queries.size(), ms(median(q)).c_str(), ms(quantile(q, 0.9)).c_str(),
+                  ms(max_of(q)).c_str(), ms(median(s)).c_str(), ms(quantile(s, 0.9)).c_str(), ms(max_of(s)).c_str(),
+                  ms(median(c)).c_str());
     }
   }
 
   // ------------------------------------------------------------ targets
   std::printf("\n## Targets (200 obstacles)\n\n");
-  std::printf("Built and queried, two ways: `single query` = plan_single_query, what `deepguide plan` runs (the "
-              "graph over the obstacles the query can meet); `ctor+solve` = a reusable Planner over all obstacles "
-              "plus its first query. Prebuilt: Planner::solve on the reusable graph.\n\n");
-  std::printf("| graph | single query median ms | single query max ms | < 50 ms (max) | ctor+solve median ms | "
-              "ctor+solve max ms | < 50 ms (max) | prebuilt solve median ms | < 1 ms |\n");
+  std::printf(
+      "Built and queried, two ways: `single query` = plan_single_query, what `deepguide plan` runs (the "
+      "graph over the obstacles the query can meet); `ctor+solve` = a reusable Planner over all obstacles "
+      "plus its first query. Prebuilt: Planner::solve on the reusable graph.\n\n");
+  std::printf(
+      "| graph | single query median ms | single query max ms | < 50 ms (max) | ctor+solve median ms | "
+      "ctor+solve max ms | < 50 ms (max) | prebuilt solve median ms | < 1 ms |\n");
   std::printf("|---|---:|---:|---|---:|---:|---|---:|---|\n");
   for (GraphKind kind : kinds) {
     if (!res.count(200)) break;
@@ -607,11 +617,13 @@ int main(int argc, char** argv) {
   {
     constexpr double kCell = 2.0;
     std::printf("\n## Visibility versus quadtree graph (one query each, the same scenarios)\n\n");
-    std::printf("plan_single_query; quadtree with %.0f m minimum cells over the start-goal box widened by half their "
-                "distance. Medians over scenarios; length ratios against the visibility route (median / max).\n\n",
-                kCell);
-    std::printf("| N | graph | vertices | build ms | query ms | route / visibility | smoothed route / visibility | "
-                "smoothed query ms |\n|---|---|---:|---:|---:|---|---|---:|\n");
+    std::printf(
+        "plan_single_query; quadtree with %.0f m minimum cells over the start-goal box widened by half their "
+        "distance. Medians over scenarios; length ratios against the visibility route (median / max).\n\n",
+        kCell);
+    std::printf(
+        "| N | graph | vertices | build ms | query ms | route / visibility | smoothed route / visibility | "
+        "smoothed query ms |\n|---|---|---:|---:|---:|---|---|---:|\n");
     for (int n : opt.sizes) {
       if (n > 200) continue;  // the quadtree over N = 1000's 4.7 km box at 2 m: seconds per scenario
       std::vector<double> vis_v, vis_b, vis_q, qt_v, qt_b, qt_q, ratio, smooth_ratio, smooth_q;
@@ -652,13 +664,14 @@ int main(int argc, char** argv) {
     const std::vector<std::string> planners{"RRT*", "Informed RRT*", "BIT*", "PRM*"};
     std::printf("\n## OMPL %s peer (same scenarios, same exact validity test)\n\n",
                 deepguide_bench::ompl_peer_version().c_str());
-    std::printf("2-D RealVectorStateSpace bounded to the square plus 60 m on each side (every zone fits), "
-                "ObstacleField::is_free as state validity checker, a MotionValidator calling "
-                "ObstacleField::segment_free (exact, no discretisation), PathLengthOptimizationObjective, default "
-                "planner parameters, no path simplification; one run per scenario, planner and budget. `length / "
-                "opt` = OMPL path length over the exact optimum (our tangent graph's exact length) over solved "
-                "runs; `time ratio` = OMPL wall time (set-up + solve) over our tangent single-query time "
-                "(plan_single_query), over all runs. `unsafe` counts OMPL paths our route checker rejects.\n\n");
+    std::printf(
+        "2-D RealVectorStateSpace bounded to the square plus 60 m on each side (every zone fits), "
+        "ObstacleField::is_free as state validity checker, a MotionValidator calling "
+        "ObstacleField::segment_free (exact, no discretisation), PathLengthOptimizationObjective, default "
+        "planner parameters, no path simplification; one run per scenario, planner and budget. `length / "
+        "opt` = OMPL path length over the exact optimum (our tangent graph's exact length) over solved "
+        "runs; `time ratio` = OMPL wall time (set-up + solve) over our tangent single-query time "
+        "(plan_single_query), over all runs. `unsafe` counts OMPL paths our route checker rejects.\n\n");
     struct Cell {
       int runs = 0, solved = 0, unsafe = 0;
       std::vector<double> ratio, time_ratio;
@@ -715,8 +728,9 @@ int main(int argc, char** argv) {
     }
     for (const auto& [n, by_planner] : cells) {
       std::printf("### N = %d (side %.0f m)\n\n", n, scenarios[n][0].side);
-      std::printf("| planner | budget s | solved | length / opt median | length / opt best | time ratio median | "
-                  "unsafe |\n");
+      std::printf(
+          "| planner | budget s | solved | length / opt median | length / opt best | time ratio median | "
+          "unsafe |\n");
       std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
       for (const auto& p : planners) {
         for (double budget : opt.budgets) {
@@ -732,11 +746,13 @@ int main(int argc, char** argv) {
     }
     std::printf("### Goal: tangent route shorter than the best OMPL planner at %g s, in under 1/100 of its time\n\n",
                 opt.budgets.back());
-    std::printf("Per scenario: best = the shortest path of the four planners at %g s. \"faster\": our tangent "
-                "single-query time x 100 < that planner's wall time.\n\n",
-                opt.budgets.back());
-    std::printf("| N | scenarios | ours single query median ms (max) | best OMPL length / opt median (min) | shorter | "
-                "faster | both |\n");
+    std::printf(
+        "Per scenario: best = the shortest path of the four planners at %g s. \"faster\": our tangent "
+        "single-query time x 100 < that planner's wall time.\n\n",
+        opt.budgets.back());
+    std::printf(
+        "| N | scenarios | ours single query median ms (max) | best OMPL length / opt median (min) | shorter | "
+        "faster | both |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const auto& [n, g] : goal) {
       const auto& b = g.best_ratio;
@@ -749,11 +765,11 @@ int main(int argc, char** argv) {
     std::printf("\nOMPL peer skipped (--no-peer).\n");
   }
 #else
-  std::printf("\nOMPL peer not built: OMPL was not found when CMake configured the benchmarks "
-              "(Debian: apt-get install libompl-dev, or run scripts/bench.sh).\n");
+  std::printf(
+      "\nOMPL peer not built: OMPL was not found when CMake configured the benchmarks "
+      "(Debian: apt-get install libompl-dev, or run scripts/bench.sh).\n");
 #endif
 
-  std::printf("\nTotal run time: %.0f s; load average at the end: %s.\n", ms_since(run_t0) / 1000.0,
-              loadavg().c_str());
+  std::printf("\nTotal run time: %.0f s; load average at the end: %s.\n", ms_since(run_t0) / 1000.0, loadavg().c_str());
   return 0;
 }

@@ -45,17 +45,20 @@ const MethodSummary* find(const MonteCarloResult& r, ReactiveMethod m) {
 void print_monte_carlo(const MonteCarloResult& r) {
   const MonteCarloParams& p = r.params;
   std::printf("## Monte Carlo: %d scenarios (seed %llu)\n\n", p.scenarios, static_cast<unsigned long long>(p.seed));
-  std::printf("Each scenario (lib/deepguide/evaluation/monte_carlo.hpp): start and target 400..800 m apart, 1..%d "
-              "ellipses (semi-major 5..30 m, b/a 0.3..1) scattered along the line (%.0f m across it, 1 sigma), "
-              "overlaps allowed; a uniform current of 0..%.2f m/s in any direction; the DeepC-like vehicle at "
-              "cruise; the default inexact forward-looking sonar (120 m, 120 deg, 2 Hz, position and size errors "
-              "0.5 m + 1 %% of range, seeded per scenario); security margin 10 m. Every method runs every scenario. "
-              "Turning rates: r_ref is the autopilot's reference turning rate (what the method asked, within the "
-              "autopilot's 5 deg/s limit); r the vehicle's actual turning rate. Distributions over runs: median / 95th percentile / max.\n\n",
-              p.max_obstacles, p.cross_track_sigma_m, p.max_current_mps);
-  std::printf("| method | runs | reached | collisions | stalled | no progress | time out | min clearance m: min / "
-              "p5 / median | max abs r_ref deg/s | RMS r_ref deg/s | max abs r deg/s | RMS r deg/s | heading reversals "
-              "mean | path / straight (median) |\n");
+  std::printf(
+      "Each scenario (lib/deepguide/evaluation/monte_carlo.hpp): start and target 400..800 m apart, 1..%d "
+      "ellipses (semi-major 5..30 m, b/a 0.3..1) scattered along the line (%.0f m across it, 1 sigma), "
+      "overlaps allowed; a uniform current of 0..%.2f m/s in any direction; the DeepC-like vehicle at "
+      "cruise; the default inexact forward-looking sonar (120 m, 120 deg, 2 Hz, position and size errors "
+      "0.5 m + 1 %% of range, seeded per scenario); security margin 10 m. Every method runs every scenario. "
+      "Turning rates: r_ref is the autopilot's reference turning rate (what the method asked, within the "
+      "autopilot's 5 deg/s limit); r the vehicle's actual turning rate. Distributions over runs: median / 95th "
+      "percentile / max.\n\n",
+      p.max_obstacles, p.cross_track_sigma_m, p.max_current_mps);
+  std::printf(
+      "| method | runs | reached | collisions | stalled | no progress | time out | min clearance m: min / "
+      "p5 / median | max abs r_ref deg/s | RMS r_ref deg/s | max abs r deg/s | RMS r deg/s | heading reversals "
+      "mean | path / straight (median) |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---|---|---|---|---|---:|---:|\n");
   for (const MethodSummary& s : r.summaries) {
     auto three = [](const Distribution& d, double k) {
@@ -90,10 +93,11 @@ void print_monte_carlo(const MonteCarloResult& r) {
         }
       }
       const Distribution q = distribution(ratios);
-      std::printf("- Geometric versus dipole, %s: median over runs %.2f vs %.2f deg/s (ratio %.3f); per scenario "
-                  "geometric / dipole: median %.3f, p95 %.3f, max %.3f; geometric lower in %d of %d scenarios.\n",
-                  name, deg_s(g.median), deg_s(d.median), g.median / std::max(d.median, 1e-12), q.median, q.p95,
-                  q.max, lower, both);
+      std::printf(
+          "- Geometric versus dipole, %s: median over runs %.2f vs %.2f deg/s (ratio %.3f); per scenario "
+          "geometric / dipole: median %.3f, p95 %.3f, max %.3f; geometric lower in %d of %d scenarios.\n",
+          name, deg_s(g.median), deg_s(d.median), g.median / std::max(d.median, 1e-12), q.median, q.p95, q.max, lower,
+          both);
     };
     std::printf("\n");
     compare("max |r|", &SimulationStats::max_abs_rate, geo->max_abs_rate, dip->max_abs_rate);
@@ -129,11 +133,14 @@ Scenario throughput_scenario() {
 void print_throughput() {
   const Scenario sc = throughput_scenario();
   std::printf("\n## Throughput: a 1-hour run at 10 Hz among 100 obstacles\n\n");
-  std::printf("100 ellipses (12 x 8 m) every 75 m along a 10 km line, alternately 8 m left and right of it; "
-              "current 0.22 m/s; step %.2f s; the run stops at 3600 s simulated. Wall-clock time of simulate() "
-              "(sonar, contacts, method, autopilot, vehicle, clearance to the true obstacles, trajectory kept), "
-              "best of 3. Target: at least 10^4 x real time.\n\n", sc.vehicle.step_s);
-  std::printf("| method | simulated s | samples | wall ms (best of 3) | x real time | >= 1e4 | reached/ended | collided |\n");
+  std::printf(
+      "100 ellipses (12 x 8 m) every 75 m along a 10 km line, alternately 8 m left and right of it; "
+      "current 0.22 m/s; step %.2f s; the run stops at 3600 s simulated. Wall-clock time of simulate() "
+      "(sonar, contacts, method, autopilot, vehicle, clearance to the true obstacles, trajectory kept), "
+      "best of 3. Target: at least 10^4 x real time.\n\n",
+      sc.vehicle.step_s);
+  std::printf(
+      "| method | simulated s | samples | wall ms (best of 3) | x real time | >= 1e4 | reached/ended | collided |\n");
   std::printf("|---|---:|---:|---:|---:|---|---|---|\n");
   for (ReactiveMethod m : kMethods) {
     double best = 1e300;

@@ -34,13 +34,14 @@ double median(std::vector<double> v) {
   return v.empty() ? NAN : v[v.size() / 2];
 }
 
-
 }  // namespace
 
 int main(int argc, char** argv) {
   int scenarios = 40;
   CLI::App app{"bench_replanning: D* Lite repairs against A* from scratch"};
-  app.add_option("--scenarios", scenarios, "Random detection scenarios")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--scenarios", scenarios, "Random detection scenarios")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   deepguide::bench::parse_or_exit(app, argc, argv);
   std::mt19937 rng(20021);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -86,8 +87,9 @@ int main(int argc, char** argv) {
     replay_detections(graph, problem, {d}, 5.0, [&](const Repair& r, GraphVertex at) {
       const GraphVertex goal = graph.goal_vertex();
       const auto t1 = std::chrono::steady_clock::now();
-      const SearchResult s = shortest_path(graph.graph(), at, goal, SearchAlgorithm::astar,
-                                           [&](GraphVertex v) { return (graph.position(v) - graph.position(goal)).norm(); });
+      const SearchResult s = shortest_path(graph.graph(), at, goal, SearchAlgorithm::astar, [&](GraphVertex v) {
+        return (graph.position(v) - graph.position(goal)).norm();
+      });
       const double scratch_ms = ms_since(t1);
       // Rebuilding: the quadtree over the obstacles and the rock, then A* from the vehicle.
       ObstacleSet with_rock = set;
@@ -115,19 +117,23 @@ int main(int argc, char** argv) {
       if (std::abs(r.cost - s.cost) > 1e-9 * s.cost) std::printf("MISMATCH %.9f vs %.9f\n", r.cost, s.cost);
     });
   }
-  std::printf("2000 m x 2000 m, 60 random ellipses, margin 5 m, quadtree with 2 m minimum cells; one 25 m rock "
-              "reported on the route 40 %% along when the vehicle has sailed 30 %%. %d events (%d more left out: "
-              "a straight route, sailed whole before the report). Medians; the total is all events' A* time over "
-              "all their repair time.\n\n",
-              events, at_goal);
+  std::printf(
+      "2000 m x 2000 m, 60 random ellipses, margin 5 m, quadtree with 2 m minimum cells; one 25 m rock "
+      "reported on the route 40 %% along when the vehicle has sailed 30 %%. %d events (%d more left out: "
+      "a straight route, sailed whole before the report). Medians; the total is all events' A* time over "
+      "all their repair time.\n\n",
+      events, at_goal);
   double total_repair = 0.0, total_scratch = 0.0;
   for (double v : repair) total_repair += v;
   for (double v : scratch) total_scratch += v;
   std::sort(ratio.begin(), ratio.end());
-  const auto at = [&](double q) { return ratio.empty() ? NAN : ratio[static_cast<std::size_t>(q * (ratio.size() - 1))]; };
-  std::printf("| quadtree leaves | build ms | D* Lite repair ms | A* from scratch ms | A* / repair: median (p10, min) | "
-              "A* / repair: total | rebuild + A* ms | rebuild / repair | vertices processed: repair / from scratch |\n"
-              "|---:|---:|---:|---:|---|---:|---:|---:|---|\n");
+  const auto at = [&](double q) {
+    return ratio.empty() ? NAN : ratio[static_cast<std::size_t>(q * (ratio.size() - 1))];
+  };
+  std::printf(
+      "| quadtree leaves | build ms | D* Lite repair ms | A* from scratch ms | A* / repair: median (p10, min) | "
+      "A* / repair: total | rebuild + A* ms | rebuild / repair | vertices processed: repair / from scratch |\n"
+      "|---:|---:|---:|---:|---|---:|---:|---:|---|\n");
   std::printf("| %.0f | %.0f | %.3f | %.2f | %.1f× (%.1f×, %.1f×) | %.1f× | %.0f | %.0f× | %.0f / %.0f |\n",
               median(leaves), median(build), median(repair), median(scratch), at(0.5), at(0.1), at(0.0),
               total_scratch / total_repair, median(rebuild), median(rebuild_ratio), median(expanded_repair),

@@ -62,8 +62,7 @@ class ExactMotionValidator : public ob::MotionValidator {
 
   /// With an invalid motion, the last free state along it (bisection on the
   /// free prefix to 1e-6 of its length) and its fraction.
-  bool checkMotion(const ob::State* s1, const ob::State* s2,
-                   std::pair<ob::State*, double>& last_valid) const override {
+  bool checkMotion(const ob::State* s1, const ob::State* s2, std::pair<ob::State*, double>& last_valid) const override {
     const Vec2 a = to_vec(s1), b = to_vec(s2);
     if (field_.segment_free(a, b)) {
       ++valid_;
@@ -105,9 +104,8 @@ void ompl_peer_init(unsigned seed) {
   ompl::RNG::setSeed(seed);  // before any RNG exists: the run's sampling is repeatable up to timing
 }
 
-bool ompl_peer_solve(const ObstacleField& field, const Vec2& lo, const Vec2& hi, const Vec2& start,
-                     const Vec2& goal, const std::string& planner_name, double budget_s,
-                     std::vector<Vec2>& path, double& elapsed_s) {
+bool ompl_peer_solve(const ObstacleField& field, const Vec2& lo, const Vec2& hi, const Vec2& start, const Vec2& goal,
+                     const std::string& planner_name, double budget_s, std::vector<Vec2>& path, double& elapsed_s) {
   const auto t0 = std::chrono::steady_clock::now();
   auto space = std::make_shared<ob::RealVectorStateSpace>(2);
   ob::RealVectorBounds bounds(2);

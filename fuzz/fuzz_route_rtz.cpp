@@ -3,5 +3,6 @@
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return deepguide::fuzz::read_as(data, size, "route.rtz", [](const std::string& path) { (void)deepguide::read_route_parts(path); });
+  return deepguide::fuzz::read_as(data, size, "route.rtz",
+                                  [](const std::string& path) { (void)deepguide::read_route_parts(path); });
 }

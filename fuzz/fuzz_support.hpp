@@ -9,13 +9,13 @@
 // (scripts/fuzz.sh), and with replay_main.cpp for the short bounded run in
 // CI, which replays the seed corpus and seeded mutations of it.
 
+#include <unistd.h>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "deepguide/core/error.hpp"
 
@@ -28,9 +28,8 @@ inline const std::filesystem::path& scratch() {
     std::filesystem::create_directories(d);
     std::atexit([] {
       std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() /
-                                      ("deepguide-fuzz-" + std::to_string(::getpid())),
-                                  ec);
+      std::filesystem::remove_all(
+          std::filesystem::temp_directory_path() / ("deepguide-fuzz-" + std::to_string(::getpid())), ec);
     });
     return d;
   }();

@@ -39,7 +39,8 @@ std::vector<std::uint8_t> mutate(std::vector<std::uint8_t> b, std::mt19937& rng)
         if (n > 0) b.resize(rng() % n);
         break;
       case 2:
-        b.insert(b.begin() + static_cast<std::ptrdiff_t>(n > 0 ? rng() % (n + 1) : 0), static_cast<std::uint8_t>(rng()));
+        b.insert(b.begin() + static_cast<std::ptrdiff_t>(n > 0 ? rng() % (n + 1) : 0),
+                 static_cast<std::uint8_t>(rng()));
         break;
       default:
         if (n > 1) {
@@ -84,7 +85,9 @@ int main(int argc, char** argv) {
   std::vector<std::vector<std::uint8_t>> corpus;
   for (const auto& p : inputs) corpus.push_back(bytes_of(p));
   auto run = [&](const std::vector<std::uint8_t>& b) {
-    if (!last.empty()) std::ofstream(last, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+    if (!last.empty())
+      std::ofstream(last, std::ios::binary | std::ios::trunc)
+          .write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
     LLVMFuzzerTestOneInput(b.data(), b.size());
   };
   for (const auto& b : corpus) run(b);

@@ -19,7 +19,7 @@ inline void write_attr(GDALMDArray& a, const std::string& name, const std::strin
 }
 
 inline std::shared_ptr<GDALMDArray> write_axis(GDALGroup& root, const std::string& name, const std::string& type,
-                                        const std::vector<double>& values, const std::string& units) {
+                                               const std::vector<double>& values, const std::string& units) {
   auto dim = root.CreateDimension(name, type, "", values.size());
   auto var = root.CreateMDArray(name, {dim}, GDALExtendedDataType::Create(GDT_Float64));
   const GUInt64 start = 0;
@@ -33,9 +33,9 @@ inline std::shared_ptr<GDALMDArray> write_axis(GDALGroup& root, const std::strin
 // (lon, lat, time value, depth). NaN from a function is written as _FillValue.
 struct NcSpec {
   std::vector<double> lon{10.0, 10.1, 10.3, 10.35, 10.6, 11.0};  // irregular on purpose
-  std::vector<double> lat{55.0, 54.8, 54.6, 54.4, 54.2};          // descending on purpose
-  std::vector<double> time;                                       // empty = no time axis
-  std::vector<double> depth;                                      // empty = no depth axis
+  std::vector<double> lat{55.0, 54.8, 54.6, 54.4, 54.2};         // descending on purpose
+  std::vector<double> time;                                      // empty = no time axis
+  std::vector<double> depth;                                     // empty = no depth axis
   std::string lon_units = "degrees_east";
   std::string lat_units = "degrees_north";
   std::string time_units = "hours since 2020-01-01 00:00:00";
@@ -89,7 +89,8 @@ inline void write_nc(const std::string& path, const NcSpec& s) {
       for (std::size_t l = 0; l < nz; ++l)
         for (std::size_t j = 0; j < ny; ++j)
           for (std::size_t i = 0; i < s.lon.size(); ++i) {
-            const double value = fn(s.lon[i], s.lat[j], s.time.empty() ? 0.0 : s.time[k], s.depth.empty() ? 0.0 : s.depth[l]);
+            const double value =
+                fn(s.lon[i], s.lat[j], s.time.empty() ? 0.0 : s.time[k], s.depth.empty() ? 0.0 : s.depth[l]);
             buf.push_back(std::isnan(value) ? -999.0 : value);
           }
     std::vector<GUInt64> start(d.size(), 0);

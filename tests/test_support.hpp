@@ -3,15 +3,15 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <initializer_list>
-#include <fstream>
 #include <random>
 #include <string>
-#include <sys/wait.h>
 
 #include "deepguide/core/error.hpp"
 
@@ -70,10 +70,12 @@ inline std::string real_file(const std::string& rel) {
 }
 
 /// Declares `var` as the real file `rel`, or skips the test with a message when it is absent.
-#define DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)                                                    \
-  const std::string var = ::deepguide::test::real_file(rel);                                    \
-  if (var.empty()) GTEST_SKIP() << "../shared/data/real/" << (rel) << " is absent: skipping the " \
-                                   "test on real data"
+#define DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)                \
+  const std::string var = ::deepguide::test::real_file(rel); \
+  if (var.empty())                                           \
+  GTEST_SKIP() << "../shared/data/real/" << (rel)            \
+               << " is absent: skipping the "                \
+                  "test on real data"
 
 inline std::string source_file(const std::string& rel) {
   return (std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / rel).string();
@@ -93,8 +95,7 @@ inline RunResult run_cli(const std::string& args, int limit_s = 0) {
   const std::string out = tmp.file("stdout");
   const std::string err = tmp.file("stderr");
   const std::string limit = limit_s > 0 ? "timeout -k 2 " + std::to_string(limit_s) + " " : std::string();
-  const std::string cmd =
-      limit + "'" + DEEPGUIDE_CLI + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
+  const std::string cmd = limit + "'" + DEEPGUIDE_CLI + "' " + args + " >'" + out + "' 2>'" + err + "' </dev/null";
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

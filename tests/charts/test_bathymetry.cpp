@@ -3,8 +3,8 @@
 // 3), the window-by-window scan against a whole-raster read of a synthetic
 // GeoTIFF, the sign convention, and bad input (one-line errors).
 
-#include <gtest/gtest.h>
 #include <gdal_priv.h>
+#include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
 #include <cmath>
@@ -85,11 +85,11 @@ void append_be32(std::string& bytes, std::uint32_t v) {
 TEST(BathymetryDamaged, ANetcdfHeaderWithAHugeCountIsRefusedBeforeGdalReadsIt) {
   std::string header("CDF\x01", 4);
   const auto u32 = [&](std::uint32_t v) { append_be32(header, v); };
-  u32(0);                      // numrecs
-  u32(0), u32(0);              // no dimensions
-  u32(0x0C), u32(1);           // one global attribute
+  u32(0);                                       // numrecs
+  u32(0), u32(0);                               // no dimensions
+  u32(0x0C), u32(1);                            // one global attribute
   u32(1), header += std::string("a\0\0\0", 4);  // its name, padded to 4 bytes
-  u32(2), u32(0x7fffffffu);    // char, 2^31 - 1 of them (the file ends here)
+  u32(2), u32(0x7fffffffu);                     // char, 2^31 - 1 of them (the file ends here)
   test::ScratchDir tmp;
   const std::string path = tmp.write("huge.nc", header);
   expect_one_line_error([&] { inspect_bathymetry(path); }, "expected a readable NetCDF classic header");
@@ -109,7 +109,8 @@ TEST(BathymetryDamaged, AHeaderStatingAGiantRasterIsRefusedBeforeGdalAllocatesIt
       "ffffffff7dffffffffffffffffffffffffffffffffffffffffffffffe1ffffff"
       "fffffffff6ffffffffffffffffffffffffffffe1ffffffffff";
   std::string bytes;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) bytes += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+    bytes += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
   ASSERT_EQ(bytes.size(), 217u);
   test::ScratchDir tmp;
   const std::string path = tmp.write("giant.nc", bytes);
@@ -147,15 +148,15 @@ TEST(BathymetryDamaged, TheSoaksFindsAreOneLineErrors) {
 TEST(BathymetryDamaged, ASingleRecordVariableIsNotPadded) {
   std::string nc("CDF\x01", 4);
   const auto u32 = [&](std::uint32_t v) { append_be32(nc, v); };
-  u32(10);                                   // numrecs
+  u32(10);                                          // numrecs
   u32(0x0A), u32(1), u32(4), nc += "time", u32(0);  // the record dimension
-  u32(0), u32(0);                            // no global attributes
+  u32(0), u32(0);                                   // no global attributes
   u32(0x0B), u32(1), u32(1), nc += std::string("x\0\0\0", 4);
-  u32(1), u32(0);                            // x(time)
-  u32(0), u32(0);                            // no attributes
-  u32(3), u32(4), u32(80);                   // short, vsize, begin
+  u32(1), u32(0);           // x(time)
+  u32(0), u32(0);           // no attributes
+  u32(3), u32(4), u32(80);  // short, vsize, begin
   ASSERT_EQ(nc.size(), 80u);
-  nc += std::string(20, '\x01');            // 10 shorts
+  nc += std::string(20, '\x01');  // 10 shorts
   test::ScratchDir tmp;
   EXPECT_NO_THROW(require_complete_netcdf(tmp.write("x.nc", nc)));
   expect_one_line_error([&] { require_complete_netcdf(tmp.write("x.nc", nc.substr(0, 99))); }, "up to byte 100");
@@ -169,7 +170,8 @@ TEST(BathymetryDamaged, AnAsciiGridCutShortOrWithALetterIsRefused) {
   test::ScratchDir tmp;
   for (const double part : {0.01, 0.5, 0.999}) {
     const std::string cut = tmp.write("cut.asc", bytes.substr(0, static_cast<std::size_t>(part * bytes.size())));
-    // "expected 241 x 241 = 58081 numbers ..., got N", or, cut within a number, "line L: expected a number ..., got '-'"
+    // "expected 241 x 241 = 58081 numbers ..., got N", or, cut within a number, "line L: expected a number ..., got
+    // '-'"
     const std::string msg = test::error_of([&] { inspect_bathymetry(cut, assumed("EPSG:4326")); });
     EXPECT_TRUE(msg.find("58081 numbers") != std::string::npos || msg.find(": expected a number") != std::string::npos)
         << msg;

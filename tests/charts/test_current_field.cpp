@@ -5,8 +5,8 @@
 // constant current's direction convention, the local-frame sampler against an
 // exact per-point transform, coverage, and bad input (one-line errors).
 
-#include <gtest/gtest.h>
 #include <gdal_priv.h>
+#include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
 #include <cmath>
@@ -59,7 +59,8 @@ void write_tiff(const std::string& path, int epsg, double x0, double y0, double 
         buf.push_back(std::isnan(val) ? -9999.0 : val);
       }
     ds->GetRasterBand(b)->SetNoDataValue(-9999.0);
-    ASSERT_EQ(ds->GetRasterBand(b)->RasterIO(GF_Write, 0, 0, w, h, buf.data(), w, h, GDT_Float64, 0, 0, nullptr), CE_None);
+    ASSERT_EQ(ds->GetRasterBand(b)->RasterIO(GF_Write, 0, 0, w, h, buf.data(), w, h, GDT_Float64, 0, 0, nullptr),
+              CE_None);
   }
 }
 
@@ -211,12 +212,14 @@ TEST(CurrentReal, HycomCoverage) {
   const CurrentField f = load_current_field(path);
   const LocalFrame frame = LocalFrame::utm_for(-75.0, 35.0);
   // A box well inside: 0.2 deg around (-75.0, 35.0).
-  const CurrentCoverage c = check_current_coverage(f, frame, frame.from_lonlat(-75.1, 34.9), frame.from_lonlat(-74.9, 35.1));
+  const CurrentCoverage c =
+      check_current_coverage(f, frame, frame.from_lonlat(-75.1, 34.9), frame.from_lonlat(-74.9, 35.1));
   // lon -75.1..-74.9 holds nodes -75.04, -74.96 (0.08 spacing from -75.68); lat 34.9..35.1 holds 5 nodes (0.04).
   EXPECT_GE(c.nodes, 2u * 5u);
   EXPECT_LE(c.nodes, 3u * 6u);
   // The steady field ignores the time interval.
-  EXPECT_NO_THROW(check_current_coverage(f, frame, frame.from_lonlat(-75.1, 34.9), frame.from_lonlat(-74.9, 35.1), 0.0, 1.0));
+  EXPECT_NO_THROW(
+      check_current_coverage(f, frame, frame.from_lonlat(-75.1, 34.9), frame.from_lonlat(-74.9, 35.1), 0.0, 1.0));
   // At 1000 m the western (shelf) nodes lie below the sea floor: fill nodes are counted, not refused.
   CurrentOptions deep;
   deep.depth_m = 1000.0;
@@ -227,7 +230,8 @@ TEST(CurrentReal, HycomCoverage) {
   EXPECT_GT(west.fill_nodes, 0u);
   EXPECT_LT(west.fill_nodes, west.nodes);
   std::printf("HYCOM at 1000 m, lon -75.6..-75.0: %zu nodes, %zu fill\n", west.nodes, west.fill_nodes);
-  EXPECT_EQ(check_current_coverage(f, frame, frame.from_lonlat(-75.6, 34.4), frame.from_lonlat(-75.0, 35.6)).fill_nodes, 0u);
+  EXPECT_EQ(check_current_coverage(f, frame, frame.from_lonlat(-75.6, 34.4), frame.from_lonlat(-75.0, 35.6)).fill_nodes,
+            0u);
   expect_one_line_error(
       [&] { check_current_coverage(f, frame, frame.from_lonlat(-75.5, 35.0), frame.from_lonlat(-73.9, 35.2)); },
       "the current field covers lon -75.6800 .. -74.3200, lat 34.3600 .. 35.6400 (times 2019-03-07T15:00:00Z, steady); "
@@ -257,13 +261,15 @@ TEST(CurrentReal, HycomDepthLevels) {
   EXPECT_LT(ds.max_speed_mps, 2.0);
   for (double u : deep.u) EXPECT_TRUE(std::isnan(u) || std::abs(u) < 2.0);
   o.depth_m = 5001.0;
-  expect_one_line_error([&] { load_current_field(path, o); }, "expected a depth within the field's levels (0.0 .. 5000.0 m)");
+  expect_one_line_error([&] { load_current_field(path, o); },
+                        "expected a depth within the field's levels (0.0 .. 5000.0 m)");
   // Between two levels: the linear blend of the two, node by node.
   CurrentOptions a, b, mid;
   a.depth_m = 0.0;
   b.depth_m = 2.0;
   mid.depth_m = 1.0;
-  const CurrentField fa = load_current_field(path, a), fb = load_current_field(path, b), fm = load_current_field(path, mid);
+  const CurrentField fa = load_current_field(path, a), fb = load_current_field(path, b),
+                     fm = load_current_field(path, mid);
   EXPECT_NE(fb.depth_levels.find("level 2 of 40 (2.0 m)"), std::string::npos) << fb.depth_levels;
   EXPECT_NE(fm.depth_levels.find("between levels 1 and 2"), std::string::npos) << fm.depth_levels;
   for (std::size_t i = 0; i < fa.u.size(); ++i) {
@@ -298,8 +304,12 @@ TEST(CurrentReal, TruncatedHycomIsAOneLineError) {
 
 // ---------------------------------------------------------------- synthetic NetCDF
 
-double lin_u(double lon, double lat, double t, double) { return 0.3 + 2.0 * (lon - 10.0) - 1.5 * (lat - 54.0) + 0.01 * t; }
-double lin_v(double lon, double lat, double t, double) { return -0.2 + 0.5 * (lon - 10.0) + 3.0 * (lat - 54.0) - 0.02 * t; }
+double lin_u(double lon, double lat, double t, double) {
+  return 0.3 + 2.0 * (lon - 10.0) - 1.5 * (lat - 54.0) + 0.01 * t;
+}
+double lin_v(double lon, double lat, double t, double) {
+  return -0.2 + 0.5 * (lon - 10.0) + 3.0 * (lat - 54.0) - 0.02 * t;
+}
 
 TEST(CurrentNetcdf, LinearFieldIsReproducedInSpaceAndTime) {
   ScratchDir dir;
@@ -465,7 +475,7 @@ TEST(CurrentRaster, GeoTiffInTheFrameCrsIsExactAndLinear) {
   // NoData corner (the north-west pixel): no value in its cells, never zero.
   EXPECT_FALSE(sampler.sample({580030.0, 6034950.0}, 0.0).has_value());
   EXPECT_FALSE(sampler.sample({579990.0, 6032000.0}, 0.0).has_value());  // west of the first pixel centre
-  EXPECT_EQ(summarize_current(*f).fill_nodes, 1u);  // only the pixel centred at (580000, 6035000)
+  EXPECT_EQ(summarize_current(*f).fill_nodes, 1u);                       // only the pixel centred at (580000, 6035000)
 }
 
 TEST(CurrentRaster, UtmFieldInAnotherZoneIsRotatedByTheConvergence) {
@@ -476,8 +486,9 @@ TEST(CurrentRaster, UtmFieldInAnotherZoneIsRotatedByTheConvergence) {
   const LocalFrame f33 = LocalFrame::from_user_crs("EPSG:32633");
   const Eigen::Vector2d c33 = f33.from_lonlat(12.0, 54.5);
   const double x0 = std::round(c33.x()) - 2000.0, y0 = std::round(c33.y()) + 2000.0;
-  write_tiff(path, 32633, x0, y0, 200.0, 21, 21, [](double, double) { return 0.0; },
-             [](double, double) { return 1.0; });  // 1 m/s towards grid north of zone 33
+  write_tiff(
+      path, 32633, x0, y0, 200.0, 21, 21, [](double, double) { return 0.0; },
+      [](double, double) { return 1.0; });  // 1 m/s towards grid north of zone 33
   auto f = std::make_shared<const CurrentField>(load_current_field(path));
   const LocalFrame f32 = LocalFrame::from_user_crs("EPSG:32632");
   const CurrentSampler sampler(f, f32);
@@ -496,8 +507,8 @@ TEST(CurrentRaster, UtmFieldInAnotherZoneIsRotatedByTheConvergence) {
 
 TEST(CurrentConstant, DirectionIsWhereItSetsTowardsClockwiseFromNorth) {
   auto vel = [](const std::string& t) { return parse_constant_current(t, "--current").constant_velocity; };
-  EXPECT_EQ(vel("1,90"), Eigen::Vector2d(1.0, 0.0));     // sets towards east
-  EXPECT_EQ(vel("2,180"), Eigen::Vector2d(0.0, -2.0));   // towards south
+  EXPECT_EQ(vel("1,90"), Eigen::Vector2d(1.0, 0.0));    // sets towards east
+  EXPECT_EQ(vel("2,180"), Eigen::Vector2d(0.0, -2.0));  // towards south
   EXPECT_EQ(vel("0.5,0"), Eigen::Vector2d(0.0, 0.5));
   EXPECT_EQ(vel("1, 270"), Eigen::Vector2d(-1.0, 0.0));
   EXPECT_EQ(vel("0,45"), Eigen::Vector2d(0.0, 0.0));
@@ -529,15 +540,16 @@ TEST(CurrentConstant, TrueNorthBecomesGridNorthInTheFrame) {
     EXPECT_NEAR(got->norm(), 1.0, 1e-12);
     EXPECT_NEAR(math_angle(*got), kPi / 2 + gamma, 2e-5);
   }
-  EXPECT_NEAR((*fast.sample(p + Eigen::Vector2d(1234, -987), 0.0) - *exact.sample(p + Eigen::Vector2d(1234, -987), 0.0)).norm(),
-              0.0, 1e-9);
+  EXPECT_NEAR(
+      (*fast.sample(p + Eigen::Vector2d(1234, -987), 0.0) - *exact.sample(p + Eigen::Vector2d(1234, -987), 0.0)).norm(),
+      0.0, 1e-9);
   // A constant field covers any work area.
   EXPECT_NO_THROW(check_current_coverage(*c, frame, p, p + Eigen::Vector2d(1e5, 1e5)));
 }
 
 TEST(CurrentConstant, MalformedTextIsAOneLineError) {
-  for (const char* bad : {"1", "a,b", "nan,0", "-1,0", "1,0,0", "", ",", "1,", "inf,0", "1,nan", "1e999,0", "1 0", "1;90",
-                          "0x1,0", "1,90\n2"}) {
+  for (const char* bad : {"1", "a,b", "nan,0", "-1,0", "1,0,0", "", ",", "1,", "inf,0", "1,nan", "1e999,0", "1 0",
+                          "1;90", "0x1,0", "1,90\n2"}) {
     SCOPED_TRACE(bad);
     expect_one_line_error([&] { parse_constant_current(bad, "--current"); }, "--current: expected ");
   }
@@ -566,7 +578,8 @@ TEST(CurrentErrors, NetcdfWithoutUvListsItsVariables) {
 
 TEST(CurrentErrors, MissingCorruptAndForeignFiles) {
   ScratchDir dir;
-  expect_one_line_error([&] { load_current_field(dir.file("none.nc")); }, "none.nc: expected an existing current field file");
+  expect_one_line_error([&] { load_current_field(dir.file("none.nc")); },
+                        "none.nc: expected an existing current field file");
   expect_one_line_error([&] { load_current_field(dir.path().string()); }, "got a folder");
   const std::string junk = dir.write("junk.nc", std::string("CDF\x01") + std::string(300, '\x07') + "\nmore\n");
   // The CDF magic and garbage after it: the header walk refuses it before GDAL reads it.
@@ -577,7 +590,8 @@ TEST(CurrentErrors, MissingCorruptAndForeignFiles) {
   GDALAllRegister();
   const std::string one = dir.file("one.tif");
   {
-    GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(one.c_str(), 4, 4, 1, GDT_Float32, nullptr));
+    GDALDatasetUniquePtr ds(
+        GetGDALDriverManager()->GetDriverByName("GTiff")->Create(one.c_str(), 4, 4, 1, GDT_Float32, nullptr));
     double gt[6] = {0, 1, 0, 4, 0, -1};
     ds->SetGeoTransform(gt);
     OGRSpatialReference srs;
@@ -629,7 +643,8 @@ TEST(CurrentErrors, ShapesCrsTimeUnitsAndSize) {
   write_nc(p4, big);
   CurrentOptions small;
   small.max_cells_per_step = 29;
-  expect_one_line_error([&] { load_current_field(p4, small); }, "expected a current field of at most 29 nodes per time step");
+  expect_one_line_error([&] { load_current_field(p4, small); },
+                        "expected a current field of at most 29 nodes per time step");
   CurrentOptions total;
   total.max_total_cells = 89;
   expect_one_line_error([&] { load_current_field(p4, total); }, "got 6 x 5 nodes x 3 step(s)");
@@ -646,7 +661,8 @@ TEST(CurrentErrors, WorkAreaOutsideTheField) {
   write_nc(path, s);
   const CurrentField f = load_current_field(path);
   const LocalFrame frame = LocalFrame::utm_for(10.5, 54.5);
-  const CurrentCoverage ok = check_current_coverage(f, frame, frame.from_lonlat(10.05, 54.25), frame.from_lonlat(10.95, 54.95));
+  const CurrentCoverage ok =
+      check_current_coverage(f, frame, frame.from_lonlat(10.05, 54.25), frame.from_lonlat(10.95, 54.95));
   EXPECT_EQ(ok.nodes, 4u * 3u);  // lon 10.1, 10.3, 10.35, 10.6 and lat 54.4, 54.6, 54.8 lie inside
   EXPECT_EQ(ok.fill_nodes, 0u);
   // Partly outside (east of 11 E), and wholly elsewhere.

@@ -12,8 +12,8 @@
 
 #include <algorithm>
 #include <boost/geometry/algorithms/correct.hpp>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -320,7 +320,6 @@ TEST(EncNoGo, PointHazardsAreDiscsOfTheirZonesPositionAccuracy) {
   EXPECT_TRUE(radii.count(5.0) || radii.count(50.0));
 }
 
-
 // Every no-go feature lies inside what the planners get (their merged,
 // simplified polygons and discs), checked with GEOS through OGR: an overlay
 // the library's Boost-based merging shares nothing with.
@@ -345,7 +344,8 @@ TEST(EncNoGo, PlannersPolygonsCoverEveryNoGoFeature) {
   for (const auto& [path, depth] : {std::pair{chesapeake, 5.0}, std::pair{key_west, 3.0}}) {
     const EncNoGo no_go = enc_no_go({path}, std::nullopt, at_depth(depth));
     OGRMultiPolygon planners;
-    for (const PolygonObstacle& p : no_go.obstacles.polygons) planners.addGeometryDirectly(to_ogr(p.footprint).release());
+    for (const PolygonObstacle& p : no_go.obstacles.polygons)
+      planners.addGeometryDirectly(to_ogr(p.footprint).release());
     ASSERT_TRUE(planners.IsValid()) << path;
     std::size_t areas = 0;
     for (const EncNoGoFeature& f : no_go.features) {
@@ -370,7 +370,6 @@ TEST(EncNoGo, PlannersPolygonsCoverEveryNoGoFeature) {
     }
   }
 }
-
 
 // On a part of the cell small enough for the seed's full visibility graph,
 // the reduced graph (what plan uses) finds the same route, and both lie
@@ -408,7 +407,8 @@ TEST(EncNoGo, ClippedPartRoutesMatchTheFullGraphAndTheExactOptimum) {
         for (int i = 0; i < r.getNumPoints(); ++i) dst.push_back(BgPoint(r.getX(i), r.getY(i)));
       };
       copy(*q.getExteriorRing(), piece.footprint.outer());
-      for (int k = 0; k < q.getNumInteriorRings(); ++k) copy(*q.getInteriorRing(k), piece.footprint.inners().emplace_back());
+      for (int k = 0; k < q.getNumInteriorRings(); ++k)
+        copy(*q.getInteriorRing(k), piece.footprint.inners().emplace_back());
       boost::geometry::correct(piece.footprint);
       part.polygons.push_back(std::move(piece));
     };
@@ -576,7 +576,8 @@ TEST(EncCells, BrokenInputIsOneLineEach) {
   // A missing update in the sequence: .001 and .003 without .002.
   const fs::path gap = tmp.path() / "gap";
   fs::create_directories(gap);
-  for (const char* ext : {".000", ".001", ".003"}) fs::copy_file(src / ("US4MD81M" + std::string(ext)), gap / ("US4MD81M" + std::string(ext)));
+  for (const char* ext : {".000", ".001", ".003"})
+    fs::copy_file(src / ("US4MD81M" + std::string(ext)), gap / ("US4MD81M" + std::string(ext)));
   expect_one_line_error([&] { find_enc_cells({(gap / "US4MD81M.000").string()}); }, "US4MD81M.003",
                         "expected update 2");
   // chart info too (GDAL alone applied .001, stopped at the gap and said nothing).
@@ -632,12 +633,11 @@ TEST(EncNoGo, SeveralCellsLetTheBetterScaleWin) {
   // The same Key West cell twice, the copy said to be at 1:50,000 with every
   // depth area 30 m: where both cover, the 1:10,000 original decides.
   const std::string coarse = (tmp.path() / "COARSE.000").string();
-  write_edited_cell(
-      path, coarse, {"M_COVR", "DEPARE"},
-      [](const std::string& layer, OGRFeature& f) {
-        if (layer == "DEPARE") f.SetField("DRVAL1", 30.0);
-      },
-      {"S57_CSCL=50000"});
+  write_edited_cell(path, coarse, {"M_COVR", "DEPARE"},
+                    [](const std::string& layer, OGRFeature& f) {
+                      if (layer == "DEPARE") f.SetField("DRVAL1", 30.0);
+                    },
+                    {"S57_CSCL=50000"});
   const EncNoGo both = enc_no_go({coarse, path}, std::nullopt, at_depth(5.0));
   ASSERT_EQ(both.cells.size(), 2u);
   EXPECT_EQ(both.cells.front().name, "US5FL4DQ");
@@ -651,11 +651,12 @@ TEST(EncNoGo, SeveralCellsLetTheBetterScaleWin) {
   const std::filesystem::path copy = tmp.path() / "copy";
   std::filesystem::create_directories(copy);
   std::filesystem::copy_file(path, copy / "US5FL4DQ.000");
-  expect_one_line_error([&] { enc_no_go({path, (copy / "US5FL4DQ.000").string()}, std::nullopt, at_depth(5.0)); },
-                        "US5FL4DQ.000", "expected each cell once");
+  expect_one_line_error(
+      [&] {
+        enc_no_go({path, (copy / "US5FL4DQ.000").string()}, std::nullopt, at_depth(5.0));
+      },
+      "US5FL4DQ.000", "expected each cell once");
 }
-
-
 
 // ------------------------------------------------------------------ prepared charts
 
@@ -704,10 +705,10 @@ TEST(PreparedChart, RoundTripKeepsTheNoGoAndRefusesAnotherDepth) {
   // Other options than it was prepared with are refused too.
   EncNoGoOptions exact = at_depth(3.0);
   exact.zone_of_confidence = false;
-  expect_one_line_error([&] { chart_no_go({gpkg}, std::nullopt, exact); }, "area.gpkg", "prepared with zones of confidence");
+  expect_one_line_error([&] { chart_no_go({gpkg}, std::nullopt, exact); }, "area.gpkg",
+                        "prepared with zones of confidence");
   EXPECT_EQ(chart_no_go({gpkg}, std::nullopt, o).features.size(), made.features.size());
 }
-
 
 // The sea floor routes in depth take from a cell: never deeper than the
 // depth area holding a point (less its least zone uncertainty, 0.5 m), land
@@ -748,7 +749,6 @@ TEST(EncSeaFloor, RouteInDepthOverACell) {
   EXPECT_GE(j["min_floor_gap_m"].get<double>(), 2.0 - 1e-9) << r.out;
 }
 
-
 TEST(EncSeaFloor, MissionOnACell) {
   DEEPGUIDE_REAL_FILE_OR_SKIP(path, kChesapeake);
   ScratchDir tmp;
@@ -760,8 +760,7 @@ TEST(EncSeaFloor, MissionOnACell) {
                          "        - {lon: -76.425, lat: 38.80}\n";
   const auto planned = test::run_cli("mission plan '" + yaml + "'");
   EXPECT_EQ(planned.exit_code, 0) << planned.err;
-  EXPECT_NE(planned.out.find("check            safe"), std::string::npos)
-      << planned.out;
+  EXPECT_NE(planned.out.find("check            safe"), std::string::npos) << planned.out;
   // A waypoint over a 3 m bank: refused with its place.
   std::string text;
   {
@@ -790,8 +789,8 @@ TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
   EXPECT_NE(flagged.err.find("crosses DEPARE/4363 of US4MD81M (DRVAL1 0 m < 10 m)"), std::string::npos) << flagged.err;
   EXPECT_EQ(std::count(flagged.err.begin(), flagged.err.end(), '\n'), 1) << flagged.err;
   // Its start lies on that bank: plan refuses with the feature named (exit 3).
-  const auto refused =
-      test::run_cli("plan " + chart + "--depth 8 --from -76.45,38.45 --to -76.42,38.55 -o '" + tmp.file("r.geojson") + "'");
+  const auto refused = test::run_cli("plan " + chart + "--depth 8 --from -76.45,38.45 --to -76.42,38.55 -o '" +
+                                     tmp.file("r.geojson") + "'");
   EXPECT_EQ(refused.exit_code, 3) << refused.err;
   EXPECT_NE(refused.err.find("start lies within 5.00 m of DEPARE/4363"), std::string::npos) << refused.err;
   // Two points in the deep channel whose straight line crosses shoals: the
@@ -809,9 +808,9 @@ TEST(EncCli, PlanGoesRoundTheShallowsAndCheckRouteNamesTheFirstCrossing) {
   // Prepared once, the same route from the GeoPackage.
   const std::string gpkg = tmp.file("area.gpkg");
   ASSERT_EQ(test::run_cli("chart prepare '" + path + "' --depth 5 -o '" + gpkg + "'").exit_code, 0);
-  const auto from_gpkg = test::run_cli("plan --chart '" + gpkg +
-                                       "' --depth 5 --from -76.41,38.87 --to -76.35,38.60 -o '" +
-                                       tmp.file("round2.geojson") + "' --json");
+  const auto from_gpkg =
+      test::run_cli("plan --chart '" + gpkg + "' --depth 5 --from -76.41,38.87 --to -76.35,38.60 -o '" +
+                    tmp.file("round2.geojson") + "' --json");
   ASSERT_EQ(from_gpkg.exit_code, 0) << from_gpkg.err;
   EXPECT_NEAR(nlohmann::json::parse(from_gpkg.out)["length_m"].get<double>(), summary["length_m"].get<double>(), 1e-3);
   const auto other_depth = test::run_cli("plan --chart '" + gpkg + "' --depth 6 --from -76.41,38.87 --to -76.35,38.60");
@@ -868,11 +867,11 @@ TEST(EncCli, BadChartsAreOneLineAndExitOne) {
   const std::string straight = tmp.file("straight.geojson");
   std::ofstream(straight) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},)"
                           << R"("geometry":{"type":"LineString","coordinates":[[-76.45,38.45],[-76.42,38.55]]}}]})";
-  for (const auto& [chart, says] : std::vector<std::pair<std::string, std::string>>{
-           {(gap / "US4MD81M.000").string(), "expected update 2"},
-           {no_depare, "DEPARE"},
-           {fake.string(), "expected an S-57 ENC cell"},
-           {empty.string(), "found none"}}) {
+  for (const auto& [chart, says] :
+       std::vector<std::pair<std::string, std::string>>{{(gap / "US4MD81M.000").string(), "expected update 2"},
+                                                        {no_depare, "DEPARE"},
+                                                        {fake.string(), "expected an S-57 ENC cell"},
+                                                        {empty.string(), "found none"}}) {
     for (const std::string& cmd : {"check route '" + straight + "' --chart '" + chart + "' --depth 5",
                                    "plan --chart '" + chart + "' --depth 5 --from -76.41,38.87 --to -76.35,38.60",
                                    "chart prepare '" + chart + "' --depth 5 -o '" + tmp.file("x.gpkg") + "'"}) {

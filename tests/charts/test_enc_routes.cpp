@@ -164,9 +164,9 @@ FreeRaster free_raster(const OwnNoGo& o, double cell, double grow) {
                                     burn.data(), nullptr, nullptr, values.data(), opts, nullptr, nullptr),
             CE_None);
   r.blocked.resize(static_cast<std::size_t>(r.w) * r.h);
-  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.w, r.h, r.blocked.data(), r.w, r.h, GDT_Byte, 0, 0,
-                                           nullptr),
-            CE_None);
+  EXPECT_EQ(
+      ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, r.w, r.h, r.blocked.data(), r.w, r.h, GDT_Byte, 0, 0, nullptr),
+      CE_None);
   // 4-connected components of free cells.
   r.component.assign(r.blocked.size(), -1);
   int next = 0;
@@ -204,7 +204,8 @@ struct OwnCheck {
   explicit OwnCheck(const OwnNoGo& o) {
     OGRMultiPolygon areas;
     for (const Geom& a : o.areas) {
-      if (wkbFlatten(a->getGeometryType()) == wkbPolygon) areas.addGeometry(a.get());
+      if (wkbFlatten(a->getGeometryType()) == wkbPolygon)
+        areas.addGeometry(a.get());
       else if (wkbFlatten(a->getGeometryType()) == wkbMultiPolygon) {
         for (const OGRPolygon* p : *a->toMultiPolygon()) areas.addGeometry(p);
       }
@@ -285,8 +286,8 @@ void run_case(const Case& c, unsigned seed) {
     if ((g - s).norm() < 1.0) continue;
     const bool joined = raster.component[a] == raster.component[b];
     connected += joined;
-    SCOPED_TRACE(::testing::Message() << c.file << " depth " << c.depth << " pair " << n << " from (" << s.x()
-                                      << ", " << s.y() << ") to (" << g.x() << ", " << g.y() << ")");
+    SCOPED_TRACE(::testing::Message() << c.file << " depth " << c.depth << " pair " << n << " from (" << s.x() << ", "
+                                      << s.y() << ") to (" << g.x() << ", " << g.y() << ")");
     try {
       const SingleQueryPlan plan = plan_single_query(no_go.obstacles, {s, g, false}, po);
       if (!plan.outcome.result.found) {
@@ -303,8 +304,8 @@ void run_case(const Case& c, unsigned seed) {
   }
   EXPECT_GT(connected, pairs / 2);
   EXPECT_GE(routes, connected);
-  std::printf("%s at %.0f m: %d pairs, %d connected, %d routes, %d refused (raster disconnected)\n", c.file,
-              c.depth, pairs, connected, routes, refused_disconnected);
+  std::printf("%s at %.0f m: %d pairs, %d connected, %d routes, %d refused (raster disconnected)\n", c.file, c.depth,
+              pairs, connected, routes, refused_disconnected);
 }
 
 TEST(EncRoutes, ChesapeakeAt3mIndependentlyChecked) { run_case({"noaa-enc-US4MD81M/US4MD81M.000", 1.0, 25.0}, 1); }

@@ -4,8 +4,8 @@
 // OSR transformation) on synthetic and real rasters, plus the promises of the
 // simplification: it covers the exact outline and stays within the tolerance.
 
-#include <gtest/gtest.h>
 #include <gdal_priv.h>
+#include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
 
@@ -123,8 +123,9 @@ std::size_t check_every_cell(const std::string& path, const LocalFrame& frame, c
         const BgPoint pt(x[i], y[i]);
         // Corners lie on the exact outline: allow the last bits of PROJ's arithmetic.
         if (!bg::covered_by(pt, mp) && bg::distance(pt, mp) > 1e-6) {
-          if (++misses <= 5) ADD_FAILURE() << "no-go cell (col " << c << ", row " << r << ") point " << i << " at "
-                                           << bg::wkt(pt) << " lies outside the no-go polygons";
+          if (++misses <= 5)
+            ADD_FAILURE() << "no-go cell (col " << c << ", row " << r << ") point " << i << " at " << bg::wkt(pt)
+                          << " lies outside the no-go polygons";
         }
       }
     }

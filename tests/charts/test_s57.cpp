@@ -33,8 +33,8 @@ const char* const kChesapeake = "noaa-enc-US4MD81M/US4MD81M.000";
 GDALDatasetUniquePtr open_ogr(const std::string& path, std::vector<const char*> open_options = {}) {
   GDALAllRegister();
   open_options.push_back(nullptr);
-  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr,
-                                            open_options.data(), nullptr));
+  GDALDatasetUniquePtr ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, open_options.data(), nullptr));
   EXPECT_TRUE(ds) << path;
   return ds;
 }
@@ -66,9 +66,8 @@ void for_each_obstacle(const ObstacleSet& set, Fn fn) {
 TEST(S57Summary, KeyWestCellMatchesSources) {
   REAL_FILE_OR_SKIP(path, kKeyWest);
   const S57Summary s = summarize_s57(path);
-  const std::map<std::string, std::size_t> expected{{"OBSTRN", 15}, {"WRECKS", 4},   {"UWTROC", 22},
-                                                    {"DEPARE", 97}, {"DEPCNT", 121}, {"LNDARE", 43},
-                                                    {"COALNE", 45}, {"SOUNDG", 11}};
+  const std::map<std::string, std::size_t> expected{{"OBSTRN", 15},  {"WRECKS", 4},  {"UWTROC", 22}, {"DEPARE", 97},
+                                                    {"DEPCNT", 121}, {"LNDARE", 43}, {"COALNE", 45}, {"SOUNDG", 11}};
   for (const auto& [cls, n] : expected) EXPECT_EQ(s.layer_counts.at(cls), n) << cls;
   EXPECT_EQ(s.edition, "2");
   EXPECT_EQ(s.update_number, 0);
@@ -87,9 +86,8 @@ TEST(S57Summary, KeyWestCellMatchesSources) {
 TEST(S57Summary, ChesapeakeCellAppliesItsUpdates) {
   REAL_FILE_OR_SKIP(path, kChesapeake);
   const S57Summary s = summarize_s57(path);
-  const std::map<std::string, std::size_t> expected{{"OBSTRN", 219}, {"WRECKS", 111}, {"UWTROC", 18},
-                                                    {"DEPARE", 525}, {"DEPCNT", 566}, {"LNDARE", 183},
-                                                    {"COALNE", 1826}, {"SOUNDG", 56}};
+  const std::map<std::string, std::size_t> expected{{"OBSTRN", 219}, {"WRECKS", 111}, {"UWTROC", 18},   {"DEPARE", 525},
+                                                    {"DEPCNT", 566}, {"LNDARE", 183}, {"COALNE", 1826}, {"SOUNDG", 56}};
   for (const auto& [cls, n] : expected) EXPECT_EQ(s.layer_counts.at(cls), n) << cls;
   EXPECT_EQ(s.edition, "31");
   EXPECT_EQ(s.update_number, 3);
@@ -176,9 +174,9 @@ TEST(S57Hazards, KeyWestMatchesTheGeoJsonExportsFeatureByFeature) {
       const std::string id = cls + "/" + std::to_string(f->GetFieldAsInteger64("RCID"));
       const OGRGeometry* g = f->GetGeometryRef();
       const int vi = f->GetFieldIndex("VALSOU");
-      const std::optional<double> valsou =
-          cls != "LNDARE" && vi >= 0 && f->IsFieldSetAndNotNull(vi) ? std::optional<double>(f->GetFieldAsDouble(vi))
-                                                                    : std::nullopt;
+      const std::optional<double> valsou = cls != "LNDARE" && vi >= 0 && f->IsFieldSetAndNotNull(vi)
+                                               ? std::optional<double>(f->GetFieldAsDouble(vi))
+                                               : std::nullopt;
       if (wkbFlatten(g->getGeometryType()) == wkbPoint) {
         ASSERT_TRUE(ellipses.count(id)) << id;
         const EllipticCylinder& e = *ellipses[id];
@@ -231,9 +229,9 @@ TEST(S57Hazards, ValsouRangesMatchSources) {
     const char* cls;
     double lo, hi;
   };
-  for (const Range& r : {Range{path.c_str(), "OBSTRN", 5.7, 7.0}, Range{path.c_str(), "WRECKS", 3.0, 3.0},
-                         Range{chesapeake.c_str(), "WRECKS", 0.6, 31.5},
-                         Range{chesapeake.c_str(), "OBSTRN", 0.3, 27.4}}) {
+  for (const Range& r :
+       {Range{path.c_str(), "OBSTRN", 5.7, 7.0}, Range{path.c_str(), "WRECKS", 3.0, 3.0},
+        Range{chesapeake.c_str(), "WRECKS", 0.6, 31.5}, Range{chesapeake.c_str(), "OBSTRN", 0.3, 27.4}}) {
     const S57Summary s = summarize_s57(r.file);
     const S57Hazards h = s57_hazards(r.file, s57_local_frame(s));
     double lo = 1e9, hi = -1e9;
@@ -319,9 +317,8 @@ TEST(S57Hazards, DepthFilterDropsHazardsTheVehiclePassesAbove) {
   o.operating_depth_m = 0.0;
   o.vertical_clearance_m = 0.0;
   std::size_t with_valsou = 0;
-  for_each_obstacle(all.obstacles, [&](const std::string&, const std::optional<double>& top) {
-    with_valsou += top && *top > 0.0;
-  });
+  for_each_obstacle(all.obstacles,
+                    [&](const std::string&, const std::optional<double>& top) { with_valsou += top && *top > 0.0; });
   EXPECT_EQ(s57_hazards(path, frame, o).removed_by_depth, with_valsou);
 }
 
@@ -413,9 +410,9 @@ TEST(S57Errors, MissingFileNotAnS57CellAndAFolder) {
   expect_one_line_error_naming([&] { summarize_s57(missing); }, missing);
   expect_one_line_error_naming([&] { s57_hazards(missing, frame); }, missing);
   // GeoJSON text under an S-57 name: only the S57 driver may open a chart.
-  const std::string geojson = tmp.write("FAKE0000.000",
-                                        R"({"type":"FeatureCollection","features":[{"type":"Feature",)"
-                                        R"("properties":{},"geometry":{"type":"Point","coordinates":[1,2]}}]})");
+  const std::string geojson =
+      tmp.write("FAKE0000.000", R"({"type":"FeatureCollection","features":[{"type":"Feature",)"
+                                R"("properties":{},"geometry":{"type":"Point","coordinates":[1,2]}}]})");
   expect_one_line_error_naming([&] { summarize_s57(geojson); }, geojson);
   const std::string empty = tmp.write("EMPTY000.000", "");
   expect_one_line_error_naming([&] { s57_hazards(empty, frame); }, empty);

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <gdal_priv.h>
+#include <algorithm>
 
 #include <nlohmann/json.hpp>
 
@@ -44,8 +44,8 @@ std::vector<float> read_cells(const std::string& path, int& width, int& height) 
   width = ds->GetRasterXSize();
   height = ds->GetRasterYSize();
   std::vector<float> cells(static_cast<std::size_t>(width) * height);
-  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, cells.data(), width, height, GDT_Float32, 0,
-                                            0, nullptr),
+  EXPECT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, cells.data(), width, height, GDT_Float32, 0, 0,
+                                           nullptr),
             CE_None);
   return cells;
 }
@@ -167,7 +167,8 @@ TEST(SampleChart, WritesTwiceTheSameAndReadsBack) {
   EXPECT_EQ(loaded.obstacles.polygons.size(), 2u);
   const SampleChart chart = make_sample_chart();
   for (const EllipticCylinder& c : loaded.obstacles.ellipses) {
-    const auto it = std::find_if(chart.hazards.begin(), chart.hazards.end(), [&](const auto& z) { return z.id == c.id; });
+    const auto it =
+        std::find_if(chart.hazards.begin(), chart.hazards.end(), [&](const auto& z) { return z.id == c.id; });
     ASSERT_NE(it, chart.hazards.end()) << c.id;
     EXPECT_NEAR((c.footprint.centre - it->position).norm(), 0.0, 1e-6) << c.id;
     EXPECT_DOUBLE_EQ(c.footprint.a, it->semi_major_m);
@@ -359,7 +360,8 @@ TEST(ChartCli, ACutShortBagIsOneLineWithoutHdf5sDiagnostics) {
     in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
   const std::string cut = dir.write("cut.bag", bytes);
-  for (const std::string& cmd : {"chart info '" + cut + "'", "plan --chart '" + cut + "' --depth 5 --from 0,0 --to 0.01,0.01"}) {
+  for (const std::string& cmd :
+       {"chart info '" + cut + "'", "plan --chart '" + cut + "' --depth 5 --from 0,0 --to 0.01,0.01"}) {
     const auto r = run_cli(cmd);
     EXPECT_EQ(r.exit_code, 1) << cmd << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << cmd << ": " << r.err;
@@ -387,10 +389,8 @@ TEST(ChartCli, BadInputExitsOne) {
   ScratchDir dir;
   expect_one_line_exit_1(run_cli("chart info '" + dir.file("missing.tif") + "'"), "missing.tif");
   expect_one_line_exit_1(run_cli("chart info '" + dir.write("notes.txt", "hello\n") + "'"), "notes.txt");
-  expect_one_line_exit_1(run_cli("chart info --depth -3 '" + source_file("charts/sample_chart.tif") + "'"),
-                         "--depth");
-  expect_one_line_exit_1(run_cli("chart info --depth nan '" + source_file("charts/sample_chart.tif") + "'"),
-                         "--depth");
+  expect_one_line_exit_1(run_cli("chart info --depth -3 '" + source_file("charts/sample_chart.tif") + "'"), "--depth");
+  expect_one_line_exit_1(run_cli("chart info --depth nan '" + source_file("charts/sample_chart.tif") + "'"), "--depth");
   expect_one_line_exit_1(run_cli("chart synth -o '" + dir.file("no/such/dir") + "'"), "no/such/dir");
   EXPECT_EQ(run_cli("chart info").exit_code, 2);  // usage
 }

@@ -146,29 +146,47 @@ TEST_P(CliBadInput, ExitsOneWithOneLine) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
-#define DG_POINT(props, coords) \
-  R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{)" props R"(},"geometry":{"type":"Point","coordinates":)" coords "}}]}"
+#define DG_POINT(props, coords)                                                       \
+  R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{)" props \
+  R"(},"geometry":{"type":"Point","coordinates":)" coords "}}]}"
 
 INSTANTIATE_TEST_SUITE_P(
     Foundation, CliBadInput,
     ::testing::Values(
         BadInput{"missing_file", "absent.geojson", nullptr, {"expected an existing file"}},
         BadInput{"not_a_vector_file", "x.geojson", "this is not json {", {"vector file"}},
-        BadInput{"no_semi_major", "a.geojson", DG_POINT(R"("id":"k","semi_minor_m":2)", "[10,54]"),
+        BadInput{"no_semi_major",
+                 "a.geojson",
+                 DG_POINT(R"("id":"k","semi_minor_m":2)", "[10,54]"),
                  {"feature 0 (id 'k')", "field 'semi_major_m'"}},
-        BadInput{"zero_axis", "z.geojson", DG_POINT(R"("semi_major_m":0)", "[10,54]"),
+        BadInput{"zero_axis",
+                 "z.geojson",
+                 DG_POINT(R"("semi_major_m":0)", "[10,54]"),
                  {"feature 0", "field 'semi_major_m'", "> 0"}},
-        BadInput{"negative_axis", "n.csv", "lon,lat,semi_major_m,semi_minor_m\n10,54,5,-1\n",
+        BadInput{"negative_axis",
+                 "n.csv",
+                 "lon,lat,semi_major_m,semi_minor_m\n10,54,5,-1\n",
                  {"line 2", "field 'semi_minor_m'", "> 0"}},
-        BadInput{"minor_above_major", "m.csv", "lon,lat,semi_major_m,semi_minor_m\n10,54,5,6\n",
+        BadInput{"minor_above_major",
+                 "m.csv",
+                 "lon,lat,semi_major_m,semi_minor_m\n10,54,5,6\n",
                  {"line 2", "field 'semi_minor_m'", "<= semi_major_m"}},
-        BadInput{"nan_coordinate", "nan.geojson", DG_POINT(R"("semi_major_m":3)", "[NaN,54]"),
+        BadInput{"nan_coordinate",
+                 "nan.geojson",
+                 DG_POINT(R"("semi_major_m":3)", "[NaN,54]"),
                  {"feature 0", "field 'geometry'", "finite"}},
-        BadInput{"infinite_coordinate", "inf.geojson", DG_POINT(R"("semi_major_m":3)", "[10,Infinity]"),
+        BadInput{"infinite_coordinate",
+                 "inf.geojson",
+                 DG_POINT(R"("semi_major_m":3)", "[10,Infinity]"),
                  {"feature 0", "field 'geometry'", "finite"}},
-        BadInput{"unknown_crs_in_file", "crs.geojson",
-                 R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::999999"}},"features":[]})",
-                 {"field 'crs'"}},
-        BadInput{"unknown_crs_option", "ok.geojson", DG_POINT(R"("semi_major_m":3)", "[10,54]"),
-                 {"--crs", "EPSG:999999"}, "--crs EPSG:999999"}),
+        BadInput{
+            "unknown_crs_in_file",
+            "crs.geojson",
+            R"({"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::999999"}},"features":[]})",
+            {"field 'crs'"}},
+        BadInput{"unknown_crs_option",
+                 "ok.geojson",
+                 DG_POINT(R"("semi_major_m":3)", "[10,54]"),
+                 {"--crs", "EPSG:999999"},
+                 "--crs EPSG:999999"}),
     [](const auto& info) { return std::string(info.param.name); });

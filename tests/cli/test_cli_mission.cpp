@@ -45,8 +45,9 @@ TEST(CliMission, BadMissionsAreOneLineAndExitOne) {
                 "{x: 100, y: 0}, {x: 0, y: 100}]}\n",
        {"area", "simple polygon"}},
       // (580000, 6033300) is on the sample chart's land.
-      {header + "environment: {charts: ['" + chart + "']}\nmanoeuvres:\n  - track: {depth_m: 5, waypoints: "
-                "[{x: 580000, y: 6033300}]}\n",
+      {header + "environment: {charts: ['" + chart +
+           "']}\nmanoeuvres:\n  - track: {depth_m: 5, waypoints: "
+           "[{x: 580000, y: 6033300}]}\n",
        {"waypoint", "on land"}},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -80,14 +81,15 @@ TEST(CliMission, AConflictThatCannotBeResolvedExitsThreeWithTimeAndPlace) {
   ScratchDir dir;
   const deepguide::LocalFrame frame = deepguide::LocalFrame::from_user_crs("EPSG:32632");
   const Eigen::Vector2d rock = frame.to_lonlat({500405.0, 6000000.0});
-  const std::string obstacles = dir.write(
-      "rock.geojson", "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\", \"properties\": "
-                      "{\"id\": \"rock\", \"semi_major_m\": 3, \"semi_minor_m\": 3, \"orientation_deg\": 0}, "
-                      "\"geometry\": {\"type\": \"Point\", \"coordinates\": [" +
-                          nlohmann::json(rock.x()).dump() + ", " + nlohmann::json(rock.y()).dump() + "]}}]}\n");
+  const std::string obstacles =
+      dir.write("rock.geojson",
+                "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\", \"properties\": "
+                "{\"id\": \"rock\", \"semi_major_m\": 3, \"semi_minor_m\": 3, \"orientation_deg\": 0}, "
+                "\"geometry\": {\"type\": \"Point\", \"coordinates\": [" +
+                    nlohmann::json(rock.x()).dump() + ", " + nlohmann::json(rock.y()).dump() + "]}}]}\n");
   const std::string path = dir.write(
-      "m.yaml", "crs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\nenvironment: {obstacles: ['" +
-                    obstacles + "']}\nmanoeuvres:\n  - track: {depth_m: 5, waypoints: [{x: 500400, y: 6000000}]}\n");
+      "m.yaml", "crs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\nenvironment: {obstacles: ['" + obstacles +
+                    "']}\nmanoeuvres:\n  - track: {depth_m: 5, waypoints: [{x: 500400, y: 6000000}]}\n");
   const auto r = run_cli("mission plan '" + path + "'");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -186,13 +188,15 @@ TEST(CliMission, HostileNamesArePrintedEscaped) {
   // the summary line and reversed what followed.
   ScratchDir dir;
   const std::string m = dir.write(
-      "m.yaml", "name: \"evil\\e[31mred\\nline\\u202E\"\ncrs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\n"
-                "manoeuvres:\n  - track: {name: \"leg\\e[2J\", depth_m: 5, speed_kn: 4, waypoints: [{x: 500400, y: 6000000}]}\n");
+      "m.yaml",
+      "name: \"evil\\e[31mred\\nline\\u202E\"\ncrs: EPSG:32632\nstart: {x: 500000, y: 6000000, depth_m: 5}\n"
+      "manoeuvres:\n  - track: {name: \"leg\\e[2J\", depth_m: 5, speed_kn: 4, waypoints: [{x: 500400, y: 6000000}]}\n");
   for (const std::string cmd : {"mission check", "mission plan"}) {
     const auto r = run_cli(cmd + " '" + m + "'");
     ASSERT_EQ(r.exit_code, 0) << cmd << ": " << r.err;
     EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << cmd << ": " << r.out;
     EXPECT_EQ(r.out.find("\xe2\x80\xae"), std::string::npos) << cmd << ": " << r.out;
-    EXPECT_NE(r.out.find("mission          evil\\x1b[31mred\\x0aline\\u202e ("), std::string::npos) << cmd << ": " << r.out;
+    EXPECT_NE(r.out.find("mission          evil\\x1b[31mred\\x0aline\\u202e ("), std::string::npos)
+        << cmd << ": " << r.out;
   }
 }

@@ -1,15 +1,15 @@
 // deepguide plan and deepguide check route, end to end.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <csignal>
-#include <cerrno>
 #include <filesystem>
-#include <tuple>
 #include <fstream>
-#include <sys/stat.h>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "nc_writer.hpp"
 #include "test_support.hpp"
@@ -66,7 +66,8 @@ TEST(CliPlan, RoutesThatTouchZonesSurviveTheFileRoundTrip) {
 
 TEST(CliPlan, ReducedAndFullGraphsAgree) {
   const auto a = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --json");
-  const auto b = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph visibility-full --search dijkstra --json");
+  const auto b =
+      run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph visibility-full --search dijkstra --json");
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;
   EXPECT_NEAR(nlohmann::json::parse(a.out).at("length_m").get<double>(),
@@ -111,7 +112,8 @@ TEST(CliPlan, ProjectedCoordinatesWithCrs) {
   // The same plan given in UTM 32N metres instead of lon/lat.
   const auto ll = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --json");
   ASSERT_EQ(ll.exit_code, 0) << ll.err;
-  const auto r = run_cli("plan --obstacles '" + kSample + "' --crs EPSG:32632 --from 580440.5,6033365.3 --to 582000,6035800 --json");
+  const auto r = run_cli("plan --obstacles '" + kSample +
+                         "' --crs EPSG:32632 --from 580440.5,6033365.3 --to 582000,6035800 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_GT(nlohmann::json::parse(r.out).at("length_m").get<double>(), 2000.0);
 }
@@ -139,7 +141,7 @@ TEST(CliPlan, ChartRouteLeavesTheHarbourThroughTheChannelClearOfTheNoGoArea) {
   EXPECT_LT(j.at("length_m").get<double>(), 1.05 * straight);
   EXPECT_GE(j.at("min_clearance_m").get<double>(), 5.0 - 1e-9);
   EXPECT_EQ(j.at("crs").get<std::string>(), "EPSG:32632");  // the start's UTM zone
-  EXPECT_EQ(j.at("passed_over").get<int>(), 3);  // hazards deeper than 10 + 2 m
+  EXPECT_EQ(j.at("passed_over").get<int>(), 3);             // hazards deeper than 10 + 2 m
   // Independently: the no-go polygons written by `chart nogo`, checked by `check route`.
   const std::string nogo = dir.file("nogo.gpkg");
   const auto n = run_cli("chart nogo '" + kChart + "' --depth 10 -o '" + nogo + "'");
@@ -196,8 +198,8 @@ TEST(CliPlanCost, EnergyRouteReportsLegsAndWritesSpeedsPerWaypoint) {
   EXPECT_NEAR(j.at("time_s").get<double>(), time, 1e-6);
   EXPECT_NEAR(j.at("energy_j").get<double>(), energy, 1e-3);
   // Choosing the speed per leg spends no more than cruising, and the shortest route is reported beside it.
-  const auto cruise = run_cli("plan --obstacles '" + kSample + "'" + kFromTo +
-                              " --cost energy --current-const 0.8,200 --json");
+  const auto cruise =
+      run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --cost energy --current-const 0.8,200 --json");
   ASSERT_EQ(cruise.exit_code, 0) << cruise.err;
   const auto c = nlohmann::json::parse(cruise.out);
   EXPECT_LT(energy, 0.99 * c.at("energy_j").get<double>());
@@ -265,8 +267,8 @@ TEST(CliPlanCost, TimeRouteThroughTheRealGulfStream) {
       [[[-75.05, 34.90], [-74.95, 34.90], [-74.95, 35.00], [-75.05, 35.00], [-75.05, 34.90]]]}},
     {"type": "Feature", "properties": {"id": "bank-b"}, "geometry": {"type": "Polygon", "coordinates":
       [[[-75.25, 34.75], [-75.15, 34.75], [-75.15, 34.82], [-75.25, 34.82], [-75.25, 34.75]]]}}]})");
-  const std::string base = "plan --obstacles '" + banks + "' --from -74.80,35.10 --to -75.40,34.60 --current '" +
-                           hycom + "' --json";
+  const std::string base =
+      "plan --obstacles '" + banks + "' --from -74.80,35.10 --to -75.40,34.60 --current '" + hycom + "' --json";
   const auto by_length = run_cli(base + " --cost length");
   const auto by_time = run_cli(base + " --cost time");
   ASSERT_EQ(by_length.exit_code, 0) << by_length.err;
@@ -300,8 +302,8 @@ TEST(CliPlanCost, ATidalFieldChoosesTheSideByTheDepartureTime) {
   tide.v = [](double, double, double, double) { return 0.0; };
   const std::string nc = dir.file("tide.nc");
   deepguide::test::write_nc(nc, tide);
-  const std::string base = "plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 --cost time " +
-                           "--current '" + nc + "'";
+  const std::string base =
+      "plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 --cost time " + "--current '" + nc + "'";
   // The mean latitude of a written route's waypoints, against the island's middle.
   const auto side = [&](const std::string& depart, const std::string& file) {
     const auto r = run_cli(base + " --depart " + depart + " -o '" + file + "' --json");
@@ -329,8 +331,9 @@ TEST(CliPlanCost, ATidalFieldChoosesTheSideByTheDepartureTime) {
   for (const char* w : {"--depart", "2020-01-01T00:00:00Z", "2020-01-02T00:00:00Z", "2019-12-31T23:00:00Z"}) {
     EXPECT_NE(early.err.find(w), std::string::npos) << early.err;
   }
-  const auto optimal = run_cli("plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 --cost energy " +
-                               "--current '" + nc + "' --speed optimal");
+  const auto optimal =
+      run_cli("plan --obstacles '" + island + "' --from 10.225,54.45 --to 10.275,54.45 --cost energy " + "--current '" +
+              nc + "' --speed optimal");
   EXPECT_EQ(optimal.exit_code, 1) << optimal.err;
   EXPECT_NE(optimal.err.find("steady"), std::string::npos) << optimal.err;
   // Leaving five minutes before the forecast ends (the crossing takes 20 to 40):
@@ -354,8 +357,8 @@ TEST(CliPlanCost, ATidalFieldChoosesTheSideByTheDepartureTime) {
 TEST(CliPlanQuadtree, SmoothedRouteIsCheckedAndReplanningWritesEachRepair) {
   ScratchDir dir;
   const std::string route = dir.file("q.geojson");
-  const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph quadtree --smooth -o '" + route +
-                         "' --json");
+  const auto r =
+      run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --graph quadtree --smooth -o '" + route + "' --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("graph").get<std::string>(), "quadtree");
@@ -403,9 +406,9 @@ TEST(CliPlanQuadtree, BadOptionsAndAWalledInVehicle) {
     for (const std::string& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << ": " << r.err;
   }
   // A wall reported across the whole way: the replay says where the vehicle stopped, exit 3.
-  const std::string wall = dir.write(
-      "wall.geojson",
-      R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": "new-wall",
+  const std::string wall =
+      dir.write("wall.geojson",
+                R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": "new-wall",
       "detected_at_m": 0}, "geometry": {"type": "Polygon", "coordinates": [[[10.2425, 54.40], [10.2430, 54.40],
       [10.2430, 54.50], [10.2425, 54.50], [10.2425, 54.40]]]}}]})");
   const auto walled = run_cli(base + " --graph quadtree --replan-events '" + wall + "'");
@@ -421,9 +424,10 @@ TEST(CliPlanOctree, ARouteInDepthOverTheSampleChart) {
   const std::string chart = "'" + deepguide::test::source_file("charts/sample_chart.tif") + "' '" +
                             deepguide::test::source_file("charts/sample_chart_hazards.gpkg") + "'";
   const std::string route = dir.file("r.geojson"), profile = dir.file("p.png");
-  const auto r = run_cli("plan --chart " + chart + " --graph octree --depth 10 --from 10.2446,54.4413 --to "
-                         "10.2626,54.4606 --min-cell 1 --smooth -o '" + route + "' --render-profile '" + profile +
-                         "' --json");
+  const auto r = run_cli("plan --chart " + chart +
+                         " --graph octree --depth 10 --from 10.2446,54.4413 --to "
+                         "10.2626,54.4606 --min-cell 1 --smooth -o '" +
+                         route + "' --render-profile '" + profile + "' --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("graph"), "octree");
@@ -489,7 +493,8 @@ static double vincenty_m(double lon1, double lat1, double lon2, double lat2) {
     cos2a = 1.0 - sin_a * sin_a;
     cos2sm = cos_s - 2.0 * std::sin(U1) * std::sin(U2) / cos2a;
     const double C = f / 16.0 * cos2a * (4.0 + f * (4.0 - 3.0 * cos2a));
-    const double next = L + (1.0 - C) * f * sin_a * (sigma + C * sin_s * (cos2sm + C * cos_s * (-1.0 + 2.0 * cos2sm * cos2sm)));
+    const double next =
+        L + (1.0 - C) * f * sin_a * (sigma + C * sin_s * (cos2sm + C * cos_s * (-1.0 + 2.0 * cos2sm * cos2sm)));
     if (std::abs(next - lambda) < 1e-13) {
       lambda = next;
       break;
@@ -499,9 +504,10 @@ static double vincenty_m(double lon1, double lat1, double lon2, double lat2) {
   const double u2 = cos2a * (a * a - b * b) / (b * b);
   const double A = 1.0 + u2 / 16384.0 * (4096.0 + u2 * (-768.0 + u2 * (320.0 - 175.0 * u2)));
   const double B = u2 / 1024.0 * (256.0 + u2 * (-128.0 + u2 * (74.0 - 47.0 * u2)));
-  const double ds = B * sin_s * (cos2sm + B / 4.0 * (cos_s * (-1.0 + 2.0 * cos2sm * cos2sm) -
-                                                    B / 6.0 * cos2sm * (-3.0 + 4.0 * sin_s * sin_s) *
-                                                        (-3.0 + 4.0 * cos2sm * cos2sm)));
+  const double ds = B * sin_s *
+                    (cos2sm + B / 4.0 *
+                                  (cos_s * (-1.0 + 2.0 * cos2sm * cos2sm) -
+                                   B / 6.0 * cos2sm * (-3.0 + 4.0 * sin_s * sin_s) * (-3.0 + 4.0 * cos2sm * cos2sm)));
   return b * A * (sigma - ds);
 }
 
@@ -523,10 +529,13 @@ TEST(CliPlan, EmptyObstacleFileLeavesTheFrameToTheStart) {
 TEST(CliPlan, RouteFileInEveryFormatByItsName) {
   ScratchDir dir;
   // What each format's file begins with or holds: the writer that names it, not GeoJSON under another name.
-  const std::vector<std::pair<std::string, std::string>> formats = {
-      {"route.gpx", "<gpx"},       {"route.kml", "<kml"},          {"route.rtz", "http://www.cirm.org/RTZ/1/0"},
-      {"route.plan", "\"Plan\""}, {"route.bhv", "BHV_Waypoint"}, {"route.csv", "WKT,name,lon,lat"},
-      {"route.geojson", "FeatureCollection"}};
+  const std::vector<std::pair<std::string, std::string>> formats = {{"route.gpx", "<gpx"},
+                                                                    {"route.kml", "<kml"},
+                                                                    {"route.rtz", "http://www.cirm.org/RTZ/1/0"},
+                                                                    {"route.plan", "\"Plan\""},
+                                                                    {"route.bhv", "BHV_Waypoint"},
+                                                                    {"route.csv", "WKT,name,lon,lat"},
+                                                                    {"route.geojson", "FeatureCollection"}};
   for (const auto& [name, mark] : formats) {
     const std::string out = dir.file(name);
     const auto r = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " --depth 5 -o '" + out + "'");
@@ -571,7 +580,8 @@ TEST(CliPlan, GridsWithoutACrsTakeSrcCrs) {
     EXPECT_EQ(nlohmann::json::parse(r.out).at("crs"), chart == crm ? "EPSG:32617" : "EPSG:32626");
   }
   ScratchDir dir;
-  const auto drawn = run_cli("render chart '" + crm + "' --src-crs EPSG:4326 --depth 700 -o '" + dir.file("crm.png") + "'");
+  const auto drawn =
+      run_cli("render chart '" + crm + "' --src-crs EPSG:4326 --depth 700 -o '" + dir.file("crm.png") + "'");
   EXPECT_EQ(drawn.exit_code, 0) << drawn.err;
   EXPECT_GT(std::filesystem::file_size(dir.file("crm.png")), 10000u);
 }
@@ -600,12 +610,15 @@ TEST(CliPlan, CheckRouteReadsEcdisAndOpenCpnRoutes) {
 TEST(CliPlan, CheckRouteChecksEveryLineAndPointOfTheFile) {
   // A first line clear of every obstacle; a second through c2's centre, or a point on c5's, is not safe.
   ScratchDir dir;
-  const std::string clear = "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"LineString\", "
-                            "\"coordinates\": [[10.230, 54.440], [10.231, 54.441]]}}";
-  const std::string through = "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"LineString\", "
-                              "\"coordinates\": [[10.250, 54.453], [10.262, 54.453]]}}";
-  const std::string on_c5 = "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", "
-                            "\"coordinates\": [10.248, 54.447]}}";
+  const std::string clear =
+      "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"LineString\", "
+      "\"coordinates\": [[10.230, 54.440], [10.231, 54.441]]}}";
+  const std::string through =
+      "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"LineString\", "
+      "\"coordinates\": [[10.250, 54.453], [10.262, 54.453]]}}";
+  const std::string on_c5 =
+      "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", "
+      "\"coordinates\": [10.248, 54.447]}}";
   const auto file = [&](const std::string& name, const std::vector<std::string>& features) {
     std::string text = "{\"type\": \"FeatureCollection\", \"features\": [";
     for (std::size_t i = 0; i < features.size(); ++i) text += (i ? ", " : "") + features[i];
@@ -624,8 +637,10 @@ TEST(CliPlan, CheckRouteChecksEveryLineAndPointOfTheFile) {
   // The ends of the line through c2 as points alone (a file of waypoints): each
   // is clear, the leg between them is not, and the legs are what is checked.
   const auto point = [](const char* lonlat) {
-    return std::string("{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", "
-                       "\"coordinates\": [") + lonlat + "]}}";
+    return std::string(
+               "{\"type\": \"Feature\", \"properties\": {}, \"geometry\": {\"type\": \"Point\", "
+               "\"coordinates\": [") +
+           lonlat + "]}}";
   };
   const std::string ends = file("ends.geojson", {point("10.250, 54.453"), point("10.262, 54.453")});
   r = run_cli("check route '" + ends + "' --obstacles '" + kSample + "' --margin 0");
@@ -654,8 +669,8 @@ TEST(CliPlan, AnOutputNeverDestroysAnInput) {
            dir.file("sub/../r.png") + "'",
        "expected"},
       {"obstacles convert '" + obstacles + "' '" + dir.file("./obstacles.geojson") + "'", "input"},
-      {"mission export '" + deepguide::test::source_file("data/missions/sample_mission.yaml") + "' --format yaml --overwrite -o '" +
-           deepguide::test::source_file("data/missions/sample_mission.yaml") + "'",
+      {"mission export '" + deepguide::test::source_file("data/missions/sample_mission.yaml") +
+           "' --format yaml --overwrite -o '" + deepguide::test::source_file("data/missions/sample_mission.yaml") + "'",
        "MISSION"},
   };
   std::filesystem::create_directories(dir.path() / "sub");
@@ -681,11 +696,14 @@ TEST(CliPlan, EscapeFromInsideAnObstacleLeavesItAndSaysSo) {
   // the planned route failed the independent check" for every graph.
   ScratchDir dir;
   for (const char* graph : {"visibility", "tangent", "quadtree"}) {
-    const auto r = run_cli("plan --obstacles '" + kSample + "' --from 10.2500,54.4500 --to 10.265,54.462 --escape "
-                           "--graph " + std::string(graph) + " -o '" + dir.file(std::string(graph) + ".geojson") + "'");
+    const auto r = run_cli("plan --obstacles '" + kSample +
+                           "' --from 10.2500,54.4500 --to 10.265,54.462 --escape "
+                           "--graph " +
+                           std::string(graph) + " -o '" + dir.file(std::string(graph) + ".geojson") + "'");
     ASSERT_EQ(r.exit_code, 0) << graph << ": " << r.err;
     EXPECT_NE(r.out.find("escape           the first leg, 20.0 m, leaves obstacle 'c1''s zone from inside it"),
-              std::string::npos) << graph << ": " << r.out;
+              std::string::npos)
+        << graph << ": " << r.out;
     EXPECT_NE(r.out.find("min clearance    5.00 m"), std::string::npos) << graph << ": " << r.out;
   }
 }
@@ -819,7 +837,8 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
   ScratchDir dir;
   const std::string route = dir.file("wide.geojson");
   // Round c2 on a 60 m radius where the free route turns on 35 m.
-  const std::string base = "plan --obstacles '" + kSample + "' --from 10.2405,54.4470 --to 10.2640,54.4560 --graph tangent --margin 10";
+  const std::string base =
+      "plan --obstacles '" + kSample + "' --from 10.2405,54.4470 --to 10.2640,54.4560 --graph tangent --margin 10";
   const auto free = run_cli(base + " --json");
   ASSERT_EQ(free.exit_code, 0) << free.err;
   EXPECT_NEAR(nlohmann::json::parse(free.out).at("min_turn_radius_m").get<double>(), 35.0, 1e-6);
@@ -853,15 +872,18 @@ TEST(CliPlan, TurnRadiusRoutesTurnNoTighterAndSayWhereTheyCannot) {
     {"type": "Feature", "properties": {"id": "roof"}, "geometry": {"type": "Polygon", "coordinates": [[[499890, 6000012], [500100, 6000012], [500100, 6000040], [499890, 6000040], [499890, 6000012]]]}},
     {"type": "Feature", "properties": {"id": "floor"}, "geometry": {"type": "Polygon", "coordinates": [[[499890, 5999780], [500100, 5999780], [500100, 5999800], [499890, 5999800], [499890, 5999780]]]}},
     {"type": "Feature", "properties": {"id": "back"}, "geometry": {"type": "Polygon", "coordinates": [[[499890, 5999780], [499900, 5999780], [499900, 6000040], [499890, 6000040], [499890, 5999780]]]}}]})");
-  const std::string in_pocket = "plan --obstacles '" + pocket + "' --crs EPSG:32632 --from 499950,5999900 --to 500050,5999900 --margin 5";
+  const std::string in_pocket =
+      "plan --obstacles '" + pocket + "' --crs EPSG:32632 --from 499950,5999900 --to 500050,5999900 --margin 5";
   EXPECT_EQ(run_cli(in_pocket + " --graph tangent").exit_code, 0);
   const auto tight = run_cli(in_pocket + " --graph tangent --turn-radius 19.6");
   EXPECT_EQ(tight.exit_code, 3) << tight.err;
   EXPECT_EQ(std::count(tight.err.begin(), tight.err.end(), '\n'), 1) << tight.err;
-  for (const char* word : {"19.6 m", "'wall'", "5.0 m radius"}) EXPECT_NE(tight.err.find(word), std::string::npos) << tight.err;
+  for (const char* word : {"19.6 m", "'wall'", "5.0 m radius"})
+    EXPECT_NE(tight.err.find(word), std::string::npos) << tight.err;
 
   // A vehicle sets the radius it can follow: 1.15 x 2.06 m/s / 5 deg/s at DeepC's cruise.
-  const auto deepc = run_cli(base + " --vehicle '" + deepguide::test::source_file("data/vehicles/deepc.yaml") + "' --json");
+  const auto deepc =
+      run_cli(base + " --vehicle '" + deepguide::test::source_file("data/vehicles/deepc.yaml") + "' --json");
   ASSERT_EQ(deepc.exit_code, 0) << deepc.err;
   const auto dj = nlohmann::json::parse(deepc.out);
   EXPECT_NEAR(dj.at("turn_radius_m").get<double>(), 1.15 * 4 * 1852.0 / 3600.0 / (5.0 * M_PI / 180.0), 0.01);
@@ -926,7 +948,8 @@ TEST(CliPlan, FramesBeyondUtmAreRefused) {
   const auto polar = run_cli(base + " --from 10.0,89.99 --to 10.1,89.98");
   EXPECT_EQ(polar.exit_code, 1) << polar.err;
   EXPECT_EQ(std::count(polar.err.begin(), polar.err.end(), '\n'), 1) << polar.err;
-  for (const char* w : {"--from", "89.99", "84 N", "EPSG:3413"}) EXPECT_NE(polar.err.find(w), std::string::npos) << polar.err;
+  for (const char* w : {"--from", "89.99", "84 N", "EPSG:3413"})
+    EXPECT_NE(polar.err.find(w), std::string::npos) << polar.err;
   const auto far = run_cli(base + " --from 10.2405,54.4470 --to 100,10");
   EXPECT_EQ(far.exit_code, 1) << far.err;
   EXPECT_EQ(std::count(far.err.begin(), far.err.end(), '\n'), 1) << far.err;
@@ -943,13 +966,16 @@ TEST(CliPlan, FramesBeyondUtmAreRefused) {
 
 TEST(CliPlan, HostileObstacleIdsArePrintedEscapedOnOneLine) {
   ScratchDir dir;
-  const std::string evil = dir.write("evil.geojson",
-      "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\",\"properties\":{\"id\":"
-      "\"evil\\n\\u001b[31mred\\u202e\",\"semi_major_m\":5},\"geometry\":{\"type\":\"Point\",\"coordinates\":[10.25,54.45]}}]}");
+  const std::string evil =
+      dir.write("evil.geojson",
+                "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\",\"properties\":{\"id\":"
+                "\"evil\\n\\u001b[31mred\\u202e\",\"semi_major_m\":5},\"geometry\":{\"type\":\"Point\",\"coordinates\":"
+                "[10.25,54.45]}}]}");
   const auto r = run_cli("plan --obstacles '" + evil + "' --from 10.2499,54.45 --to 10.26,54.45");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("\u202e"), std::string::npos) << r.err;
-  for (const char* w : {"evil\\x0a\\x1b[31mred\\u202e", "safety zone"}) EXPECT_NE(r.err.find(w), std::string::npos) << r.err;
+  for (const char* w : {"evil\\x0a\\x1b[31mred\\u202e", "safety zone"})
+    EXPECT_NE(r.err.find(w), std::string::npos) << r.err;
 }

@@ -26,9 +26,7 @@ constexpr double kRadTol = 1e-12;
 constexpr double kDegTol = 1e-10;
 
 // Smallest difference of two math angles, modulo 2 pi, computed without the library.
-double angle_diff_rad(double x, double y) {
-  return std::abs(std::remainder(x - y, 2.0 * std::numbers::pi));
-}
+double angle_diff_rad(double x, double y) { return std::abs(std::remainder(x - y, 2.0 * std::numbers::pi)); }
 
 // Smallest difference of two headings in degrees, modulo 360.
 double angle_diff_deg(double x, double y) { return std::abs(std::remainder(x - y, 360.0)); }
@@ -92,8 +90,7 @@ TEST(Angles, MathToHeadingOnCardinalPoints) {
   EXPECT_NEAR(math_rad_to_heading_deg(-std::numbers::pi), 270.0, kDegTol);
   // A full turn more or less changes nothing.
   EXPECT_NEAR(math_rad_to_heading_deg(0.0 + 2.0 * std::numbers::pi), 90.0, kDegTol);
-  EXPECT_NEAR(math_rad_to_heading_deg(-std::numbers::pi / 2.0 - 4.0 * std::numbers::pi), 180.0,
-              kDegTol);
+  EXPECT_NEAR(math_rad_to_heading_deg(-std::numbers::pi / 2.0 - 4.0 * std::numbers::pi), 180.0, kDegTol);
 }
 
 TEST(Angles, HeadingMathOtherAngles) {
@@ -114,8 +111,8 @@ TEST(Angles, HeadingMathOtherAngles) {
       {30.0, std::numbers::pi / 3.0, 0.5, std::sqrt(3.0) / 2.0},
       {-30.0, 2.0 * std::numbers::pi / 3.0, -0.5, std::sqrt(3.0) / 2.0},  // = heading 330
       {390.0, std::numbers::pi / 3.0, 0.5, std::sqrt(3.0) / 2.0},         // = heading 30
-      {-90.0, std::numbers::pi, -1.0, 0.0},                                // = west
-      {720.0, std::numbers::pi / 2.0, 0.0, 1.0},                           // = north
+      {-90.0, std::numbers::pi, -1.0, 0.0},                               // = west
+      {720.0, std::numbers::pi / 2.0, 0.0, 1.0},                          // = north
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.heading);
@@ -258,8 +255,8 @@ TEST(Angles, Wrap360Boundaries) {
   EXPECT_EQ(wrap_360(-0.5), 359.5);
   EXPECT_EQ(wrap_360(-359.5), 0.5);
   // -1e-14 + 360 rounds to 360 in double: the result must still be in [0, 360).
-  for (double x : {-1e-14, -1e-300, std::nextafter(0.0, -1.0), std::nextafter(360.0, 0.0),
-                   std::nextafter(-360.0, 0.0), std::nextafter(-360.0, -1000.0)}) {
+  for (double x : {-1e-14, -1e-300, std::nextafter(0.0, -1.0), std::nextafter(360.0, 0.0), std::nextafter(-360.0, 0.0),
+                   std::nextafter(-360.0, -1000.0)}) {
     const double w = wrap_360(x);
     EXPECT_GE(w, 0.0) << x;
     EXPECT_LT(w, 360.0) << x;
@@ -277,14 +274,14 @@ TEST(Angles, Wrap360Boundaries) {
 }
 
 TEST(Angles, CourseOfVectorCardinalPoints) {
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(0.0, 1.0)), 0.0);     // north
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(1.0, 0.0)), 90.0);    // east
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(0.0, -1.0)), 180.0);  // south
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(-1.0, 0.0)), 270.0);  // west
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(3.0, 3.0)), 45.0);    // NE, length does not matter
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(-2.0, 2.0)), 315.0);  // NW
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(2.0, -2.0)), 135.0);  // SE
-  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(-2.0, -2.0)), 225.0); // SW
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(0.0, 1.0)), 0.0);      // north
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(1.0, 0.0)), 90.0);     // east
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(0.0, -1.0)), 180.0);   // south
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(-1.0, 0.0)), 270.0);   // west
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(3.0, 3.0)), 45.0);     // NE, length does not matter
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(-2.0, 2.0)), 315.0);   // NW
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(2.0, -2.0)), 135.0);   // SE
+  EXPECT_DOUBLE_EQ(course_deg_of(Vec2(-2.0, -2.0)), 225.0);  // SW
   // Slightly west of north is just below 360, never 360 itself.
   const double c = course_deg_of(Vec2(-1e-9, 1.0));
   EXPECT_LT(c, 360.0);

@@ -30,10 +30,10 @@ TEST(UtcTime, ReadsTheCommonForms) {
 }
 
 TEST(UtcTime, RefusesWhatIsNotATime) {
-  for (const char* bad : {"", "  ", "2019-03-07T15:00:00Zjunk", "2019-02-30T00:00:00Z", "2019-13-01T00:00:00Z",
-                          "2019-03-07T24:00:00Z", "2019-03-07T24:00:01Z", "2019-03-07T15:60:00Z", "2019-03-07T15:00:00.Z",
-                          "2019-03-07T15Z", "2019-03-07T15:00:00+24:00", "20190307T150000Z", "2019-03-07T15:00:00 Mars",
-                          "yesterday"}) {
+  for (const char* bad :
+       {"", "  ", "2019-03-07T15:00:00Zjunk", "2019-02-30T00:00:00Z", "2019-13-01T00:00:00Z", "2019-03-07T24:00:00Z",
+        "2019-03-07T24:00:01Z", "2019-03-07T15:60:00Z", "2019-03-07T15:00:00.Z", "2019-03-07T15Z",
+        "2019-03-07T15:00:00+24:00", "20190307T150000Z", "2019-03-07T15:00:00 Mars", "yesterday"}) {
     EXPECT_FALSE(parse_iso8601(bad, false)) << bad;
   }
   // A clock without a zone is a place nobody named, where a zone is required.

@@ -5,9 +5,9 @@
 // killed with SIGKILL and started again.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -131,8 +131,9 @@ TEST(Evaluate, ACollisionsClassAndCauseSurviveTheRowsFile) {
   row.run.end = "reached";
   row.run.reached = row.run.collided = row.run.unavoidable = true;
   row.run.min_clearance_m = -1.25;
-  row.run.note = "rock came into the sonar's view 8.0 m away at 0.0 s; a hard-over turn either way would still have "
-                 "met it: unavoidable";
+  row.run.note =
+      "rock came into the sonar's view 8.0 m away at 0.0 s; a hard-over turn either way would still have "
+      "met it: unavoidable";
   const std::string text = eval_rows_header() + eval_row_csv(row, false);
   const std::vector<EvalRow> back = parse_eval_rows(text, "rows", false);
   ASSERT_EQ(back.size(), 1u);
@@ -196,10 +197,12 @@ TEST(Evaluate, OneAndTwoThreadsAndMergedShardsWriteTheSameBytes) {
   // Bad merges: a shard missing, one given twice, shards of another run.
   using deepguide::test::expect_one_line_error;
   expect_one_line_error([&] { merge_evaluations({shards[0], shards[1]}, tmp.file("m2"), false); }, "is missing");
-  expect_one_line_error([&] { merge_evaluations({shards[0], shards[0], shards[1]}, tmp.file("m3"), false); },
-                        "given already");
-  expect_one_line_error([&] { merge_evaluations({shards[0], tmp.file("one")}, tmp.file("m4"), false); },
-                        "same run");
+  expect_one_line_error(
+      [&] {
+        merge_evaluations({shards[0], shards[0], shards[1]}, tmp.file("m3"), false);
+      },
+      "given already");
+  expect_one_line_error([&] { merge_evaluations({shards[0], tmp.file("one")}, tmp.file("m4"), false); }, "same run");
 }
 
 TEST(Evaluate, StoppedRunResumesWithoutLostOrDuplicatedRows) {
@@ -271,7 +274,9 @@ TEST(Evaluate, ASuiteChangedUnderTheSameNameIsNotResumedOrMerged) {
   o.shard = {2, 2};
   (void)evaluate_suite(after, tmp.file("shard2"), o);
   deepguide::test::expect_one_line_error(
-      [&] { (void)merge_evaluations({tmp.file("shard1"), tmp.file("shard2")}, tmp.file("merged"), false); },
+      [&] {
+        (void)merge_evaluations({tmp.file("shard1"), tmp.file("shard2")}, tmp.file("merged"), false);
+      },
       "other scenarios");
   EXPECT_FALSE(std::filesystem::exists(tmp.path() / "merged" / "rows.csv"));
 
@@ -354,7 +359,8 @@ TEST(EvaluateCli, UnknownMethodAndBrokenScenarioExitCodes) {
   EXPECT_FALSE(std::filesystem::exists(tmp.file("o1")));
 
   tmp.write("suite/scenario-0001.yaml", "start: {x: 0, y: 0}\n");  // no target
-  r = deepguide::test::run_cli("evaluate '" + suite + "' --methods visibility,geometric -q -o '" + tmp.file("o2") + "'");
+  r = deepguide::test::run_cli("evaluate '" + suite + "' --methods visibility,geometric -q -o '" + tmp.file("o2") +
+                               "'");
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_NE(r.err.find("skipped scenario-0001"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("target"), std::string::npos) << r.err;
@@ -373,11 +379,13 @@ TEST(EvaluateCli, KilledRunStartedAgainHasEveryRowOnce) {
 
   // Start it in the background, SIGKILL it once 20 rows are down.
   const std::string rows = tmp.file("cut/rows.csv");
-  const std::string script = tmp.write(
-      "kill.sh", "'" + std::string(DEEPGUIDE_CLI) + "' " + args + " -o '" + tmp.file("cut") +
-                     "' >/dev/null 2>&1 &\npid=$!\nfor i in $(seq 1 3000); do\n"
-                     "  n=$(cat '" + rows + "' 2>/dev/null | wc -l)\n  [ \"$n\" -ge 21 ] && break\n  sleep 0.01\ndone\n"
-                     "kill -9 $pid\nwait $pid 2>/dev/null\nexit 0\n");
+  const std::string script =
+      tmp.write("kill.sh", "'" + std::string(DEEPGUIDE_CLI) + "' " + args + " -o '" + tmp.file("cut") +
+                               "' >/dev/null 2>&1 &\npid=$!\nfor i in $(seq 1 3000); do\n"
+                               "  n=$(cat '" +
+                               rows +
+                               "' 2>/dev/null | wc -l)\n  [ \"$n\" -ge 21 ] && break\n  sleep 0.01\ndone\n"
+                               "kill -9 $pid\nwait $pid 2>/dev/null\nexit 0\n");
   ASSERT_EQ(std::system(("bash '" + script + "'").c_str()), 0);
   const std::size_t kept = deepguide::parse_eval_rows(slurp(rows), "rows", true).size();
   EXPECT_GE(kept, 20u);
@@ -410,7 +418,8 @@ TEST(EvaluateCli, TheDocumentedSlurmChainCompletesWithABrokenScenario) {
     EXPECT_EQ(r.out.find("report.html"), std::string::npos) << r.out;  // --no-report: not claimed
   }
   EXPECT_NE(warnings.find("skipped scenario-0002"), std::string::npos) << warnings;  // said, and exit 0
-  for (const char* v : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_COUNT", "SLURM_CPUS_PER_TASK"}) {
+  for (const char* v :
+       {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_COUNT", "SLURM_CPUS_PER_TASK"}) {
     unsetenv(v);
   }
   const EvaluationRun one = read_evaluation(tmp.file("shard-0")), two = read_evaluation(tmp.file("shard-1"));

@@ -35,7 +35,10 @@ struct Frame {
   Vec2 v;  // minor axis
 
   explicit Frame(const Ellipse& e)
-      : c(e.centre), a(e.a), b(e.b), u(std::cos(e.theta), std::sin(e.theta)),
+      : c(e.centre),
+        a(e.a),
+        b(e.b),
+        u(std::cos(e.theta), std::sin(e.theta)),
         v(-std::sin(e.theta), std::cos(e.theta)) {}
 
   // Boundary point x(t) and its first and second derivatives.
@@ -158,8 +161,6 @@ inline RefResult reference_distance(const Frame& f, const Vec2& p) {
   return best;
 }
 
-inline RefResult reference_distance(const Ellipse& e, const Vec2& p) {
-  return reference_distance(Frame(e), p);
-}
+inline RefResult reference_distance(const Ellipse& e, const Vec2& p) { return reference_distance(Frame(e), p); }
 
 }  // namespace deepguide::test_ref

@@ -23,10 +23,10 @@
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
-#include <sstream>
-#include <string>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <string>
 
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
@@ -41,8 +41,8 @@ constexpr double kPi = std::numbers::pi;
 // The independent reference (Frame, dense-sampling reference_distance) is in
 // reference_ellipse.hpp.
 using test_ref::Frame;
-using test_ref::RefResult;
 using test_ref::reference_distance;
+using test_ref::RefResult;
 
 // ---- Case generation -------------------------------------------------------
 //
@@ -51,19 +51,19 @@ using test_ref::reference_distance;
 // within rounding (~1e-15) of it; some ellipses are axis-aligned so that it is exact.
 
 enum class Kind {
-  general_outside,     // anywhere outside, up to 4x the size
-  general_inside,      // anywhere inside
-  near_boundary,       // within 1e-4 (relative) of the boundary, both sides
-  major_axis_outer,    // on the major axis (or within 1e-6 of it), beyond the evolute cusp
-  major_axis_moderate, // inside the cusp, 1e-3 b .. 1e-1 b off the major axis
-  on_minor_axis,       // on the minor axis, inside and outside
-  near_minor_axis,     // within 1e-6 of the minor axis
-  centre,              // exactly the centre
-  near_cusp,           // around the cusp (a^2 - b^2) / a, 1e-4 b .. 1e-3 b off the axis
+  general_outside,      // anywhere outside, up to 4x the size
+  general_inside,       // anywhere inside
+  near_boundary,        // within 1e-4 (relative) of the boundary, both sides
+  major_axis_outer,     // on the major axis (or within 1e-6 of it), beyond the evolute cusp
+  major_axis_moderate,  // inside the cusp, 1e-3 b .. 1e-1 b off the major axis
+  on_minor_axis,        // on the minor axis, inside and outside
+  near_minor_axis,      // within 1e-6 of the minor axis
+  centre,               // exactly the centre
+  near_cusp,            // around the cusp (a^2 - b^2) / a, 1e-4 b .. 1e-3 b off the axis
   // Precision regressions, see RandomNearMajorAxisInsideCuspMatchesReference below:
-  major_axis_inner,    // on the major axis, inside the cusp
-  near_major_axis,     // within 1e-6 of the major axis, inside the cusp
-  near_centre,         // within 1e-6 of the centre
+  major_axis_inner,  // on the major axis, inside the cusp
+  near_major_axis,   // within 1e-6 of the major axis, inside the cusp
+  near_centre,       // within 1e-6 of the centre
 };
 
 const char* kind_name(Kind k) {
@@ -147,27 +147,16 @@ Case random_case(std::mt19937& rng, Kind kind) {
       x = cusp * sym(rng);
       y = sign() * b * std::pow(10.0, -3.0 + 2.0 * u01(rng));
       break;
-    case Kind::on_minor_axis:
-      x = 0.0, y = 3.0 * b * sym(rng);
-      break;
-    case Kind::near_minor_axis:
-      x = 1e-6 * sym(rng), y = 3.0 * b * sym(rng);
-      break;
-    case Kind::centre:
-      break;
+    case Kind::on_minor_axis: x = 0.0, y = 3.0 * b * sym(rng); break;
+    case Kind::near_minor_axis: x = 1e-6 * sym(rng), y = 3.0 * b * sym(rng); break;
+    case Kind::centre: break;
     case Kind::near_cusp:
       x = sign() * (cusp + 0.01 * b * sym(rng));
       y = sign() * b * std::pow(10.0, -4.0 + u01(rng));
       break;
-    case Kind::major_axis_inner:
-      x = cusp * sym(rng), y = 0.0;
-      break;
-    case Kind::near_major_axis:
-      x = cusp * sym(rng), y = 1e-6 * sym(rng);
-      break;
-    case Kind::near_centre:
-      x = 1e-6 * sym(rng), y = 1e-6 * sym(rng);
-      break;
+    case Kind::major_axis_inner: x = cusp * sym(rng), y = 0.0; break;
+    case Kind::near_major_axis: x = cusp * sym(rng), y = 1e-6 * sym(rng); break;
+    case Kind::near_centre: x = 1e-6 * sym(rng), y = 1e-6 * sym(rng); break;
   }
   c.p = Frame(c.e).local_to_world(x, y);
   return c;
@@ -176,8 +165,7 @@ Case random_case(std::mt19937& rng, Kind kind) {
 // Compares the library with the reference on one case. Returns an empty string
 // when every check holds, else a description; `rel` receives the relative error
 // of the unsigned distance and `inside` whether the point is clearly inside.
-std::string check_case(const Case& c, double& rel, double& abs_err, double& dist,
-                       bool& inside) {
+std::string check_case(const Case& c, double& rel, double& abs_err, double& dist, bool& inside) {
   const Frame f(c.e);
   const RefResult ref = reference_distance(c.e, c.p);
   const EllipseProjection pr = project_to_ellipse(c.e, c.p);
@@ -188,11 +176,9 @@ std::string check_case(const Case& c, double& rel, double& abs_err, double& dist
   const double err = std::abs(pr.distance - ref.distance);
   abs_err = err;
   dist = ref.distance;
-  rel = std::isfinite(err) ? err / std::max(ref.distance, 1e-12)
-                           : std::numeric_limits<double>::infinity();
+  rel = std::isfinite(err) ? err / std::max(ref.distance, 1e-12) : std::numeric_limits<double>::infinity();
   if (!(err <= 1e-9 * ref.distance + 1e-12)) {
-    why << " distance " << pr.distance << " vs reference " << ref.distance << " (rel " << rel
-        << ");";
+    why << " distance " << pr.distance << " vs reference " << ref.distance << " (rel " << rel << ");";
   }
   // Sign from the implicit equation (undecided only within rounding of the boundary).
   const double imp = f.implicit(c.p);
@@ -201,8 +187,7 @@ std::string check_case(const Case& c, double& rel, double& abs_err, double& dist
   if (imp > 1.0 + 1e-12 && !(!pr.inside && signed_distance(c.e, c.p) > 0.0)) {
     why << " should be outside;";
   }
-  if (signed_distance(c.e, c.p) != pr.signed_distance() ||
-      std::abs(pr.signed_distance()) != pr.distance) {
+  if (signed_distance(c.e, c.p) != pr.signed_distance() || std::abs(pr.signed_distance()) != pr.distance) {
     why << " signed_distance inconsistent;";
   }
   // The closest point is on the ellipse and at the reported distance.
@@ -215,9 +200,9 @@ std::string check_case(const Case& c, double& rel, double& abs_err, double& dist
   if (why.str().empty()) return {};
   std::ostringstream out;
   out.precision(17);
-  out << "a=" << c.e.a << " b=" << c.e.b << " theta=" << c.e.theta << " c=(" << c.e.centre.x()
-      << ", " << c.e.centre.y() << ") p=(" << c.p.x() << ", " << c.p.y() << ") local=("
-      << f.u.dot(c.p - f.c) << ", " << f.v.dot(c.p - f.c) << "):" << why.str();
+  out << "a=" << c.e.a << " b=" << c.e.b << " theta=" << c.e.theta << " c=(" << c.e.centre.x() << ", " << c.e.centre.y()
+      << ") p=(" << c.p.x() << ", " << c.p.y() << ") local=(" << f.u.dot(c.p - f.c) << ", " << f.v.dot(c.p - f.c)
+      << "):" << why.str();
   return out.str();
 }
 
@@ -225,7 +210,7 @@ struct Summary {
   int cases = 0;
   int inside = 0;
   int failed = 0;
-  double worst_rel = 0.0;      // over all cases, err / max(d, 1e-12)
+  double worst_rel = 0.0;  // over all cases, err / max(d, 1e-12)
   std::string worst_kind;
   double worst_rel_far = 0.0;  // over cases with d >= 1e-3 (away from the boundary)
   double worst_abs = 0.0;      // absolute error over all cases
@@ -254,8 +239,7 @@ Summary run_kinds(std::mt19937& rng, std::initializer_list<Kind> kinds, int per_
       }
     }
     if (kind_failed > 0) {
-      ADD_FAILURE() << kind_name(kind) << ": " << kind_failed << " of " << per_kind
-                    << " cases fail";
+      ADD_FAILURE() << kind_name(kind) << ": " << kind_failed << " of " << per_kind << " cases fail";
     }
   }
   return s;
@@ -310,8 +294,7 @@ TEST(EllipseDistance, AxisAlignedHandCases) {
   EXPECT_NEAR(within.point.x(), 3.125, 1e-14);
   EXPECT_NEAR(std::abs(within.point.y()), 3.0 * std::sqrt(1.0 - 0.625 * 0.625), 1e-14);
   for (double x0 : {-3.0, -1.0, 0.5, 3.0}) {
-    EXPECT_NEAR(signed_distance(e, Vec2(x0, 0.0)), -3.0 * std::sqrt(1.0 - x0 * x0 / 16.0), 1e-14)
-        << x0;
+    EXPECT_NEAR(signed_distance(e, Vec2(x0, 0.0)), -3.0 * std::sqrt(1.0 - x0 * x0 / 16.0), 1e-14) << x0;
   }
 
   // On the boundary: zero.
@@ -341,8 +324,7 @@ TEST(EllipseDistance, CircleIsRadialDistance) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   for (int i = 0; i < 500; ++i) {
     const double r = 0.1 + 20.0 * u01(rng);
-    const Ellipse e{Vec2(-30.0 + 60.0 * u01(rng), -30.0 + 60.0 * u01(rng)), r, r,
-                    -kPi + 2.0 * kPi * u01(rng)};
+    const Ellipse e{Vec2(-30.0 + 60.0 * u01(rng), -30.0 + 60.0 * u01(rng)), r, r, -kPi + 2.0 * kPi * u01(rng)};
     const double phi = 2.0 * kPi * u01(rng);
     const double rho = 3.0 * r * u01(rng);
     const Vec2 p = e.centre + rho * Vec2(std::cos(phi), std::sin(phi));
@@ -353,9 +335,7 @@ TEST(EllipseDistance, CircleIsRadialDistance) {
     ASSERT_EQ(pr.inside, radial < r) << i;
     // The closest point is on the ray from the centre through p.
     if (radial > 1e-9) {
-      ASSERT_NEAR((pr.point - (e.centre + r * (p - e.centre) / radial)).norm(), 0.0,
-                  1e-12 * (1.0 + r))
-          << i;
+      ASSERT_NEAR((pr.point - (e.centre + r * (p - e.centre) / radial)).norm(), 0.0, 1e-12 * (1.0 + r)) << i;
     }
   }
   // Exactly at the centre of a circle: any boundary point, distance r.
@@ -381,12 +361,11 @@ TEST(EllipseDistance, ReferenceReproducesHandCases) {
 
 TEST(EllipseDistance, RandomRotatedMatchesDenseSamplingReference) {
   std::mt19937 rng(20240603);
-  const Summary s = run_kinds(rng,
-                              {Kind::general_outside, Kind::general_inside, Kind::near_boundary,
-                               Kind::major_axis_outer, Kind::major_axis_moderate,
-                               Kind::on_minor_axis, Kind::near_minor_axis, Kind::centre,
-                               Kind::near_cusp},
-                              150);
+  const Summary s =
+      run_kinds(rng,
+                {Kind::general_outside, Kind::general_inside, Kind::near_boundary, Kind::major_axis_outer,
+                 Kind::major_axis_moderate, Kind::on_minor_axis, Kind::near_minor_axis, Kind::centre, Kind::near_cusp},
+                150);
   EXPECT_EQ(s.cases, 1350);
   EXPECT_GE(s.inside, 400);
   EXPECT_EQ(s.failed, 0);
@@ -407,12 +386,11 @@ TEST(EllipseDistance, RandomRotatedMatchesDenseSamplingReference) {
 // closest point off the ellipse by up to 1e-10 .. 0.7 in the implicit value).
 TEST(EllipseDistance, RandomNearMajorAxisInsideCuspMatchesReference) {
   std::mt19937 rng(20240604);
-  const Summary s = run_kinds(
-      rng, {Kind::major_axis_inner, Kind::near_major_axis, Kind::near_centre}, 100);
-  EXPECT_EQ(s.failed, 0) << "of " << s.cases << " cases; worst relative error " << s.worst_rel
-                         << " (" << s.worst_kind << ")";
-  std::printf("[ distance ] near major axis / centre: %d cases, %d failed, worst rel %.3g\n",
-              s.cases, s.failed, s.worst_rel);
+  const Summary s = run_kinds(rng, {Kind::major_axis_inner, Kind::near_major_axis, Kind::near_centre}, 100);
+  EXPECT_EQ(s.failed, 0) << "of " << s.cases << " cases; worst relative error " << s.worst_rel << " (" << s.worst_kind
+                         << ")";
+  std::printf("[ distance ] near major axis / centre: %d cases, %d failed, worst rel %.3g\n", s.cases, s.failed,
+              s.worst_rel);
 }
 
 // The same regression on hand cases: a = 5, b = 3, x0 = 2 lies inside the cusp (3.2).

@@ -124,12 +124,8 @@ TEST(EllipseSegment, TangentToRotatedEllipseWithinRounding) {
     const Vec2 tangent = (-f.a * std::sin(s) * f.u + f.b * std::cos(s) * f.v).normalized();
     const Vec2 normal(tangent.y(), -tangent.x());  // outward for a ccw parameterisation
     for (double off : {1e-9, 1e-6}) {
-      EXPECT_FALSE(segment_intersects(e, x + off * normal - 3.0 * tangent,
-                                      x + off * normal + 2.0 * tangent))
-          << s;
-      EXPECT_TRUE(segment_intersects(e, x - off * normal - 3.0 * tangent,
-                                     x - off * normal + 2.0 * tangent))
-          << s;
+      EXPECT_FALSE(segment_intersects(e, x + off * normal - 3.0 * tangent, x + off * normal + 2.0 * tangent)) << s;
+      EXPECT_TRUE(segment_intersects(e, x - off * normal - 3.0 * tangent, x - off * normal + 2.0 * tangent)) << s;
     }
   }
 }
@@ -157,8 +153,8 @@ TEST(EllipseSegment, DisjointSegments) {
   // Passing by a rotated elongated ellipse: a = 10, b = 1 along the diagonal; the
   // segment along the other diagonal at distance 2 from the centre misses it.
   const Ellipse diag{Vec2(0.0, 0.0), 10.0, 1.0, kPi / 4.0};
-  const Vec2 n(std::sqrt(0.5), std::sqrt(0.5));  // the major direction
-  const Vec2 m(-std::sqrt(0.5), std::sqrt(0.5)); // the minor direction
+  const Vec2 n(std::sqrt(0.5), std::sqrt(0.5));   // the major direction
+  const Vec2 m(-std::sqrt(0.5), std::sqrt(0.5));  // the minor direction
   EXPECT_FALSE(segment_intersects(diag, 12.0 * n - 5.0 * m, 12.0 * n + 5.0 * m));
   EXPECT_TRUE(segment_intersects(diag, 9.0 * n - 5.0 * m, 9.0 * n + 5.0 * m));
   EXPECT_FALSE(segment_intersects(diag, 1.5 * m - 20.0 * n, 1.5 * m + 20.0 * n));
@@ -254,6 +250,6 @@ TEST(EllipseSegment, RandomAgainstDenseSampling) {
   EXPECT_GE(intersecting, 500);
   EXPECT_GE(missing, 500);
   EXPECT_GE(crossing_cases, 500);
-  std::printf("[ segment  ] %d random cases: %d intersecting, %d missing, %d with crossings\n",
-              cases, intersecting, missing, crossing_cases);
+  std::printf("[ segment  ] %d random cases: %d intersecting, %d missing, %d with crossings\n", cases, intersecting,
+              missing, crossing_cases);
 }

@@ -40,7 +40,6 @@ constexpr double kPi = std::numbers::pi;
 // The ellipse frame, from (c, a, b, theta) only (reference_ellipse.hpp).
 using test_ref::Frame;
 
-
 Ellipse random_ellipse(std::mt19937& rng, double max_b = 5.0) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   Ellipse e;
@@ -145,8 +144,8 @@ TEST(PointTangents, RandomRotatedEllipses) {
     const double rho = 1.001 + 19.0 * u01(rng) * u01(rng);
     const double phi = 2.0 * kPi * u01(rng);
     const Vec2 p = e.centre + e.a * rho * std::cos(phi) * f.u + e.b * rho * std::sin(phi) * f.v;
-    SCOPED_TRACE(::testing::Message() << "case " << i << " a=" << e.a << " b=" << e.b
-                                      << " theta=" << e.theta << " rho=" << rho);
+    SCOPED_TRACE(::testing::Message() << "case " << i << " a=" << e.a << " b=" << e.b << " theta=" << e.theta
+                                      << " rho=" << rho);
     const std::optional<PointTangents> t = tangent_points(e, p);
     ASSERT_TRUE(t.has_value());
     const Vec2 ray = e.centre - p;
@@ -172,8 +171,8 @@ TEST(PointTangents, RandomRotatedEllipses) {
       ASSERT_GE(cross(t->right - p, x - p), -1e-9 * scale * scale) << k;
     }
   }
-  std::printf("[ tangents ] %d point cases: worst |implicit - 1| %.3g, worst |cos| %.3g\n", kCases,
-              worst_on, worst_cos);
+  std::printf("[ tangents ] %d point cases: worst |implicit - 1| %.3g, worst |cos| %.3g\n", kCases, worst_on,
+              worst_cos);
 }
 
 // ---- Common tangents -----------------------------------------------------------
@@ -182,8 +181,8 @@ namespace {
 
 // Checks one result of common_tangents for two disjoint ellipses (failures through
 // gtest); `worst_on` collects the largest |implicit - 1| of the touch points.
-void check_common_tangents(const Ellipse& e1, const Ellipse& e2,
-                           const std::vector<CommonTangent>& ts, double& worst_on) {
+void check_common_tangents(const Ellipse& e1, const Ellipse& e2, const std::vector<CommonTangent>& ts,
+                           double& worst_on) {
   const Frame f1(e1);
   const Frame f2(e2);
   ASSERT_EQ(ts.size(), 4u);
@@ -191,8 +190,7 @@ void check_common_tangents(const Ellipse& e1, const Ellipse& e2,
   EXPECT_EQ(ts[1].kind, TangentKind::outer);
   EXPECT_EQ(ts[2].kind, TangentKind::inner);
   EXPECT_EQ(ts[3].kind, TangentKind::inner);
-  const double scale = std::max({e1.centre.norm(), e2.centre.norm(), e1.a, e2.a,
-                                 (e1.centre - e2.centre).norm()});
+  const double scale = std::max({e1.centre.norm(), e2.centre.norm(), e1.a, e2.a, (e1.centre - e2.centre).norm()});
   constexpr int kBoundary = 20000;
   for (std::size_t j = 0; j < ts.size(); ++j) {
     const CommonTangent& t = ts[j];
@@ -296,16 +294,16 @@ TEST(CommonTangents, RandomDisjointRotatedPairs) {
       e2.centre = e1.centre + (e1.a + e2.a) * (1.05 + 2.0 * u01(rng)) * n;
       ++far_pairs;
     }
-    SCOPED_TRACE(::testing::Message() << "pair " << i << (nearly_touching ? " (near)" : "")
-                                      << " e1: a=" << e1.a << " b=" << e1.b << " th=" << e1.theta
-                                      << " e2: a=" << e2.a << " b=" << e2.b << " th=" << e2.theta);
+    SCOPED_TRACE(::testing::Message() << "pair " << i << (nearly_touching ? " (near)" : "") << " e1: a=" << e1.a
+                                      << " b=" << e1.b << " th=" << e1.theta << " e2: a=" << e2.a << " b=" << e2.b
+                                      << " th=" << e2.theta);
     check_common_tangents(e1, e2, common_tangents(e1, e2), worst_on);
     // Swapped roles must work as well.
     check_common_tangents(e2, e1, common_tangents(e2, e1), worst_on);
     if (HasFailure()) break;
   }
-  std::printf("[ tangents ] %d far + %d nearly touching pairs: worst |implicit - 1| %.3g\n",
-              far_pairs, near_pairs, worst_on);
+  std::printf("[ tangents ] %d far + %d nearly touching pairs: worst |implicit - 1| %.3g\n", far_pairs, near_pairs,
+              worst_on);
 }
 
 TEST(CommonTangents, OverlappingEllipsesGiveNone) {
@@ -314,9 +312,7 @@ TEST(CommonTangents, OverlappingEllipsesGiveNone) {
   EXPECT_TRUE(common_tangents(a, a).empty());
   EXPECT_TRUE(common_tangents(a, Ellipse{Vec2(0.0, 0.0), 5.0, 1.0, kPi / 2.0}).empty());
   EXPECT_TRUE(common_tangents(a, Ellipse{Vec2(1.0, 0.0), 2.0, 0.5, 0.1}).empty());
-  EXPECT_TRUE(common_tangents(Ellipse{Vec2(0.0, 0.0), 1.0, 1.0, 0.0},
-                              Ellipse{Vec2(1.5, 0.0), 1.0, 1.0, 0.0})
-                  .empty());
+  EXPECT_TRUE(common_tangents(Ellipse{Vec2(0.0, 0.0), 1.0, 1.0, 0.0}, Ellipse{Vec2(1.5, 0.0), 1.0, 1.0, 0.0}).empty());
   // Random overlapping pairs: a point P slightly inside both ellipses.
   std::mt19937 rng(41);
   std::uniform_real_distribution<double> u01(0.0, 1.0);

@@ -76,8 +76,11 @@ TEST(PeriodicRoots, WrongSlopeStillConverges) {
     EXPECT_NEAR(got.second, 5.0 * kPi / 3.0, 1e-10) << "slope " << bad;
   }
   double a = 0, b = 0;  // three times the true slope: converges, only slower
-  ASSERT_TRUE(periodic_two_roots([&](double phi) { return ValueSlope{std::cos(phi) - 0.5, -3.0 * std::sin(phi)}; }, a,
-                                 b, 0.3));
+  ASSERT_TRUE(periodic_two_roots(
+      [&](double phi) {
+        return ValueSlope{std::cos(phi) - 0.5, -3.0 * std::sin(phi)};
+      },
+      a, b, 0.3));
   const auto got = wrapped(a, b);
   EXPECT_NEAR(got.first, kPi / 3.0, 1e-10);
   EXPECT_NEAR(got.second, 5.0 * kPi / 3.0, 1e-10);

@@ -52,9 +52,9 @@ TEST(PolygonLocator, AgreesWithBoostOnRandomPoints) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 11.0);
   // A concave comb with a hole in one tooth.
-  const BgPolygon comb = poly({{0, 0}, {0, 10}, {2, 10}, {2, 3}, {4, 3}, {4, 10}, {6, 10}, {6, 3}, {8, 3},
-                               {8, 10}, {10, 10}, {10, 0}},
-                              {{{0.5, 5}, {1.5, 5}, {1.5, 8}, {0.5, 8}}});
+  const BgPolygon comb =
+      poly({{0, 0}, {0, 10}, {2, 10}, {2, 3}, {4, 3}, {4, 10}, {6, 10}, {6, 3}, {8, 3}, {8, 10}, {10, 10}, {10, 0}},
+           {{{0.5, 5}, {1.5, 5}, {1.5, 8}, {0.5, 8}}});
   const PolygonLocator loc({&comb});
   for (int i = 0; i < 20000; ++i) {
     const Vec2 p(u(rng), u(rng));

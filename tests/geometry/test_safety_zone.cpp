@@ -38,7 +38,6 @@ constexpr double kPi = std::numbers::pi;
 using test_ref::Frame;
 using test_ref::reference_distance;
 
-
 struct PolygonReport {
   std::size_t vertices = 0;
   double max_excess = 0.0;  // max over vertices of (distance to ellipse - d)
@@ -130,10 +129,10 @@ const ZoneCase kCases[] = {
 TEST(SafetyZone, HandCases) {
   // a = 5, b = 3 at the origin, margin 2: the zone reaches x = +-7 and y = +-5.
   const SafetyZone z{Ellipse{Vec2(0.0, 0.0), 5.0, 3.0, 0.0}, 2.0};
-  EXPECT_NEAR(z.signed_distance(Vec2(0.0, 0.0)), -5.0, 1e-14);   // -3 - 2
-  EXPECT_NEAR(z.signed_distance(Vec2(10.0, 0.0)), 3.0, 1e-14);   // 5 - 2
-  EXPECT_NEAR(z.signed_distance(Vec2(0.0, 10.0)), 5.0, 1e-14);   // 7 - 2
-  EXPECT_NEAR(z.signed_distance(Vec2(4.0, 0.0)), -3.0, 1e-14);   // -1 - 2
+  EXPECT_NEAR(z.signed_distance(Vec2(0.0, 0.0)), -5.0, 1e-14);  // -3 - 2
+  EXPECT_NEAR(z.signed_distance(Vec2(10.0, 0.0)), 3.0, 1e-14);  // 5 - 2
+  EXPECT_NEAR(z.signed_distance(Vec2(0.0, 10.0)), 5.0, 1e-14);  // 7 - 2
+  EXPECT_NEAR(z.signed_distance(Vec2(4.0, 0.0)), -3.0, 1e-14);  // -1 - 2
   EXPECT_NEAR(z.signed_distance(Vec2(7.0, 0.0)), 0.0, 1e-14);
   EXPECT_TRUE(z.contains(Vec2(0.0, 0.0)));
   EXPECT_TRUE(z.contains(Vec2(6.9, 0.0)));
@@ -179,8 +178,8 @@ TEST(SafetyZonePolygon, RequiredCaseA10B2D5) {
     // A smaller tolerance needs more vertices.
     EXPECT_GT(rep.vertices, previous);
     previous = rep.vertices;
-    std::printf("[ zone     ] a=10 b=2 d=5 tol=%g: %zu vertices, excess %.4g .. %.4g\n", tol,
-                rep.vertices, rep.min_excess, rep.max_excess);
+    std::printf("[ zone     ] a=10 b=2 d=5 tol=%g: %zu vertices, excess %.4g .. %.4g\n", tol, rep.vertices,
+                rep.min_excess, rep.max_excess);
   }
   // Sane: the finest one is far from the refinement cap.
   EXPECT_LE(previous, 400u);
@@ -275,8 +274,7 @@ TEST(SafetyZonePolygon, NonPositiveToleranceThrows) {
   const SafetyZone zone{Ellipse{Vec2(0.0, 0.0), 10.0, 2.0, 0.0}, 5.0};
   for (double tol : {0.0, -0.1, -1e-300, std::numeric_limits<double>::quiet_NaN()}) {
     EXPECT_THROW(enclosing_polygon(zone, ZonePolygonOptions{tol}), std::invalid_argument) << tol;
-    EXPECT_THROW(enclosing_bg_polygon(zone, ZonePolygonOptions{tol}), std::invalid_argument)
-        << tol;
+    EXPECT_THROW(enclosing_bg_polygon(zone, ZonePolygonOptions{tol}), std::invalid_argument) << tol;
   }
   EXPECT_NO_THROW(enclosing_polygon(zone, ZonePolygonOptions{1e-3}));
 }

@@ -48,7 +48,7 @@ TEST(LeeGoal, OnTheEllipseAndOnTheDownstreamRayForEveryCurrent) {
 
 TEST(LeeGoal, ShadeHalfWidthAndAreas) {
   const double th = kPi / 6;
-  EXPECT_NEAR(shade_half_width(kSafety, unit(th)), 10.0, 1e-12);           // current along the major axis
+  EXPECT_NEAR(shade_half_width(kSafety, unit(th)), 10.0, 1e-12);            // current along the major axis
   EXPECT_NEAR(shade_half_width(kSafety, unit(th + kPi / 2)), 30.0, 1e-12);  // across it
   // Current along the major axis: the shade is the strip |across| <= 10 downstream of the centre.
   const Vec2 e = unit(th), n = unit(th + kPi / 2), c = kSafety.centre;
@@ -56,8 +56,8 @@ TEST(LeeGoal, ShadeHalfWidthAndAreas) {
   EXPECT_EQ(align_area(kSafety, e, c + 50.0 * e + 9.99 * n), AlignArea::positioning);
   EXPECT_EQ(align_area(kSafety, e, c + 50.0 * e - 9.99 * n), AlignArea::positioning);
   EXPECT_EQ(align_area(kSafety, e, c + 50.0 * e + 10.01 * n), AlignArea::evasive);  // beside the shade
-  EXPECT_EQ(align_area(kSafety, e, c - 50.0 * e), AlignArea::evasive);               // upstream
-  EXPECT_EQ(align_area(kSafety, e, c + 0.01 * e), AlignArea::positioning);           // just past the borderline
+  EXPECT_EQ(align_area(kSafety, e, c - 50.0 * e), AlignArea::evasive);              // upstream
+  EXPECT_EQ(align_area(kSafety, e, c + 0.01 * e), AlignArea::positioning);          // just past the borderline
   EXPECT_EQ(align_area(kSafety, e, c - 0.01 * e), AlignArea::evasive);
 }
 

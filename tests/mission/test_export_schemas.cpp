@@ -18,8 +18,8 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -28,9 +28,9 @@
 #include "deepguide/mission/plan_export.hpp"
 #include "deepguide/mission/route_export.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/world/obstacle_field.hpp"
-#include "deepguide/world/local_frame.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
+#include "deepguide/world/local_frame.hpp"
+#include "deepguide/world/obstacle_field.hpp"
 #include "test_support.hpp"
 
 using namespace deepguide;
@@ -204,17 +204,24 @@ TEST(ExportSchemas, GpxIsGpx11WithNamesElevationsAndExtensions) {
   ASSERT_TRUE(x.ok());
   EXPECT_EQ(x.all("/g:gpx/g:rte/g:name"), std::vector<std::string>{sample().mission.name});
   expect_names(x.all("//g:rtept/g:name"), "gpx name");
-  expect_each(x.numbers("//g:rtept/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "gpx lon");
-  expect_each(x.numbers("//g:rtept/@lat"), [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "gpx lat");
-  expect_each(x.numbers("//g:rtept/g:ele"), [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "gpx ele");
-  expect_each(x.numbers("//g:rtept/g:extensions/dg:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm,
-              "gpx depth");
-  expect_each(x.numbers("//g:rtept/g:extensions/dg:speed_mps"), [](const ExportWaypoint& w) { return w.speed_mps; },
-              1e-6, "gpx speed");
-  expect_each(x.numbers("//g:rtept/g:extensions/dg:hold_s"), [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6,
-              "gpx hold");
-  expect_each(x.numbers("//g:rtept/g:extensions/dg:radius_m"), [](const ExportWaypoint& w) { return w.radius_m; },
-              kCm, "gpx radius");
+  expect_each(
+      x.numbers("//g:rtept/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "gpx lon");
+  expect_each(
+      x.numbers("//g:rtept/@lat"), [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "gpx lat");
+  expect_each(
+      x.numbers("//g:rtept/g:ele"), [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "gpx ele");
+  expect_each(
+      x.numbers("//g:rtept/g:extensions/dg:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm,
+      "gpx depth");
+  expect_each(
+      x.numbers("//g:rtept/g:extensions/dg:speed_mps"), [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6,
+      "gpx speed");
+  expect_each(
+      x.numbers("//g:rtept/g:extensions/dg:hold_s"), [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6,
+      "gpx hold");
+  expect_each(
+      x.numbers("//g:rtept/g:extensions/dg:radius_m"), [](const ExportWaypoint& w) { return w.radius_m; }, kCm,
+      "gpx radius");
 }
 
 TEST(ExportSchemas, KmlIsKml22BelowTheSurfaceWithExtendedData) {
@@ -235,16 +242,23 @@ TEST(ExportSchemas, KmlIsKml22BelowTheSurfaceWithExtendedData) {
     ASSERT_EQ(std::sscanf(c.c_str(), " %lf,%lf,%lf", &a, &b, &z), 3) << c;
     lon.push_back(a), lat.push_back(b), alt.push_back(z);
   }
-  expect_each(lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "kml lon");
-  expect_each(lat, [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "kml lat");
-  expect_each(alt, [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "kml altitude");
+  expect_each(
+      lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "kml lon");
+  expect_each(
+      lat, [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "kml lat");
+  expect_each(
+      alt, [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "kml altitude");
   const auto field = [&](const char* name) {
     return x.numbers(points + "/k:ExtendedData//k:SimpleData[@name='" + name + "']");
   };
-  expect_each(field("depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "kml depth");
-  expect_each(field("speed_mps"), [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6, "kml speed");
-  expect_each(field("hold_s"), [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6, "kml hold");
-  expect_each(field("radius_m"), [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "kml radius");
+  expect_each(
+      field("depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "kml depth");
+  expect_each(
+      field("speed_mps"), [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6, "kml speed");
+  expect_each(
+      field("hold_s"), [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6, "kml hold");
+  expect_each(
+      field("radius_m"), [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "kml radius");
   // The line too is below the surface.
   const std::vector<std::string> line = x.all("//k:Placemark/k:LineString/k:coordinates");
   ASSERT_EQ(line.size(), 1u);
@@ -273,16 +287,19 @@ TEST(ExportSchemas, RtzIsRtz10WithDefaultsRadiiAndASchedule) {
     const std::vector<double> r = x.numbers("//r:waypoint[@id='" + std::to_string(i) + "']/@radius");
     radius.push_back(r.empty() ? 0.0 : r[0] * kNauticalMile);
   }
-  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "rtz radius", want);
-  expect_each(x.numbers("//r:waypoint/r:position/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg,
-              "rtz lon", want);
-  expect_each(x.numbers("//r:waypoint//r:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm,
-              "rtz depth", want);
+  expect_each(
+      radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "rtz radius", want);
+  expect_each(
+      x.numbers("//r:waypoint/r:position/@lon"), [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "rtz lon",
+      want);
+  expect_each(
+      x.numbers("//r:waypoint//r:depth_m"), [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "rtz depth", want);
   // The planned speed is the schedule's (knots), not a leg's speedMax.
   EXPECT_TRUE(x.all("//r:waypoint/r:leg/@speedMax").empty());
   const std::string element = "//r:schedules/r:schedule/r:calculated/r:sheduleElement";
-  expect_each(x.numbers(element + "/@speed"),
-              [](const ExportWaypoint& w) { return w.speed_mps / kMetresPerSecondPerKnot; }, 1e-3, "rtz speed", want);
+  expect_each(
+      x.numbers(element + "/@speed"), [](const ExportWaypoint& w) { return w.speed_mps / kMetresPerSecondPerKnot; },
+      1e-3, "rtz speed", want);
   std::vector<double> stays(want.size(), 0.0);
   for (std::size_t i = 1; i <= want.size(); ++i) {
     for (const std::string& s : x.all(element + "[@waypointId='" + std::to_string(i) + "']/@stay")) {
@@ -291,7 +308,8 @@ TEST(ExportSchemas, RtzIsRtz10WithDefaultsRadiiAndASchedule) {
       stays[i - 1] = h * 3600.0 + m * 60.0 + sec;
     }
   }
-  expect_each(stays, [](const ExportWaypoint& w) { return std::round(w.hold_s); }, 1e-9, "rtz stay", want);
+  expect_each(
+      stays, [](const ExportWaypoint& w) { return std::round(w.hold_s); }, 1e-9, "rtz stay", want);
 }
 
 TEST(ExportSchemas, TheMissionsRtzTurnsOnItsArcsWithFewerWaypoints) {
@@ -303,7 +321,8 @@ TEST(ExportSchemas, TheMissionsRtzTurnsOnItsArcsWithFewerWaypoints) {
   const Xml x(path, {{"r", "http://www.cirm.org/RTZ/1/0"}});
   ASSERT_TRUE(x.ok());
   const double fallback = x.numbers("//r:defaultWaypoint/@radius").at(0) * kNauticalMile;
-  const std::vector<double> lon = x.numbers("//r:waypoint/r:position/@lon"), lat = x.numbers("//r:waypoint/r:position/@lat");
+  const std::vector<double> lon = x.numbers("//r:waypoint/r:position/@lon"),
+                            lat = x.numbers("//r:waypoint/r:position/@lat");
   const LocalFrame& frame = sample().mission.frame;
   std::vector<Vec2> wp;
   std::vector<double> radius;
@@ -355,12 +374,18 @@ TEST(ExportSchemas, CsvOpensInGdalWithoutOptions) {
     EXPECT_STREQ(f->GetFieldAsString("crs"), sample().mission.frame.id().c_str());
   }
   expect_names(names, "csv name");
-  expect_each(lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "csv lon");
-  expect_each(lat, [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "csv lat");
-  expect_each(alt, [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "csv altitude");
-  expect_each(speed, [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6, "csv speed");
-  expect_each(hold, [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6, "csv hold");
-  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "csv radius");
+  expect_each(
+      lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "csv lon");
+  expect_each(
+      lat, [](const ExportWaypoint& w) { return w.lonlat.y(); }, kDeg, "csv lat");
+  expect_each(
+      alt, [](const ExportWaypoint& w) { return -w.depth_m; }, kCm, "csv altitude");
+  expect_each(
+      speed, [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-6, "csv speed");
+  expect_each(
+      hold, [](const ExportWaypoint& w) { return w.hold_s; }, 1e-6, "csv hold");
+  expect_each(
+      radius, [](const ExportWaypoint& w) { return w.radius_m; }, kCm, "csv radius");
 }
 
 TEST(ExportSchemas, GeoJsonCarriesEveryField) {
@@ -384,11 +409,16 @@ TEST(ExportSchemas, GeoJsonCarriesEveryField) {
     radius.push_back(p.at("radius_m"));
   }
   expect_names(names, "geojson name");
-  expect_each(lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "geojson lon");
-  expect_each(depth, [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "geojson depth");
-  expect_each(speed, [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-9, "geojson speed");
-  expect_each(hold, [](const ExportWaypoint& w) { return w.hold_s; }, 1e-9, "geojson hold");
-  expect_each(radius, [](const ExportWaypoint& w) { return w.radius_m; }, 1e-9, "geojson radius");
+  expect_each(
+      lon, [](const ExportWaypoint& w) { return w.lonlat.x(); }, kDeg, "geojson lon");
+  expect_each(
+      depth, [](const ExportWaypoint& w) { return w.depth_m; }, kCm, "geojson depth");
+  expect_each(
+      speed, [](const ExportWaypoint& w) { return w.speed_mps; }, 1e-9, "geojson speed");
+  expect_each(
+      hold, [](const ExportWaypoint& w) { return w.hold_s; }, 1e-9, "geojson hold");
+  expect_each(
+      radius, [](const ExportWaypoint& w) { return w.radius_m; }, 1e-9, "geojson radius");
 }
 
 TEST(ExportSchemas, ABrokenFileFailsTheSchemaCheck) {
@@ -398,10 +428,11 @@ TEST(ExportSchemas, ABrokenFileFailsTheSchemaCheck) {
                                     "<?xml version=\"1.0\"?><gpx version=\"1.1\" creator=\"t\" "
                                     "xmlns=\"http://www.topografix.com/GPX/1/1\"><rte><rtept lon=\"1\"/></rte></gpx>");
   EXPECT_NE(schema_errors(schema("gpx/gpx.xsd"), gpx), "");
-  const std::string rtz = dir.write("bad.rtz",
-                                    "<?xml version=\"1.0\"?><route xmlns=\"http://www.cirm.org/RTZ/1/0\" version=\"1.0\">"
-                                    "<routeInfo routeName=\"x\"/><waypoints><waypoint id=\"1\"><position lat=\"1\" "
-                                    "lon=\"2\"/></waypoint></waypoints></route>");
+  const std::string rtz =
+      dir.write("bad.rtz",
+                "<?xml version=\"1.0\"?><route xmlns=\"http://www.cirm.org/RTZ/1/0\" version=\"1.0\">"
+                "<routeInfo routeName=\"x\"/><waypoints><waypoint id=\"1\"><position lat=\"1\" "
+                "lon=\"2\"/></waypoint></waypoints></route>");
   EXPECT_NE(schema_errors(schema("rtz/rtz_1_0.xsd"), rtz), "");
   const std::string kml = dir.write("bad.kml",
                                     "<?xml version=\"1.0\"?><kml xmlns=\"http://www.opengis.net/kml/2.2\"><Placemark>"
@@ -421,7 +452,8 @@ TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
   ObstacleSet set;
   PolygonObstacle box;
   box.id = "box";
-  for (const Vec2& q : {Vec2(0, 0), Vec2(0, 60), Vec2(80, 60), Vec2(80, 0), Vec2(0, 0)}) box.footprint.outer().push_back(to_bg(o + q));
+  for (const Vec2& q : {Vec2(0, 0), Vec2(0, 60), Vec2(80, 60), Vec2(80, 0), Vec2(0, 0)})
+    box.footprint.outer().push_back(to_bg(o + q));
   boost::geometry::correct(box.footprint);
   set.polygons.push_back(box);
   EllipticCylinder rock;
@@ -455,7 +487,8 @@ TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
   ASSERT_EQ(turn.size(), 1u);
   const double r = turn[0] * kNauticalMile;
   EXPECT_NEAR(r, radius, kCm);
-  const std::vector<double> lon = x.numbers("//r:waypoint/r:position/@lon"), lat = x.numbers("//r:waypoint/r:position/@lat");
+  const std::vector<double> lon = x.numbers("//r:waypoint/r:position/@lon"),
+                            lat = x.numbers("//r:waypoint/r:position/@lat");
   ASSERT_EQ(lon.size(), lat.size());
   std::vector<Vec2> wp;
   for (std::size_t i = 0; i < lon.size(); ++i) wp.push_back(frame.from_lonlat(lon[i], lat[i]));
@@ -465,11 +498,12 @@ TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
   // between its neighbours' (the polyline's corners are a tangent length
   // from the arc's tangent points; positions to 1e-7 degrees bend legs of a
   // few centimetres by a few milliradians).
-  const std::vector<Vec2> track = ecdis_track(wp, std::vector<double>(wp.size(), r),
-                                              [](std::size_t i, bool fits) { EXPECT_TRUE(fits) << i; }, 0.2);
+  const std::vector<Vec2> track = ecdis_track(
+      wp, std::vector<double>(wp.size(), r), [](std::size_t i, bool fits) { EXPECT_TRUE(fits) << i; }, 0.2);
   const ObstacleField field(set, margin);
   double least = 1e9, furthest = 0.0;
-  for (std::size_t i = 0; i + 1 < track.size(); ++i) least = std::min(least, field.segment_clearance(track[i], track[i + 1]).distance);
+  for (std::size_t i = 0; i + 1 < track.size(); ++i)
+    least = std::min(least, field.segment_clearance(track[i], track[i + 1]).distance);
   for (const Vec2& q : track) {
     double nearest = 1e9;
     for (const RouteLeg& leg : plan.result.legs) {
@@ -489,6 +523,8 @@ TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
   }
   EXPECT_GE(least, margin - 1e-3);
   EXPECT_LT(furthest, 0.05);  // the turns are the arcs (to the RTZ's 1e-7 degrees and the sampling)
-  std::printf("[ export ] RTZ of a route within %.0f m: %zu waypoints, %d arcs; the ECDIS track keeps %.3f m, "
-              "at most %.3f m off the planned arcs\n", radius, wp.size(), arcs, least, furthest);
+  std::printf(
+      "[ export ] RTZ of a route within %.0f m: %zu waypoints, %d arcs; the ECDIS track keeps %.3f m, "
+      "at most %.3f m off the planned arcs\n",
+      radius, wp.size(), arcs, least, furthest);
 }

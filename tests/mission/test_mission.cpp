@@ -10,15 +10,15 @@
 #include <string>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/evaluation/suite.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/collision_observation.hpp"
-#include "deepguide/mission/mission_environment.hpp"
-#include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/mission/mission.hpp"
-#include "deepguide/evaluation/suite.hpp"
+#include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/mission/plan_export.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
-#include "deepguide/mission/plan_export.hpp"
+#include "deepguide/world/obstacle_field.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
 
@@ -81,9 +81,10 @@ TEST(Mission, TheSampleMissionReads) {
 TEST(Mission, ACornerBecomesAnArcOfTheTurnRadius) {
   // From (0, 0) east 400 m, then north 400 m, at 4 kn: R = 2.0578 / (5 deg/s) = 23.58 m.
   ScratchDir dir;
-  const std::string path = dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 0}\nmanoeuvres:\n"
-                                               "  - track: {depth_m: 10, speed_kn: 4, waypoints: [{x: 400, y: 0}, "
-                                               "{x: 400, y: 400}]}\n");
+  const std::string path = dir.write("m.yaml",
+                                     "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 0}\nmanoeuvres:\n"
+                                     "  - track: {depth_m: 10, speed_kn: 4, waypoints: [{x: 400, y: 0}, "
+                                     "{x: 400, y: 400}]}\n");
   const Mission m = read_mission(path);
   const MissionPlan plan = expand_mission(m, {});
   const double r = turn_radius(m.vehicle, 4.0 * 1852.0 / 3600.0);
@@ -103,8 +104,9 @@ TEST(Mission, ASurveyIsItsLinesAndUTurns) {
   // A 500 m x 300 m rectangle, lines north-south 100 m apart at 3 kn (R = 17.68 m):
   // five lines at x = 50 .. 450, each 300 m, four U-turns of two quarter arcs and 100 - 2R.
   ScratchDir dir;
-  const std::string path = dir.write(
-      "m.yaml", "crs: EPSG:32632\nstart: {x: 500050, y: -100, depth_m: 0}\nmanoeuvres:\n"
+  const std::string path =
+      dir.write("m.yaml",
+                "crs: EPSG:32632\nstart: {x: 500050, y: -100, depth_m: 0}\nmanoeuvres:\n"
                 "  - survey:\n      depth_m: 20\n      speed_kn: 3\n      line_spacing_m: 100\n      heading_deg: 0\n"
                 "      area: [{x: 500000, y: 0}, {x: 500500, y: 0}, {x: 500500, y: 300}, {x: 500000, y: 300}]\n");
   const Mission m = read_mission(path);
@@ -129,8 +131,9 @@ TEST(Mission, ASurveyIsItsLinesAndUTurns) {
   }
   // Spacing under twice the radius is refused.
   const std::string tight = dir.write(
-      "t.yaml", "crs: EPSG:32632\nstart: {x: 50, y: -100}\nmanoeuvres:\n"
-                "  - survey: {speed_kn: 3, line_spacing_m: 20, area: [{x: 0, y: 0}, {x: 500, y: 0}, {x: 500, y: 300}]}\n");
+      "t.yaml",
+      "crs: EPSG:32632\nstart: {x: 50, y: -100}\nmanoeuvres:\n"
+      "  - survey: {speed_kn: 3, line_spacing_m: 20, area: [{x: 0, y: 0}, {x: 500, y: 0}, {x: 500, y: 300}]}\n");
   try {
     expand_mission(read_mission(tight), {});
     FAIL();
@@ -141,10 +144,10 @@ TEST(Mission, ASurveyIsItsLinesAndUTurns) {
 
 TEST(Mission, AGpsUpdateSurfacesAndDivesAndGoingAroundKeepsTheDistance) {
   ScratchDir dir;
-  const std::string path = dir.write(
-      "m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 10}\nmanoeuvres:\n"
-                "  - gps_update: {hold_s: 90, depth_m: 12}\n"
-                "  - identify: {object: rock, mode: around, distance_m: 25, speed_kn: 2}\n");
+  const std::string path = dir.write("m.yaml",
+                                     "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 10}\nmanoeuvres:\n"
+                                     "  - gps_update: {hold_s: 90, depth_m: 12}\n"
+                                     "  - identify: {object: rock, mode: around, distance_m: 25, speed_kn: 2}\n");
   const Mission m = read_mission(path);
   ObstacleSet set;
   set.ellipses.push_back(test::disc(300.0, 0.0, 20.0, "rock"));
@@ -230,8 +233,9 @@ TEST(Mission, BadFilesAreOneLineNamingThePlace) {
 
 TEST(CollisionObservation, ObstaclesAndShoalsOnTheTrackWithWhereTheDangerBegins) {
   ScratchDir dir;
-  const std::string path = dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
-                                               "  - track: {depth_m: 8, waypoints: [{x: 400, y: 0}]}\n");
+  const std::string path = dir.write("m.yaml",
+                                     "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
+                                     "  - track: {depth_m: 8, waypoints: [{x: 400, y: 0}]}\n");
   const Mission m = read_mission(path);
   const MissionPlan plan = expand_mission(m, {});
   ObservationOptions o;  // margin 5 + half width 0.5 (+ 0.1 for arcs' chords): corridor 5.6 m
@@ -264,8 +268,9 @@ TEST(CollisionObservation, ObstaclesAndShoalsOnTheTrackWithWhereTheDangerBegins)
 
 TEST(CollisionObservation, WaypointsOnLandOrInsideAnObstacleAreRefused) {
   ScratchDir dir;
-  const std::string path = dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
-                                               "  - track: {depth_m: 8, waypoints: [{x: 100, y: 0}, {x: 200, y: 0}]}\n");
+  const std::string path = dir.write("m.yaml",
+                                     "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
+                                     "  - track: {depth_m: 8, waypoints: [{x: 100, y: 0}, {x: 200, y: 0}]}\n");
   const Mission m = read_mission(path);
   MissionEnvironment env;
   env.obstacles.ellipses.push_back(test::disc(200.0, 5.0, 10.0, "rock"));
@@ -297,9 +302,10 @@ TEST(CollisionObservation, WaypointsOnLandOrInsideAnObstacleAreRefused) {
 TEST(CollisionObservation, ALaterPassByTheSameRockIsAConflictOfItsOwn) {
   // Out 3 km east past a rock and back along the same line: two conflicts.
   ScratchDir dir;
-  const std::string path = dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
-                                               "  - track: {depth_m: 8, waypoints: [{x: 3000, y: 0}, {x: 3000, y: 60}, "
-                                               "{x: 0, y: 60}]}\n");
+  const std::string path = dir.write("m.yaml",
+                                     "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n"
+                                     "  - track: {depth_m: 8, waypoints: [{x: 3000, y: 0}, {x: 3000, y: 60}, "
+                                     "{x: 0, y: 60}]}\n");
   const Mission m = read_mission(path);
   const MissionPlan plan = expand_mission(m, {});
   ObstacleSet set;
@@ -314,13 +320,14 @@ TEST(CollisionObservation, ALaterPassByTheSameRockIsAConflictOfItsOwn) {
 TEST(Mission, EdgeCasesTheReviewFound) {
   ScratchDir dir;
   // A tiny line spacing is refused at once (it once made lines until memory ran out).
-  const std::string tiny = dir.write(
-      "t.yaml", kHeader + "manoeuvres:\n  - survey: {line_spacing_m: 1e-300, area: [{x: 500000, y: 6000000}, "
-                          "{x: 500500, y: 6000000}, {x: 500500, y: 6000300}]}\n");
+  const std::string tiny =
+      dir.write("t.yaml", kHeader +
+                              "manoeuvres:\n  - survey: {line_spacing_m: 1e-300, area: [{x: 500000, y: 6000000}, "
+                              "{x: 500500, y: 6000000}, {x: 500500, y: 6000300}]}\n");
   EXPECT_THROW(expand_mission(read_mission(tiny), {}), InputError);
   // A name with a line break stays one line in messages.
-  const std::string named = dir.write(
-      "n.yaml", kHeader + "manoeuvres:\n  - identify: {name: \"two\\nlines\", object: nowhere}\n");
+  const std::string named =
+      dir.write("n.yaml", kHeader + "manoeuvres:\n  - identify: {name: \"two\\nlines\", object: nowhere}\n");
   try {
     expand_mission(read_mission(named), {});
     FAIL();
@@ -328,9 +335,10 @@ TEST(Mission, EdgeCasesTheReviewFound) {
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
   }
   // A gps_update with nothing under it takes the defaults; turn_radius_m 0 means the vehicle's.
-  const std::string bare = dir.write(
-      "b.yaml", kHeader + "manoeuvres:\n  - gps_update:\n  - survey: {turn_radius_m: 0, line_spacing_m: 100, area: "
-                          "[{x: 500000, y: 6000000}, {x: 500500, y: 6000000}, {x: 500500, y: 6000300}]}\n");
+  const std::string bare =
+      dir.write("b.yaml", kHeader +
+                              "manoeuvres:\n  - gps_update:\n  - survey: {turn_radius_m: 0, line_spacing_m: 100, area: "
+                              "[{x: 500000, y: 6000000}, {x: 500500, y: 6000000}, {x: 500500, y: 6000300}]}\n");
   const Mission m = read_mission(bare);
   EXPECT_DOUBLE_EQ(std::get<GpsUpdateSpec>(m.manoeuvres[0].spec).hold_s, 60.0);
   EXPECT_NO_THROW(expand_mission(m, {}));
@@ -338,17 +346,18 @@ TEST(Mission, EdgeCasesTheReviewFound) {
   EXPECT_NE(error_of(dir.write("c.yaml", kHeader + "environment: {current: banana}\nmanoeuvres:\n  - gps_update:\n"))
                 .find("current"),
             std::string::npos);
-  EXPECT_NE(error_of(dir.write("f.yaml", kHeader + "environment: {current_file: nope.nc}\nmanoeuvres:\n  - gps_update:\n"))
-                .find("existing file"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(dir.write("f.yaml", kHeader + "environment: {current_file: nope.nc}\nmanoeuvres:\n  - gps_update:\n"))
+          .find("existing file"),
+      std::string::npos);
   // A missing vehicle file names the mission and the key too.
   const std::string v = error_of(dir.write("v.yaml", kHeader + "vehicle: nope.yaml\nmanoeuvres:\n  - gps_update:\n"));
   EXPECT_NE(v.find("v.yaml"), std::string::npos) << v;
   EXPECT_NE(v.find("'vehicle'"), std::string::npos) << v;
   // Waypoints given as a mapping say so.
-  EXPECT_NE(error_of(dir.write("w.yaml", kHeader + "manoeuvres:\n  - track: {waypoints: {x: 1, y: 2}}\n"))
-                .find("a mapping"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(dir.write("w.yaml", kHeader + "manoeuvres:\n  - track: {waypoints: {x: 1, y: 2}}\n")).find("a mapping"),
+      std::string::npos);
 }
 
 TEST(Mission, ATrackFollowsARouteFileFromAnEcdisOrOpenCpn) {
@@ -360,16 +369,17 @@ TEST(Mission, ATrackFollowsARouteFileFromAnEcdisOrOpenCpn) {
   export_plan(sample, plan, dir.file("sample.gpx"), ExportFormat::gpx);
   // RTZ carries each arc as the corners an ECDIS turns it from; GPX as chords.
   for (const char* file : {"sample.rtz", "sample.gpx"}) {
-    const std::vector<ExportWaypoint> want = std::string(file).ends_with(".rtz")
-                                                 ? export_corner_waypoints(sample, plan)
-                                                 : export_waypoints(sample, plan);
+    const std::vector<ExportWaypoint> want =
+        std::string(file).ends_with(".rtz") ? export_corner_waypoints(sample, plan) : export_waypoints(sample, plan);
     const std::string path = dir.write(std::string(file) + ".yaml",
                                        "crs: EPSG:32632\nstart: {x: 580700, y: 6033450, depth_m: 0}\nmanoeuvres:\n"
-                                       "  - track: {depth_m: 5, route_file: " + std::string(file) + "}\n");
+                                       "  - track: {depth_m: 5, route_file: " +
+                                           std::string(file) + "}\n");
     const Mission m = read_mission(path);
     const auto& t = std::get<TrackSpec>(m.manoeuvres.at(0).spec);
     ASSERT_EQ(t.waypoints.size(), want.size()) << file;
-    for (std::size_t i = 0; i < want.size(); ++i) ASSERT_LT((t.waypoints[i] - want[i].xy).norm(), 0.01) << file << " " << i;
+    for (std::size_t i = 0; i < want.size(); ++i)
+      ASSERT_LT((t.waypoints[i] - want[i].xy).norm(), 0.01) << file << " " << i;
   }
 }
 

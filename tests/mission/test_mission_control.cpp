@@ -60,9 +60,10 @@ double around_disc(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
 TEST(PlanSplice, AStretchIsReplacedAndTheRestRenumbered) {
   ScratchDir dir;
   // East 400 m at 8 m, then a GPS fix, then east another 200 m at 12 m.
-  const Mission m = mission_from(dir, "manoeuvres:\n  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
-                                      "  - gps_update: {hold_s: 100, depth_m: 12}\n"
-                                      "  - goto: {speed_mps: 2, position: {x: 600, y: 0}}\n");
+  const Mission m = mission_from(dir,
+                                 "manoeuvres:\n  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
+                                 "  - gps_update: {hold_s: 100, depth_m: 12}\n"
+                                 "  - goto: {speed_mps: 2, position: {x: 600, y: 0}}\n");
   const MissionPlan plan = expand_mission(m, {});
   ASSERT_EQ(plan.basics.size(), 4u);  // line, point (surface), point (dive), line
   const PlanPosition p = position_at(plan, 100.0);
@@ -95,7 +96,8 @@ TEST(PlanSplice, AStretchIsReplacedAndTheRestRenumbered) {
   EXPECT_DOUBLE_EQ(spliced.basics[4].hold_s, 100.0);
 
   // A line that changes depth, and an arc, cut part-way.
-  const Mission turn = mission_from(dir, "manoeuvres:\n  - track: {depth_m: 20, waypoints: [{x: 400, y: 0}, {x: 400, y: 400}]}\n");
+  const Mission turn =
+      mission_from(dir, "manoeuvres:\n  - track: {depth_m: 20, waypoints: [{x: 400, y: 0}, {x: 400, y: 400}]}\n");
   const MissionPlan round = expand_mission(turn, {});
   ASSERT_EQ(round.basics.size(), 3u);
   const double r = round.basics[1].radius_m;
@@ -220,8 +222,9 @@ TEST(MissionControl, ARockOnTheTrackIsEvadedTheShortestWayRound) {
 
 TEST(MissionControl, ARockToIdentifyIsGoneRoundAtTheIdentificationDistance) {
   ScratchDir dir;
-  const Mission m = mission_from(dir, "control: {identify: [rock], identify_distance_m: 30}\n"
-                                      "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
+  const Mission m = mission_from(dir,
+                                 "control: {identify: [rock], identify_distance_m: 30}\n"
+                                 "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
   ASSERT_EQ(m.control.identify.size(), 1u);
   MissionEnvironment env;
   env.obstacles.ellipses.push_back(test::disc(500.0, 10.0, 20.0, "rock"));
@@ -333,8 +336,9 @@ TEST(NoGo, TheSeaFloorsRowsAreNotFlipped) {
 
 TEST(MissionControl, AnObjectToIdentifyWhoseDangerJoinsAnEvasionIsSaidSo) {
   ScratchDir dir;
-  const Mission m = mission_from(dir, "control: {identify: [wreck]}\n"
-                                      "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
+  const Mission m = mission_from(dir,
+                                 "control: {identify: [wreck]}\n"
+                                 "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n");
   MissionEnvironment env;
   // Zones of radius 15.7 m, 38.6 m apart: closer than the lead (2 x 23.6 + 5.7 m), one stretch.
   env.obstacles.ellipses.push_back(test::disc(450.0, 0.0, 10.0, "rock"));
@@ -430,8 +434,9 @@ TEST(PlanCheck, ACurrentStrongerThanTheVehicleFailsTheLegsItBeats) {
 
 TEST(PlanCheck, TheMissionsCurrentIsTurnedIntoTheLocalFrame) {
   ScratchDir dir;
-  const Mission m = mission_from(dir, "environment: {current: '3,90'}\n"
-                                      "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 100, y: 0}]}\n");
+  const Mission m = mission_from(dir,
+                                 "environment: {current: '3,90'}\n"
+                                 "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 100, y: 0}]}\n");
   const Vec2 c = constant_current(m);
   EXPECT_NEAR(c.norm(), 3.0, 1e-9);
   // Towards true east; the grid is turned from true north by the convergence at the start.

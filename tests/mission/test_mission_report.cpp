@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <string>
 
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/mission/mission_report.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/simulation/mission_run_report.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 

@@ -139,8 +139,9 @@ TEST(MoosHelm, ALogReadsBackAgainstThePlan) {
     log += std::to_string(t) + " NAV_X uSimMarineV22 3\n";
     log += std::to_string(t) + " NAV_Y uSimMarineV22 " + std::to_string(10 * i) + "\n";
   }
-  log += "11.2 DG_LEG pHelmIvP 2\n12.0 IVPHELM_ALLSTOP pHelmIvP clear\n30.0 DG_LEG pHelmIvP 3\n"
-         "30.0 DG_DONE pHelmIvP true\n30.3 IVPHELM_ALLSTOP pHelmIvP NothingToDo\n";
+  log +=
+      "11.2 DG_LEG pHelmIvP 2\n12.0 IVPHELM_ALLSTOP pHelmIvP clear\n30.0 DG_LEG pHelmIvP 3\n"
+      "30.0 DG_DONE pHelmIvP true\n30.3 IVPHELM_ALLSTOP pHelmIvP NothingToDo\n";
   const MoosLog read = read_moos_alog(dir.write("run.alog", log));
   ASSERT_EQ(read.nav.size(), 11u);
   EXPECT_DOUBLE_EQ(read.nav[4].depth, 4.0);
@@ -194,9 +195,7 @@ TEST(MoosHelm, TheRealHelmSailsTheExportToItsEnd) {
   MoosCommunityOptions options;
   std::random_device rd;
   options.port = 9100 + static_cast<int>(rd() % 800);  // beside another community on this machine
-  {
-    std::ofstream(dir.file("mission.moos")) << moos_community(plan, deepest, p.route.max_speed_mps, options);
-  }
+  { std::ofstream(dir.file("mission.moos")) << moos_community(plan, deepest, p.route.max_speed_mps, options); }
   // pAntler runs until told; stop it once the helm posts the end flag (or after 15 simulated
   // minutes per kilometre, at the warp, and a margin).
   const int limit_s = 60 + static_cast<int>(p.plan.length_m / 1000.0 * 900.0 / options.time_warp);
@@ -227,10 +226,11 @@ TEST(MoosHelm, TheRealHelmSailsTheExportToItsEnd) {
     std::filesystem::copy(dir.path(), keep,
                           std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
   }
-  std::printf("sailed %s: %zu phases, done %d, in order %d, %.0f s; off the route median %.2f m, 95th %.2f m, "
-              "max %.2f m; worst depth miss %.2f m (phase %zu)\n",
-              mission_file.c_str(), plan.phases.size(), r.done, r.in_order, r.sailed_s, r.median_off_m, r.p95_off_m,
-              r.max_off_m, r.worst_depth_miss_m, r.worst_depth_phase);
+  std::printf(
+      "sailed %s: %zu phases, done %d, in order %d, %.0f s; off the route median %.2f m, 95th %.2f m, "
+      "max %.2f m; worst depth miss %.2f m (phase %zu)\n",
+      mission_file.c_str(), plan.phases.size(), r.done, r.in_order, r.sailed_s, r.median_off_m, r.p95_off_m,
+      r.max_off_m, r.worst_depth_miss_m, r.worst_depth_phase);
   ASSERT_FALSE(log.helm_states.empty());
   for (const std::string& s : log.helm_states) EXPECT_NE(s, "MALCONFIG");
   EXPECT_TRUE(r.done);

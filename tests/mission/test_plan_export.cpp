@@ -17,8 +17,8 @@
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
-#include "deepguide/mission/moos_helm.hpp"
 #include "deepguide/mission/mission_control.hpp"
+#include "deepguide/mission/moos_helm.hpp"
 #include "deepguide/mission/plan_export.hpp"
 #include "test_support.hpp"
 
@@ -176,7 +176,8 @@ TEST(PlanExport, QGroundControlPlanFollowsItsFormat) {
   // file (lon/lat to metres locally), at least 2 m, at most half the shorter
   // leg, 2 m at the ends and where the vehicle holds.
   const auto& w = sample().waypoints;
-  const double route_turn = export_route(sample().mission, sample().plan, ExportOptions{}.arc_tolerance_m, false).turn_radius_m;
+  const double route_turn =
+      export_route(sample().mission, sample().plan, ExportOptions{}.arc_tolerance_m, false).turn_radius_m;
   ASSERT_GT(route_turn, 5.0);
   int turning = 0;
   for (std::size_t i = 0; i < got.size(); ++i) {

@@ -15,9 +15,9 @@
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "test_support.hpp"
 #include "planning/current_cases.hpp"
 #include "planning/obstacle_builders.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -147,8 +147,8 @@ TEST(CostPlanning, TheEnergyRouteGoesAroundAnAdverseJet) {
   // The planner's energy (the search's cost and the route's pricing) against
   // an independent re-integration, within 0.1 %.
   const std::vector<double> cruise(around.legs.size(), kCruise);
-  const double redone = EnergyModel{}.power_w(kCruise) * reintegrated_time(cheapest.outcome.result.route.points,
-                                                                            cruise, jet);
+  const double redone =
+      EnergyModel{}.power_w(kCruise) * reintegrated_time(cheapest.outcome.result.route.points, cruise, jet);
   EXPECT_NEAR(around.energy_j / redone, 1.0, 1e-3);
   EXPECT_NEAR(cheapest.outcome.result.cost / around.energy_j, 1.0, 1e-12);
   const double redone_through =
@@ -166,7 +166,8 @@ TEST(CostPlanning, TheEnergyRouteGoesAroundAnAdverseJet) {
     const double v = e.legs[i].cost.speed_mps;
     EXPECT_GE(v, eco->min_speed_mps - 1e-12);
     EXPECT_LE(v, eco->max_speed_mps + 1e-12);
-    const std::vector<Vec2> leg{economical.outcome.result.route.points[i], economical.outcome.result.route.points[i + 1]};
+    const std::vector<Vec2> leg{economical.outcome.result.route.points[i],
+                                economical.outcome.result.route.points[i + 1]};
     redone_eco += EnergyModel{}.power_w(v) * reintegrated_time(leg, {v}, jet);
   }
   EXPECT_NEAR(e.energy_j / redone_eco, 1.0, 1e-3);
@@ -203,9 +204,9 @@ TEST(CostPlanning, AWaypointGridLetsTheRouteBendAroundAJetInOpenWater) {
   EXPECT_GT(farthest, 200.0);  // out of the jet's core
   // Re-integrated independently, within 0.1 %.
   const std::vector<double> cruise(around.legs.size(), kCruise);
-  EXPECT_NEAR(around.energy_j / (EnergyModel{}.power_w(kCruise) * reintegrated_time(bent.result.route.points, cruise,
-                                                                                     jet)),
-              1.0, 1e-3);
+  EXPECT_NEAR(
+      around.energy_j / (EnergyModel{}.power_w(kCruise) * reintegrated_time(bent.result.route.points, cruise, jet)),
+      1.0, 1e-3);
   // A* and Dijkstra agree on the lattice too.
   gridded.search = SearchAlgorithm::dijkstra;
   gridded.refine = false;
@@ -230,7 +231,9 @@ TEST(CostPlanning, WaypointGridsAreCheckedAndAvoidTheZones) {
   };
   expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, 0.0); }), {"--waypoint-grid", "> 0"});
   expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, -5.0); }), {"--waypoint-grid", "-5"});
-  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1e6, 1e6}, 10.0); }),
+  expect_error(error_of([] {
+                 waypoint_grid_for({0, 0}, {1e6, 1e6}, 10.0);
+               }),
                {"--waypoint-grid", "at most 40000", "spacing of at least"});
   expect_error(error_of([] {
                  PlannerOptions o = options_with(nullptr, SearchAlgorithm::astar, GraphKind::tangent);
@@ -241,8 +244,8 @@ TEST(CostPlanning, WaypointGridsAreCheckedAndAvoidTheZones) {
   // Lattice points never lie inside a zone, and routes through the lattice pass the checker.
   ObstacleSet set;
   set.polygons.push_back(box(-100.0, -300.0, 100.0, 300.0, "reef"));
-  auto m = model_of(CostKind::time, steady_current([](const Vec2& p) { return Vec2(0.0, 0.8 * std::tanh(p.x() / 300.0)); }),
-                    0.8);
+  auto m = model_of(CostKind::time,
+                    steady_current([](const Vec2& p) { return Vec2(0.0, 0.8 * std::tanh(p.x() / 300.0)); }), 0.8);
   PlannerOptions o = options_with(m);
   o.grid = waypoint_grid_for({-800.0, 0.0}, {800.0, 0.0}, 37.0);
   Planner planner(set, o);
@@ -298,7 +301,8 @@ TEST(CostPlanning, TheTideChoosesTheSideAndTheEtasHold) {
   const auto field = [=](const Vec2& p, double t) {
     return Vec2(amp * std::tanh(p.y() / 150.0) * std::cos(2.0 * M_PI * t / period), 0.0);
   };
-  auto m = model_of(CostKind::time, [=](const Vec2& p, double t) -> std::optional<Vec2> { return field(p, t); }, amp);
+  auto m = model_of(
+      CostKind::time, [=](const Vec2& p, double t) -> std::optional<Vec2> { return field(p, t); }, amp);
   m->steady = false;
   m->time_first_s = 0.0;
   m->time_last_s = 2.0 * period;
@@ -355,12 +359,13 @@ TEST(CostPlanning, LeavingLaterNeverArrivesEarlier) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double period = 2400.0;
-  auto m = model_of(CostKind::time,
-                    [&](const Vec2& p, double t) -> std::optional<Vec2> {
-                      const double phase = 2.0 * M_PI * t / period + 0.002 * p.x();
-                      return Vec2(1.8 * std::sin(phase), 0.6 * std::cos(0.003 * p.y() + phase));
-                    },
-                    1.9);
+  auto m = model_of(
+      CostKind::time,
+      [&](const Vec2& p, double t) -> std::optional<Vec2> {
+        const double phase = 2.0 * M_PI * t / period + 0.002 * p.x();
+        return Vec2(1.8 * std::sin(phase), 0.6 * std::cos(0.003 * p.y() + phase));
+      },
+      1.9);
   m->steady = false;
   m->time_first_s = 0.0;
   m->time_last_s = 1e7;
@@ -426,8 +431,8 @@ TEST(CostPlanning, BadModelsAreRefused) {
   m.economical = false;
   m.steady = true;
   try {
-    Planner planner(ObstacleSet{}, options_with(std::make_shared<CostModel>(m), SearchAlgorithm::astar,
-                                                GraphKind::tangent));
+    Planner planner(ObstacleSet{},
+                    options_with(std::make_shared<CostModel>(m), SearchAlgorithm::astar, GraphKind::tangent));
     FAIL() << "the tangent graph took an energy model";
   } catch (const InputError& e) {
     expect_error(e.what(), {"--cost energy", "visibility"});
@@ -435,7 +440,8 @@ TEST(CostPlanning, BadModelsAreRefused) {
 }
 
 TEST(CostPlanning, ALegStillUnderWayAfterTheForecastIsInfeasible) {
-  auto m = model_of(CostKind::time, [](const Vec2&, double) -> std::optional<Vec2> { return Vec2(0.0, 0.0); }, 0.0);
+  auto m = model_of(
+      CostKind::time, [](const Vec2&, double) -> std::optional<Vec2> { return Vec2(0.0, 0.0); }, 0.0);
   m->steady = false;
   m->time_first_s = 0.0;
   m->time_last_s = 400.0;  // 823 m in 400 s at cruise

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <string>
 
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/depth_plan_report.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "planning/obstacle_builders.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -47,8 +47,9 @@ TEST(DepthPlanReport, OpenWaterIsAStraightLevelLegInTextAndJson) {
   EXPECT_FALSE(j.contains("min_floor_gap_m"));  // no floor, no gap
   const std::string text = report.to_text();
   EXPECT_EQ(text.rfind("length           300.00 m in depth, ", 0), 0u) << text;
-  EXPECT_NE(text.find("depth            20.0 m to 20.0 m; band 10.0 m to 50.0 m; steepest leg 0.0 deg (dive 20.0 deg)\n"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find("depth            20.0 m to 20.0 m; band 10.0 m to 50.0 m; steepest leg 0.0 deg (dive 20.0 deg)\n"),
+      std::string::npos)
       << text;
   EXPECT_EQ(text.find("sea floor"), std::string::npos) << text;
   ASSERT_EQ(report.waypoint_properties().size(), report.route().points.size());
@@ -74,7 +75,8 @@ TEST(DepthPlanReport, BadRequestsAreOneLineErrors) {
   const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
   DepthPlanRequest r = open_water();
   r.goal_depth_m = std::nan("");
-  deepguide::test::expect_one_line_error([&] { plan_depth_request(frame, r); }, "expected the start's and the goal's depth");
+  deepguide::test::expect_one_line_error([&] { plan_depth_request(frame, r); },
+                                         "expected the start's and the goal's depth");
   r = open_water();
   r.charts = {"/nonexistent/chart.tif"};
   deepguide::test::expect_one_line_error([&] { plan_depth_request(frame, r); }, "/nonexistent/chart.tif");

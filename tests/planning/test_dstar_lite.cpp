@@ -32,7 +32,6 @@ QuadtreeOptions area(double x0, double y0, double x1, double y1, double cell) {
   return q;
 }
 
-
 }  // namespace
 
 TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
@@ -41,8 +40,8 @@ TEST(DStarLite, RepairsCostWhatAStarFromScratchFinds) {
   int compared = 0, found = 0;
   for (int scenario = 0; scenario < 25; ++scenario) {
     ObstacleSet set;
-    for (int i = 0; i < 8; ++i) set.ellipses.push_back(disc(100 + 400 * u(rng), 100 + 400 * u(rng), 10 + 30 * u(rng),
-                                                            "e" + std::to_string(i)));
+    for (int i = 0; i < 8; ++i)
+      set.ellipses.push_back(disc(100 + 400 * u(rng), 100 + 400 * u(rng), 10 + 30 * u(rng), "e" + std::to_string(i)));
     const ObstacleField field(set, 5.0);
     const PlanningProblem problem{{5.0, 300.0 + 100 * (u(rng) - 0.5)}, {595.0, 300.0 + 100 * (u(rng) - 0.5)}};
     if (!field.is_free(problem.start) || !field.is_free(problem.goal)) continue;
@@ -117,9 +116,9 @@ TEST(DStarLite, TheVehicleNeverShuttlesBetweenTwoCells) {
       const Vec2 a = route[i], b = route[i + 1];
       if ((a.x() - 600.0) * (b.x() - 600.0) > 0.0 || a.x() == b.x()) continue;
       const double y = a.y() + (600.0 - a.x()) / (b.x() - a.x()) * (b.y() - a.y());
-      return static_cast<int>(std::min_element(std::begin(gaps), std::end(gaps), [y](double p, double q) {
-                                return std::abs(p - y) < std::abs(q - y);
-                              }) - std::begin(gaps));
+      return static_cast<int>(std::min_element(std::begin(gaps), std::end(gaps),
+                                               [y](double p, double q) { return std::abs(p - y) < std::abs(q - y); }) -
+                              std::begin(gaps));
     }
     return -1;
   };
@@ -147,7 +146,8 @@ TEST(DStarLite, TheVehicleNeverShuttlesBetweenTwoCells) {
   // Where each report reached the vehicle: the track index at its distance sailed.
   const auto& t = replay.track_vertices;
   std::vector<double> sailed{0.0};
-  for (std::size_t i = 1; i < replay.track.size(); ++i) sailed.push_back(sailed.back() + (replay.track[i] - replay.track[i - 1]).norm());
+  for (std::size_t i = 1; i < replay.track.size(); ++i)
+    sailed.push_back(sailed.back() + (replay.track[i] - replay.track[i - 1]).norm());
   std::vector<bool> report_at(t.size(), false);
   for (const Repair& r : replay.repairs) {
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -230,8 +230,7 @@ TEST(DStarLite, CollinearCellsDoNotHideARepairInRounding) {
     dstar.update_edge(n, n - 1, std::numeric_limits<double>::infinity());
     ASSERT_TRUE(dstar.compute());
     EXPECT_EQ(dstar.first_inconsistent(), -1) << "seed " << seed;
-    const SearchResult scratch =
-        shortest_path(graph, 1, n, SearchAlgorithm::dijkstra, [](GraphVertex) { return 0.0; });
+    const SearchResult scratch = shortest_path(graph, 1, n, SearchAlgorithm::dijkstra, [](GraphVertex) { return 0.0; });
     ASSERT_TRUE(scratch.found);
     EXPECT_NEAR(dstar.cost(), scratch.cost, 1e-9 * scratch.cost) << "seed " << seed;
     EXPECT_EQ(dstar.path().back(), static_cast<GraphVertex>(n));

@@ -9,10 +9,10 @@
 #include <numbers>
 #include <random>
 
-#include "obstacle_builders.hpp"
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
+#include "obstacle_builders.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -50,8 +50,8 @@ double shortest_csc(const Vec2& p0, double a0, const Vec2& p1, double a1, double
     const double d = v.norm();
     if (d < 2.0 * r) continue;
     const double psi = std::atan2(v.y(), v.x()) + first * std::asin(2.0 * r / d);
-    const double turns = first > 0 ? mod_two_pi(psi - a0) + mod_two_pi(psi - a1)
-                                   : mod_two_pi(a0 - psi) + mod_two_pi(a1 - psi);
+    const double turns =
+        first > 0 ? mod_two_pi(psi - a0) + mod_two_pi(psi - a1) : mod_two_pi(a0 - psi) + mod_two_pi(a1 - psi);
     best = std::min(best, std::sqrt(d * d - 4.0 * r * r) + r * turns);
   }
   return best;

@@ -84,7 +84,9 @@ TEST(LegCost, TheEconomicalSpeedBeatsEveryOtherSpeed) {
   EXPECT_NEAR(kEnergy.economical_speed_mps(), 2.06064, 1e-5);  // cbrt(1050 / 120) = cbrt(8.75)
   // Head, following, across and varying currents: no speed on a fine scan does better,
   // and a head current asks for more speed than a following one.
-  const CurrentAt swirl = [](const Vec2& p) { return Vec2(0.6 * std::sin(p.x() / 150.0), 0.8 * std::cos(p.x() / 90.0)); };
+  const CurrentAt swirl = [](const Vec2& p) {
+    return Vec2(0.6 * std::sin(p.x() / 150.0), 0.8 * std::cos(p.x() / 90.0));
+  };
   for (const CurrentAt& c : {uniform({-1.0, 0.0}), uniform({1.0, 0.0}), uniform({0.3, 1.2}), swirl}) {
     const LegCost best = leg_cost_economical({0, 0}, {1500, 0}, 0.3, kMax, c);
     ASSERT_TRUE(best.feasible);

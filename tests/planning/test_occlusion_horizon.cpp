@@ -13,11 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include "test_support.hpp"
 #include "deepguide/planning/occlusion_horizon.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 namespace bg = boost::geometry;
@@ -25,7 +25,6 @@ namespace bg = boost::geometry;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
 
 BgPolygon square(double x0, double y0, double x1, double y1) {
   BgPolygon p;
@@ -154,7 +153,7 @@ TEST(OcclusionHorizon, ASquareAheadHidesWhatIsBehindIt) {
   const Horizon open = occlusion.horizon({0, 0}, wide, 64);
   EXPECT_FALSE(open.bounded());
   EXPECT_FALSE(open.sees({30, 0}));
-  EXPECT_TRUE(open.sees({30, 24}));   // 38.7 degrees: past the square's side
+  EXPECT_TRUE(open.sees({30, 24}));  // 38.7 degrees: past the square's side
   EXPECT_TRUE(open.sees({30, -24}));
   EXPECT_FALSE(open.sees({30, 14}));  // 25.0 degrees: behind it
   // The arc that stays open starts just past the square's tangent, 26.57 degrees.
@@ -186,11 +185,12 @@ TEST(OcclusionHorizon, EveryCornerAHorizonHidesIsHiddenByTheExactTest) {
       for (const Vec2& q : targets) {
         if ((q - p).norm() < 1e-6) continue;
         bool in_wanted = false;
-        for (const auto& [lo, hi] : wanted) in_wanted = in_wanted || (lo <= pseudo_bearing(q - p) && pseudo_bearing(q - p) <= hi);
+        for (const auto& [lo, hi] : wanted)
+          in_wanted = in_wanted || (lo <= pseudo_bearing(q - p) && pseudo_bearing(q - p) <= hi);
         if (!in_wanted || h.sees(q - p)) continue;
         ++hidden;
-        ASSERT_FALSE(visibility.segment_visible(p, q)) << "field " << field << " from (" << p.x() << ", " << p.y()
-                                                        << ") to (" << q.x() << ", " << q.y() << ")";
+        ASSERT_FALSE(visibility.segment_visible(p, q))
+            << "field " << field << " from (" << p.x() << ", " << p.y() << ") to (" << q.x() << ", " << q.y() << ")";
       }
     }
   }
@@ -209,8 +209,11 @@ TEST(OcclusionHorizon, ReducedGraphEqualsTheAllPairsGraph) {
     bool harbour;
   };
   // The last field has more than 4000 usable corners: the build runs threaded.
-  std::vector<Field> fields{{30, 500, 500, false}, {80, 1000, 400, true}, {150, 1500, 600, false},
-                            {60, 400, 400, true},  {400, 3000, 1200, false}};
+  std::vector<Field> fields{{30, 500, 500, false},
+                            {80, 1000, 400, true},
+                            {150, 1500, 600, false},
+                            {60, 400, 400, true},
+                            {400, 3000, 1200, false}};
   if (deepguide::test::kCaseDivisor > 1) fields.pop_back();
   for (const Field& f : fields) {
     const BgMultiPolygon zones = random_zones(rng, f.count, f.w, f.h, 0.5, f.harbour);
@@ -241,8 +244,8 @@ TEST(OcclusionHorizon, ReducedGraphEqualsTheAllPairsGraph) {
     std::set_difference(expected.begin(), expected.end(), built.begin(), built.end(), std::back_inserter(missing));
     std::set_difference(built.begin(), built.end(), expected.begin(), expected.end(), std::back_inserter(extra));
     EXPECT_TRUE(missing.empty() && extra.empty())
-        << f.count << " obstacles, " << corners.size() << " convex corners: " << expected.size()
-        << " edges expected, " << missing.size() << " missing, " << extra.size() << " extra";
+        << f.count << " obstacles, " << corners.size() << " convex corners: " << expected.size() << " edges expected, "
+        << missing.size() << " missing, " << extra.size() << " extra";
     EXPECT_GT(expected.size(), corners.size());
     if (f.count == 400) {
       EXPECT_GT(corners.size(), 4000u);

@@ -119,7 +119,8 @@ TEST(Octree, RoutesPassTheDepthCheckerOverTheRidgeAndAroundTheTower) {
           const Vec2 a = r.route.points[i], b = r.route.points[i + 1];
           if ((a.x() - 200.0) * (b.x() - 200.0) <= 0.0 && a.x() != b.x()) {
             const double t = (200.0 - a.x()) / (b.x() - a.x());
-            shallowest_at_ridge = std::min(shallowest_at_ridge, r.route.depth_m[i] + t * (r.route.depth_m[i + 1] - r.route.depth_m[i]));
+            shallowest_at_ridge =
+                std::min(shallowest_at_ridge, r.route.depth_m[i] + t * (r.route.depth_m[i + 1] - r.route.depth_m[i]));
           }
         }
         EXPECT_LE(shallowest_at_ridge, 45.0 + 3.0 - 2.0 + 1e-9);
@@ -202,7 +203,8 @@ TEST(Octree, AStarAndDijkstraAgree) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int compared = 0;
   for (int k = 0; k < 200 && compared < 20; ++k) {
-    const Vec3 s(400.0 * u(rng), 400.0 * u(rng), 5.0 + 60.0 * u(rng)), g(400.0 * u(rng), 400.0 * u(rng), 5.0 + 60.0 * u(rng));
+    const Vec3 s(400.0 * u(rng), 400.0 * u(rng), 5.0 + 60.0 * u(rng)),
+        g(400.0 * u(rng), 400.0 * u(rng), 5.0 + 60.0 * u(rng));
     if (!volume.is_free(s) || !volume.is_free(g)) continue;
     const PlanResult a = graph.solve(s, g, SearchAlgorithm::astar), d = graph.solve(s, g, SearchAlgorithm::dijkstra);
     ASSERT_EQ(a.found, d.found);
@@ -263,7 +265,10 @@ TEST(Octree, BadInputIsRefusedWithAClearError) {
   EXPECT_NE(in_floor.find("the start"), std::string::npos) << in_floor;
   EXPECT_NE(in_floor.find("sea floor"), std::string::npos) << in_floor;
   EXPECT_NE(message([&] { graph.solve({50.0, 50.0, 20.0}, {350.0, 350.0, 1.0}); }).find("the goal"), std::string::npos);
-  EXPECT_NE(message([&] { graph.solve({-50.0, 50.0, 20.0}, {350.0, 350.0, 20.0}); }).find("outside"), std::string::npos);
+  EXPECT_NE(message([&] {
+              graph.solve({-50.0, 50.0, 20.0}, {350.0, 350.0, 20.0});
+            }).find("outside"),
+            std::string::npos);
   // The checker needs a dive angle it can use.
   Route r{{{10.0, 10.0}, {20.0, 10.0}}, {20.0, 21.0}};
   EXPECT_THROW(check_route_in_depth(r, volume, std::nan("")), InputError);

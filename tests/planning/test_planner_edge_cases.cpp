@@ -46,7 +46,10 @@ void expect_route(const PlanOutcome& out, double length) {
 class BothGraphs : public ::testing::TestWithParam<GraphKind> {};
 INSTANTIATE_TEST_SUITE_P(Graphs, BothGraphs,
                          ::testing::Values(GraphKind::visibility, GraphKind::visibility_full, GraphKind::tangent),
-                         [](const auto& info) { return to_string(info.param) == "visibility-full" ? std::string("full") : to_string(info.param); });
+                         [](const auto& info) {
+                           return to_string(info.param) == "visibility-full" ? std::string("full")
+                                                                             : to_string(info.param);
+                         });
 
 TEST_P(BothGraphs, RouteGrazingAPolygonVertexStaysStraight) {
   ObstacleSet set;
@@ -114,9 +117,7 @@ TEST_P(BothGraphs, StartAndGoalExactlyOnAZoneBoundary) {
   }
 }
 
-TEST(PlannerInput, IdenticalStartAndGoalIsBadInput) {
-  EXPECT_THROW(plan({}, 5.0, {1, 2}, {1, 2}), InputError);
-}
+TEST(PlannerInput, IdenticalStartAndGoalIsBadInput) { EXPECT_THROW(plan({}, 5.0, {1, 2}, {1, 2}), InputError); }
 
 TEST(PlannerInput, NanOrInfiniteIsBadInput) {
   EXPECT_THROW(plan({}, 5.0, {std::nan(""), 0}, {1, 2}), InputError);

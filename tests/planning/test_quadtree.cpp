@@ -49,8 +49,10 @@ std::set<std::pair<std::size_t, bool>> touching(const CellTree<D>& tree, std::si
     int flat = 0;  // axes along which they only touch
     for (int k = 0; k < D; ++k) {
       const double lo = std::max(a.min[k], b.min[k]), hi = std::min(a.max[k], b.max[k]);
-      if (hi < lo - eps) meet = false;
-      else if (hi - lo <= eps) ++flat;
+      if (hi < lo - eps)
+        meet = false;
+      else if (hi - lo <= eps)
+        ++flat;
     }
     if (meet) out.emplace(j, flat == 1);
   }

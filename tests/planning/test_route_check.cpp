@@ -232,7 +232,8 @@ TEST(RouteCheck, HundredThousandObstacles) {
       const Ellipse& e = obstacles.ellipses[i].footprint;
       lower = segment_point(e.centre) - e.a;
     } else {
-      const BgBox box = boost::geometry::return_envelope<BgBox>(obstacles.polygons[i - obstacles.ellipses.size()].footprint);
+      const BgBox box =
+          boost::geometry::return_envelope<BgBox>(obstacles.polygons[i - obstacles.ellipses.size()].footprint);
       const Vec2 lo = to_eigen(box.min_corner());
       const Vec2 hi = to_eigen(box.max_corner());
       lower = segment_point(0.5 * (lo + hi)) - 0.5 * (hi - lo).norm();

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/route_file_check.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 using deepguide::test::ScratchDir;

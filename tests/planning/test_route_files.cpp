@@ -77,8 +77,9 @@ TEST(RouteFiles, OpenCpnGpxReadsEveryRoutePoint) {
 
 TEST(RouteFiles, HostileRtzIsAOneLineError) {
   ScratchDir dir;
-  const std::string head = "<?xml version=\"1.0\"?><route xmlns=\"http://www.cirm.org/RTZ/1/0\" version=\"1.0\">"
-                           "<routeInfo routeName=\"x\"/><waypoints>";
+  const std::string head =
+      "<?xml version=\"1.0\"?><route xmlns=\"http://www.cirm.org/RTZ/1/0\" version=\"1.0\">"
+      "<routeInfo routeName=\"x\"/><waypoints>";
   const std::string ok = "<waypoint id=\"1\"><position lat=\"60\" lon=\"5\"/></waypoint>";
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"<route", "could not parse"},

@@ -10,13 +10,13 @@
 #include <numbers>
 #include <string>
 
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/route_plan_export.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "planning/obstacle_builders.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 

@@ -24,8 +24,8 @@
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
-#include "test_support.hpp"
 #include "planning/current_cases.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -181,8 +181,8 @@ struct Reference {
   std::vector<Vec2> route;
 };
 
-Reference reference(const CostModel& m, const ObstacleField& field, const Vec2& start, const Vec2& goal,
-                    const Vec2& lo, const Vec2& hi, double spacing) {
+Reference reference(const CostModel& m, const ObstacleField& field, const Vec2& start, const Vec2& goal, const Vec2& lo,
+                    const Vec2& hi, double spacing) {
   Reference ref;
   const std::vector<Vec2> lattice = lattice_route(m, field, start, goal, lo, hi, spacing);
   ref.lattice_cost = total(m, lattice);
@@ -228,14 +228,13 @@ ObstacleSet island() {
 
 // Under the sanitizers one lattice spacing and coarser references (test_support.hpp).
 constexpr bool kSanitized = test::kCaseDivisor > 1;
-std::vector<double> spacings(std::vector<double> all) {
-  return kSanitized ? std::vector<double>{all[1]} : all;
-}
+std::vector<double> spacings(std::vector<double> all) { return kSanitized ? std::vector<double>{all[1]} : all; }
 
 }  // namespace
 
 TEST(RouteRefinement, AppliesOnlyWhereTheCurrentChangesFromPlaceToPlace) {
-  auto m = steady_model(CostKind::time, [](const Vec2&) { return Vec2(0.5, 0.2); }, 0.6);
+  auto m = steady_model(
+      CostKind::time, [](const Vec2&) { return Vec2(0.5, 0.2); }, 0.6);
   EXPECT_TRUE(refinement_applies(*m));
   m->uniform = true;
   EXPECT_FALSE(refinement_applies(*m));
@@ -250,7 +249,8 @@ TEST(RouteRefinement, AppliesOnlyWhereTheCurrentChangesFromPlaceToPlace) {
 TEST(RouteRefinement, AStraightLegInAUniformCurrentStaysStraight) {
   // The optimum in a uniform current is the straight leg (time is a norm of
   // the displacement): refinement has nothing to gain and returns it as it was.
-  const auto m = steady_model(CostKind::time, [](const Vec2&) { return Vec2(0.7, -0.4); }, 0.9);
+  const auto m = steady_model(
+      CostKind::time, [](const Vec2&) { return Vec2(0.7, -0.4); }, 0.9);
   const auto free = [](const Vec2&, const Vec2&) { return true; };
   const RefinedRoute r = refine_route(*m, {{0.0, 0.0}, {3000.0, 1000.0}}, free);
   ASSERT_EQ(r.points.size(), 2u);
@@ -264,12 +264,14 @@ TEST(RouteRefinement, AStraightLegInAUniformCurrentStaysStraight) {
 }
 
 TEST(RouteRefinement, RefusesBadRoutes) {
-  const auto m = steady_model(CostKind::time, [](const Vec2&) { return Vec2(0.1, 0.0); }, 0.1);
+  const auto m = steady_model(
+      CostKind::time, [](const Vec2&) { return Vec2(0.1, 0.0); }, 0.1);
   const auto free = [](const Vec2&, const Vec2&) { return true; };
   EXPECT_THROW(refine_route(*m, {{0.0, 0.0}}, free), InputError);
   EXPECT_THROW(refine_route(*m, {{0.0, 0.0}, {NAN, 1.0}}, free), InputError);
   // An infeasible route (a 3 m/s head current everywhere) comes back as it was.
-  const auto head = steady_model(CostKind::time, [](const Vec2&) { return Vec2(-3.0, 0.0); }, 3.0);
+  const auto head = steady_model(
+      CostKind::time, [](const Vec2&) { return Vec2(-3.0, 0.0); }, 3.0);
   const RefinedRoute r = refine_route(*head, {{0.0, 0.0}, {500.0, 10.0}, {1000.0, 0.0}}, free);
   EXPECT_EQ(r.points.size(), 3u);
   EXPECT_FALSE(std::isfinite(r.cost_before));

@@ -24,8 +24,10 @@ using deepguide::test::disc;
 class SingleQuery : public ::testing::TestWithParam<GraphKind> {};
 INSTANTIATE_TEST_SUITE_P(AllGraphs, SingleQuery,
                          ::testing::Values(GraphKind::visibility, GraphKind::visibility_full, GraphKind::tangent),
-                         [](const auto& info) { return info.param == GraphKind::visibility_full ? std::string("full")
-                                                                                               : to_string(info.param); });
+                         [](const auto& info) {
+                           return info.param == GraphKind::visibility_full ? std::string("full")
+                                                                           : to_string(info.param);
+                         });
 
 TEST_P(SingleQuery, LongDetourTakesSeveralRoundsAndMatchesThePlanner) {
   // A wall 1000 m long across the straight line from (0, 0) to (400, 0),
@@ -66,7 +68,8 @@ TEST_P(SingleQuery, NoRouteAmongFewerObstaclesMeansNoRoute) {
   set.polygons = {box(-20, -20, 20, -15, "s"), box(-20, 15, 20, 20, "n"), box(-20, -20, -15, 20, "w"),
                   box(15, -20, 20, 20, "e")};
   set.ellipses.push_back(disc(9000, 9000, 5, "far"));
-  const SingleQueryPlan one = plan_single_query(set, {{-100, 0}, {0, 0}}, {1.0, 0.5, GetParam(), SearchAlgorithm::astar});
+  const SingleQueryPlan one =
+      plan_single_query(set, {{-100, 0}, {0, 0}}, {1.0, 0.5, GetParam(), SearchAlgorithm::astar});
   EXPECT_FALSE(one.outcome.result.found);
   EXPECT_FALSE(one.outcome.result.message.empty());
 }

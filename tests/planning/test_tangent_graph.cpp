@@ -6,11 +6,11 @@
 #include <limits>
 #include <random>
 
-#include "test_support.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_pieces.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -36,7 +36,8 @@ double offset_arc_by_chords(const Ellipse& e, double d, double phi0, double phi1
     // Support point of the ellipse for u, from its definition.
     const Vec2 ul(u.dot(e.major_dir()), u.dot(e.minor_dir()));
     const double h = std::hypot(e.a * ul.x(), e.b * ul.y());
-    const Vec2 q = e.centre + (e.a * e.a * ul.x() / h) * e.major_dir() + (e.b * e.b * ul.y() / h) * e.minor_dir() + d * u;
+    const Vec2 q =
+        e.centre + (e.a * e.a * ul.x() / h) * e.major_dir() + (e.b * e.b * ul.y() / h) * e.minor_dir() + d * u;
     if (k > 0) sum += (q - prev).norm();
     prev = q;
   }
@@ -111,7 +112,8 @@ double exact_disc_optimum(const std::vector<Disc>& discs, const Vec2& s, const V
   // Arcs between consecutive tangent points on each disc (both ways round).
   for (std::size_t i = 0; i < discs.size(); ++i) {
     std::vector<int> ids;
-    for (std::size_t k = 2; k < nodes.size(); ++k) if (nodes[k].disc == int(i)) ids.push_back(int(k));
+    for (std::size_t k = 2; k < nodes.size(); ++k)
+      if (nodes[k].disc == int(i)) ids.push_back(int(k));
     std::sort(ids.begin(), ids.end(), [&](int a, int b) { return nodes[a].ang < nodes[b].ang; });
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const int a = ids[k], b = ids[(k + 1) % ids.size()];
@@ -125,7 +127,8 @@ double exact_disc_optimum(const std::vector<Disc>& discs, const Vec2& s, const V
   dist[0] = 0;
   for (;;) {
     int u = -1;
-    for (std::size_t k = 0; k < nodes.size(); ++k) if (!done[k] && (u < 0 || dist[k] < dist[u])) u = int(k);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (!done[k] && (u < 0 || dist[k] < dist[u])) u = int(k);
     if (u < 0 || !std::isfinite(dist[u])) break;
     done[u] = true;
     for (const auto& [a, b, w] : edges) {
@@ -141,8 +144,8 @@ double exact_disc_optimum(const std::vector<Disc>& discs, const Vec2& s, const V
 TEST(ZonePieces, EllipseArcLengthMatchesChords) {
   const Ellipse e{{3, -2}, 10, 2, 0.4};
   const ZonePiece z = zone_pieces(ObstacleSet{{ellipse(3, -2, 10, 2, 0.4)}, {}}, 5.0)[0];
-  for (const auto& [p0, p1] : {std::pair{0.1, 0.7}, std::pair{2.0, 5.5}, std::pair{-1.0, 4.0}, std::pair{0.3, 0.3 + 2 * kPi},
-                               std::pair{1.0, 1.0 + 3 * kPi}}) {
+  for (const auto& [p0, p1] : {std::pair{0.1, 0.7}, std::pair{2.0, 5.5}, std::pair{-1.0, 4.0},
+                               std::pair{0.3, 0.3 + 2 * kPi}, std::pair{1.0, 1.0 + 3 * kPi}}) {
     EXPECT_NEAR(z.arc_length(p0, p1), offset_arc_by_chords(e, 5.0, p0, p1), 1e-6) << p0 << " " << p1;
   }
   // Full turn of the ellipse itself (d = 0): the perimeter 42.0200890794 (a = 10, b = 2).
@@ -205,7 +208,8 @@ TEST(TangentGraph, RandomDiscsMatchAnIndependentExactSolver) {
     EXPECT_LT(rel, 1e-6) << "scenario " << scenario << ": " << out.result.exact_length_m << " vs " << reference;
     ++compared;
   }
-  std::printf("[ tangent ] %d disc scenarios, worst relative difference to the independent solver %.3g\n", compared, worst);
+  std::printf("[ tangent ] %d disc scenarios, worst relative difference to the independent solver %.3g\n", compared,
+              worst);
 }
 
 TEST(TangentGraph, RandomEllipsesAreBracketedByPolygonGraphs) {

@@ -7,11 +7,11 @@
 #include <numbers>
 #include <random>
 
-#include "obstacle_builders.hpp"
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
+#include "obstacle_builders.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -68,7 +68,8 @@ TEST(TurningCircles, HoldTheCornersZone) {
   for (const TurningCircle& c : circles) {
     // The nearest corner lies R - d (less the micrometre push) from the centre.
     double nearest = 1e9;
-    for (const Vec2& v : {Vec2(0, 0), Vec2(0, 40), Vec2(40, 40), Vec2(40, 0)}) nearest = std::min(nearest, (c.centre - v).norm());
+    for (const Vec2& v : {Vec2(0, 0), Vec2(0, 40), Vec2(40, 40), Vec2(40, 0)})
+      nearest = std::min(nearest, (c.centre - v).norm());
     EXPECT_NEAR(nearest, r - d - 1e-6, 1e-9);
     EXPECT_EQ(c.obstacle, 0u);
   }
@@ -139,13 +140,13 @@ SuiteCounts turn_radius_suite(unsigned seed, int scenarios, int lo, int hi, Grap
           const double w = uni(5, 40), h = uni(5, 40), t = uni(-kPi, kPi);
           std::vector<Vec2> pts;
           for (const Vec2& c : {Vec2(-w, -h), Vec2(w, -h), Vec2(w, h), Vec2(-w, h)}) {
-            pts.push_back(at + Vec2(std::cos(t) * c.x() - std::sin(t) * c.y(), std::sin(t) * c.x() + std::cos(t) * c.y()));
+            pts.push_back(at +
+                          Vec2(std::cos(t) * c.x() - std::sin(t) * c.y(), std::sin(t) * c.x() + std::cos(t) * c.y()));
           }
           set.polygons.push_back(polygon(pts, id));
           break;
         }
-        default:
-          set.ellipses.push_back(test::disc(at.x(), at.y(), uni(2, 15), id));
+        default: set.ellipses.push_back(test::disc(at.x(), at.y(), uni(2, 15), id));
       }
     }
     const double margin = uni(1, 10);
@@ -226,11 +227,13 @@ SuiteCounts turn_radius_suite(unsigned seed, int scenarios, int lo, int hi, Grap
       }
     }
   }
-  std::printf("[ turn radius ] %s, seed %u, %d scenarios of %d-%d obstacles: %d routes (%d longer than turning on "
-              "the spot; %d within 1 %% of the tangent graph's, the longest %.4f x), %d without a route, %d not rounded, %d refused "
-              "start/goal; %d arcs (%d on circles), least sampled radius %.6f R, worst join %.2g rad\n",
-              to_string(graph).c_str(), seed, scenarios, lo, hi, found, wider, near_tangent, longest_ratio, none, unrounded, refused,
-              arcs, on_circles, least_seen, worst_join);
+  std::printf(
+      "[ turn radius ] %s, seed %u, %d scenarios of %d-%d obstacles: %d routes (%d longer than turning on "
+      "the spot; %d within 1 %% of the tangent graph's, the longest %.4f x), %d without a route, %d not rounded, %d "
+      "refused "
+      "start/goal; %d arcs (%d on circles), least sampled radius %.6f R, worst join %.2g rad\n",
+      to_string(graph).c_str(), seed, scenarios, lo, hi, found, wider, near_tangent, longest_ratio, none, unrounded,
+      refused, arcs, on_circles, least_seen, worst_join);
   return {scenarios, found, wider, none, refused, arcs, on_circles, unrounded, longest_ratio, near_tangent};
 }
 
@@ -304,6 +307,5 @@ TEST(TurnRadius, NoWayRoundSaysWhichTurnIsTooTight) {
   // The quadtree's cell-to-cell steps cannot be rounded: a radius needs its smoothing.
   EXPECT_THROW(Planner(set, {5.0, 0.2, GraphKind::quadtree, SearchAlgorithm::astar, nullptr, {}, {}, 19.6}),
                InputError);
-  EXPECT_THROW(Planner(set, {5.0, 0.2, GraphKind::tangent, SearchAlgorithm::astar, nullptr, {}, {}, -1.0}),
-               InputError);
+  EXPECT_THROW(Planner(set, {5.0, 0.2, GraphKind::tangent, SearchAlgorithm::astar, nullptr, {}, {}, -1.0}), InputError);
 }

@@ -7,13 +7,13 @@
 #include <cmath>
 #include <random>
 
-#include "test_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 #include "planning/obstacle_builders.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 namespace bg = boost::geometry;
@@ -91,7 +91,8 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
     const int n = count(rng);
     for (int i = 0; i < n; ++i) {
       const double a = 5.0 + 35.0 * u01(rng);
-      set.ellipses.push_back(ellipse(pos(rng), pos(rng), a, a * (0.2 + 0.8 * u01(rng)), ang(rng), "e" + std::to_string(i)));
+      set.ellipses.push_back(
+          ellipse(pos(rng), pos(rng), a, a * (0.2 + 0.8 * u01(rng)), ang(rng), "e" + std::to_string(i)));
     }
     if (scenario % 5 == 0) {
       const double x = pos(rng), y = pos(rng);
@@ -134,8 +135,8 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
       const SingleQueryPlan one = plan_single_query(set, {start, goal}, options);
       ASSERT_TRUE(one.outcome.result.found) << "scenario " << scenario;
       ASSERT_TRUE(one.outcome.check.safe) << "scenario " << scenario << ": " << one.outcome.check.describe();
-      const double got = options.graph == GraphKind::tangent ? one.outcome.result.exact_length_m
-                                                             : one.outcome.result.route.length();
+      const double got =
+          options.graph == GraphKind::tangent ? one.outcome.result.exact_length_m : one.outcome.result.route.length();
       ASSERT_NEAR(got, length, 1e-9 * length) << "scenario " << scenario << " " << to_string(options.graph);
     }
 
@@ -159,9 +160,10 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
     EXPECT_GE(excess, -1e-12) << "scenario " << scenario;
     EXPECT_LE(excess, 1e-3) << "scenario " << scenario;
   }
-  std::printf("[ planner ] %d disjoint, %d with merged zones, %d without route; worst excess over the lower bound: "
-              "polygon graphs %.3g %%, tangent graph %.3g %%\n",
-              disjoint_cases, merged_cases, no_route, 100.0 * worst_excess, 100.0 * worst_exact_gap);
+  std::printf(
+      "[ planner ] %d disjoint, %d with merged zones, %d without route; worst excess over the lower bound: "
+      "polygon graphs %.3g %%, tangent graph %.3g %%\n",
+      disjoint_cases, merged_cases, no_route, 100.0 * worst_excess, 100.0 * worst_exact_gap);
   EXPECT_GT(disjoint_cases, test::cases(300));
   EXPECT_GT(merged_cases, test::cases(50));
 }

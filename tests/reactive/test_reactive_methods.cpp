@@ -42,11 +42,11 @@ ReactiveCommand command(ReactiveMethod m, const ReactiveParams& params, Reactive
 
 /// A kinematic vehicle that takes every commanded course at once.
 struct Flight {
-  std::vector<Vec2> path;               ///< positions, path[0] = start
+  std::vector<Vec2> path;  ///< positions, path[0] = start
   std::vector<ReactiveCommand> commands;
-  std::vector<int> sides;               ///< memory.side after each command
+  std::vector<int> sides;  ///< memory.side after each command
   double length = 0.0;
-  double max_rate = 0.0;                ///< max |r| from successive commanded courses (rad/s)
+  double max_rate = 0.0;  ///< max |r| from successive commanded courses (rad/s)
   double rms_rate = 0.0;
   ReactiveStatus last = ReactiveStatus::ok;
   std::vector<double> rates;
@@ -558,8 +558,8 @@ TEST(Dipole, CloseObjectsMergeIntoOneCircle) {
 TEST(Dipole, SeveralObjectsAreNotEnteredAndTheTargetIsReached) {
   const ReactiveParams params = params_for(10, 2, 5);
   const std::vector<std::vector<Ellipse>> cases{
-      {disc(0, 0, 10), disc(60, 25, 10)},   // a passage 65 - 40 = 25 m wide between zones
-      {disc(0, -8, 10), disc(0, 8, 10)},    // overlapping: merged
+      {disc(0, 0, 10), disc(60, 25, 10)},  // a passage 65 - 40 = 25 m wide between zones
+      {disc(0, -8, 10), disc(0, 8, 10)},   // overlapping: merged
       {Ellipse{Vec2(0, 0), 25, 4, 0.8}, disc(70, -30, 12)},
   };
   for (const auto& objects : cases) {
@@ -654,9 +654,10 @@ TEST(ReactiveMethods, Notes9TableKinematic) {
       EXPECT_GT(dip.max_rate, 1.5 * geo.max_rate) << y0;
     }
     EXPECT_GT(min_clearance(dip.path, objects, 10), -params.dipole_axis_band_m);
-    std::printf("notes9 y0=%4.1f geometric len %.2f max|r| %.2f rms %.2f deg/s | dipole len %.2f max|r| %.2f rms %.2f\n",
-                y0, geo.length, rad_to_deg(geo.max_rate), rad_to_deg(geo.rms_rate), dip.length,
-                rad_to_deg(dip.max_rate), rad_to_deg(dip.rms_rate));
+    std::printf(
+        "notes9 y0=%4.1f geometric len %.2f max|r| %.2f rms %.2f deg/s | dipole len %.2f max|r| %.2f rms %.2f\n", y0,
+        geo.length, rad_to_deg(geo.max_rate), rad_to_deg(geo.rms_rate), dip.length, rad_to_deg(dip.max_rate),
+        rad_to_deg(dip.rms_rate));
   }
 }
 
@@ -672,8 +673,8 @@ TEST(Potential, SingleZoneForceBalancesAtHalfTheInfluence) {
   EXPECT_EQ(f.commands.back().speed_mps, 0.0);
   // At rho = 40 the net pull is 1 - (1/4)(1.5 - 1)(2.25) = 0.71875, straight at the target.
   ReactiveMemory memory;
-  const ReactiveCommand c = command(ReactiveMethod::potential, params, memory, Vec2(-60, 0), 0.0, Vec2(150, 0),
-                                    objects);
+  const ReactiveCommand c =
+      command(ReactiveMethod::potential, params, memory, Vec2(-60, 0), 0.0, Vec2(150, 0), objects);
   EXPECT_EQ(c.status, ReactiveStatus::ok);
   EXPECT_NEAR(c.course, 0.0, 1e-12);
 }
@@ -810,7 +811,7 @@ TEST(ReactiveMethods, BadInputIsRejected) {
   throws(q, a, b, good, "potential_stall_fraction");
   throws(p, Vec2(nan, 0), b, good, "position");
   throws(p, a, Vec2(0, inf), good, "target");
-  throws(p, a, b, {Ellipse{Vec2(0, 0), 2, 5, 0}}, "object 0");        // a < b
+  throws(p, a, b, {Ellipse{Vec2(0, 0), 2, 5, 0}}, "object 0");                 // a < b
   throws(p, a, b, {disc(0, 0, 1), Ellipse{Vec2(0, 0), 2, 0, 0}}, "object 1");  // b = 0
   throws(p, a, b, {Ellipse{Vec2(inf, 0), 2, 1, 0}}, "object 0");
   ReactiveMemory memory;

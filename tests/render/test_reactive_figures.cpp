@@ -92,7 +92,7 @@ TEST(PlotTicks, StepsAreOneTwoFiveTimesAPowerOfTen) {
   ASSERT_EQ(t.size(), 9u);
   EXPECT_DOUBLE_EQ(t.front(), -200.0);
   EXPECT_DOUBLE_EQ(t[4], 0.0);
-  EXPECT_FALSE(std::signbit(t[4]));  // no "-0"
+  EXPECT_FALSE(std::signbit(t[4]));                        // no "-0"
   const std::vector<double> r = nice_ticks(-6.9, 6.9, 9);  // step 2
   EXPECT_EQ(r, (std::vector<double>{-6, -4, -2, 0, 2, 4, 6}));
 }
@@ -152,8 +152,8 @@ TEST(GradientLines, GeometricLineIsTheTangentArcTangentPath) {
 TEST(GradientLines, AxisLinesStallWhereTheFieldVanishes) {
   const WorldBox area = box(-200, -100, 200, 100);
   const GradientLineOptions opt{0.25, 20000};
-  const GradientLine dipole = trace_gradient_line(ReactiveMethod::dipole, disc_params(), Vec2(-150.1, 0),
-                                                  Vec2(150, 0), kDiscObjects, area, opt);
+  const GradientLine dipole = trace_gradient_line(ReactiveMethod::dipole, disc_params(), Vec2(-150.1, 0), Vec2(150, 0),
+                                                  kDiscObjects, area, opt);
   EXPECT_EQ(dipole.end, LineEnd::stalled);
   // Up to 2 m inside: at the stagnation point the dipole method's exit blend
   // starts from the flow just outside, which points into the zone, so the
@@ -176,8 +176,8 @@ TEST(GradientLines, DividingLineIsFoundBetweenSeedsThatPassOnDifferentSides) {
   EXPECT_EQ(passing_sides(lines[0], target, kDiscObjects), std::vector<int>{-1});  // south of the axis
   EXPECT_EQ(passing_sides(lines[1], target, kDiscObjects), std::vector<int>{1});
   EXPECT_EQ(passing_sides(lines[2], target, kDiscObjects), std::vector<int>{1});
-  const auto dividers = dividing_lines(ReactiveMethod::potential, disc_params(), seeds, lines, target, kDiscObjects,
-                                       area, opt);
+  const auto dividers =
+      dividing_lines(ReactiveMethod::potential, disc_params(), seeds, lines, target, kDiscObjects, area, opt);
   ASSERT_EQ(dividers.size(), 1u);  // only between the first two
   EXPECT_EQ(dividers[0].end, LineEnd::stalled);
   EXPECT_NEAR(dividers[0].points.back().x(), -(kZone + 30.0), opt.step_m);  // the trap
@@ -185,17 +185,23 @@ TEST(GradientLines, DividingLineIsFoundBetweenSeedsThatPassOnDifferentSides) {
 
 TEST(GradientLines, BadInputIsAOneLineError) {
   const WorldBox area = box(-200, -100, 200, 100);
-  expect_one_line_error([&] { trace_gradient_line(ReactiveMethod::dipole, disc_params(), Vec2(0, 0), Vec2(1, 1),
-                                                  kDiscObjects, area, {0.0, 10}); },
-                        "positive step");
-  expect_one_line_error([&] { trace_gradient_line(ReactiveMethod::dipole, disc_params(), Vec2(900, 0), Vec2(1, 1),
-                                                  kDiscObjects, area, {1.0, 10}); },
-                        "seed inside the area");
+  expect_one_line_error(
+      [&] {
+        trace_gradient_line(ReactiveMethod::dipole, disc_params(), Vec2(0, 0), Vec2(1, 1), kDiscObjects, area,
+                            {0.0, 10});
+      },
+      "positive step");
+  expect_one_line_error(
+      [&] {
+        trace_gradient_line(ReactiveMethod::dipole, disc_params(), Vec2(900, 0), Vec2(1, 1), kDiscObjects, area,
+                            {1.0, 10});
+      },
+      "seed inside the area");
   ReactiveParams bad = disc_params();
   bad.margin_m = -1.0;
-  EXPECT_THROW(trace_gradient_line(ReactiveMethod::dipole, bad, Vec2(-150, 3), Vec2(150, 0), kDiscObjects, area,
-                                   {1.0, 10}),
-               InputError);
+  EXPECT_THROW(
+      trace_gradient_line(ReactiveMethod::dipole, bad, Vec2(-150, 3), Vec2(150, 0), kDiscObjects, area, {1.0, 10}),
+      InputError);
 }
 
 // ------------------------------------------------------------------ the field figure
@@ -270,8 +276,7 @@ TEST(FieldFigure, WritesSvgAndRefusesOtherExtensionsWithoutAFile) {
 TEST(TrajectoryFigure, DrawsEveryMethodsTrackInItsColour) {
   ScratchDir tmp;
   const std::string path = tmp.file("sim.png");
-  const std::array<ReactiveMethod, 3> all{ReactiveMethod::dipole, ReactiveMethod::geometric,
-                                          ReactiveMethod::potential};
+  const std::array<ReactiveMethod, 3> all{ReactiveMethod::dipole, ReactiveMethod::geometric, ReactiveMethod::potential};
   const TrajectoryFigure f = trajectory_figure_for(one_obstacle(), all);
   ASSERT_EQ(f.runs.size(), 3u);
   const ReactiveMapLayout l = render_trajectory_figure(f, path);
@@ -335,7 +340,8 @@ TEST(RenderReactiveCli, WritesTheFiguresAndRefusesBadInputInOneLine) {
   const auto ok = run_cli("render field " + sc + " --method potential --width 600 -o '" + tmp.file("f.png") + "'");
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_TRUE(Png(tmp.file("f.png")).ok());
-  const auto sim = run_cli("render simulation " + sc + " --methods geometric --width 600 -o '" + tmp.file("s.svg") + "'");
+  const auto sim =
+      run_cli("render simulation " + sc + " --methods geometric --width 600 -o '" + tmp.file("s.svg") + "'");
   EXPECT_EQ(sim.exit_code, 0) << sim.err;
   EXPECT_NE(sim.out.find("geometric: reached"), std::string::npos) << sim.out;
 
@@ -375,7 +381,7 @@ TEST(IdentificationFigure, DrawsTheShadeTheModesAndThePath) {
   // The shade (sky blue at 18 % over the sea) 30 m past the held point, down the axis.
   const Vec2 shade = l.view.to_pixel(align.run.goal + 30.0 * align.scenario.current.normalized());
   const auto got = png.at(shade + Vec2(0.0, 12.0));  // beside the track, not on it
-  EXPECT_LT(got[0], 232);  // the sea is (243, 246, 249); the tint takes red away
+  EXPECT_LT(got[0], 232);                            // the sea is (243, 246, 249); the tint takes red away
   EXPECT_GT(got[2], 235);
   for (const IdentifySample& x : align.run.trajectory) {
     const Vec2 p = l.view.to_pixel(x.vehicle.position);

@@ -8,8 +8,8 @@
 
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -56,8 +56,8 @@ std::array<int, 3> rgb(const Rgba& c) {
   const auto w = rgb(want);
   for (int i = 0; i < 3; ++i) {
     if (std::abs(got[i] - w[i]) > tol) {
-      return ::testing::AssertionFailure() << "got rgb(" << got[0] << "," << got[1] << "," << got[2]
-                                           << "), want rgb(" << w[0] << "," << w[1] << "," << w[2] << ")";
+      return ::testing::AssertionFailure() << "got rgb(" << got[0] << "," << got[1] << "," << got[2] << "), want rgb("
+                                           << w[0] << "," << w[1] << "," << w[2] << ")";
     }
   }
   return ::testing::AssertionSuccess();
@@ -88,8 +88,8 @@ struct SmallScene {
     obstacles.ellipses.push_back(e);
     PolygonObstacle p;
     p.id = "p1";
-    boost::geometry::read_wkt(
-        "POLYGON((200 0,200 100,300 100,300 0,200 0),(230 30,270 30,270 70,230 70,230 30))", p.footprint);
+    boost::geometry::read_wkt("POLYGON((200 0,200 100,300 100,300 0,200 0),(230 30,270 30,270 70,230 70,230 30))",
+                              p.footprint);
     boost::geometry::correct(p.footprint);
     obstacles.polygons.push_back(p);
     scene.obstacles = &obstacles;
@@ -280,7 +280,8 @@ TEST(RenderRoute, CurrentArrowsAndLegLabelsAreDrawnOnlyWhenGiven) {
   int near_south = 0;
   const Png png(with);
   for (double dy = -25; dy <= 25; ++dy) {
-    for (double dx = -25; dx <= 25; ++dx) near_south += same_colour(png.at(south + Vec2(dx, dy)), s.scene.style.current, 8);
+    for (double dx = -25; dx <= 25; ++dx)
+      near_south += same_colour(png.at(south + Vec2(dx, dy)), s.scene.style.current, 8);
   }
   EXPECT_EQ(near_south, 0);
   // The first leg's label sits above it (left of eastbound travel), in the route's colour.
@@ -383,8 +384,8 @@ TEST(RenderCli, RenderRouteAndPlanRender) {
   ScratchDir dir;
   const std::string sample = deepguide::test::source_file("data/sample_obstacles.geojson");
   const std::string route = dir.file("route.geojson");
-  const auto plan = run_cli("plan --obstacles '" + sample + "' --from 10.240,54.440 --to 10.265,54.462 -o '" +
-                            route + "' --render '" + dir.file("plan.svg") + "' --render-graph");
+  const auto plan = run_cli("plan --obstacles '" + sample + "' --from 10.240,54.440 --to 10.265,54.462 -o '" + route +
+                            "' --render '" + dir.file("plan.svg") + "' --render-graph");
   ASSERT_EQ(plan.exit_code, 0) << plan.err;
   EXPECT_NE(slurp(dir.file("plan.svg")).find("<svg"), std::string::npos);
 
@@ -396,8 +397,8 @@ TEST(RenderCli, RenderRouteAndPlanRender) {
   EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   EXPECT_EQ(png_header_width(bytes), 700u);
 
-  const auto bad = run_cli("render route --obstacles '" + sample + "' --route '" + route + "' -o '" +
-                           dir.file("chart.jpg") + "'");
+  const auto bad =
+      run_cli("render route --obstacles '" + sample + "' --route '" + route + "' -o '" + dir.file("chart.jpg") + "'");
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.err.find(".png or .svg"), std::string::npos) << bad.err;
   const auto bad_graph = run_cli("render route --obstacles '" + sample + "' --route '" + route +

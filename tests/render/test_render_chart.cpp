@@ -194,8 +194,7 @@ TEST(RenderChartCli, BadInputExitsOneWithOneLine) {
     EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
   };
   one_line(run_cli("render chart '" + dir.file("none.tif") + "' -o '" + dir.file("a.png") + "'"), "none.tif");
-  one_line(run_cli("render chart '" + dir.write("x.txt", "not a chart") + "' -o '" + dir.file("a.png") + "'"),
-           "x.txt");
+  one_line(run_cli("render chart '" + dir.write("x.txt", "not a chart") + "' -o '" + dir.file("a.png") + "'"), "x.txt");
   one_line(run_cli("render chart " + chart + " --depth -1 -o '" + dir.file("a.png") + "'"), "--depth");
   one_line(run_cli("render chart " + chart + " -o '" + dir.file("a.gif") + "'"), "a.gif");
   one_line(run_cli("render chart " + chart + " -o '" + dir.file("no/dir/a.png") + "'"), "no/dir");

@@ -61,7 +61,8 @@ std::size_t files_in(const std::filesystem::path& dir) {
 TEST(SeedFigures, EveryFigureIsWrittenWithTheNumbersBehindIt) {
   ScratchDir dir;
   std::vector<int> reported;
-  const auto written = write_seed_figures(options_into(dir), [&](const WrittenSeedFigure& w) { reported.push_back(w.number); });
+  const auto written =
+      write_seed_figures(options_into(dir), [&](const WrittenSeedFigure& w) { reported.push_back(w.number); });
   const std::vector<int> seed_order{4, 6, 7, 8, 10, 11, 12};
   EXPECT_EQ(reported, seed_order);
   ASSERT_EQ(written.size(), 7u);
@@ -220,7 +221,9 @@ TEST(SeedFigures, BadInputIsOneLineAndWritesNothing) {
   o.output_dir = dir.file("figs");
   o.data_root = dir.path().string();
   test::expect_error(test::error_of([&] { write_seed_figures(o); }), {dir.path().string().c_str(), "lacks data/"});
-  test::expect_error(test::error_of([&] { locate_seed_data({"/nonexistent-deepguide", dir.path().string()}); }),
+  test::expect_error(test::error_of([&] {
+                       locate_seed_data({"/nonexistent-deepguide", dir.path().string()});
+                     }),
                      {"/nonexistent-deepguide lacks data/missions/encounter.yaml", "--data"});
   EXPECT_EQ(locate_seed_data({"/nonexistent-deepguide", DEEPGUIDE_SOURCE_DIR}), DEEPGUIDE_SOURCE_DIR);
   EXPECT_FALSE(std::filesystem::exists(dir.file("figs")));
@@ -264,8 +267,8 @@ TEST(SeedFiguresCli, WritesTheChosenFiguresAndRefusesBadInput) {
   EXPECT_EQ(j["figures"][0]["figure"], 6);
   EXPECT_GT(j["figures"][0]["facts"]["route_m"].get<double>(), 600.0);
 
-  for (const std::string& bad : {std::string("--only 9"), std::string("--format gif"),
-                                 std::string("--data /nonexistent-deepguide")}) {
+  for (const std::string& bad :
+       {std::string("--only 9"), std::string("--format gif"), std::string("--data /nonexistent-deepguide")}) {
     r = run_cli("figures -o '" + dir.file("bad") + "' " + bad);
     EXPECT_EQ(r.exit_code, 1) << bad << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -66,8 +66,8 @@ TEST(IdentificationRun, AligningHoldsTheShadeInCurrentsUpTo1MetrePerSecond) {
   struct Case {
     double speed, towards_deg;
   };
-  for (const Case c : {Case{0.0, 0.0}, Case{0.5, 100.0}, Case{0.5, 10.0}, Case{1.0, 100.0}, Case{1.0, 250.0},
-                       Case{1.0, 170.0}}) {
+  for (const Case c :
+       {Case{0.0, 0.0}, Case{0.5, 100.0}, Case{0.5, 10.0}, Case{1.0, 100.0}, Case{1.0, 250.0}, Case{1.0, 170.0}}) {
     SCOPED_TRACE(testing::Message() << c.speed << " m/s towards " << c.towards_deg);
     const Scenario sc =
         identify_scenario(IdentifyMode::align, kWreck, {-250.0, 40.0}, current_towards(c.speed, c.towards_deg));
@@ -233,7 +233,7 @@ TEST(IdentifySection, SampleScenariosRead) {
   ASSERT_TRUE(al.identify);
   EXPECT_EQ(al.identify->object_id, "wreck");
   EXPECT_EQ(al.identify->mode, IdentifyMode::align);
-  EXPECT_EQ(al.identify->around.direction, 1);  // side: port
+  EXPECT_EQ(al.identify->around.direction, 1);       // side: port
   EXPECT_EQ(al.target, al.identify->object.centre);  // no target key: the object's centre
   const Scenario ar = read_scenario_file(test::source_file("data/scenarios/around_object.yaml"));
   ASSERT_TRUE(ar.identify);
@@ -320,10 +320,10 @@ TEST(IdentifyCli, ExitCodes) {
   EXPECT_EQ(none.exit_code, 1);
   EXPECT_NE(none.err.find("identify section"), std::string::npos) << none.err;
   // A current the vehicle cannot beat: exit 3, the statistics still printed, one line on stderr.
-  const std::string strong = dir.write(
-      "strong.yaml",
-      "start: {x: -200, y: 0}\ncurrent: \"3.5,90\"\nobstacles:\n  - {id: w, x: 0, y: 0, semi_major_m: 20}\n"
-      "identify: {object: w}\n");
+  const std::string strong =
+      dir.write("strong.yaml",
+                "start: {x: -200, y: 0}\ncurrent: \"3.5,90\"\nobstacles:\n  - {id: w, x: 0, y: 0, semi_major_m: 20}\n"
+                "identify: {object: w}\n");
   const std::string csv = dir.file("strong.csv");
   const test::RunResult r = test::run_cli("identify '" + strong + "' -o '" + csv + "'");
   EXPECT_EQ(r.exit_code, 3);

@@ -19,7 +19,8 @@ using deepguide::test::ScratchDir;
 namespace {
 
 Mission mission_from(ScratchDir& dir, const std::string& manoeuvres) {
-  return read_mission(dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n" + manoeuvres));
+  return read_mission(
+      dir.write("m.yaml", "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\nmanoeuvres:\n" + manoeuvres));
 }
 
 bool has_event(const MissionRun& run, const std::string& text) {
@@ -44,9 +45,10 @@ TEST(MissionRun, AClearTrackIsSailedInItsTimeAndAHoldAddsItsOwn) {
   EXPECT_NEAR(run.time_s, 995.0 / 2.0, 10.0);
   for (const MissionSample& s : run.track) EXPECT_LT(std::abs(s.position.y()), 0.5) << s.time_s;
 
-  const Mission fix = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 500, y: 0}]}\n"
-                                        "  - gps_update: {hold_s: 100}\n"
-                                        "  - goto: {speed_mps: 2, position: {x: 1000, y: 0}}\n");
+  const Mission fix = mission_from(dir,
+                                   "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 500, y: 0}]}\n"
+                                   "  - gps_update: {hold_s: 100}\n"
+                                   "  - goto: {speed_mps: 2, position: {x: 1000, y: 0}}\n");
   const MissionRun held = run_mission(fix, {}, expand_mission(fix, {}), {});
   ASSERT_TRUE(held.completed);
   EXPECT_NEAR(held.time_s, run.time_s + 100.0, 2.0);
@@ -141,9 +143,10 @@ TEST(MissionRun, ThePlanLevelKeepsToTheLapsArcs) {
   // inside the lap; path following alone, with that entry, ran 8.6 m outside
   // after the entry and 1.6 m inside later.
   ScratchDir dir;
-  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
-                                      "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"
-                                      "  - goto: {speed_mps: 2, position: {x: 800, y: 0}}\n");
+  const Mission m = mission_from(dir,
+                                 "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
+                                 "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"
+                                 "  - goto: {speed_mps: 2, position: {x: 800, y: 0}}\n");
   MissionEnvironment env;
   const Vec2 rock(500.0, 60.0);
   env.obstacles.ellipses.push_back(test::disc(rock.x(), rock.y(), 3.0, "rock"));
@@ -180,10 +183,11 @@ TEST(MissionRun, ThePlanLevelKeepsToTheLapsArcs) {
 
 TEST(MissionRun, LapsAreSailedWholeAndAHoldAtTheEndCounts) {
   ScratchDir dir;
-  const Mission m = mission_from(dir, "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
-                                      "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"
-                                      "  - goto: {speed_mps: 2, position: {x: 800, y: 0}}\n"
-                                      "  - gps_update: {hold_s: 300}\n");
+  const Mission m = mission_from(dir,
+                                 "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 400, y: 0}]}\n"
+                                 "  - identify: {object: rock, mode: around, distance_m: 22, speed_mps: 2}\n"
+                                 "  - goto: {speed_mps: 2, position: {x: 800, y: 0}}\n"
+                                 "  - gps_update: {hold_s: 300}\n");
   MissionEnvironment env;
   env.obstacles.ellipses.push_back(test::disc(500.0, 60.0, 3.0, "rock"));
   const MissionPlan plan = expand_mission(m, env.obstacles);

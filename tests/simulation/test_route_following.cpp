@@ -68,8 +68,11 @@ TEST(RouteFollowing, HairpinIsSailedNotCircled) {
 
 TEST(RouteFollowing, RouteMustJoinStartAndTarget) {
   const Scenario sc = open_water({400.0, 0.0});
-  deepguide::test::expect_one_line_error([&] { (void)follow_route(sc, Route{{{1.0, 0.0}, sc.target}}); },
-                                         "expected a route from the start");
+  deepguide::test::expect_one_line_error(
+      [&] {
+        (void)follow_route(sc, Route{{{1.0, 0.0}, sc.target}});
+      },
+      "expected a route from the start");
   deepguide::test::expect_one_line_error([&] { (void)follow_route(sc, Route{{sc.start}}); }, "two points");
 }
 
@@ -185,12 +188,14 @@ TEST(RouteFollowing, ArcsWithinTheTurningRadiusAreSailedOnTheRoute) {
     double off = 0.0;
     for (const TrajectorySample& x : r.trajectory) {
       double nearest = 1e9;
-      for (const RouteLeg& leg : plan.result.legs) nearest = std::min(nearest, (nearest_on_leg(leg, x.position).point - x.position).norm());
+      for (const RouteLeg& leg : plan.result.legs)
+        nearest = std::min(nearest, (nearest_on_leg(leg, x.position).point - x.position).norm());
       // Away from the start, where the vehicle first turns onto the route.
       if ((x.position - sc.start).norm() > 60.0) off = std::max(off, nearest);
     }
     EXPECT_LT(off, kPathTrackingAllowance_m) << "current " << current.transpose();
-    std::printf("[ route following ] current (%.2f, %.2f): %d arcs, furthest off the route %.2f m, least clearance %.2f m\n",
-                current.x(), current.y(), arcs, off, r.stats.min_clearance_m);
+    std::printf(
+        "[ route following ] current (%.2f, %.2f): %d arcs, furthest off the route %.2f m, least clearance %.2f m\n",
+        current.x(), current.y(), arcs, off, r.stats.min_clearance_m);
   }
 }

@@ -264,8 +264,7 @@ TEST(Simulation, TurningRatesAreTheCommandsTheAutopilotsAndTheVehicles) {
     for (std::size_t k = 1; k < r.trajectory.size(); ++k) {
       const TrajectorySample& x = r.trajectory[k];
       ASSERT_EQ(x.rate_cmd, wrap_pi(x.course_cmd - r.trajectory[k - 1].course_cmd) / h) << "sample " << k;
-      ASSERT_LE(std::abs(x.rate_ref), sc.vehicle.autopilot.max_reference_turn_rate * (1 + 1e-12))
-          << "sample " << k;
+      ASSERT_LE(std::abs(x.rate_ref), sc.vehicle.autopilot.max_reference_turn_rate * (1 + 1e-12)) << "sample " << k;
       ASSERT_LE(std::abs(x.rate), sc.vehicle.max_turn_rate * (1 + 1e-12)) << "sample " << k;
       max_ref = std::max(max_ref, std::abs(x.rate_ref));
     }
@@ -400,8 +399,8 @@ TEST(TrajectoryIo, CsvColumnsUnitsAndNauticalSigns) {
   TrajectorySample x;
   x.time_s = 1.5;
   x.position = {12.3456, -7.0};
-  x.heading = 0.0;               // east: 90 deg
-  x.course_cmd = kPi / 2;        // north: 0 deg
+  x.heading = 0.0;         // east: 90 deg
+  x.course_cmd = kPi / 2;  // north: 0 deg
   x.rate_cmd = deg_to_rad(0.5);
   x.rate_ref = deg_to_rad(2.0);  // counter-clockwise = to port: -2 deg/s nautical
   x.rate = -deg_to_rad(1.0);     // to starboard: +1 deg/s
@@ -511,8 +510,8 @@ TEST(ScenarioFile, LonLatPositionsAndObstacleFile) {
 // nodes every 100 m over [x0, x0 + 100 (n - 1)] x [y0, y0 + 100 (n - 1)].
 void write_uniform_current(const std::string& path, double x0, double y0, int n, double u, double v) {
   GDALAllRegister();
-  GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), n, n, 2,
-                                                                                   GDT_Float64, nullptr));
+  GDALDatasetUniquePtr ds(
+      GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), n, n, 2, GDT_Float64, nullptr));
   ASSERT_TRUE(ds);
   double gt[6] = {x0 - 50.0, 100.0, 0.0, y0 + 100.0 * (n - 1) + 50.0, 0.0, -100.0};
   ds->SetGeoTransform(gt);
@@ -548,15 +547,17 @@ TEST(ScenarioFile, CurrentFieldDrivesTheVehicle) {
   // A current that sets the vehicle out of the field (200 m north of the start, at about
   // 3 - 2.06 m/s) ends the run with an error, never a zero current.
   write_uniform_current(dir.file("strong.tif"), 500000.0, 6029200.0, 21, 0.0, 3.0);
-  const Scenario out = read_scenario_file(dir.write("s.yaml", "crs: EPSG:32632\nstart: {x: 500500, y: 6031000}\n"
-                                                               "target: {x: 501500, y: 6031000}\n"
-                                                               "current_file: strong.tif\n"));
+  const Scenario out = read_scenario_file(dir.write("s.yaml",
+                                                    "crs: EPSG:32632\nstart: {x: 500500, y: 6031000}\n"
+                                                    "target: {x: 501500, y: 6031000}\n"
+                                                    "current_file: strong.tif\n"));
   expect_error(error_of([&] { simulate(out, ReactiveMethod::geometric); }),
                {"s.yaml", "field 'current_file'", "covering the vehicle's track"});
   // A field that does not cover the start is refused when the scenario is read.
   expect_error(error_of([&] {
-                 read_scenario_file(dir.write("far.yaml", "crs: EPSG:32632\nstart: {x: 400000, y: 6031000}\n"
-                                                          "target: {x: 501500, y: 6031000}\ncurrent_file: c.tif\n"));
+                 read_scenario_file(dir.write("far.yaml",
+                                              "crs: EPSG:32632\nstart: {x: 400000, y: 6031000}\n"
+                                              "target: {x: 501500, y: 6031000}\ncurrent_file: c.tif\n"));
                }),
                {"c.tif"});
 }

@@ -139,8 +139,7 @@ TEST(Autopilot, ReportsWhatItCannotDo) {
   EXPECT_EQ(r.last.command.depth_m, 0.0);
   EXPECT_TRUE(r.last.course_unreachable);  // 3 m/s cross-current, 1 m/s through water
   AutopilotState m;
-  EXPECT_THROW(autopilot_step(kP, m, r.vehicle, AutopilotSetpoint{std::nan(""), 1.0, 0.0}, Vec2::Zero()),
-               InputError);
+  EXPECT_THROW(autopilot_step(kP, m, r.vehicle, AutopilotSetpoint{std::nan(""), 1.0, 0.0}, Vec2::Zero()), InputError);
   EXPECT_THROW(autopilot_step(kP, m, r.vehicle, AutopilotSetpoint{0.0, 1.0, 0.0}, Vec2(INFINITY, 0.0)), InputError);
 }
 

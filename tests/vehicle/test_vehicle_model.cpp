@@ -317,12 +317,14 @@ TEST(VehicleFile, ValidateProgrammaticParameters) {
   VehicleParams p;
   EXPECT_NO_THROW(validate(p));
   p.max_speed_mps = std::nan("");
-  expect_error([&] {
-    try {
-      validate(p, "scenario.yaml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  }(), {"scenario.yaml", "max_speed_mps"});
+  expect_error(
+      [&] {
+        try {
+          validate(p, "scenario.yaml");
+        } catch (const InputError& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      }(),
+      {"scenario.yaml", "max_speed_mps"});
 }

@@ -11,13 +11,13 @@
 using namespace deepguide;
 
 TEST(UtmZone, PicksZoneAndHemisphereFromLonLat) {
-  EXPECT_EQ(utm_epsg_for(10.25, 54.45), 32632);    // Kiel Bight
-  EXPECT_EQ(utm_epsg_for(-81.86, 24.56), 32617);   // Key West
-  EXPECT_EQ(utm_epsg_for(151.2, -33.9), 32756);    // Sydney, south
+  EXPECT_EQ(utm_epsg_for(10.25, 54.45), 32632);   // Kiel Bight
+  EXPECT_EQ(utm_epsg_for(-81.86, 24.56), 32617);  // Key West
+  EXPECT_EQ(utm_epsg_for(151.2, -33.9), 32756);   // Sydney, south
   EXPECT_EQ(utm_epsg_for(-180.0, 10.0), 32601);
   EXPECT_EQ(utm_epsg_for(179.999, 10.0), 32660);
-  EXPECT_EQ(utm_epsg_for(180.0, 10.0), 32601);     // the antimeridian wraps
-  EXPECT_EQ(utm_epsg_for(6.0, 0.0), 32632);        // zone edges belong to the east zone
+  EXPECT_EQ(utm_epsg_for(180.0, 10.0), 32601);  // the antimeridian wraps
+  EXPECT_EQ(utm_epsg_for(6.0, 0.0), 32632);     // zone edges belong to the east zone
 }
 
 TEST(LocalFrame, CentralMeridianOnTheEquatorIsTheFalseEasting) {

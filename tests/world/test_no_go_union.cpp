@@ -14,7 +14,8 @@ namespace {
 
 BgPolygon box(double x0, double y0, double x1, double y1) {
   BgPolygon p;
-  for (const Vec2& q : {Vec2(x0, y0), Vec2(x0, y1), Vec2(x1, y1), Vec2(x1, y0), Vec2(x0, y0)}) p.outer().push_back(to_bg(q));
+  for (const Vec2& q : {Vec2(x0, y0), Vec2(x0, y1), Vec2(x1, y1), Vec2(x1, y0), Vec2(x0, y0)})
+    p.outer().push_back(to_bg(q));
   boost::geometry::correct(p);
   return p;
 }

@@ -25,8 +25,8 @@ std::string error_of(const std::vector<std::string>& paths, const ObstacleReadOp
 using deepguide::test::expect_error;
 
 std::string point_feature(const std::string& props, const std::string& coords = "[10.1, 54.2]") {
-  return R"({"type":"Feature","properties":{)" + props + R"(},"geometry":{"type":"Point","coordinates":)" +
-         coords + "}}";
+  return R"({"type":"Feature","properties":{)" + props + R"(},"geometry":{"type":"Point","coordinates":)" + coords +
+         "}}";
 }
 
 std::string collection(std::initializer_list<std::string> features) {
@@ -66,8 +66,7 @@ TEST(ObstacleErrors, TruncatedGeoJson) {
 
 TEST(ObstacleErrors, FeatureWithoutSemiMajor) {
   ScratchDir dir;
-  const std::string p =
-      dir.write("o.geojson", collection({kGood, point_feature(R"("id":"w7","semi_minor_m":2)")}));
+  const std::string p = dir.write("o.geojson", collection({kGood, point_feature(R"("id":"w7","semi_minor_m":2)")}));
   expect_error(error_of({p}), {p.c_str(), "feature 1", "w7", "semi_major_m", "expected"});
 }
 
@@ -101,16 +100,19 @@ TEST(ObstacleErrors, CsvColumnsThatLeaveACoordinateUnclearAreRefused) {
 TEST(ObstacleErrors, HugeAxesAndHeadingsAreRefused) {
   // Finite but absurd: they printed inf/nan extents with exit 0.
   ScratchDir dir;
-  const std::string big = dir.write("b.geojson", collection({kGood, point_feature(R"("id":"big","semi_major_m":1e308)")}));
+  const std::string big =
+      dir.write("b.geojson", collection({kGood, point_feature(R"("id":"big","semi_major_m":1e308)")}));
   expect_error(error_of({big}), {big.c_str(), "feature 1", "'big'", "semi_major_m", "100 km", "got 1e+308"});
   const std::string just = dir.write("j.geojson", collection({point_feature(R"("id":"j","semi_major_m":100001)")}));
   expect_error(error_of({just}), {just.c_str(), "semi_major_m", "100 km", "got 100001"});
   const std::string spin = dir.write(
-      "s.geojson", collection({point_feature(R"("id":"spin","semi_major_m":20,"semi_minor_m":10,"orientation_deg":1e308)")}));
+      "s.geojson",
+      collection({point_feature(R"("id":"spin","semi_major_m":20,"semi_minor_m":10,"orientation_deg":1e308)")}));
   expect_error(error_of({spin}), {spin.c_str(), "feature 0", "orientation_deg", "+-360", "got 1e+308"});
   // At the bounds: read.
   const std::string edge = dir.write(
-      "e.geojson", collection({point_feature(R"("id":"e","semi_major_m":100000,"semi_minor_m":10,"orientation_deg":-360)")}));
+      "e.geojson",
+      collection({point_feature(R"("id":"e","semi_major_m":100000,"semi_minor_m":10,"orientation_deg":-360)")}));
   EXPECT_EQ(error_of({edge}), "");
 }
 
@@ -170,7 +172,8 @@ TEST(ObstacleErrors, UnsupportedGeometry) {
   ScratchDir dir;
   const std::string p = dir.write(
       "l.geojson",
-      collection({R"({"type":"Feature","properties":{"id":"cable"},"geometry":{"type":"LineString","coordinates":[[10,54],[10.1,54.1]]}})"}));
+      collection(
+          {R"({"type":"Feature","properties":{"id":"cable"},"geometry":{"type":"LineString","coordinates":[[10,54],[10.1,54.1]]}})"}));
   expect_error(error_of({p}), {p.c_str(), "feature 0", "cable", "geometry", "Point or Polygon", "Line String"});
 }
 
@@ -187,7 +190,8 @@ TEST(ObstacleErrors, DegeneratePolygon) {
   ScratchDir dir;
   const std::string p = dir.write(
       "p.geojson",
-      collection({R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10,54],[10.1,54],[10,54]]]}})"}));
+      collection(
+          {R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[10,54],[10.1,54],[10,54]]]}})"}));
   expect_error(error_of({p}), {p.c_str(), "feature 0", "geometry"});
 }
 
@@ -202,19 +206,21 @@ TEST(ObstacleErrors, PolygonsThatAreNotSimpleAreRefusedNotGuessed) {
   const std::string bow = dir.write(
       "bow.geojson", collection({polygon("bowtie", "[[[10,54],[10.01,54.01],[10.01,54],[10,54.01],[10,54]]]")}));
   expect_error(error_of({bow}), {bow.c_str(), "feature 0", "bowtie", "geometry", "simple polygon", "cross themselves"});
-  const std::string spike = dir.write(
-      "spike.geojson",
-      collection({polygon("spike", "[[[10,54],[10.01,54],[10.02,54],[10.01,54],[10.01,54.01],[10,54]]]")}));
+  const std::string spike =
+      dir.write("spike.geojson",
+                collection({polygon("spike", "[[[10,54],[10.01,54],[10.02,54],[10.01,54],[10.01,54.01],[10,54]]]")}));
   expect_error(error_of({spike}), {spike.c_str(), "spike", "simple polygon"});
-  const std::string hole = dir.write(
-      "hole.geojson", collection({polygon("hole", "[[[10,54],[10.01,54],[10.01,54.01],[10,54.01],[10,54]],"
-                                                  "[[10.02,54],[10.03,54],[10.03,54.01],[10.02,54]]]")}));
+  const std::string hole =
+      dir.write("hole.geojson", collection({polygon("hole",
+                                                    "[[[10,54],[10.01,54],[10.01,54.01],[10,54.01],[10,54]],"
+                                                    "[[10.02,54],[10.03,54],[10.03,54.01],[10.02,54]]]")}));
   expect_error(error_of({hole}), {hole.c_str(), "hole outside the outer ring"});
   // A square with a square hole, and a ring given the other way round, are fine.
   const std::string fine = dir.write(
       "fine.geojson",
-      collection({polygon("ring", "[[[10,54],[10.01,54],[10.01,54.01],[10,54.01],[10,54]],"
-                                  "[[10.004,54.004],[10.006,54.004],[10.006,54.006],[10.004,54.006],[10.004,54.004]]]"),
+      collection({polygon("ring",
+                          "[[[10,54],[10.01,54],[10.01,54.01],[10,54.01],[10,54]],"
+                          "[[10.004,54.004],[10.006,54.004],[10.006,54.006],[10.004,54.006],[10.004,54.004]]]"),
                   polygon("cw", "[[[10.1,54],[10.1,54.01],[10.11,54.01],[10.11,54],[10.1,54]]]")}));
   EXPECT_EQ(error_of({fine}), "");
 }
@@ -241,7 +247,8 @@ TEST(ObstacleErrors, HostileLongAndOddStrings) {
   // A huge id, quotes and control characters must not break reading or messages.
   ScratchDir dir;
   const std::string id(100000, 'x');
-  const std::string p = dir.write("big.geojson", collection({point_feature(R"("id":")" + id + R"(\"\u0000\n","semi_major_m":-1)")}));
+  const std::string p =
+      dir.write("big.geojson", collection({point_feature(R"("id":")" + id + R"(\"\u0000\n","semi_major_m":-1)")}));
   const std::string msg = error_of({p});
   expect_error(msg, {p.c_str(), "semi_major_m", "xxx..."});
   EXPECT_LT(msg.size(), 400u) << "the id must be cut in the message";

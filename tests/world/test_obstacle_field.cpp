@@ -150,12 +150,12 @@ TEST(ObstacleField, PointClearanceRotatedEllipse) {
 
 TEST(ObstacleField, PointClearanceSquarePolygon) {
   const ObstacleField field(one_polygon(square(0.0, 0.0, 10.0)), 0.0);
-  EXPECT_DOUBLE_EQ(field.clearance(Vec2(15.0, 5.0)), 5.0);                    // edge
-  EXPECT_DOUBLE_EQ(field.clearance(Vec2(13.0, 14.0)), 5.0);                   // corner (10, 10)
-  EXPECT_DOUBLE_EQ(field.clearance(Vec2(-1.0, -1.0)), std::sqrt(2.0));        // corner (0, 0)
-  EXPECT_DOUBLE_EQ(field.clearance(Vec2(2.0, 5.0)), -2.0);                    // inside, edge x = 0
-  EXPECT_DOUBLE_EQ(field.clearance(Vec2(5.0, 5.0)), -5.0);                    // centre
-  EXPECT_DOUBLE_EQ(field.clearance(Vec2(10.0, 5.0)), 0.0);                    // on the ring
+  EXPECT_DOUBLE_EQ(field.clearance(Vec2(15.0, 5.0)), 5.0);              // edge
+  EXPECT_DOUBLE_EQ(field.clearance(Vec2(13.0, 14.0)), 5.0);             // corner (10, 10)
+  EXPECT_DOUBLE_EQ(field.clearance(Vec2(-1.0, -1.0)), std::sqrt(2.0));  // corner (0, 0)
+  EXPECT_DOUBLE_EQ(field.clearance(Vec2(2.0, 5.0)), -2.0);              // inside, edge x = 0
+  EXPECT_DOUBLE_EQ(field.clearance(Vec2(5.0, 5.0)), -5.0);              // centre
+  EXPECT_DOUBLE_EQ(field.clearance(Vec2(10.0, 5.0)), 0.0);              // on the ring
 }
 
 TEST(ObstacleField, PointClearancePolygonWithHole) {
@@ -364,8 +364,7 @@ TEST(ObstacleField, SegmentEllipseMatchesReference) {
     worst = std::max(worst, std::abs(n.distance - ref));
     // The reported point is on the segment and at the reported distance.
     EXPECT_NEAR(reference_segment_distance(n.point_on_segment, p0, p1), 0.0, 1e-9);
-    EXPECT_NEAR(test_ref::reference_distance(f, n.point_on_segment).distance, n.distance, 1e-7)
-        << "iter " << iter;
+    EXPECT_NEAR(test_ref::reference_distance(f, n.point_on_segment).distance, n.distance, 1e-7) << "iter " << iter;
   }
   EXPECT_GE(crossing, 20);
   RecordProperty("worst_abs_error", std::to_string(worst));

@@ -199,11 +199,11 @@ TEST(ObstacleRead, DefaultsCircleAndWholeWaterColumn) {
 
 TEST(ObstacleRead, CsvWithWktColumnAndProjectedSourceCrs) {
   ScratchDir dir;
-  const std::string path = dir.write(
-      "w.csv",
-      "WKT,id,semi_major_m,semi_minor_m,orientation_deg,top_depth_m\n"
-      "\"POINT (500000 6000000)\",a,20,10,90,\n"
-      "\"POLYGON ((500100 6000100,500200 6000100,500200 6000200,500100 6000100))\",b,,,,12.5\n");
+  const std::string path =
+      dir.write("w.csv",
+                "WKT,id,semi_major_m,semi_minor_m,orientation_deg,top_depth_m\n"
+                "\"POINT (500000 6000000)\",a,20,10,90,\n"
+                "\"POLYGON ((500100 6000100,500200 6000100,500200 6000200,500100 6000100))\",b,,,,12.5\n");
   const LoadedObstacles l = load_obstacles({path}, {"EPSG:32632", "EPSG:32632"});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   ASSERT_EQ(l.obstacles.polygons.size(), 1u);
@@ -243,8 +243,8 @@ TEST(ObstacleRead, ShapefileInAProjectedCrsWithTruncatedFieldNames) {
   ScratchDir dir;
   const std::string shp = dir.file("hazards.shp");
   write_utm_point("ESRI Shapefile", shp,
-                  {{"semi_major", 30.0}, {"semi_minor", 12.0}, {"orientatio", 90.0}, {"top_depth_", 17.0}},
-                  512345.0, 6012345.0);
+                  {{"semi_major", 30.0}, {"semi_minor", 12.0}, {"orientatio", 90.0}, {"top_depth_", 17.0}}, 512345.0,
+                  6012345.0);
   const LoadedObstacles l = load_obstacles({shp}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   const EllipticCylinder& c = l.obstacles.ellipses[0];
@@ -260,14 +260,15 @@ TEST(ObstacleRead, ShapefileInAProjectedCrsWithTruncatedFieldNames) {
 TEST(ObstacleRead, GeoPackageInAProjectedCrsWithCorrectFields) {
   ScratchDir dir;
   const std::string gpkg = dir.file("store.gpkg");
-  write_utm_point("GPKG", gpkg, {{"semi_major_m", 30.0}, {"semi_minor_m", 12.0}, {"orientation_deg", 45.0}},
-                  512345.0, 6012345.0);
+  write_utm_point("GPKG", gpkg, {{"semi_major_m", 30.0}, {"semi_minor_m", 12.0}, {"orientation_deg", 45.0}}, 512345.0,
+                  6012345.0);
   const LoadedObstacles l = load_obstacles({gpkg}, {"EPSG:32632", ""});
   ASSERT_EQ(l.obstacles.ellipses.size(), 1u);
   EXPECT_NEAR(l.obstacles.ellipses[0].footprint.centre.x(), 512345.0, 1e-6);
   EXPECT_NEAR(l.obstacles.ellipses[0].footprint.centre.y(), 6012345.0, 1e-6);
-  EXPECT_NEAR(l.frame.local_to_heading(l.obstacles.ellipses[0].footprint.theta,
-                                       l.obstacles.ellipses[0].footprint.centre), 45.0, 1e-9);
+  EXPECT_NEAR(
+      l.frame.local_to_heading(l.obstacles.ellipses[0].footprint.theta, l.obstacles.ellipses[0].footprint.centre), 45.0,
+      1e-9);
   EXPECT_EQ(l.sources[0].crs, "EPSG:32632");
   EXPECT_EQ(l.sources[0].driver, "GPKG");
 }

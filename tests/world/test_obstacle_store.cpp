@@ -4,12 +4,12 @@
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <ogrsf_frmts.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <filesystem>
 
 #include <chrono>
 #include <cmath>
@@ -24,7 +24,6 @@
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/obstacle_store.hpp"
 #include "test_support.hpp"
-
 
 using namespace deepguide;
 using deepguide::test::run_cli;
@@ -285,14 +284,13 @@ TEST(ObstacleStore, OverlapDecidesBeyondTheMergeDistance) {
   const std::string store = dir.file("s.gpkg");
   import_detections(store, {dir.write("a.csv", kHeader + row(0, 0, 20, 20, 0, "", "", "2024-05-01T10:00:00Z", "o"))},
                     utm_options());
-  const ImportSummary miss =
-      import_detections(store, {dir.write("b.csv", kHeader + row(41, 0, 20, 20, 0, "", "", "2024-05-02T10:00:00Z", "m"))},
-                        utm_options());
+  const ImportSummary miss = import_detections(
+      store, {dir.write("b.csv", kHeader + row(41, 0, 20, 20, 0, "", "", "2024-05-02T10:00:00Z", "m"))}, utm_options());
   EXPECT_EQ(miss.new_obstacles, 1u);
   EXPECT_EQ(miss.merged, 0u);
-  const ImportSummary hit =
-      import_detections(store, {dir.write("c.csv", kHeader + row(-39, 0, 20, 20, 0, "", "", "2024-05-03T10:00:00Z", "h"))},
-                        utm_options());
+  const ImportSummary hit = import_detections(
+      store, {dir.write("c.csv", kHeader + row(-39, 0, 20, 20, 0, "", "", "2024-05-03T10:00:00Z", "h"))},
+      utm_options());
   EXPECT_EQ(hit.merged, 1u);
   EXPECT_EQ(hit.obstacles_in_store, 2u);
   const ObstacleStore st = read_obstacle_store(store, "EPSG:32632");
@@ -470,8 +468,9 @@ TEST(ObstacleStoreErrors, BadDetectionsInASecondFileRollBackNothingWritten) {
   import_detections(store, {dir.write("a.csv", mission_a())}, utm_options());
   const auto before = snapshot(store);
   const std::string bad = dir.write("bad.csv", kHeader + row(0, 0, 4, 8, 0, "", "", "", "x"));  // b > a
-  const std::string e =
-      error_of([&] { import_detections(store, {dir.write("b.csv", mission_b()), bad}, utm_options()); });
+  const std::string e = error_of([&] {
+    import_detections(store, {dir.write("b.csv", mission_b()), bad}, utm_options());
+  });
   EXPECT_NE(e.find("bad.csv: line 2: field 'semi_minor_m'"), std::string::npos) << e;
   EXPECT_EQ(snapshot(store), before);
 }
@@ -498,13 +497,12 @@ TEST(ObstacleStoreErrors, StoresThatAreNotObstacleStores) {
   const std::string roads = dir.file("roads.gpkg");
   {
     GDALAllRegister();
-    GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GPKG")->Create(roads.c_str(), 0, 0, 0,
-                                                                                     GDT_Unknown, nullptr));
+    GDALDatasetUniquePtr ds(
+        GetGDALDriverManager()->GetDriverByName("GPKG")->Create(roads.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
     ds->CreateLayer("roads", nullptr, wkbLineString, nullptr);
   }
   e = error_of([&] { import_detections(roads, {det}, utm_options()); });
-  EXPECT_NE(e.find("roads.gpkg: layer 'obstacles': expected the obstacle store's Point layer"), std::string::npos)
-      << e;
+  EXPECT_NE(e.find("roads.gpkg: layer 'obstacles': expected the obstacle store's Point layer"), std::string::npos) << e;
   e = error_of([&] { read_obstacle_store(roads); });
   EXPECT_NE(e.find("roads.gpkg: layer 'obstacles'"), std::string::npos) << e;
   // The store given as a detection file too.
@@ -586,7 +584,8 @@ TEST(ObstacleStoreCli, ImportTwiceWithJson) {
   EXPECT_EQ(snapshot(store), before);
   // Text output, and a merge distance large enough to join c3 and c4 (16 m apart) from another mission.
   const std::string c = dir.write("c.csv", kHeader + row(1008, 0, 3, 3, 0, "", "", "2024-09-01T00:00:00Z", "z"));
-  const auto r3 = run_cli("obstacles import '" + c + "' --store '" + store + "' --src-crs EPSG:32632 --merge-distance 20");
+  const auto r3 =
+      run_cli("obstacles import '" + c + "' --store '" + store + "' --src-crs EPSG:32632 --merge-distance 20");
   ASSERT_EQ(r3.exit_code, 0) << r3.err;
   EXPECT_NE(r3.out.find("merged             1"), std::string::npos) << r3.out;
   EXPECT_NE(r3.out.find("obstacles in store 4"), std::string::npos) << r3.out;

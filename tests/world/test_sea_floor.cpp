@@ -25,7 +25,8 @@ namespace {
 SeaFloor bumpy() {
   std::vector<double> d;
   for (int j = 0; j < 30; ++j) {
-    for (int i = 0; i < 40; ++i) d.push_back(60.0 + 15.0 * std::sin(0.7 * i) * std::cos(0.45 * j) + 0.3 * ((i * 7 + j * 3) % 5));
+    for (int i = 0; i < 40; ++i)
+      d.push_back(60.0 + 15.0 * std::sin(0.7 * i) * std::cos(0.45 * j) + 0.3 * ((i * 7 + j * 3) % 5));
   }
   return SeaFloor({100.0, 200.0}, 5.0, 40, 30, d);
 }
@@ -37,10 +38,10 @@ TEST(SeaFloor, BilinearDepthMatchesHandValues) {
   const SeaFloor floor({0.0, 0.0}, 10.0, 2, 2, {10.0, 20.0, 30.0, 60.0});
   EXPECT_DOUBLE_EQ(floor.depth_at({0.0, 0.0}), 10.0);
   EXPECT_DOUBLE_EQ(floor.depth_at({10.0, 10.0}), 60.0);
-  EXPECT_DOUBLE_EQ(floor.depth_at({5.0, 5.0}), 30.0);       // the mean of the four
+  EXPECT_DOUBLE_EQ(floor.depth_at({5.0, 5.0}), 30.0);  // the mean of the four
   EXPECT_DOUBLE_EQ(floor.depth_at({2.5, 0.0}), 12.5);
   EXPECT_DOUBLE_EQ(floor.depth_at({10.0, 5.0}), 40.0);
-  EXPECT_DOUBLE_EQ(floor.depth_at({-0.1, 5.0}), 0.0);       // outside: no water to dive in
+  EXPECT_DOUBLE_EQ(floor.depth_at({-0.1, 5.0}), 0.0);  // outside: no water to dive in
   EXPECT_DOUBLE_EQ(floor.max_depth(), 60.0);
   EXPECT_DOUBLE_EQ(floor.min_depth(), 10.0);
   const auto [lo, hi] = floor.depth_range({1.0, 1.0}, {9.0, 9.0});
@@ -136,12 +137,15 @@ TEST(SeaFloor, FromRasterIsNeverDeeperThanTheChart) {
   double gt[6];
   ds->GetGeoTransform(gt);
   const int c0 = static_cast<int>((lo.x() - gt[0]) / gt[1]) - 4, r0 = static_cast<int>((hi.y() - gt[3]) / gt[5]) - 4;
-  const int cols = static_cast<int>((hi.x() - lo.x()) / gt[1]) + 8, rows = static_cast<int>((hi.y() - lo.y()) / -gt[5]) + 8;
+  const int cols = static_cast<int>((hi.x() - lo.x()) / gt[1]) + 8,
+            rows = static_cast<int>((hi.y() - lo.y()) / -gt[5]) + 8;
   std::vector<float> chart(static_cast<std::size_t>(cols * rows));
-  ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, c0, r0, cols, rows, chart.data(), cols, rows, GDT_Float32, 0, 0,
-                                           nullptr),
-            CE_None);
-  const auto centre = [&](int c, int r) { return Vec2(gt[0] + (c0 + c + 0.5) * gt[1], gt[3] + (r0 + r + 0.5) * gt[5]); };
+  ASSERT_EQ(
+      ds->GetRasterBand(1)->RasterIO(GF_Read, c0, r0, cols, rows, chart.data(), cols, rows, GDT_Float32, 0, 0, nullptr),
+      CE_None);
+  const auto centre = [&](int c, int r) {
+    return Vec2(gt[0] + (c0 + c + 0.5) * gt[1], gt[3] + (r0 + r + 0.5) * gt[5]);
+  };
   int checked = 0;
   double widest = 0.0;
   for (int r = 4; r < rows - 4; ++r) {

@@ -43,8 +43,8 @@ bool seen(const SonarParams& p, const EllipticCylinder& o, const Vec2& at = {0, 
 TEST(Sonar, RangeLimit) {
   const SonarParams p = exact();
   EXPECT_TRUE(seen(p, cylinder("near", {0, 100}, 2, 2)));
-  EXPECT_TRUE(seen(p, cylinder("edge", {0, 121.9}, 2, 2)));   // nearest point 119.9 m
-  EXPECT_FALSE(seen(p, cylinder("far", {0, 122.1}, 2, 2)));   // nearest point 120.1 m
+  EXPECT_TRUE(seen(p, cylinder("edge", {0, 121.9}, 2, 2)));      // nearest point 119.9 m
+  EXPECT_FALSE(seen(p, cylinder("far", {0, 122.1}, 2, 2)));      // nearest point 120.1 m
   EXPECT_FALSE(seen(p, cylinder("big far", {0, 200}, 60, 60)));  // centre test alone would be fooled: 200 - 60 > 120
   // Moving the sonar moves the sector.
   EXPECT_TRUE(seen(p, cylinder("far", {0, 122.1}, 2, 2), {0, 5}));
@@ -183,7 +183,7 @@ TEST(Sonar, ScansOnlyAtItsRate) {
     scans += scanned;
     ASSERT_EQ(s.detections().size(), 1u);
     EXPECT_NEAR(s.detections()[0].time_s, 0.5 * (i / 5), 1e-9);  // the last scan's time
-    if (i == 2) obstacles.clear();  // between scans: the old detections stay
+    if (i == 2) obstacles.clear();                               // between scans: the old detections stay
     if (i == 3) obstacles = {cylinder("a", {0, 50}, 2, 2)};
     t += 0.1;
   }

@@ -15,9 +15,7 @@ using deepguide::test::disc;
 
 namespace {
 
-SeaFloor flat(double depth) {
-  return SeaFloor({-500.0, -500.0}, 50.0, 21, 21, std::vector<double>(21 * 21, depth));
-}
+SeaFloor flat(double depth) { return SeaFloor({-500.0, -500.0}, 50.0, 21, 21, std::vector<double>(21 * 21, depth)); }
 
 }  // namespace
 
@@ -35,7 +33,7 @@ TEST(WaterVolume, PointsAgainstBandFloorAndObstacleTops) {
   EXPECT_TRUE(std::isinf(volume.zone_top(1)));
   EXPECT_DOUBLE_EQ(volume.zone_top(2), 68.0);
 
-  EXPECT_TRUE(volume.is_free({0.0, 0.0, 18.0}));   // exactly the clearance over the rock
+  EXPECT_TRUE(volume.is_free({0.0, 0.0, 18.0}));  // exactly the clearance over the rock
   EXPECT_FALSE(volume.is_free({0.0, 0.0, 18.5}));
   EXPECT_TRUE(volume.is_free({15.0, 0.0, 50.0}));  // on the zone's edge, beside the rock
   EXPECT_FALSE(volume.is_free({14.9, 0.0, 50.0}));
@@ -92,7 +90,7 @@ TEST(WaterVolume, AZeroMarginStillBlocksLegsThroughAPolygon) {
   const ObstacleField field(set, 0.0);
   const WaterVolume volume(field, nullptr, {2.0, 5.0, 200.0});
   EXPECT_FALSE(volume.segment_free({-60.0, 0.0, 30.0}, {60.0, 0.0, 30.0}));  // straight through at 30 m
-  EXPECT_FALSE(volume.segment_free({0.0, 0.0, 12.0}, {20.0, 0.0, 30.0}));   // at x = 10 it is 21 m deep
+  EXPECT_FALSE(volume.segment_free({0.0, 0.0, 12.0}, {20.0, 0.0, 30.0}));    // at x = 10 it is 21 m deep
   EXPECT_TRUE(volume.segment_free({-60.0, 0.0, 18.0}, {60.0, 0.0, 18.0}));
   EXPECT_TRUE(volume.segment_free({-60.0, 10.5, 30.0}, {60.0, 10.5, 30.0}));  // beside it
 }
@@ -131,7 +129,7 @@ TEST(WaterVolume, LegsAgainstTheSeaFloorAndTheBand) {
   // Over the slope: from 90 m at x = -50 (floor 100) to 38 m at x = 0 (floor 40):
   // the floor rises 60 m in 50 m, the leg 52 m, so the gap shrinks to 2 m at the crest.
   EXPECT_TRUE(volume.segment_free({-50.0, 0.0, 90.0}, {0.0, 0.0, 38.0}));
-  EXPECT_FALSE(volume.segment_free({-50.0, 0.0, 99.0}, {0.0, 0.0, 38.0}));  // 1 m gap at x = -50
+  EXPECT_FALSE(volume.segment_free({-50.0, 0.0, 99.0}, {0.0, 0.0, 38.0}));     // 1 m gap at x = -50
   EXPECT_FALSE(volume.segment_free({-300.0, 0.0, 4.9}, {-200.0, 0.0, 10.0}));  // starts above the band
   EXPECT_FALSE(volume.segment_free({-300.0, 0.0, 10.0}, {-200.0, 0.0, 150.5}));
 }

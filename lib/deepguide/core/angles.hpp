@@ -51,27 +51,19 @@ inline double wrap_360(double deg) {
 }
 
 /// Nautical heading in degrees (clockwise from north) -> internal math angle in radians.
-inline double heading_deg_to_math_rad(double heading_deg) {
-  return wrap_pi(kPi / 2.0 - deg_to_rad(heading_deg));
-}
+inline double heading_deg_to_math_rad(double heading_deg) { return wrap_pi(kPi / 2.0 - deg_to_rad(heading_deg)); }
 
 /// Internal math angle in radians -> nautical heading in degrees, in [0, 360).
-inline double math_rad_to_heading_deg(double math_rad) {
-  return wrap_360(rad_to_deg(kPi / 2.0 - math_rad));
-}
+inline double math_rad_to_heading_deg(double math_rad) { return wrap_360(rad_to_deg(kPi / 2.0 - math_rad)); }
 
 /// Unit vector (east, north) of a math angle.
-inline Eigen::Vector2d unit_vector(double math_rad) {
-  return {std::cos(math_rad), std::sin(math_rad)};
-}
+inline Eigen::Vector2d unit_vector(double math_rad) { return {std::cos(math_rad), std::sin(math_rad)}; }
 
 /// Math angle of a vector (east, north).
 inline double math_angle(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 
 /// Nautical course in degrees [0, 360) of a vector (east, north).
-inline double course_deg_of(const Eigen::Vector2d& v) {
-  return wrap_360(rad_to_deg(std::atan2(v.x(), v.y())));
-}
+inline double course_deg_of(const Eigen::Vector2d& v) { return wrap_360(rad_to_deg(std::atan2(v.x(), v.y()))); }
 
 /// Unit vector (east, north) of a nautical course in degrees.
 inline Eigen::Vector2d vector_of_course_deg(double course_deg) {

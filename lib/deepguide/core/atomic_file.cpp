@@ -11,9 +11,9 @@
 
 #include <atomic>
 #include <regex>
-#include <vector>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "deepguide/core/error.hpp"
 
@@ -25,8 +25,7 @@ AtomicOutput::AtomicOutput(fs::path destination) : destination_(std::move(destin
   if (dir.empty()) dir = ".";
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) {
-    throw InputError(destination_.string() + ": expected an existing folder '" + dir.string() +
-                     "' to write into");
+    throw InputError(destination_.string() + ": expected an existing folder '" + dir.string() + "' to write into");
   }
   if (fs::is_directory(destination_, ec)) {
     throw InputError(destination_.string() + ": expected a file path, got a folder");
@@ -53,7 +52,8 @@ void remove_stale_temporaries(const fs::path& folder) {
     if (!std::regex_match(name, m, ours)) continue;
     const long pid = std::stol(m[1].str());
     // Gone: no such process. (A live process under a reused pid keeps its files; they are few.)
-    if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) stale.push_back(e.path());
+    if (pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      stale.push_back(e.path());
   }
   for (const fs::path& p : stale) fs::remove_all(p, ec);
 }
@@ -85,7 +85,8 @@ void AtomicOutput::commit(bool replace) {
       return;
     }
     if (errno == EEXIST) {
-      throw InputError(destination_.string() + ": expected a new file, got one that exists (give --overwrite to replace it)");
+      throw InputError(destination_.string() +
+                       ": expected a new file, got one that exists (give --overwrite to replace it)");
     }
     // A file system without hard links: the plain rename (checked for existence before writing).
   }

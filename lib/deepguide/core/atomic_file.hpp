@@ -46,7 +46,6 @@ void remove_stale_temporaries(const std::filesystem::path& folder);
 /// Writes `text` to `path` atomically; `what` names the file in the error
 /// ("could not write the WHAT"). With replace false an existing file is kept
 /// (AtomicOutput::commit).
-void write_text_file(const std::filesystem::path& path, const std::string& text, const char* what,
-                     bool replace = true);
+void write_text_file(const std::filesystem::path& path, const std::string& text, const char* what, bool replace = true);
 
 }  // namespace deepguide

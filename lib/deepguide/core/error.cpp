@@ -24,10 +24,14 @@ std::pair<char32_t, std::size_t> decode_utf8(const std::string& s, std::size_t i
   std::size_t n = 0;
   char32_t cp = 0;
   if (c < 0x80) return {c, 1};
-  if ((c & 0xe0) == 0xc0) n = 2, cp = c & 0x1f;
-  else if ((c & 0xf0) == 0xe0) n = 3, cp = c & 0x0f;
-  else if ((c & 0xf8) == 0xf0) n = 4, cp = c & 0x07;
-  else return {0, 0};
+  if ((c & 0xe0) == 0xc0)
+    n = 2, cp = c & 0x1f;
+  else if ((c & 0xf0) == 0xe0)
+    n = 3, cp = c & 0x0f;
+  else if ((c & 0xf8) == 0xf0)
+    n = 4, cp = c & 0x07;
+  else
+    return {0, 0};
   if (i + n > s.size()) return {0, 0};
   for (std::size_t k = 1; k < n; ++k) {
     if ((b(i + k) & 0xc0) != 0x80) return {0, 0};
@@ -77,8 +81,7 @@ std::string printable(const std::string& text, std::size_t max_chars) {
   return out;
 }
 
-InputError input_error(const InputLocation& where, const std::string& expected,
-                       const std::string& got) {
+InputError input_error(const InputLocation& where, const std::string& expected, const std::string& got) {
   std::string msg = where.describe() + ": expected " + expected;
   if (!got.empty()) msg += ", got " + got;
   return InputError(msg);

@@ -55,8 +55,7 @@ struct InputLocation {
 std::string printable(const std::string& text, std::size_t max_chars = 60);
 
 /// Builds an InputError "LOCATION: expected EXPECTED[, got GOT]".
-InputError input_error(const InputLocation& where, const std::string& expected,
-                       const std::string& got = {});
+InputError input_error(const InputLocation& where, const std::string& expected, const std::string& got = {});
 
 /// For parameter structs' validate(): throws input_error({group, "", field},
 /// expected, got) unless `ok`. E.g. "reactive: field 'margin_m': expected a

@@ -29,7 +29,9 @@ std::string printf_text(const char* format, ...) {
   return out;
 }
 
-std::string point_text(double x, double y, int digits) { return "(" + fixed(x, digits) + ", " + fixed(y, digits) + ")"; }
+std::string point_text(double x, double y, int digits) {
+  return "(" + fixed(x, digits) + ", " + fixed(y, digits) + ")";
+}
 
 std::string clock_text(double seconds) {
   if (!(seconds >= 0.0 && seconds < 1e15)) return "-";  // NaN, negative, or beyond any mission

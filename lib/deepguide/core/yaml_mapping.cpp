@@ -1,11 +1,11 @@
 #include "deepguide/core/yaml_mapping.hpp"
 
+#include <yaml-cpp/eventhandler.h>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
-#include <yaml-cpp/eventhandler.h>
 
 namespace deepguide {
 
@@ -93,8 +93,8 @@ std::string Range::text() const {
   return what + std::string(lo_closed ? " >= " : " > ") + yaml_number(lo) + " and <= " + yaml_number(hi);
 }
 
-Mapping::Mapping(const YAML::Node& node, std::string source, std::string prefix,
-                 const std::vector<std::string>& known, const std::string& expected)
+Mapping::Mapping(const YAML::Node& node, std::string source, std::string prefix, const std::vector<std::string>& known,
+                 const std::string& expected)
     : node_(node), source_(std::move(source)), prefix_(std::move(prefix)) {
   if (!node.IsMap()) {
     const std::string where = prefix_.empty() ? std::string() : prefix_.substr(0, prefix_.size() - 1);

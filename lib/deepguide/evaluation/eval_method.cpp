@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/simulation/route_following.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
@@ -101,7 +101,8 @@ std::vector<EvalMethod> parse_eval_methods(const std::string& list) {
   std::vector<EvalMethod> out;
   std::istringstream in(list);
   for (std::string name; std::getline(in, name, ',');) out.push_back(parse_eval_method(name));
-  if (out.empty()) throw InputError("methods: expected a comma-separated list, e.g. visibility,quadtree,geometric,dipole");
+  if (out.empty())
+    throw InputError("methods: expected a comma-separated list, e.g. visibility,quadtree,geometric,dipole");
   return out;
 }
 

@@ -32,7 +32,8 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct EvalMethod {
-  std::string name;  ///< canonical: "quadtree:dijkstra", "visibility:astar:energy" shortened to what differs from the defaults
+  std::string
+      name;  ///< canonical: "quadtree:dijkstra", "visibility:astar:energy" shortened to what differs from the defaults
   std::optional<ReactiveMethod> reactive;  ///< set for a reactive method; otherwise a planner:
   GraphKind graph = GraphKind::visibility;
   SearchAlgorithm search = SearchAlgorithm::astar;
@@ -49,15 +50,15 @@ std::vector<EvalMethod> parse_eval_methods(const std::string& list);
 
 /// What one method did on one scenario.
 struct MethodRun {
-  std::string end;  ///< reached, stalled, target_in_zone, no_progress, time_out, or no_route (planners)
-  std::string note; ///< why there is no route, or what the reactive method collided with; empty otherwise
+  std::string end;   ///< reached, stalled, target_in_zone, no_progress, time_out, or no_route (planners)
+  std::string note;  ///< why there is no route, or what the reactive method collided with; empty otherwise
   bool reached = false, collided = false;
   /// A reactive method's collision that no guidance could have avoided
   /// (simulation/collision_envelope.hpp); false for every other run.
   bool unavoidable = false;
-  double route_length_m = 0.0;  ///< the planned route (planners; 0 for reactive methods)
+  double route_length_m = 0.0;                               ///< the planned route (planners; 0 for reactive methods)
   double path_length_m = 0.0, energy_j = 0.0, time_s = 0.0;  ///< sailed (0 without a route)
-  double min_clearance_m = 0.0;  ///< +inf without obstacles
+  double min_clearance_m = 0.0;                              ///< +inf without obstacles
   double max_rate_ref = 0.0, rms_rate_ref = 0.0, max_rate = 0.0, rms_rate = 0.0;  ///< rad/s
   int heading_reversals = 0;
   double compute_ms = 0.0;

@@ -47,7 +47,6 @@ struct Figure {
   std::function<double(const MethodRun&)> value;  // NaN: not drawn
 };
 
-
 }  // namespace
 
 std::vector<std::string> write_report(const std::string& dir, const EvaluationRun& run) {
@@ -117,7 +116,8 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
   o << "<p>" << run.rows.size() << " runs of " << run.manifest.methods.size() << " methods"
     << (run.manifest.skipped.empty() ? "" : ", " + std::to_string(run.manifest.skipped.size()) + " skipped")
     << ". Each cell: median / 95th percentile. Path, energy, time, clearance and turning rates are the vehicle's, "
-       "simulated; a planner's route, within the vehicle's turning radius, is sailed by path following (docs/EVALUATION.md).</p>\n";
+       "simulated; a planner's route, within the vehicle's turning radius, is sailed by path following "
+       "(docs/EVALUATION.md).</p>\n";
   o << "<h2>The seed's claims</h2>\n<ul>\n";
   for (const ClaimCheck& c : s.claims) {
     const char* cls = c.verdict == "holds" ? "holds" : c.verdict == "does not hold" ? "fails" : "";
@@ -139,8 +139,8 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
   if (!run.manifest.skipped.empty()) {
     o << "<h2>Skipped</h2>\n<ul>\n";
     for (const SkippedRun& k : run.manifest.skipped) {
-      o << "<li>" << html(k.scenario) << (k.method.empty() ? "" : " with " + html(k.method)) << ": "
-        << html(k.error) << "</li>\n";
+      o << "<li>" << html(k.scenario) << (k.method.empty() ? "" : " with " + html(k.method)) << ": " << html(k.error)
+        << "</li>\n";
     }
     o << "</ul>\n";
   }

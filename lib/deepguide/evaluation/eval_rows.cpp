@@ -102,11 +102,16 @@ bool parse_row(const std::vector<std::string>& f, EvalRow& row, std::string& why
     double scale;
     const char* name;
   };
-  const Num nums[] = {{7, &r.route_length_m, 1.0, "route_length_m"},   {8, &r.path_length_m, 1.0, "path_length_m"},
-                      {9, &r.energy_j, 1000.0, "energy_kj"},           {10, &r.time_s, 1.0, "time_s"},
-                      {11, &r.min_clearance_m, 1.0, "min_clearance_m"}, {12, &r.max_rate_ref, 1.0, "max_rate_ref_deg_s"},
-                      {13, &r.rms_rate_ref, 1.0, "rms_rate_ref_deg_s"}, {14, &r.max_rate, 1.0, "max_rate_deg_s"},
-                      {15, &r.rms_rate, 1.0, "rms_rate_deg_s"},         {17, &r.compute_ms, 1.0, "compute_ms"}};
+  const Num nums[] = {{7, &r.route_length_m, 1.0, "route_length_m"},
+                      {8, &r.path_length_m, 1.0, "path_length_m"},
+                      {9, &r.energy_j, 1000.0, "energy_kj"},
+                      {10, &r.time_s, 1.0, "time_s"},
+                      {11, &r.min_clearance_m, 1.0, "min_clearance_m"},
+                      {12, &r.max_rate_ref, 1.0, "max_rate_ref_deg_s"},
+                      {13, &r.rms_rate_ref, 1.0, "rms_rate_ref_deg_s"},
+                      {14, &r.max_rate, 1.0, "max_rate_deg_s"},
+                      {15, &r.rms_rate, 1.0, "rms_rate_deg_s"},
+                      {17, &r.compute_ms, 1.0, "compute_ms"}};
   if (!to_int(f[0], row.scenario_index)) {
     why = "scenario_index: expected a whole number, got '" + printable(f[0]) + "'";
     return false;
@@ -196,4 +201,3 @@ std::vector<EvalRow> parse_eval_rows(const std::string& text, const std::string&
 }
 
 }  // namespace deepguide
-

@@ -79,8 +79,8 @@ ClaimCheck visibility_claim(const EvaluationRun& run, const RowsByScenario& rows
   c.verdict = cheaper && better ? "holds" : "does not hold";
   if (timed) {
     c.evidence.push_back("compute time, median: " + vis + " " + fixed(mv, 2) + " ms, " + quad + " " + fixed(mq, 2) +
-                         " ms (" + (mv > 0 ? fixed(mq / mv, 1) + " x" : std::string("n/a")) + "): " +
-                         (cheaper ? "cheaper" : "not cheaper"));
+                         " ms (" + (mv > 0 ? fixed(mq / mv, 1) + " x" : std::string("n/a")) +
+                         "): " + (cheaper ? "cheaper" : "not cheaper"));
   }
   c.evidence.push_back("graph size (vertices + edges), median: " + vis + " " + fixed(sv, 0) + ", " + quad + " " +
                        fixed(sq, 0) + (timed ? "" : std::string(": ") + (cheaper ? "smaller" : "not smaller")));
@@ -160,7 +160,8 @@ std::vector<MethodColumn> method_columns(const RunManifest& manifest) {
           {"max r_ref deg/s", dist(&MethodStats::max_rate_ref_deg_s, 2)},
           {"rms r_ref deg/s", dist(&MethodStats::rms_rate_ref_deg_s, 2)},
           {"compute ms", [timing](const MethodStats& x) { return timing ? cell(x.compute_ms, 2) : std::string("–"); }},
-          {"graph size", [](const MethodStats& x) { return x.graph_size.max > 0 ? cell(x.graph_size, 0) : std::string("–"); }}};
+          {"graph size",
+           [](const MethodStats& x) { return x.graph_size.max > 0 ? cell(x.graph_size, 0) : std::string("–"); }}};
 }
 
 EvaluationSummary summarize(const EvaluationRun& run) {
@@ -243,8 +244,8 @@ std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& 
     scenarios += static_cast<std::size_t>(i % static_cast<std::size_t>(m.shard.count)) ==
                  static_cast<std::size_t>(m.shard.index - 1);
   }
-  o << scenarios << " scenarios" << (m.shard.count > 1 ? " (shard " + std::to_string(m.shard.index) + "/" +
-                                                             std::to_string(m.shard.count) + ")" : "")
+  o << scenarios << " scenarios"
+    << (m.shard.count > 1 ? " (shard " + std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count) + ")" : "")
     << ", " << m.methods.size() << " methods, " << run.rows.size() << " runs";
   if (!m.skipped.empty()) o << ", " << m.skipped.size() << " skipped";
   o << ".\n\nEach cell: median / 95th percentile. Path, energy, time, clearance and turning rates are the "
@@ -323,14 +324,18 @@ void write_results(const std::string& dir, const EvaluationRun& run) {
                        {"graph_size", dist_json(x.graph_size)}});
   }
   nlohmann::json claims = nlohmann::json::array();
-  for (const ClaimCheck& c : s.claims) claims.push_back({{"claim", c.claim}, {"verdict", c.verdict}, {"evidence", c.evidence}});
+  for (const ClaimCheck& c : s.claims)
+    claims.push_back({{"claim", c.claim}, {"verdict", c.verdict}, {"evidence", c.evidence}});
   nlohmann::json skipped = nlohmann::json::array();
   for (const SkippedRun& k : run.manifest.skipped) {
     skipped.push_back({{"scenario", k.scenario}, {"method", k.method}, {"error", k.error}});
   }
-  const nlohmann::json doc = {{"suite", run.manifest.suite},     {"scenarios", run.manifest.scenarios},
-                              {"methods", run.manifest.methods}, {"skipped", skipped},
-                              {"summary", methods},              {"claims", claims},
+  const nlohmann::json doc = {{"suite", run.manifest.suite},
+                              {"scenarios", run.manifest.scenarios},
+                              {"methods", run.manifest.methods},
+                              {"skipped", skipped},
+                              {"summary", methods},
+                              {"claims", claims},
                               {"rows", rows}};
   const std::filesystem::path d(dir);
   write_text_file(d / "results.json", doc.dump(1) + "\n", "results");

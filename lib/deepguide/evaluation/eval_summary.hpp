@@ -36,8 +36,8 @@ struct MethodStats {
 };
 
 struct ClaimCheck {
-  std::string claim;    ///< the seed's words, shortened
-  std::string verdict;  ///< "holds", "does not hold" or "not tested"
+  std::string claim;                  ///< the seed's words, shortened
+  std::string verdict;                ///< "holds", "does not hold" or "not tested"
   std::vector<std::string> evidence;  ///< lines with the numbers
 };
 

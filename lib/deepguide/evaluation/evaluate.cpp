@@ -43,14 +43,17 @@ std::string read_all(const fs::path& path) {
 nlohmann::json manifest_json(const RunManifest& m) {
   nlohmann::json skipped = nlohmann::json::array();
   for (const SkippedRun& s : m.skipped) {
-    skipped.push_back({{"scenario_index", s.scenario_index}, {"scenario", s.scenario}, {"method", s.method},
-                       {"error", s.error}});
+    skipped.push_back(
+        {{"scenario_index", s.scenario_index}, {"scenario", s.scenario}, {"method", s.method}, {"error", s.error}});
   }
-  return {{"suite", m.suite},   {"suite_source", m.suite_source},
+  return {{"suite", m.suite},
+          {"suite_source", m.suite_source},
           {"suite_fingerprint", m.suite_fingerprint},
-          {"scenarios", m.scenarios}, {"methods", m.methods},
+          {"scenarios", m.scenarios},
+          {"methods", m.methods},
           {"shard", std::to_string(m.shard.index) + "/" + std::to_string(m.shard.count)},
-          {"timing", m.timing}, {"skipped", skipped}};
+          {"timing", m.timing},
+          {"skipped", skipped}};
 }
 
 RunManifest read_manifest(const fs::path& path) {
@@ -74,8 +77,10 @@ RunManifest read_manifest(const fs::path& path) {
   } catch (const InputError& e) {
     throw InputError(where + ": shard: " + e.what());
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(where + ": expected deepguide's run manifest (suite, scenarios, methods, shard, timing, "
-                             "skipped): " + printable(e.what(), 100));
+    throw InputError(where +
+                     ": expected deepguide's run manifest (suite, scenarios, methods, shard, timing, "
+                     "skipped): " +
+                     printable(e.what(), 100));
   }
 }
 
@@ -109,7 +114,8 @@ void sort_skipped(std::vector<SkippedRun>& skipped) {
 // What a run writes into its folder (the rest of a folder is not ours).
 bool is_run_file(const std::string& name) {
   return name == kManifest || name == kRows || name == "results.json" || name == "summary.md" ||
-         name == "report.html" || (name.rfind("fig_", 0) == 0 && name.size() > 8 && name.substr(name.size() - 4) == ".png");
+         name == "report.html" ||
+         (name.rfind("fig_", 0) == 0 && name.size() > 8 && name.substr(name.size() - 4) == ".png");
 }
 
 // Removes an earlier run's files, so a new run without a report leaves no old report beside its rows.
@@ -162,8 +168,9 @@ std::string progress_line(std::size_t done, std::size_t total, double elapsed_s)
 
 Shard slurm_array_shard(const char* task_id, const char* task_min, const char* task_count) {
   if (task_id == nullptr || task_count == nullptr) {
-    throw InputError("--shard slurm: expected SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it as a task of a "
-                     "Slurm job array, sbatch --array)");
+    throw InputError(
+        "--shard slurm: expected SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it as a task of a "
+        "Slurm job array, sbatch --array)");
   }
   const auto whole = [](const char* t, const char* name) {
     const std::string s(t);
@@ -213,7 +220,8 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   const fs::path dir(out_dir);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir, ec)) throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+  if (!fs::is_directory(dir, ec))
+    throw InputError(out_dir + ": expected a folder for the results (could not create it)");
   const FolderLock lock(dir, "evaluate");
   if (options.fresh) remove_run_files(dir);
 
@@ -244,9 +252,10 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
     // run.json is written first: a kill before rows.csv leaves an empty journal.
     const std::string journal = fs::exists(dir / kRows, ec) ? read_all(dir / kRows) : eval_rows_header();
     for (EvalRow& r : parse_eval_rows(journal, (dir / kRows).string(), true, &dropped)) {
-      const bool known = r.scenario_index < suite.scenarios.size() &&
-                         suite.scenarios[r.scenario_index].id == r.scenario && in_shard(r.scenario_index, options.shard) &&
-                         std::find(manifest.methods.begin(), manifest.methods.end(), r.method) != manifest.methods.end();
+      const bool known =
+          r.scenario_index < suite.scenarios.size() && suite.scenarios[r.scenario_index].id == r.scenario &&
+          in_shard(r.scenario_index, options.shard) &&
+          std::find(manifest.methods.begin(), manifest.methods.end(), r.method) != manifest.methods.end();
       if (known && done.insert({r.scenario_index, r.method}).second) run.rows.push_back(std::move(r));
     }
     run.resumed = run.rows.size();
@@ -299,7 +308,8 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
       ready.notify_one();
     }
   };
-  const int threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads =
+      options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   // Declared after everything the workers use, so it is destroyed (joined)
   // first; on an error in the writing loop the workers stop after their job.
   struct Pool {
@@ -382,7 +392,7 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
   }
   EvaluationRun merged;
   std::vector<std::string> seen;  // the folder of each shard index
-  std::string fingerprint_from;    // the first shard that had a suite fingerprint
+  std::string fingerprint_from;   // the first shard that had a suite fingerprint
   for (const std::string& d : shard_dirs) {
     EvaluationRun part = read_evaluation(d);
     const RunManifest& m = part.manifest;
@@ -427,8 +437,10 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
     }
     std::set<std::size_t> unreadable;
     for (const SkippedRun& s : m.skipped) {
-      if (s.method.empty()) unreadable.insert(s.scenario_index);
-      else have.insert({s.scenario_index, s.method});
+      if (s.method.empty())
+        unreadable.insert(s.scenario_index);
+      else
+        have.insert({s.scenario_index, s.method});
     }
     for (std::size_t i = 0; i < m.scenarios; ++i) {
       if (!in_shard(i, m.shard) || unreadable.count(i)) continue;
@@ -449,7 +461,8 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
     }
   }
   fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir, ec)) throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+  if (!fs::is_directory(dir, ec))
+    throw InputError(out_dir + ": expected a folder for the results (could not create it)");
   const FolderLock lock(dir, "evaluate merge");
   remove_run_files(dir);
   merged.resumed = merged.rows.size();

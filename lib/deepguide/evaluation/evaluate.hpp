@@ -62,9 +62,9 @@ struct SkippedRun {
 
 /// What an output folder holds (run.json).
 struct RunManifest {
-  std::string suite;         ///< the suite's name
-  std::string suite_source;  ///< where it was read (informative)
-  std::size_t scenarios = 0; ///< in the whole suite
+  std::string suite;              ///< the suite's name
+  std::string suite_source;       ///< where it was read (informative)
+  std::size_t scenarios = 0;      ///< in the whole suite
   std::string suite_fingerprint;  ///< Suite::fingerprint; empty in folders written before it was kept
   std::vector<std::string> methods;
   Shard shard;
@@ -76,9 +76,9 @@ struct EvaluateOptions {
   std::vector<EvalMethod> methods;
   int threads = 0;  ///< 0: every core
   Shard shard;
-  bool timing = true;   ///< false: compute_ms written as 0 (byte-identical reruns)
-  bool fresh = false;   ///< discard the rows of an earlier run in the folder
-  bool report = true;   ///< write the report's figures and page (eval_report.hpp)
+  bool timing = true;  ///< false: compute_ms written as 0 (byte-identical reruns)
+  bool fresh = false;  ///< discard the rows of an earlier run in the folder
+  bool report = true;  ///< write the report's figures and page (eval_report.hpp)
   /// Called from the calling thread after each row is written: rows done, rows to do.
   std::function<void(std::size_t done, std::size_t total)> progress;
   /// Called from the calling thread with a line for each skipped run as it happens.

@@ -59,7 +59,7 @@ struct MonteCarloRun {
   ReactiveMethod method = ReactiveMethod::geometric;
   SimulationStats stats;
   SimulationEnd end = SimulationEnd::time_out;
-  double straight_m = 0.0;  ///< |target - start|
+  double straight_m = 0.0;                  ///< |target - start|
   std::optional<CollisionCause> collision;  ///< SimulationResult::collision
 };
 
@@ -74,7 +74,7 @@ struct MethodSummary {
   ReactiveMethod method = ReactiveMethod::geometric;
   int runs = 0;
   int reached = 0;
-  int collisions = 0;  ///< runs in which the vehicle was ever inside a true obstacle
+  int collisions = 0;   ///< runs in which the vehicle was ever inside a true obstacle
   int unavoidable = 0;  ///< of those, collisions no guidance could have avoided (simulation/collision_envelope.hpp)
   int stalled = 0, no_progress = 0, time_out = 0, target_in_zone = 0;  ///< how the other runs ended
   Distribution min_clearance_m;
@@ -86,7 +86,7 @@ struct MethodSummary {
 
 struct MonteCarloResult {
   MonteCarloParams params;
-  std::vector<MonteCarloRun> runs;  ///< scenario-major: all methods of scenario 0, then 1, ...
+  std::vector<MonteCarloRun> runs;       ///< scenario-major: all methods of scenario 0, then 1, ...
   std::vector<MethodSummary> summaries;  ///< one per method, in the order asked
 };
 

@@ -8,9 +8,9 @@
 #include <random>
 #include <sstream>
 
-#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/simulation/scenario_writer.hpp"
 
@@ -59,7 +59,8 @@ MonteCarloParams read_generator(const Mapping& root) {
   try {
     validate(p);
   } catch (const InputError& e) {
-    throw InputError(root.source() + ": generate: " + std::string(e.what()).substr(std::string("monte carlo: ").size()));
+    throw InputError(root.source() +
+                     ": generate: " + std::string(e.what()).substr(std::string("monte carlo: ").size()));
   }
   return p;
 }
@@ -137,7 +138,8 @@ void read_suite_file(const fs::path& file, Suite& suite) {
   try {
     doc = load_one_document(text.str(), file.string());
   } catch (const YAML::Exception& e) {
-    throw input_error({file.string(), e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) : std::string(), ""}, "a YAML suite file", printable(e.msg, 100));
+    throw input_error({file.string(), e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) : std::string(), ""},
+                      "a YAML suite file", printable(e.msg, 100));
   }
   const Mapping root(doc, file.string(), "", {"name", "generate"}, "a YAML mapping with name and generate");
   if (root.has("name")) suite.name = root.text("name", "the suite's name");

@@ -38,14 +38,14 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct SuiteScenario {
-  std::string id;    ///< the file's stem, or scenario-NNNN
-  std::string path;  ///< the file; empty when generated on demand
+  std::string id;      ///< the file's stem, or scenario-NNNN
+  std::string path;    ///< the file; empty when generated on demand
   int generated = -1;  ///< the generator's index when generated on demand
 };
 
 struct Suite {
   std::string name;
-  std::string source;  ///< the folder or file given
+  std::string source;                         ///< the folder or file given
   std::optional<MonteCarloParams> generator;  ///< from suite.yaml
   std::vector<SuiteScenario> scenarios;
   std::string fingerprint;  ///< "fnv1a64:" and 16 hex digits (header)

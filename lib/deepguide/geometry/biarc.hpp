@@ -25,8 +25,8 @@ namespace DEEPGUIDE_API deepguide {
 struct CircleArc {
   Vec2 from{0.0, 0.0}, to{0.0, 0.0}, centre{0.0, 0.0};
   double radius_m = 0.0;
-  int turn = 0;         ///< +1 anticlockwise (turning left), -1 clockwise
-  double sweep = 0.0;   ///< signed angle swept (rad), the sign of turn
+  int turn = 0;        ///< +1 anticlockwise (turning left), -1 clockwise
+  double sweep = 0.0;  ///< signed angle swept (rad), the sign of turn
 
   double length_m() const { return radius_m * (sweep < 0.0 ? -sweep : sweep); }
   /// The point a fraction f in [0, 1] of the way along it.

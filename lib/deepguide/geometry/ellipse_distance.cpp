@@ -78,8 +78,6 @@ EllipseProjection project_to_ellipse(const Ellipse& e, const Vec2& p) {
   return {e.from_local(x), dist, z0 * z0 + z1 * z1 < 1.0};
 }
 
-double signed_distance(const Ellipse& e, const Vec2& p) {
-  return project_to_ellipse(e, p).signed_distance();
-}
+double signed_distance(const Ellipse& e, const Vec2& p) { return project_to_ellipse(e, p).signed_distance(); }
 
 }  // namespace deepguide

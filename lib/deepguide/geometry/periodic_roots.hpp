@@ -9,17 +9,17 @@
 // bracket instead: about half the evaluations, and the tangent graph spends
 // most of its build here.
 
+#include <algorithm>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
 #include <type_traits>
 
-#include "deepguide/core/api.hpp"
 #include "deepguide/core/angles.hpp"
+#include "deepguide/core/api.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

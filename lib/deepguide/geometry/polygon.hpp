@@ -4,10 +4,10 @@
 // (clockwise outer rings, closed); bg::correct() fixes rings read from files.
 
 #include <Eigen/Core>
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/multi_polygon.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
-#include <boost/geometry/geometries/multi_polygon.hpp>
-#include <boost/geometry/geometries/box.hpp>
 #include <boost/geometry/strategies/strategies.hpp>
 
 #include "deepguide/core/api.hpp"

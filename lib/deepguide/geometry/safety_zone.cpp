@@ -1,7 +1,7 @@
 #include "deepguide/geometry/safety_zone.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 
@@ -11,9 +11,7 @@ namespace deepguide {
 
 double SafetyZone::support(const Vec2& u) const { return ellipse.support(u) + margin; }
 
-double SafetyZone::signed_distance(const Vec2& p) const {
-  return deepguide::signed_distance(ellipse, p) - margin;
-}
+double SafetyZone::signed_distance(const Vec2& p) const { return deepguide::signed_distance(ellipse, p) - margin; }
 
 bool SafetyZone::contains(const Vec2& p) const { return signed_distance(p) < 0.0; }
 
@@ -36,8 +34,8 @@ Vec2 intersect(const Line& l1, const Line& l2) {
 
 // Appends the vertices strictly after phi0 up to and including the vertex
 // between phi0 and phi1, refining the interval while its vertex is too far out.
-void refine(const SafetyZone& z, double phi0, double phi1, const Line& l0, const Line& l1,
-            double tol, int depth, std::vector<Vec2>& out) {
+void refine(const SafetyZone& z, double phi0, double phi1, const Line& l0, const Line& l1, double tol, int depth,
+            std::vector<Vec2>& out) {
   const Vec2 v = intersect(l0, l1);
   if (depth > 0 && z.signed_distance(v) > tol) {
     const double mid = 0.5 * (phi0 + phi1);
@@ -58,15 +56,14 @@ std::vector<Vec2> enclosing_polygon(const SafetyZone& zone, const ZonePolygonOpt
   // Start with 8 normals aligned with the ellipse axes (an edge, not a vertex,
   // at each axis end keeps the polygon symmetric), then refine each interval.
   constexpr int kStart = 8;
-  const int depth = std::max(0, static_cast<int>(std::floor(std::log2(
-                                    std::max(1.0, double(options.max_vertices) / kStart)))));
+  const int depth =
+      std::max(0, static_cast<int>(std::floor(std::log2(std::max(1.0, double(options.max_vertices) / kStart)))));
   std::vector<Vec2> out;
   const double step = 2.0 * std::numbers::pi / kStart;
   for (int k = 0; k < kStart; ++k) {
     const double phi0 = zone.ellipse.theta + k * step;
     const double phi1 = phi0 + step;
-    refine(zone, phi0, phi1, support_line(zone, phi0), support_line(zone, phi1),
-           options.tolerance, depth, out);
+    refine(zone, phi0, phi1, support_line(zone, phi0), support_line(zone, phi1), options.tolerance, depth, out);
   }
   return out;
 }

@@ -16,8 +16,7 @@ void validate(const AlignParams& p) {
   check(std::isfinite(p.standoff_m) && p.standoff_m > 0.0, "standoff_m", "a distance > 0 m", p.standoff_m);
   check(std::isfinite(p.still_mps) && p.still_mps >= 0.0, "still_mps", "a speed >= 0 m/s", p.still_mps);
   check(std::isfinite(p.speed_mps) && p.speed_mps > 0.0, "speed_mps", "a speed > 0 m/s", p.speed_mps);
-  check(std::isfinite(p.max_speed_mps) && p.max_speed_mps > 0.0, "max_speed_mps", "a speed > 0 m/s",
-        p.max_speed_mps);
+  check(std::isfinite(p.max_speed_mps) && p.max_speed_mps > 0.0, "max_speed_mps", "a speed > 0 m/s", p.max_speed_mps);
   check(std::isfinite(p.position_gain_per_s) && p.position_gain_per_s > 0.0, "position_gain_per_s", "a gain > 0 1/s",
         p.position_gain_per_s);
   check(std::isfinite(p.max_approach_mps) && p.max_approach_mps > 0.0, "max_approach_mps", "a speed > 0 m/s",
@@ -61,7 +60,8 @@ AlignCommand align_command(const Ellipse& object, const AlignParams& params, Ali
   const bool in_shade = align_area(safety, e, p) == AlignArea::positioning;
   const bool upstream = std::cos(course - math_angle(-e)) > 0.0;
   AlignArea area = memory.mode;
-  if (!in_shade) area = AlignArea::evasive;
+  if (!in_shade)
+    area = AlignArea::evasive;
   else if (area == AlignArea::evasive && (upstream || (p - approach).norm() < params.approach_radius_m)) {
     area = AlignArea::positioning;
   }

@@ -49,18 +49,18 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct AlignParams {
-  double standoff_m = 10.0;          ///< safety margin round the object; the goal lies on this zone, > 0
-  double still_mps = 0.05;           ///< a current below this is still water, >= 0
-  double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< evasive mode's speed through the water, > 0
+  double standoff_m = 10.0;                      ///< safety margin round the object; the goal lies on this zone, > 0
+  double still_mps = 0.05;                       ///< a current below this is still water, >= 0
+  double speed_mps = 4.0 * 1852.0 / 3600.0;      ///< evasive mode's speed through the water, > 0
   double max_speed_mps = 6.0 * 1852.0 / 3600.0;  ///< the vehicle's, a cap on the positioning speed, > 0
-  double position_gain_per_s = 0.0125;  ///< k of the position loop, > 0 (header)
-  double max_approach_mps = 1.0;     ///< cap on the positioning ground speed, > 0
-  double lookahead_m = 20.0;         ///< line of sight towards the current's axis, > 0
+  double position_gain_per_s = 0.0125;           ///< k of the position loop, > 0 (header)
+  double max_approach_mps = 1.0;                 ///< cap on the positioning ground speed, > 0
+  double lookahead_m = 20.0;                     ///< line of sight towards the current's axis, > 0
   /// The held point lies this far beyond the lee goal point along the axis,
   /// so that the position loop's small overshoot stays outside the standoff, >= 0.
   double hold_buffer_m = 1.0;
-  double approach_m = 50.0;          ///< the approach point lies this far down the axis from the goal, > 0
-  double approach_radius_m = 10.0;   ///< positioning starts within this of the approach point (or facing upstream), > 0
+  double approach_m = 50.0;         ///< the approach point lies this far down the axis from the goal, > 0
+  double approach_radius_m = 10.0;  ///< positioning starts within this of the approach point (or facing upstream), > 0
   /// Slack water: a current below this fraction of the strongest seen (which
   /// was above still_mps) is a tide about to turn, and the vehicle waits at
   /// the approach point instead of the held point. In [0, 1); 0 never backs off.
@@ -79,9 +79,9 @@ struct AlignMemory {
 };
 
 struct AlignCommand {
-  double course = 0.0;     ///< course over ground, or the heading when is_heading; math rad
+  double course = 0.0;      ///< course over ground, or the heading when is_heading; math rad
   bool is_heading = false;  ///< `course` is a heading set-point (positioning in a current)
-  double speed_mps = 0.0;  ///< through the water
+  double speed_mps = 0.0;   ///< through the water
   AlignArea mode = AlignArea::evasive;
   Vec2 goal{0.0, 0.0};        ///< the held point (the lee goal point plus hold_buffer_m down the axis)
   double goal_error_m = 0.0;  ///< |p - g|

@@ -38,9 +38,9 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct AroundParams {
-  double distance_m = 20.0;    ///< D, from the object's footprint, > 0
-  int direction = 1;           ///< +1 anticlockwise (object to port), -1 clockwise
-  double laps = 1.0;           ///< laps to go, > 0
+  double distance_m = 20.0;  ///< D, from the object's footprint, > 0
+  int direction = 1;         ///< +1 anticlockwise (object to port), -1 clockwise
+  double laps = 1.0;         ///< laps to go, > 0
   /// LOS lookahead distance (rule of thumb: a few vehicle lengths, 15-30 m for DeepC), > 0. 25 m: with
   /// 20 m the real vehicle, joining a 30 m path round a 40 x 18 m wreck in a
   /// 1 m/s current, turned at its limit and overshot by 6 m (cross-track RMS
@@ -62,14 +62,14 @@ enum class AroundMode { steering, tracking, done };
 
 struct AroundMemory {
   AroundMode mode = AroundMode::steering;
-  bool started = false;    ///< tracking has begun (the lap count runs)
-  double last_t = 0.0;     ///< ellipse parameter of the nearest path point at the last call
-  double turned = 0.0;     ///< unwrapped parameter change in the travel direction (rad)
+  bool started = false;  ///< tracking has begun (the lap count runs)
+  double last_t = 0.0;   ///< ellipse parameter of the nearest path point at the last call
+  double turned = 0.0;   ///< unwrapped parameter change in the travel direction (rad)
   double laps_done() const;
 };
 
 struct AroundCommand {
-  double course = 0.0;     ///< math rad
+  double course = 0.0;  ///< math rad
   double speed_mps = 0.0;
   AroundMode mode = AroundMode::steering;
   double cross_track_m = 0.0;  ///< e, positive outside the path

@@ -40,7 +40,7 @@ OffsetProjection project_to_offset(const Ellipse& object, double distance_m, con
 }
 
 std::vector<CircleArc> offset_lap_arcs(const Ellipse& object, double distance_m, double t0, double tolerance_m) {
-  constexpr int kFirst = 4;   // quarter laps to begin with
+  constexpr int kFirst = 4;     // quarter laps to begin with
   constexpr int kDeepest = 10;  // 4096 pieces at most
   std::vector<CircleArc> out;
   const auto off_path = [&](const CircleArc& a) {

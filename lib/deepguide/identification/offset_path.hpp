@@ -39,10 +39,10 @@ double offset_curvature(const Ellipse& object, double distance_m, double t);
 double offset_min_radius(const Ellipse& object, double distance_m);
 
 struct OffsetProjection {
-  Vec2 point;            ///< nearest point of the offset curve
-  double t = 0.0;        ///< its ellipse parameter, in (-pi, pi]
-  Vec2 tangent;          ///< unit tangent there, anticlockwise
-  double signed_m = 0.0; ///< distance from the path: positive outside it, negative between it and the object
+  Vec2 point;             ///< nearest point of the offset curve
+  double t = 0.0;         ///< its ellipse parameter, in (-pi, pi]
+  Vec2 tangent;           ///< unit tangent there, anticlockwise
+  double signed_m = 0.0;  ///< distance from the path: positive outside it, negative between it and the object
 };
 
 /// The nearest point of the offset curve to `p` (header). Inside the object

@@ -106,8 +106,8 @@ void track(Builder& b, const std::vector<Vec2>& waypoints, double radius, const 
     if (turn_angle < 1e-6 || tangent > in_room || tangent > out_room) {
       if (turn_angle >= 1e-6) {
         b.plan.warnings.push_back(name + ": the turn at waypoint " + std::to_string(i) + " (" +
-                                  fixed(turn_angle * 180.0 / M_PI, 1) + " deg) leaves no room for a " + fixed(radius, 1) +
-                                  " m turn: it stays a corner");
+                                  fixed(turn_angle * 180.0 / M_PI, 1) + " deg) leaves no room for a " +
+                                  fixed(radius, 1) + " m turn: it stays a corner");
       }
       b.line(pts[i]);
       used_in = 0.0;
@@ -147,7 +147,8 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
                      " is under twice the turn radius (2 x " + fixed(radius, 1) + " m): widen the spacing");
   }
   if (width / s.line_spacing_m > 1e5) {
-    throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) + " makes more than 100000 "
+    throw InputError(place(mission, c) + ": line_spacing_m " + general(s.line_spacing_m) +
+                     " makes more than 100000 "
                      "lines across the area: widen the spacing");
   }
   // Each line's span inside the area.
@@ -169,7 +170,8 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
     if (hi > lo) lines.push_back({o, lo, hi});
   }
   if (lines.empty()) {
-    throw InputError(place(mission, c) + ": expected an area wider than its line spacing across the heading, got "
+    throw InputError(place(mission, c) +
+                     ": expected an area wider than its line spacing across the heading, got "
                      "none of its lines inside it");
   }
   if (lines.size() > 1 && s.line_spacing_m < 2.0 * radius - 1e-9) {
@@ -191,8 +193,10 @@ void survey(Builder& b, const Mission& mission, const ComplexManoeuvre& c, const
     const bool forward = (k % 2 == 0) == first_forward;
     if (k + 1 < lines.size()) {
       Span& next = lines[k + 1];
-      if (forward) l.to = next.to = std::max(l.to, next.to);
-      else l.from = next.from = std::min(l.from, next.from);
+      if (forward)
+        l.to = next.to = std::max(l.to, next.to);
+      else
+        l.from = next.from = std::min(l.from, next.from);
     }
     const Vec2 start = at(l, forward ? l.from : l.to), end = at(l, forward ? l.to : l.from);
     b.line(start);  // the transit to the first line; a no-op after a turn
@@ -259,9 +263,8 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
       b.line(g->position);
     } else if (const auto* s = std::get_if<SurveySpec>(&c.spec)) {
       if (s->turn_radius_m > 0.0 && s->turn_radius_m < radius - 1e-9) {
-        throw InputError(place(mission, c) + ": turn_radius_m " + general(s->turn_radius_m) + " is below the vehicle's " +
-                         fixed(radius, 1) + " m at " +
-                         fixed(c.speed_mps, 2) + " m/s");
+        throw InputError(place(mission, c) + ": turn_radius_m " + general(s->turn_radius_m) +
+                         " is below the vehicle's " + fixed(radius, 1) + " m at " + fixed(c.speed_mps, 2) + " m/s");
       }
       survey(b, mission, c, *s, std::max(radius, s->turn_radius_m));
     } else if (const auto* gps = std::get_if<GpsUpdateSpec>(&c.spec)) {
@@ -270,8 +273,10 @@ MissionPlan expand_mission(const Mission& mission, const ObstacleSet& obstacles)
     } else if (const auto* id = std::get_if<IdentifyTask>(&c.spec)) {
       const Ellipse* object = find_object(obstacles, id->object);
       if (object == nullptr) {
-        throw InputError(place(mission, c) + ": object: expected the id of one of the mission's elliptic-cylinder "
-                         "obstacles, got '" + printable(id->object) + "'");
+        throw InputError(place(mission, c) +
+                         ": object: expected the id of one of the mission's elliptic-cylinder "
+                         "obstacles, got '" +
+                         printable(id->object) + "'");
       }
       if (id->mode == IdentifyTask::Mode::align) {
         b.line(project_to_offset(*object, id->distance_m, b.at()).point);
@@ -294,7 +299,9 @@ IdentificationLap identification_lap(const Ellipse& object, double distance_m, c
     // The tangent from `from` that runs on anticlockwise: where p lies on the
     // path's tangent line behind the point, g(t) = cross(tangent, p - o) = 0
     // with (o - p) . tangent > 0. g changes sign at both tangent points.
-    const auto g = [&](double t) { return cross(offset_tangent(object, t), from - offset_point(object, distance_m, t)); };
+    const auto g = [&](double t) {
+      return cross(offset_tangent(object, t), from - offset_point(object, distance_m, t));
+    };
     constexpr int kSteps = 720;
     for (int k = 0; k < kSteps; ++k) {
       double lo = nearest.t + 2.0 * std::numbers::pi * k / kSteps, hi = lo + 2.0 * std::numbers::pi / kSteps;

@@ -49,12 +49,12 @@ struct BasicManoeuvre {
   double radius_m = 0.0;  ///< arcs
   int turn = 0;           ///< arcs: +1 anticlockwise (turning left), -1 clockwise
   double from_depth_m = 0.0;
-  double depth_m = 0.0;   ///< at its end (lines may change depth; arcs and points keep it)
+  double depth_m = 0.0;  ///< at its end (lines may change depth; arcs and points keep it)
   double speed_mps = 0.0;
-  double hold_s = 0.0;    ///< points: how long the vehicle stays
-  std::size_t source = 0; ///< index of the complex manoeuvre it comes from
-  double start_m = 0.0;   ///< distance along the mission (horizontal track) where it begins
-  double length_m = 0.0;  ///< horizontal length (0 for points)
+  double hold_s = 0.0;     ///< points: how long the vehicle stays
+  std::size_t source = 0;  ///< index of the complex manoeuvre it comes from
+  double start_m = 0.0;    ///< distance along the mission (horizontal track) where it begins
+  double length_m = 0.0;   ///< horizontal length (0 for points)
   /// Why it is there: the mission's own, or put in by mission control
   /// (mission/mission_control.hpp) to evade or to identify an obstacle.
   enum class Role { mission, evasion, identification };

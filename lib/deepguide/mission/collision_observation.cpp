@@ -43,10 +43,9 @@ std::vector<Conflict> observe_collisions(const MissionPlan& plan, const Obstacle
   // obstacle from the very start of each next one (the header).
   std::vector<Conflict> merged;
   for (const Conflict& c : out) {
-    const auto same = std::find_if(merged.rbegin(), merged.rend(),
-                                   [&](const Conflict& m) { return m.obstacle == c.obstacle; });
-    if (same != merged.rend() && c.basic == same->last_basic + 1 &&
-        c.along_m <= plan.basics[c.basic].start_m + 1e-6) {
+    const auto same =
+        std::find_if(merged.rbegin(), merged.rend(), [&](const Conflict& m) { return m.obstacle == c.obstacle; });
+    if (same != merged.rend() && c.basic == same->last_basic + 1 && c.along_m <= plan.basics[c.basic].start_m + 1e-6) {
       same->last_basic = c.basic;
       continue;
     }

@@ -31,8 +31,8 @@ struct Conflict {
   std::size_t last_basic = 0;  ///< the last of the consecutive ones endangered by the same obstacle
   /// The obstacle (ellipses first, then polygons, as ObstacleField counts), or kSeaFloor.
   std::size_t obstacle = 0;
-  std::string with;            ///< the obstacle's name, or "the sea floor"
-  double along_m = 0.0;        ///< where along the mission the danger begins
+  std::string with;      ///< the obstacle's name, or "the sea floor"
+  double along_m = 0.0;  ///< where along the mission the danger begins
   Vec2 where{0.0, 0.0};
   double depth_m = 0.0;
 };
@@ -41,7 +41,7 @@ inline constexpr std::size_t kSeaFloor = static_cast<std::size_t>(-1);
 
 struct ObservationOptions {
   double margin_m = 5.0;
-  double half_width_m = 0.5;         ///< half the vehicle's width (DeepC: about 1 m across)
+  double half_width_m = 0.5;  ///< half the vehicle's width (DeepC: about 1 m across)
   double vertical_clearance_m = 2.0;
 };
 

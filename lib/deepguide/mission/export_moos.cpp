@@ -54,8 +54,8 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
   const double top_speed = route.max_speed_mps > 0.0 ? route.max_speed_mps : 4.0;
   std::ostringstream out;
   out << "// deepguide route for pHelmIvP: " << comment_text(route.name) << "\n"
-      << "// In the .moos file's global section (local x, y are metres east and north of it, UTM zone "
-      << plan.utm.id() << "):\n"
+      << "// In the .moos file's global section (local x, y are metres east and north of it, UTM zone " << plan.utm.id()
+      << "):\n"
       << "//   LatOrigin  = " << fixed(plan.origin_lonlat.y(), 9) << "\n"
       << "//   LongOrigin = " << fixed(plan.origin_lonlat.x(), 9) << "\n"
       << "// pHelmIvP needs these decision domains (or finer; course and speed optional, docs/MISSIONS.md):\n";
@@ -78,8 +78,9 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
     const char* name = p.kind == MoosPhase::Kind::waypoints     ? "dg_leg_"
                        : p.kind == MoosPhase::Kind::reach_depth ? "dg_reach_"
                                                                 : "dg_hold_";
-    out << "\nBehavior = " << type << "\n{\n  name      = " << name << number << "\n" << condition
-        << "  endflag   = DG_LEG = " << k + 2 << "\n" << (k + 1 == plan.phases.size() ? "  endflag   = DG_DONE = true\n" : "");
+    out << "\nBehavior = " << type << "\n{\n  name      = " << name << number << "\n"
+        << condition << "  endflag   = DG_LEG = " << k + 2 << "\n"
+        << (k + 1 == plan.phases.size() ? "  endflag   = DG_DONE = true\n" : "");
     switch (p.kind) {
       case MoosPhase::Kind::waypoints: {
         std::string points;
@@ -90,9 +91,9 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
         break;
       }
       case MoosPhase::Kind::reach_depth:
-        out << "  speed     = " << fixed(p.speed_mps, 3) << "\n  polygon   = format=radial, x="
-            << fixed(p.points[0].x(), 3) << ", y=" << fixed(p.points[0].y(), 3) << ", radius="
-            << fixed(1.5 * plan.turn_radius_m, 1) << ", pts=8\n  duration  = " << fixed(p.duration_s, 1)
+        out << "  speed     = " << fixed(p.speed_mps, 3)
+            << "\n  polygon   = format=radial, x=" << fixed(p.points[0].x(), 3) << ", y=" << fixed(p.points[0].y(), 3)
+            << ", radius=" << fixed(1.5 * plan.turn_radius_m, 1) << ", pts=8\n  duration  = " << fixed(p.duration_s, 1)
             << "\n  duration_idle_decay = false\n";
         break;
       case MoosPhase::Kind::hold:
@@ -100,8 +101,8 @@ void write_plan_moos(const std::string& path, const ExportInput& in) {
             << "\n  duration_idle_decay = false\n";
         break;
     }
-    out << "}\n\nBehavior = BHV_ConstantDepth\n{\n  name      = dg_depth_" << number << "\n" << condition
-        << "  duration  = no-time-limit\n  depth     = " << fixed(p.depth_m, 3) << "\n}\n";
+    out << "}\n\nBehavior = BHV_ConstantDepth\n{\n  name      = dg_depth_" << number << "\n"
+        << condition << "  duration  = no-time-limit\n  depth     = " << fixed(p.depth_m, 3) << "\n}\n";
   }
   std::ofstream file(path, std::ios::binary);
   file << out.str();

@@ -28,8 +28,8 @@ struct Field {
   const char* name;
   OGRFieldType type;
 };
-constexpr Field kWaypointFields[] = {{"depth_m", OFTReal}, {"speed_mps", OFTReal}, {"hold_s", OFTReal},
-                                     {"radius_m", OFTReal}, {"along_m", OFTReal},  {"time_s", OFTReal},
+constexpr Field kWaypointFields[] = {{"depth_m", OFTReal},  {"speed_mps", OFTReal},  {"hold_s", OFTReal},
+                                     {"radius_m", OFTReal}, {"along_m", OFTReal},    {"time_s", OFTReal},
                                      {"role", OFTString},   {"manoeuvre", OFTString}};
 
 void set_waypoint_fields(OGRFeature& f, const ExportWaypoint& w) {
@@ -59,9 +59,15 @@ void write_geojson(const std::string& path, const ExportInput& in) {
     route.points.push_back(w.xy);
     route.depth_m.push_back(w.depth_m);
     points.push_back(i < r.waypoint_properties.size() ? r.waypoint_properties[i] : nlohmann::json::object());
-    points.back().update({{"name", w.name},         {"depth_m", w.depth_m}, {"speed_mps", w.speed_mps},
-                      {"hold_s", w.hold_s},     {"radius_m", w.radius_m}, {"along_m", w.along_m},
-                      {"time_s", w.time_s},     {"role", w.role},       {"manoeuvre", w.manoeuvre}});
+    points.back().update({{"name", w.name},
+                          {"depth_m", w.depth_m},
+                          {"speed_mps", w.speed_mps},
+                          {"hold_s", w.hold_s},
+                          {"radius_m", w.radius_m},
+                          {"along_m", w.along_m},
+                          {"time_s", w.time_s},
+                          {"role", w.role},
+                          {"manoeuvre", w.manoeuvre}});
     if (w.manoeuvre.empty()) points.back().erase("manoeuvre");
   }
   nlohmann::json properties = r.properties;
@@ -92,9 +98,9 @@ void add_field(OGRLayer* layer, const char* name, OGRFieldType type, const Expor
 double altitude(const ExportWaypoint& w) { return 0.0 - w.depth_m; }
 
 void write_gpx(const std::string& path, const ExportInput& in) {
-  GDALDatasetUniquePtr ds = create(path, "GPX", in,
-                                   {"GPX_USE_EXTENSIONS=YES", "GPX_EXTENSIONS_NS=dg",
-                                    "GPX_EXTENSIONS_NS_URL=https://deepguide.dev/gpx/1"});
+  GDALDatasetUniquePtr ds =
+      create(path, "GPX", in,
+             {"GPX_USE_EXTENSIONS=YES", "GPX_EXTENSIONS_NS=dg", "GPX_EXTENSIONS_NS_URL=https://deepguide.dev/gpx/1"});
   const auto geo = gdal::wgs84();
   OGRLayer* layer = ds->CreateLayer("route_points", geo.get(), wkbPoint, nullptr);
   if (layer == nullptr) fail(in, "create the GPX route");

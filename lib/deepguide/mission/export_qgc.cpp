@@ -8,11 +8,11 @@
 // radius R through a course change theta leaves the line R tan(theta / 2)
 // before the corner (where the arc of the planned turn begins). So that is
 // the radius, at least 2 m, at most half the shorter leg (two turns never
-// overlap); 2 m at the ends and where the vehicle holds (it must get there). ArduSub takes an altitude of exactly 0 as "keep the current
-// altitude", so a point at the surface (a GPS fix) is written 1 cm deep. Before the first waypoint and wherever the speed changes,
-// MAV_CMD_DO_CHANGE_SPEED (178): params [speed type 1 (ground speed), m/s,
-// throttle -1 (no change), 0, 0, 0, 0]. The vehicle type is MAV_TYPE_SUBMARINE
-// (12), the firmware ArduPilot (3); the planned home is the start at the surface.
+// overlap); 2 m at the ends and where the vehicle holds (it must get there). ArduSub takes an altitude of exactly 0 as
+// "keep the current altitude", so a point at the surface (a GPS fix) is written 1 cm deep. Before the first waypoint
+// and wherever the speed changes, MAV_CMD_DO_CHANGE_SPEED (178): params [speed type 1 (ground speed), m/s, throttle -1
+// (no change), 0, 0, 0, 0]. The vehicle type is MAV_TYPE_SUBMARINE (12), the firmware ArduPilot (3); the planned home
+// is the start at the surface.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -72,9 +72,10 @@ void write_plan_qgc(const std::string& path, const ExportInput& in) {
       cruise = std::max(cruise, speed);
       items.push_back(item(id++, kChangeSpeed, kFrameMission, {1, speed, -1, 0, 0, 0, 0}, 0.0));
     }
-    items.push_back(item(id++, kNavWaypoint, kFrameGlobalRelativeAlt,
-                         {w.hold_s, acceptance_radius(in.route, k), 0, nullptr, w.lonlat.y(), w.lonlat.x(), altitude(w.depth_m)},
-                         altitude(w.depth_m)));
+    items.push_back(
+        item(id++, kNavWaypoint, kFrameGlobalRelativeAlt,
+             {w.hold_s, acceptance_radius(in.route, k), 0, nullptr, w.lonlat.y(), w.lonlat.x(), altitude(w.depth_m)},
+             altitude(w.depth_m)));
   }
   const ExportWaypoint& start = in.route.waypoints.front();
   const nlohmann::json plan = {

@@ -98,9 +98,9 @@ void write_plan_rtz(const std::string& path, const ExportInput& in) {
     xmlNewChild(ext, ns, x("depth_m"), x(fixed(w.depth_m, 3).c_str()));
     xmlNewChild(ext, ns, x("hold_s"), x(fixed(w.hold_s, 1).c_str()));
   }
-  xmlNodePtr calculated = xmlNewChild(xmlNewChild(xmlNewChild(route, ns, x("schedules"), nullptr), ns,
-                                                  x("schedule"), nullptr),
-                                      ns, x("calculated"), nullptr);
+  xmlNodePtr calculated =
+      xmlNewChild(xmlNewChild(xmlNewChild(route, ns, x("schedules"), nullptr), ns, x("schedule"), nullptr), ns,
+                  x("calculated"), nullptr);
   set(calculated->parent, "id", "1");
   set(calculated->parent, "name", "planned");
   for (std::size_t i = 0; i < r.waypoints.size(); ++i) {

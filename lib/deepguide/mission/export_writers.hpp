@@ -14,7 +14,7 @@ namespace deepguide::detail {
 struct ExportInput {
   std::string destination;  ///< the file the user named (messages; writers write the path they are given)
   const ExportRoute& route;
-  std::string route_name;   ///< RTZ routeName (the destination's stem unless told)
+  std::string route_name;  ///< RTZ routeName (the destination's stem unless told)
 };
 
 void write_plan_yaml(const std::string& path, const std::string& destination, const Mission& mission,

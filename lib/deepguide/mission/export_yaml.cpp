@@ -14,9 +14,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/mission/export_writers.hpp"
 
@@ -33,8 +33,8 @@ const char* kind_name(BasicManoeuvre::Kind kind) {
 }
 
 void emit_xy(YAML::Emitter& e, const char* key, const Vec2& p) {
-  e << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "x" << YAML::Value << fixed(p.x(), 4)
-    << YAML::Key << "y" << YAML::Value << fixed(p.y(), 4) << YAML::EndMap;
+  e << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "x" << YAML::Value
+    << fixed(p.x(), 4) << YAML::Key << "y" << YAML::Value << fixed(p.y(), 4) << YAML::EndMap;
 }
 
 constexpr Range kAny{-1e12, 1e12, true, "a number"};
@@ -51,7 +51,8 @@ namespace detail {
 void write_plan_yaml(const std::string& path, const std::string& destination, const Mission& mission,
                      const MissionPlan& plan) {
   YAML::Emitter e;
-  e << YAML::Comment("deepguide plan of basic manoeuvres (docs/MISSIONS.md, \"Export\"); x, y in crs, depths positive down");
+  e << YAML::Comment(
+      "deepguide plan of basic manoeuvres (docs/MISSIONS.md, \"Export\"); x, y in crs, depths positive down");
   e << YAML::BeginMap;
   e << YAML::Key << "name" << YAML::Value << mission.name;
   e << YAML::Key << "crs" << YAML::Value << mission.frame.id();
@@ -97,30 +98,35 @@ MissionPlan read_plan_yaml(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     doc = load_one_document(std::string(std::istreambuf_iterator<char>(in), {}), path);
   } catch (const YAML::Exception& e) {
-    const std::string at = e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) + ", column " +
-                                                  std::to_string(e.mark.column + 1)
-                                            : std::string();
+    const std::string at =
+        e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1)
+                         : std::string();
     throw input_error({path, at, ""}, "a YAML plan file", printable(e.msg, 100));
   }
   const Mapping root(doc, path, "", {"name", "crs", "length_m", "basic_manoeuvres"},
                      "a deepguide plan (name, crs, length_m, basic_manoeuvres)");
   const YAML::Node list = root.value("basic_manoeuvres");
-  if (!list.IsSequence() || list.size() == 0) throw input_error(root.where("basic_manoeuvres"), "a list of basic manoeuvres");
+  if (!list.IsSequence() || list.size() == 0)
+    throw input_error(root.where("basic_manoeuvres"), "a list of basic manoeuvres");
   MissionPlan plan;
   std::string manoeuvre;  // consecutive basics of one complex manoeuvre share its index
   std::size_t source = 0;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string prefix = "basic_manoeuvres[" + std::to_string(i) + "].";
     const Mapping m(list[i], path, prefix,
-                    {"kind", "from", "to", "centre", "radius_m", "turn", "length_m", "from_depth_m", "depth_m", "speed_mps",
-                     "hold_s", "role", "manoeuvre"},
+                    {"kind", "from", "to", "centre", "radius_m", "turn", "length_m", "from_depth_m", "depth_m",
+                     "speed_mps", "hold_s", "role", "manoeuvre"},
                     "a basic manoeuvre mapping");
     BasicManoeuvre b;
     const std::string kind = m.text("kind", "line, arc or point");
-    if (kind == "line") b.kind = BasicManoeuvre::Kind::line;
-    else if (kind == "arc") b.kind = BasicManoeuvre::Kind::arc;
-    else if (kind == "point") b.kind = BasicManoeuvre::Kind::point;
-    else throw input_error(m.where("kind"), "line, arc or point", "'" + printable(kind) + "'");
+    if (kind == "line")
+      b.kind = BasicManoeuvre::Kind::line;
+    else if (kind == "arc")
+      b.kind = BasicManoeuvre::Kind::arc;
+    else if (kind == "point")
+      b.kind = BasicManoeuvre::Kind::point;
+    else
+      throw input_error(m.where("kind"), "line, arc or point", "'" + printable(kind) + "'");
     b.from = read_xy(m, "from", path);
     b.to = read_xy(m, "to", path);
     b.from_depth_m = m.number("from_depth_m", {0.0, 11000.0, true, "a depth in metres"});
@@ -130,7 +136,8 @@ MissionPlan read_plan_yaml(const std::string& path) {
       b.centre = read_xy(m, "centre", path);
       b.radius_m = m.number("radius_m", {0.0, 1e6, false, "a radius in metres"});
       const std::string turn = m.text("turn", "left or right");
-      if (turn != "left" && turn != "right") throw input_error(m.where("turn"), "left or right", "'" + printable(turn) + "'");
+      if (turn != "left" && turn != "right")
+        throw input_error(m.where("turn"), "left or right", "'" + printable(turn) + "'");
       b.turn = turn == "left" ? 1 : -1;
       b.length_m = m.number("length_m", {0.0, 2.0 * M_PI * b.radius_m + 1e-3, true, "the arc's length in metres"});
       for (const Vec2& end : {b.from, b.to}) {
@@ -146,9 +153,12 @@ MissionPlan read_plan_yaml(const std::string& path) {
     }
     if (m.has("role")) {
       const std::string role = m.text("role", "mission, evasion or identification");
-      if (role == "evasion") b.role = BasicManoeuvre::Role::evasion;
-      else if (role == "identification") b.role = BasicManoeuvre::Role::identification;
-      else if (role != "mission") throw input_error(m.where("role"), "mission, evasion or identification", "'" + printable(role) + "'");
+      if (role == "evasion")
+        b.role = BasicManoeuvre::Role::evasion;
+      else if (role == "identification")
+        b.role = BasicManoeuvre::Role::identification;
+      else if (role != "mission")
+        throw input_error(m.where("role"), "mission, evasion or identification", "'" + printable(role) + "'");
     }
     const std::string name = m.has("manoeuvre") ? m.text("manoeuvre", "a manoeuvre name") : std::string();
     if (i > 0 && name != manoeuvre) ++source;

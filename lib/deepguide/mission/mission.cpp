@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/planning/route_io.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
+#include "deepguide/planning/route_io.hpp"
 #include "deepguide/world/current_field.hpp"
 
 namespace deepguide {
@@ -43,8 +43,8 @@ struct Reader {
     return xy;
   }
   Vec2 position(const YAML::Node& node, const std::string& key) const {
-    return position_of(Mapping(node, source, key + ".", {"x", "y", "lon", "lat"},
-                               "a position {lon: DEG, lat: DEG} or {x: M, y: M}"));
+    return position_of(
+        Mapping(node, source, key + ".", {"x", "y", "lon", "lat"}, "a position {lon: DEG, lat: DEG} or {x: M, y: M}"));
   }
 
   std::vector<Vec2> positions(const Mapping& m, const char* key, std::size_t at_least) const {
@@ -57,13 +57,15 @@ struct Reader {
                                           : "nothing");
     }
     std::vector<Vec2> out;
-    for (std::size_t i = 0; i < list.size(); ++i) out.push_back(position(list[i], m.full(key) + "[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < list.size(); ++i)
+      out.push_back(position(list[i], m.full(key) + "[" + std::to_string(i) + "]"));
     return out;
   }
 
   // Speed: speed_kn or speed_mps, within the vehicle's; default its cruise speed.
   double speed(const Mapping& m, const VehicleParams& vehicle) const {
-    if (m.has("speed_kn") && m.has("speed_mps")) throw input_error(m.where("speed_mps"), "speed_kn or speed_mps", "both");
+    if (m.has("speed_kn") && m.has("speed_mps"))
+      throw input_error(m.where("speed_mps"), "speed_kn or speed_mps", "both");
     const double max_kn = vehicle.max_speed_mps / kMetresPerSecondPerKnot;
     if (m.has("speed_kn")) {
       return kMetresPerSecondPerKnot *
@@ -78,8 +80,8 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
                                 const VehicleParams& vehicle) {
   const std::string where = "manoeuvres[" + std::to_string(index) + "]";
   if (!item.IsMap() || item.size() != 1) {
-    throw input_error({r.source, line_of(item), where}, "a mapping with one key, the manoeuvre's type (" +
-                                                             std::string(kTypes) + ")");
+    throw input_error({r.source, line_of(item), where},
+                      "a mapping with one key, the manoeuvre's type (" + std::string(kTypes) + ")");
   }
   const auto kv = *item.begin();
   ComplexManoeuvre c;
@@ -92,24 +94,32 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
     return keys;
   };
   std::vector<const char*> keys;
-  if (c.type == "track") keys = common({"waypoints", "route_file"});
-  else if (c.type == "survey") keys = common({"area", "line_spacing_m", "heading_deg", "turn_radius_m"});
-  else if (c.type == "gps_update") keys = common({"hold_s"});
-  else if (c.type == "identify") keys = common({"object", "mode", "distance_m"});
-  else if (c.type == "goto") keys = common({"position"});
-  else throw input_error({r.source, c.line, where}, "a manoeuvre type (" + std::string(kTypes) + ")", "'" + printable(c.type) + "'");
+  if (c.type == "track")
+    keys = common({"waypoints", "route_file"});
+  else if (c.type == "survey")
+    keys = common({"area", "line_spacing_m", "heading_deg", "turn_radius_m"});
+  else if (c.type == "gps_update")
+    keys = common({"hold_s"});
+  else if (c.type == "identify")
+    keys = common({"object", "mode", "distance_m"});
+  else if (c.type == "goto")
+    keys = common({"position"});
+  else
+    throw input_error({r.source, c.line, where}, "a manoeuvre type (" + std::string(kTypes) + ")",
+                      "'" + printable(c.type) + "'");
 
   // Mapping takes an initializer list; the key sets differ per type, so check them here.
   // A manoeuvre with nothing under it (`- gps_update:`) takes every default.
   const YAML::Node body = kv.second.IsNull() ? YAML::Node(YAML::NodeType::Map) : kv.second;
-  if (!body.IsMap()) throw input_error({r.source, line_of(body), where + "." + c.type}, "a mapping of " + c.type + " keys");
+  if (!body.IsMap())
+    throw input_error({r.source, line_of(body), where + "." + c.type}, "a mapping of " + c.type + " keys");
   for (const auto& field : body) {
     const std::string key = field.first.IsScalar() ? field.first.Scalar() : "?";
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
       std::string list;
       for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-      throw input_error({r.source, line_of(field.first), printable(prefix + key)}, "one of the " + c.type + " keys (" + list + ")",
-                        "an unknown key");
+      throw input_error({r.source, line_of(field.first), printable(prefix + key)},
+                        "one of the " + c.type + " keys (" + list + ")", "an unknown key");
     }
   }
   const Mapping m(body, r.source, prefix,
@@ -119,7 +129,8 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
   c.name = m.has("name") ? m.text("name", "a name (text)") : c.type + " " + std::to_string(index + 1);
   c.depth_m = m.number_or("depth_m", kDepth, depth_before);
   if (c.depth_m > vehicle.max_depth_m) {
-    throw input_error(m.where("depth_m"), "a depth within the vehicle's max_depth_m (" + yaml_number(vehicle.max_depth_m) + ")",
+    throw input_error(m.where("depth_m"),
+                      "a depth within the vehicle's max_depth_m (" + yaml_number(vehicle.max_depth_m) + ")",
                       yaml_number(c.depth_m));
   }
   c.speed_mps = r.speed(m, vehicle);
@@ -148,7 +159,8 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
       c.spec = TrackSpec{r.positions(m, "waypoints", 1)};
     }
   } else if (c.type == "goto") {
-    if (!m.has("position")) throw input_error(m.where("position"), "a position {lon: DEG, lat: DEG} or {x: M, y: M}", "nothing");
+    if (!m.has("position"))
+      throw input_error(m.where("position"), "a position {lon: DEG, lat: DEG} or {x: M, y: M}", "nothing");
     c.spec = GotoSpec{r.position(m.value("position"), m.full("position"))};
   } else if (c.type == "gps_update") {
     c.spec = GpsUpdateSpec{m.number_or("hold_s", kHold, 60.0)};
@@ -157,7 +169,8 @@ ComplexManoeuvre read_manoeuvre(const Reader& r, const YAML::Node& item, std::si
     t.object = m.text("object", "the id of the obstacle to identify");
     if (m.has("mode")) {
       const std::string mode = m.text("mode", "align or around");
-      if (mode != "align" && mode != "around") throw input_error(m.where("mode"), "align or around", "'" + printable(mode) + "'");
+      if (mode != "align" && mode != "around")
+        throw input_error(m.where("mode"), "align or around", "'" + printable(mode) + "'");
       t.mode = mode == "align" ? IdentifyTask::Mode::align : IdentifyTask::Mode::around;
     }
     t.distance_m = m.number_or("distance_m", kDistance, t.distance_m);
@@ -199,9 +212,11 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
 
   // The frame: crs, else the UTM zone of the start (which must then be lon/lat).
   if (root.has("crs")) {
-    r.frame = LocalFrame::from_user_crs(root.text("crs", "a projected CRS such as EPSG:32632"), root.where("crs").describe());
+    r.frame =
+        LocalFrame::from_user_crs(root.text("crs", "a projected CRS such as EPSG:32632"), root.where("crs").describe());
   }
-  if (!root.has("start")) throw input_error(root.where("start"), "a start {lon, lat, depth_m} or {x, y, depth_m}", "nothing");
+  if (!root.has("start"))
+    throw input_error(root.where("start"), "a start {lon, lat, depth_m} or {x, y, depth_m}", "nothing");
   {
     const Mapping s(root.value("start"), source, "start.", {"x", "y", "lon", "lat", "depth_m"},
                     "a start {lon: DEG, lat: DEG, depth_m: M} or {x: M, y: M, depth_m: M}");
@@ -215,7 +230,8 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
   mission.frame = *r.frame;
 
   if (root.has("environment")) {
-    const Mapping e(root.value("environment"), source, "environment.", {"charts", "obstacles", "current", "current_file"},
+    const Mapping e(root.value("environment"), source, "environment.",
+                    {"charts", "obstacles", "current", "current_file"},
                     "a mapping of environment keys (charts, obstacles, current, current_file)");
     const auto files = [&](const char* key) {
       std::vector<std::string> out;
@@ -223,18 +239,21 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
       const YAML::Node list = e.value(key);
       if (!list.IsSequence()) throw input_error(e.where(key), "a list of file paths");
       for (const auto& item : list) {
-        if (!item.IsScalar() || item.Scalar().empty()) throw input_error({source, line_of(item), e.full(key)}, "a file path");
+        if (!item.IsScalar() || item.Scalar().empty())
+          throw input_error({source, line_of(item), e.full(key)}, "a file path");
         const fs::path p(item.Scalar());
         const std::string path = p.is_absolute() ? p.string() : (fs::path(base_dir) / p).string();
         std::error_code ec;
-        if (!fs::exists(path, ec)) throw input_error({source, line_of(item), e.full(key)}, "an existing file", "'" + printable(path) + "'");
+        if (!fs::exists(path, ec))
+          throw input_error({source, line_of(item), e.full(key)}, "an existing file", "'" + printable(path) + "'");
         out.push_back(path);
       }
       return out;
     };
     mission.charts = files("charts");
     mission.obstacles = files("obstacles");
-    if (e.has("current") && e.has("current_file")) throw input_error(e.where("current_file"), "either current or current_file", "both");
+    if (e.has("current") && e.has("current_file"))
+      throw input_error(e.where("current_file"), "either current or current_file", "both");
     if (e.has("current")) {
       mission.current = e.text("current", "a current SPEED_MPS,DIR_DEG");
       parse_constant_current(mission.current, e.where("current").describe());  // refused here, not later
@@ -261,7 +280,8 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
       const YAML::Node ids = c.value("identify");
       if (!ids.IsSequence()) throw input_error(c.where("identify"), "a list of obstacle ids");
       for (const auto& id : ids) {
-        if (!id.IsScalar() || id.Scalar().empty()) throw input_error({source, line_of(id), c.full("identify")}, "an obstacle id");
+        if (!id.IsScalar() || id.Scalar().empty())
+          throw input_error({source, line_of(id), c.full("identify")}, "an obstacle id");
         mission.control.identify.push_back(id.Scalar());
       }
     }
@@ -273,8 +293,10 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
                     std::max(mission.control.identify_distance_m, least + 5.0));
     if (c.has("unknown_objects")) {
       const std::string what = c.text("unknown_objects", "evade or identify");
-      if (what != "evade" && what != "identify") throw input_error(c.where("unknown_objects"), "evade or identify", "'" + printable(what) + "'");
-      mission.control.unknown_objects = what == "evade" ? ControlRules::Reaction::evade : ControlRules::Reaction::identify;
+      if (what != "evade" && what != "identify")
+        throw input_error(c.where("unknown_objects"), "evade or identify", "'" + printable(what) + "'");
+      mission.control.unknown_objects =
+          what == "evade" ? ControlRules::Reaction::evade : ControlRules::Reaction::identify;
     }
   }
   const YAML::Node list = root.value("manoeuvres");
@@ -297,7 +319,8 @@ Mission read_mission(const std::string& path) {
   refuse_special_file(path);
   if (!fs::is_regular_file(path, ec)) throw input_error({path, "", ""}, "an existing mission file");
   const auto size = fs::file_size(path, ec);
-  if (ec || size > (4u << 20)) throw input_error({path, "", ""}, "a mission file under 4 MiB", std::to_string(size) + " bytes");
+  if (ec || size > (4u << 20))
+    throw input_error({path, "", ""}, "a mission file under 4 MiB", std::to_string(size) + " bytes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw input_error({path, "", ""}, "a readable mission file");
   std::ostringstream text;
@@ -306,9 +329,9 @@ Mission read_mission(const std::string& path) {
   try {
     doc = load_one_document(text.str(), path);
   } catch (const YAML::Exception& e) {
-    const std::string at = e.mark.line >= 0
-                               ? "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1)
-                               : std::string();
+    const std::string at =
+        e.mark.line >= 0 ? "line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1)
+                         : std::string();
     throw input_error({path, at, ""}, "a YAML mission file", printable(e.msg, 100));
   }
   if (doc.IsNull()) throw input_error({path, "", ""}, "a YAML mapping of mission keys", "an empty document");

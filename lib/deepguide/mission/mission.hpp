@@ -33,10 +33,10 @@ struct TrackSpec {
 /// A lawnmower (the seed's Meander): parallel lines across a polygon at a
 /// heading, joined by turns of `turn_radius_m`.
 struct SurveySpec {
-  BgPolygon area;                 ///< local frame; simple (not self-intersecting)
+  BgPolygon area;  ///< local frame; simple (not self-intersecting)
   double line_spacing_m = 0.0;
-  double heading_deg = 0.0;       ///< direction of the lines, clockwise from true north
-  double turn_radius_m = 0.0;     ///< 0: the vehicle's at the survey speed
+  double heading_deg = 0.0;    ///< direction of the lines, clockwise from true north
+  double turn_radius_m = 0.0;  ///< 0: the vehicle's at the survey speed
 };
 
 /// Surface where the vehicle is, hold for a GPS fix, dive again.
@@ -46,9 +46,9 @@ struct GpsUpdateSpec {
 
 /// Look at an object: align in its flow shade, or go around it.
 struct IdentifyTask {
-  std::string object;             ///< an obstacle's id
+  std::string object;  ///< an obstacle's id
   enum class Mode { align, around } mode = Mode::around;
-  double distance_m = 20.0;       ///< from the object's outline
+  double distance_m = 20.0;  ///< from the object's outline
 };
 
 /// Go straight to a point.
@@ -57,10 +57,10 @@ struct GotoSpec {
 };
 
 struct ComplexManoeuvre {
-  std::string type;               ///< "track", "survey", "gps_update", "identify", "goto"
-  std::string name;               ///< the file's name, else "track 1" and so on
-  std::string line;               ///< where it is in the file ("line 23"), for messages
-  double depth_m = 0.0;           ///< operating depth (m, positive down)
+  std::string type;      ///< "track", "survey", "gps_update", "identify", "goto"
+  std::string name;      ///< the file's name, else "track 1" and so on
+  std::string line;      ///< where it is in the file ("line 23"), for messages
+  double depth_m = 0.0;  ///< operating depth (m, positive down)
   double speed_mps = 0.0;
   std::variant<TrackSpec, SurveySpec, GpsUpdateSpec, IdentifyTask, GotoSpec> spec;
 };
@@ -72,14 +72,14 @@ struct ComplexManoeuvre {
 /// says (simulate).
 struct ControlRules {
   enum class Reaction { evade, identify };
-  std::vector<std::string> identify;   ///< obstacle ids
-  double identify_distance_m = 25.0;   ///< from the outline; at least the corridor (margin + half width)
+  std::vector<std::string> identify;  ///< obstacle ids
+  double identify_distance_m = 25.0;  ///< from the outline; at least the corridor (margin + half width)
   Reaction unknown_objects = Reaction::evade;
 };
 
 struct Mission {
   std::string name;
-  std::string source;             ///< the file
+  std::string source;  ///< the file
   LocalFrame frame = LocalFrame::utm_for(0.0, 0.0);
   VehicleParams vehicle;
   std::vector<std::string> charts;     ///< bathymetry rasters, S-57 cells, hazard files

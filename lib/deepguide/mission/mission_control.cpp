@@ -35,7 +35,8 @@ class Evasions {
         observe_(observation_options(mission)),
         zone_margin_(observe_.margin_m + observe_.half_width_m + kExtraZone),
         field_(env.obstacles, zone_margin_),
-        volume_(field_, env.floor.get(), {observe_.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()}) {}
+        volume_(field_, env.floor.get(),
+                {observe_.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()}) {}
 
   const ObservationOptions& observe() const { return observe_; }
   const WaterVolume& volume() const { return volume_; }
@@ -50,8 +51,10 @@ class Evasions {
     const std::size_t ellipses = env_.obstacles.ellipses.size();
     for (std::size_t i = 0; i < env_.obstacles.size(); ++i) {
       if (!(volume_.zone_top(i) < depth)) continue;
-      if (i < ellipses) out.ellipses.push_back(env_.obstacles.ellipses[i]);
-      else out.polygons.push_back(env_.obstacles.polygons[i - ellipses]);
+      if (i < ellipses)
+        out.ellipses.push_back(env_.obstacles.ellipses[i]);
+      else
+        out.polygons.push_back(env_.obstacles.polygons[i - ellipses]);
     }
     if (env_.floor) {
       NoGoOptions o;
@@ -77,7 +80,8 @@ class Evasions {
         return {};
       }
       if (!plan.outcome.check.safe) {
-        problem = "the route at " + fixed(depth, 1) + " m" + " fails the route checker: " + plan.outcome.check.describe();
+        problem =
+            "the route at " + fixed(depth, 1) + " m" + " fails the route checker: " + plan.outcome.check.describe();
         return {};
       }
       return plan.outcome.result.route.points;
@@ -216,7 +220,8 @@ std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironm
     const PlanPosition from = position_at(plan, depart), to = position_at(plan, rendezvous);
     if (deepest_between(danger, plan, depart, rendezvous) > depth || !evasions.free_at(depth, from.xy) ||
         !evasions.free_at(depth, to.xy)) {
-      r.problem = "no free water at " + fixed(depth, 1) + " m" + " on the route before or after it to leave from or rejoin at";
+      r.problem =
+          "no free water at " + fixed(depth, 1) + " m" + " on the route before or after it to leave from or rejoin at";
       return std::nullopt;
     }
     if (holds_within(plan, depart, rendezvous)) {
@@ -316,8 +321,8 @@ PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& en
       with.conflict = c;
       with.time_s = position_at(out.plan, c.along_m).time_s;
       with.added_m = 0.0;
-      const bool wanted = c.obstacle != kSeaFloor &&
-                          choose_reaction(mission.control, env.obstacles, c.obstacle) == ControlRules::Reaction::identify;
+      const bool wanted = c.obstacle != kSeaFloor && choose_reaction(mission.control, env.obstacles, c.obstacle) ==
+                                                         ControlRules::Reaction::identify;
       with.note = std::string(wanted && r.reaction != ControlRules::Reaction::identify ? "to identify, but " : "") +
                   (r.reaction == ControlRules::Reaction::identify ? "passed" : "evaded") + " with " + next->with +
                   " (their dangers join)";

@@ -48,7 +48,7 @@ struct Resolution {
   double added_m = 0.0;       ///< length added to the mission
   double time_s = 0.0;        ///< when along the mission the danger began (at the planned speeds and holds)
   std::string problem;        ///< why it is not resolved, one line
-  std::string note;           ///< e.g. "evaded with rock-1 (their dangers join)" for a conflict another's stretch took care of
+  std::string note;  ///< e.g. "evaded with rock-1 (their dangers join)" for a conflict another's stretch took care of
 };
 
 struct PlannedMission {

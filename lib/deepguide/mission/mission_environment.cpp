@@ -58,7 +58,8 @@ MissionEnvironment load_environment(const Mission& mission) {
                                   charted.obstacles.polygons.end());
   }
   if (!raster.empty() && !enc.empty()) {
-    throw InputError(mission.source + ": environment.charts: expected one sea floor, got a bathymetry raster and S-57 "
+    throw InputError(mission.source +
+                     ": environment.charts: expected one sea floor, got a bathymetry raster and S-57 "
                      "cells");
   }
   if (!enc.empty() || !raster.empty()) {

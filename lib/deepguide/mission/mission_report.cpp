@@ -12,12 +12,9 @@ namespace {
 
 const char* kind_name(BasicManoeuvre::Kind kind) {
   switch (kind) {
-    case BasicManoeuvre::Kind::line:
-      return "line";
-    case BasicManoeuvre::Kind::arc:
-      return "arc";
-    case BasicManoeuvre::Kind::point:
-      return "point";
+    case BasicManoeuvre::Kind::line: return "line";
+    case BasicManoeuvre::Kind::arc: return "arc";
+    case BasicManoeuvre::Kind::point: return "point";
   }
   return "?";
 }

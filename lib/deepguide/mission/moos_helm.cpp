@@ -17,10 +17,14 @@ int moos_utm_epsg(double lon, double lat) {
   int zone = static_cast<int>(std::floor((lon + 180.0) / 6.0)) + 1;
   if (lat >= 56.0 && lat < 64.0 && lon >= 3.0 && lon < 12.0) zone = 32;
   if (lat >= 72.0 && lat < 84.0) {
-    if (lon >= 0.0 && lon < 9.0) zone = 31;
-    else if (lon >= 9.0 && lon < 21.0) zone = 33;
-    else if (lon >= 21.0 && lon < 33.0) zone = 35;
-    else if (lon >= 33.0 && lon < 42.0) zone = 37;
+    if (lon >= 0.0 && lon < 9.0)
+      zone = 31;
+    else if (lon >= 9.0 && lon < 21.0)
+      zone = 33;
+    else if (lon >= 21.0 && lon < 33.0)
+      zone = 35;
+    else if (lon >= 33.0 && lon < 42.0)
+      zone = 37;
   }
   zone = std::clamp(zone, 1, 60);
   return (lat >= 0.0 ? 32600 : 32700) + zone;
@@ -79,8 +83,11 @@ MoosPlan moos_plan(const ExportRoute& route) {
       // around the point, for the time the change takes at the vertical speed and half again.
       const double change = std::abs(wps[i].depth_m - wps[i - 1].depth_m);
       if (change > 0.5) {
-        plan.phases.push_back({MoosPhase::Kind::reach_depth, {local(wps[i])}, wps[i].depth_m,
-                               std::max(wps[i].speed_mps, 0.5), 1.5 * change / vertical + 10.0});
+        plan.phases.push_back({MoosPhase::Kind::reach_depth,
+                               {local(wps[i])},
+                               wps[i].depth_m,
+                               std::max(wps[i].speed_mps, 0.5),
+                               1.5 * change / vertical + 10.0});
       }
       if (wps[i].hold_s > 0.0) {
         plan.phases.push_back({MoosPhase::Kind::hold, {local(wps[i])}, wps[i].depth_m, 0.0, wps[i].hold_s});
@@ -111,15 +118,16 @@ std::vector<std::string> moos_domains(double deepest_m, double top_speed_mps) {
   // helm still stops: NothingToDo, after DG_DONE.
   const int speed = static_cast<int>(std::ceil(std::max(top_speed_mps, 0.5)));
   const int depth = static_cast<int>(std::ceil(std::max(deepest_m, 0.0) + 10.0));
-  return {"course:0:359:360:optional", "speed:0:" + std::to_string(speed) + ":" + std::to_string(speed * 20 + 1) + ":optional",
+  return {"course:0:359:360:optional",
+          "speed:0:" + std::to_string(speed) + ":" + std::to_string(speed * 20 + 1) + ":optional",
           "depth:0:" + std::to_string(depth) + ":" + std::to_string(depth * 5 + 1)};
 }
 
 std::string moos_community(const MoosPlan& plan, double deepest_m, double top_speed_mps,
                            const MoosCommunityOptions& o) {
   std::ostringstream m;
-  const Vec2 first = plan.phases.empty() || plan.phases.front().points.empty() ? Vec2(0.0, 1.0)
-                                                                                : plan.phases.front().points.front();
+  const Vec2 first =
+      plan.phases.empty() || plan.phases.front().points.empty() ? Vec2(0.0, 1.0) : plan.phases.front().points.front();
   const double heading = std::fmod(std::atan2(first.x(), first.y()) * 180.0 / M_PI + 360.0, 360.0);
   m << "// deepguide: a headless community sailing " << o.behaviour_file << " in simulation\n"
     << "ServerHost   = localhost\nServerPort   = " << o.port << "\nCommunity    = deepguide\n"
@@ -235,8 +243,8 @@ SailedReport compare_sailed(const MoosPlan& plan, const MoosLog& log) {
     const std::size_t phase = static_cast<std::size_t>(log.legs[k].second - 2);  // the phase that just ended
     if (phase >= n) continue;
     const double t = log.legs[k].first;
-    auto it = std::lower_bound(log.nav.begin(), log.nav.end(), t,
-                               [](const MoosLog::Nav& s, double v) { return s.t < v; });
+    auto it =
+        std::lower_bound(log.nav.begin(), log.nav.end(), t, [](const MoosLog::Nav& s, double v) { return s.t < v; });
     if (it == log.nav.end()) --it;
     const double miss = std::abs(it->depth - plan.phases[phase].depth_m);
     if (miss > r.worst_depth_miss_m) r.worst_depth_miss_m = miss, r.worst_depth_phase = phase + 1;

@@ -25,12 +25,12 @@ struct MoosPhase {
   std::vector<Vec2> points;  ///< local x, y: a leg's waypoints; the station of a reach or a hold
   double depth_m = 0.0;      ///< held through the phase: a leg's end waypoint's depth
   double speed_mps = 0.0;
-  double duration_s = 0.0;   ///< reach and hold phases
+  double duration_s = 0.0;  ///< reach and hold phases
 };
 
 struct MoosPlan {
-  LocalFrame utm;            ///< MOOSGeodesy's UTM zone of the origin
-  Vec2 origin_lonlat;        ///< the route's start: LatOrigin, LongOrigin
+  LocalFrame utm;      ///< MOOSGeodesy's UTM zone of the origin
+  Vec2 origin_lonlat;  ///< the route's start: LatOrigin, LongOrigin
   double turn_radius_m = 0.0;
   double capture_radius_m = 0.0;
   double slip_radius_m = 0.0;
@@ -65,12 +65,12 @@ struct MoosLog {
   struct Nav {
     double t, x, y, depth;
   };
-  std::vector<Nav> nav;                      ///< NAV_X, NAV_Y, NAV_DEPTH
-  std::vector<std::pair<double, int>> legs;  ///< DG_LEG as posted (changes only)
+  std::vector<Nav> nav;                                  ///< NAV_X, NAV_Y, NAV_DEPTH
+  std::vector<std::pair<double, int>> legs;              ///< DG_LEG as posted (changes only)
   std::vector<std::pair<double, std::string>> allstops;  ///< IVPHELM_ALLSTOP other than "clear"
-  std::vector<std::string> helm_states;      ///< IVPHELM_STATE values, in order, without repeats
-  std::optional<double> deploy_s;            ///< DEPLOY = true
-  std::optional<double> done_s;              ///< DG_DONE = true
+  std::vector<std::string> helm_states;                  ///< IVPHELM_STATE values, in order, without repeats
+  std::optional<double> deploy_s;                        ///< DEPLOY = true
+  std::optional<double> done_s;                          ///< DG_DONE = true
 };
 
 /// Reads the .alog. Throws InputError naming the file for one that is
@@ -78,16 +78,16 @@ struct MoosLog {
 MoosLog read_moos_alog(const std::string& path);
 
 struct SailedReport {
-  bool done = false;            ///< DG_DONE = true was posted
-  bool in_order = false;        ///< DG_LEG went 1, 2, ..., phases + 1
-  std::size_t phases_run = 0;   ///< phases that ended
+  bool done = false;                              ///< DG_DONE = true was posted
+  bool in_order = false;                          ///< DG_LEG went 1, 2, ..., phases + 1
+  std::size_t phases_run = 0;                     ///< phases that ended
   std::vector<std::string> allstops_before_done;  ///< the helm stopped while phases remained
-  double median_off_m = 0.0;    ///< horizontal distance from the route along the legs (not the reach loiters)
+  double median_off_m = 0.0;  ///< horizontal distance from the route along the legs (not the reach loiters)
   double p95_off_m = 0.0;
   double max_off_m = 0.0;
-  double worst_depth_miss_m = 0.0;  ///< |depth - the phase's| at each phase's end, the worst
+  double worst_depth_miss_m = 0.0;    ///< |depth - the phase's| at each phase's end, the worst
   std::size_t worst_depth_phase = 0;  ///< 1-based
-  double sailed_s = 0.0;        ///< from DEPLOY to DG_DONE (or the log's end)
+  double sailed_s = 0.0;              ///< from DEPLOY to DG_DONE (or the log's end)
 };
 
 SailedReport compare_sailed(const MoosPlan& plan, const MoosLog& log);

@@ -71,8 +71,8 @@ std::vector<ExportWaypoint> export_corner_waypoints(const Mission& mission, cons
       out.back().hold_s += b.hold_s;  // held where the vehicle is
     } else if (b.kind == BasicManoeuvre::Kind::line) {
       // An arc that leaves along the line turns at its own corners; else the line's end is a corner.
-      const bool arc_next = !last && plan.basics[i + 1].kind == BasicManoeuvre::Kind::arc &&
-                            joins_smoothly(b, plan.basics[i + 1]);
+      const bool arc_next =
+          !last && plan.basics[i + 1].kind == BasicManoeuvre::Kind::arc && joins_smoothly(b, plan.basics[i + 1]);
       if (!arc_next && b.length_m > 0.0) add(b, b.to, b.depth_m, b.start_m + b.length_m, time + sailing, 0.0);
     } else if (b.length_m > 0.0 && b.radius_m > 0.0) {
       const double sweep = b.length_m / b.radius_m;
@@ -115,9 +115,8 @@ void export_plan(const Mission& mission, const MissionPlan& plan, const std::str
                  const ExportOptions& options) {
   if (plan.basics.empty()) throw InputError(path + ": expected a plan with at least one manoeuvre to export");
   if (format == ExportFormat::yaml) {
-    detail::write_atomically(path, options.overwrite, [&](const std::string& temp) {
-      detail::write_plan_yaml(temp, path, mission, plan);
-    });
+    detail::write_atomically(path, options.overwrite,
+                             [&](const std::string& temp) { detail::write_plan_yaml(temp, path, mission, plan); });
     return;
   }
   write_route_file(export_route(mission, plan, options.arc_tolerance_m, format == ExportFormat::rtz), path, format,

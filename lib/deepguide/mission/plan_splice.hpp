@@ -21,7 +21,7 @@ struct PlanPosition {
   Vec2 xy{0.0, 0.0};
   double depth_m = 0.0;
   double speed_mps = 0.0;
-  double time_s = 0.0;    ///< since the mission's start, at the planned speeds and holds
+  double time_s = 0.0;  ///< since the mission's start, at the planned speeds and holds
 };
 PlanPosition position_at(const MissionPlan& plan, double along_m);
 

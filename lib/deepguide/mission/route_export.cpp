@@ -23,10 +23,14 @@ struct FormatName {
 
 const std::vector<FormatName>& formats() {
   static const std::vector<FormatName> f = {
-      {ExportFormat::yaml, "yaml", {".yaml", ".yml"}},  {ExportFormat::geojson, "geojson", {".geojson", ".json"}},
-      {ExportFormat::gpx, "gpx", {".gpx"}},            {ExportFormat::kml, "kml", {".kml"}},
-      {ExportFormat::csv, "csv", {".csv"}},            {ExportFormat::qgc_plan, "plan", {".plan"}},
-      {ExportFormat::moos, "moos", {".bhv"}},          {ExportFormat::rtz, "rtz", {".rtz"}},
+      {ExportFormat::yaml, "yaml", {".yaml", ".yml"}},
+      {ExportFormat::geojson, "geojson", {".geojson", ".json"}},
+      {ExportFormat::gpx, "gpx", {".gpx"}},
+      {ExportFormat::kml, "kml", {".kml"}},
+      {ExportFormat::csv, "csv", {".csv"}},
+      {ExportFormat::qgc_plan, "plan", {".plan"}},
+      {ExportFormat::moos, "moos", {".bhv"}},
+      {ExportFormat::rtz, "rtz", {".rtz"}},
   };
   return f;
 }
@@ -47,8 +51,10 @@ ExportFormat export_format_for(const std::string& path) {
       if (ext == e) return f.format;
     }
   }
-  throw InputError(printable(path, 240) + ": expected an extension that names the format (.yaml, .geojson, .gpx, "
-                   ".kml, .csv, .plan, .bhv, .rtz), got '" + printable(ext) + "'");
+  throw InputError(printable(path, 240) +
+                   ": expected an extension that names the format (.yaml, .geojson, .gpx, "
+                   ".kml, .csv, .plan, .bhv, .rtz), got '" +
+                   printable(ext) + "'");
 }
 
 std::string to_string(ExportFormat format) {
@@ -61,7 +67,8 @@ std::string to_string(ExportFormat format) {
 ExportFormat route_file_format(const std::string& path) {
   const ExportFormat format = export_format_for(path);
   if (format == ExportFormat::yaml) {
-    throw InputError(printable(path, 240) + ": expected a route file (.geojson, .gpx, .kml, .csv, .rtz, .plan or "
+    throw InputError(printable(path, 240) +
+                     ": expected a route file (.geojson, .gpx, .kml, .csv, .rtz, .plan or "
                      ".bhv); .yaml is a mission's plan of basic manoeuvres (mission export)");
   }
   return format;
@@ -91,7 +98,7 @@ ExportRoute export_route(const Route& route, const LocalFrame& frame, const Vehi
       const double length = (route.points[i] - route.points[i - 1]).norm();
       along += length;
       time += i - 1 < settings.leg_times_s.size() ? settings.leg_times_s[i - 1]
-                                                   : (speed(i - 1) > 0.0 ? length / speed(i - 1) : 0.0);
+                                                  : (speed(i - 1) > 0.0 ? length / speed(i - 1) : 0.0);
     }
     w.speed_mps = speed(i > 0 ? i - 1 : 0);
     fastest = std::max(fastest, w.speed_mps);
@@ -135,8 +142,7 @@ void write_route_file(const ExportRoute& route, const std::string& path, ExportF
                       const ExportOptions& options) {
   if (format == ExportFormat::yaml) route_file_format(path);  // throws: not a route format
   if (route.waypoints.size() < 2) throw InputError(path + ": expected a route with at least two waypoints to write");
-  const std::string name =
-      options.route_name.empty() ? fs::path(path).stem().string() : options.route_name;
+  const std::string name = options.route_name.empty() ? fs::path(path).stem().string() : options.route_name;
   const detail::ExportInput in{path, route, name};
   detail::write_atomically(path, options.overwrite, [&](const std::string& temp) {
     switch (format) {

@@ -51,17 +51,17 @@ std::string to_string(ExportFormat format);
 ExportFormat route_file_format(const std::string& path);
 
 struct ExportWaypoint {
-  Vec2 xy{0.0, 0.0};      ///< the route's frame
-  Vec2 lonlat{0.0, 0.0};  ///< WGS 84 degrees
-  std::string name;       ///< short and unique in the route ("001", ...)
-  double depth_m = 0.0;   ///< on arrival
-  double speed_mps = 0.0; ///< of the leg arriving here (the first: of the first leg)
-  double hold_s = 0.0;    ///< time held here
-  double radius_m = 0.0;  ///< the turn here: an arc's radius; 0 = the route's turn radius
+  Vec2 xy{0.0, 0.0};       ///< the route's frame
+  Vec2 lonlat{0.0, 0.0};   ///< WGS 84 degrees
+  std::string name;        ///< short and unique in the route ("001", ...)
+  double depth_m = 0.0;    ///< on arrival
+  double speed_mps = 0.0;  ///< of the leg arriving here (the first: of the first leg)
+  double hold_s = 0.0;     ///< time held here
+  double radius_m = 0.0;   ///< the turn here: an arc's radius; 0 = the route's turn radius
   double along_m = 0.0;
-  double time_s = 0.0;    ///< on arrival, at the planned speeds and holds
+  double time_s = 0.0;           ///< on arrival, at the planned speeds and holds
   std::string role = "mission";  ///< mission, evasion or identification
-  std::string manoeuvre;  ///< the complex manoeuvre's name (missions)
+  std::string manoeuvre;         ///< the complex manoeuvre's name (missions)
 };
 
 /// A route as the writers take it.
@@ -70,12 +70,12 @@ struct ExportRoute {
   LocalFrame frame;  ///< the frame of the waypoints' xy
   std::vector<ExportWaypoint> waypoints = {};
   double length_m = 0.0;
-  double turn_radius_m = 0.0;          ///< the vehicle's smallest turn; 0 = not known
-  double vertical_speed_mps = 0.5;     ///< the vehicle's (the .bhv's depth changes)
-  double max_speed_mps = 0.0;          ///< the vehicle's; 0 = not known (RTZ speedMax)
-  double xtd_m = NAN;                  ///< allowed cross-track distance each side (the margin)
-  double safety_depth_m = NAN;         ///< the water depth the route needs (RTZ safetyDepth)
-  std::optional<double> depart_utc_s = std::nullopt;  ///< for ETAs (RTZ schedules); none = times only
+  double turn_radius_m = 0.0;                            ///< the vehicle's smallest turn; 0 = not known
+  double vertical_speed_mps = 0.5;                       ///< the vehicle's (the .bhv's depth changes)
+  double max_speed_mps = 0.0;                            ///< the vehicle's; 0 = not known (RTZ speedMax)
+  double xtd_m = NAN;                                    ///< allowed cross-track distance each side (the margin)
+  double safety_depth_m = NAN;                           ///< the water depth the route needs (RTZ safetyDepth)
+  std::optional<double> depart_utc_s = std::nullopt;     ///< for ETAs (RTZ schedules); none = times only
   nlohmann::json properties = nlohmann::json::object();  ///< more on the GeoJSON line
   std::vector<nlohmann::json> waypoint_properties = {};  ///< more on each GeoJSON point (when given, one each)
 };
@@ -105,7 +105,7 @@ ExportRoute export_route(const Route& route, const LocalFrame& frame, const Vehi
 struct ExportOptions {
   double arc_tolerance_m = 0.5;  ///< missions: arcs as chords at most this far inside
   bool overwrite = false;
-  std::string route_name = {};   ///< RTZ routeName; empty = the file's name without extension
+  std::string route_name = {};  ///< RTZ routeName; empty = the file's name without extension
 };
 
 /// Waypoint names "001", "002", ... (wider past 999), as OpenCPN numbers them.

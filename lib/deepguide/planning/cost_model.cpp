@@ -112,8 +112,10 @@ void validate(const CostModel& m) {
                      " .. " + format_utc(m.time_last_s) + ", got " + format_utc(m.depart_s));
   }
   if (m.economical && m.kind == CostKind::time) {
-    throw InputError("--speed optimal: expected --cost energy or length (the least-energy speed per leg; the "
-                     "fastest route is flown at the maximum speed: give --speed " + general(m.max_speed_mps) + ")");
+    throw InputError(
+        "--speed optimal: expected --cost energy or length (the least-energy speed per leg; the "
+        "fastest route is flown at the maximum speed: give --speed " +
+        general(m.max_speed_mps) + ")");
   }
   if (m.economical && !m.steady) {
     throw InputError(
@@ -155,12 +157,11 @@ double cost_per_metre_lower_bound(const CostModel& m) {
   switch (m.kind) {
     case CostKind::length: return 1.0;
     case CostKind::time:
-      return m.economical ? 1.0 / (m.max_speed_mps + m.max_current_mps)
-                          : 1.0 / (m.speed_mps + m.max_current_mps);
+      return m.economical ? 1.0 / (m.max_speed_mps + m.max_current_mps) : 1.0 / (m.speed_mps + m.max_current_mps);
     case CostKind::energy:
-      return m.economical ? energy_per_metre_lower_bound(m.leg.energy, m.min_speed_mps, m.max_speed_mps,
-                                                         m.max_current_mps)
-                          : m.leg.energy.power_w(m.speed_mps) / (m.speed_mps + m.max_current_mps);
+      return m.economical
+                 ? energy_per_metre_lower_bound(m.leg.energy, m.min_speed_mps, m.max_speed_mps, m.max_current_mps)
+                 : m.leg.energy.power_w(m.speed_mps) / (m.speed_mps + m.max_current_mps);
   }
   return 1.0;
 }

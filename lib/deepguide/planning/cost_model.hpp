@@ -28,8 +28,8 @@
 // nobody forecast.
 
 #include <functional>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -113,7 +113,7 @@ struct RoutePricing {
   double length_m = 0.0;
   double time_s = 0.0;
   double energy_j = 0.0;
-  double cost = 0.0;  ///< in the model's kind
+  double cost = 0.0;               ///< in the model's kind
   double unknown_current_m = 0.0;  ///< metres of route where the field had no value (taken as still water)
 };
 

@@ -50,8 +50,7 @@ void read_charts(const LocalFrame& frame, const DepthPlanRequest& r, DepthPlanRe
     if (report.floor) {
       throw InputError(enc_charts.front() + ": planning in depth: expected one sea floor, got a raster and S-57 cells");
     }
-    report.floor =
-        std::make_shared<const SeaFloor>(enc_sea_floor(enc_charts, frame, lo, hi, std::max(spacing, 5.0)));
+    report.floor = std::make_shared<const SeaFloor>(enc_sea_floor(enc_charts, frame, lo, hi, std::max(spacing, 5.0)));
   }
   if (!vector_charts.empty()) {
     ChartObstacleOptions chart_options;  // no depth: every hazard stays, with its top
@@ -99,28 +98,29 @@ DepthPlanReport plan_depth_request(const LocalFrame& frame, const DepthPlanReque
 
 nlohmann::json DepthPlanReport::to_json() const {
   const Route& r = route();
-  nlohmann::json j = {{"length_m", r.length()},
-                      {"waypoints", r.points.size()},
-                      {"graph", "octree"},
-                      {"search", to_string(search)},
-                      {"margin_m", options.margin},
-                      {"vertical_clearance_m", vertical_clearance_m},
-                      {"depth_band_m", {options.volume.min_depth_m, std::isfinite(options.volume.max_depth_m)
-                                                                        ? nlohmann::json(options.volume.max_depth_m)
-                                                                        : nlohmann::json()}},
-                      {"max_dive_deg", options.octree.max_dive_deg},
-                      {"steepest_deg", plan.check.steepest_deg},
-                      {"min_cell_height_m", plan.min_cell.z()},
-                      {"min_cell_width_m", plan.min_cell.x()},
-                      {"cells", plan.cells},
-                      {"free_cells", plan.free_cells},
-                      {"octree_bytes", plan.memory_bytes},
-                      {"expanded", plan.result.stats.expanded},
-                      {"build_ms", plan.result.stats.build_ms},
-                      {"query_ms", plan.result.stats.query_ms},
-                      {"obstacles", obstacles.size()},
-                      {"sea_floor", floor != nullptr},
-                      {"crs", crs}};
+  nlohmann::json j = {
+      {"length_m", r.length()},
+      {"waypoints", r.points.size()},
+      {"graph", "octree"},
+      {"search", to_string(search)},
+      {"margin_m", options.margin},
+      {"vertical_clearance_m", vertical_clearance_m},
+      {"depth_band_m",
+       {options.volume.min_depth_m,
+        std::isfinite(options.volume.max_depth_m) ? nlohmann::json(options.volume.max_depth_m) : nlohmann::json()}},
+      {"max_dive_deg", options.octree.max_dive_deg},
+      {"steepest_deg", plan.check.steepest_deg},
+      {"min_cell_height_m", plan.min_cell.z()},
+      {"min_cell_width_m", plan.min_cell.x()},
+      {"cells", plan.cells},
+      {"free_cells", plan.free_cells},
+      {"octree_bytes", plan.memory_bytes},
+      {"expanded", plan.result.stats.expanded},
+      {"build_ms", plan.result.stats.build_ms},
+      {"query_ms", plan.result.stats.query_ms},
+      {"obstacles", obstacles.size()},
+      {"sea_floor", floor != nullptr},
+      {"crs", crs}};
   if (std::isfinite(plan.check.min_floor_gap_m)) j["min_floor_gap_m"] = plan.check.min_floor_gap_m;
   return j;
 }
@@ -139,23 +139,24 @@ std::vector<nlohmann::json> DepthPlanReport::waypoint_properties() const {
 std::string DepthPlanReport::to_text() const {
   const Route& r = route();
   const VolumeOptions& v = options.volume;
-  std::string text = report_line("length", fixed(r.length(), 2) + " m in depth, " + std::to_string(r.points.size()) +
-                                        " waypoints");
+  std::string text =
+      report_line("length", fixed(r.length(), 2) + " m in depth, " + std::to_string(r.points.size()) + " waypoints");
   text += report_line("depth", fixed(r.depth_m.front(), 1) + " m to " + fixed(r.depth_m.back(), 1) + " m; band " +
-                            fixed(v.min_depth_m, 1) + " m to " +
-                            (std::isfinite(v.max_depth_m) ? fixed(v.max_depth_m, 1) + " m" : "the floor") +
-                            "; steepest leg " + fixed(plan.check.steepest_deg, 1) + " deg (dive " +
-                            fixed(options.octree.max_dive_deg, 1) + " deg)");
+                                   fixed(v.min_depth_m, 1) + " m to " +
+                                   (std::isfinite(v.max_depth_m) ? fixed(v.max_depth_m, 1) + " m" : "the floor") +
+                                   "; steepest leg " + fixed(plan.check.steepest_deg, 1) + " deg (dive " +
+                                   fixed(options.octree.max_dive_deg, 1) + " deg)");
   if (std::isfinite(plan.check.min_floor_gap_m)) {
-    text += report_line("sea floor", "at least " + fixed(plan.check.min_floor_gap_m, 2) + " m below the route (clearance " +
-                                  fixed(vertical_clearance_m, 2) + " m)");
+    text += report_line("sea floor", "at least " + fixed(plan.check.min_floor_gap_m, 2) +
+                                         " m below the route (clearance " + fixed(vertical_clearance_m, 2) + " m)");
   }
-  text += report_line("octree", std::to_string(plan.cells) + " cells (" + std::to_string(plan.free_cells) + " free), smallest " +
-                             fixed(plan.min_cell.z(), 2) + " m high x " + fixed(plan.min_cell.x(), 2) + " m wide, " +
-                             fixed(static_cast<double>(plan.memory_bytes) / (1024.0 * 1024.0), 1) + " MiB; " +
-                             to_string(search) + " expanded " + std::to_string(plan.result.stats.expanded));
+  text += report_line("octree", std::to_string(plan.cells) + " cells (" + std::to_string(plan.free_cells) +
+                                    " free), smallest " + fixed(plan.min_cell.z(), 2) + " m high x " +
+                                    fixed(plan.min_cell.x(), 2) + " m wide, " +
+                                    fixed(static_cast<double>(plan.memory_bytes) / (1024.0 * 1024.0), 1) + " MiB; " +
+                                    to_string(search) + " expanded " + std::to_string(plan.result.stats.expanded));
   text += report_line("time", "build " + fixed(plan.result.stats.build_ms, 2) + " ms, query " +
-                           fixed(plan.result.stats.query_ms, 2) + " ms");
+                                  fixed(plan.result.stats.query_ms, 2) + " ms");
   text += report_line("check", plan.check.describe());
   return text;
 }

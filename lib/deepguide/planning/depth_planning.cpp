@@ -12,8 +12,8 @@ std::pair<Vec2, Vec2> depth_planning_area(const Vec2& start, const Vec2& goal, c
   return {start.cwiseMin(goal) - Vec2::Constant(pad), start.cwiseMax(goal) + Vec2::Constant(pad)};
 }
 
-DepthPlan plan_in_depth(const ObstacleSet& obstacles, std::shared_ptr<const SeaFloor> floor, const Vec3& start, const Vec3& goal,
-                        const DepthPlanOptions& options) {
+DepthPlan plan_in_depth(const ObstacleSet& obstacles, std::shared_ptr<const SeaFloor> floor, const Vec3& start,
+                        const Vec3& goal, const DepthPlanOptions& options) {
   DepthPlan plan;
   std::tie(plan.area_min, plan.area_max) = depth_planning_area(start.head<2>(), goal.head<2>(), options);
   plan.field = std::make_shared<const ObstacleField>(obstacles, options.margin);

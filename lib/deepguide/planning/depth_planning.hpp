@@ -19,9 +19,9 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct DepthPlanOptions {
-  double margin = 5.0;            ///< horizontal safety margin to every footprint (m)
-  VolumeOptions volume = {};      ///< band and vertical clearance
-  OctreeOptions octree = {};      ///< cells, dive angle, smoothing (the area is set here)
+  double margin = 5.0;        ///< horizontal safety margin to every footprint (m)
+  VolumeOptions volume = {};  ///< band and vertical clearance
+  OctreeOptions octree = {};  ///< cells, dive angle, smoothing (the area is set here)
   SearchAlgorithm search = SearchAlgorithm::astar;
 };
 
@@ -47,7 +47,7 @@ struct DepthPlan {
 /// InputError for bad options, a start or goal in the floor or outside the
 /// band; NoRouteError for one in an obstacle's zone. A search that finds
 /// nothing returns result.found == false.
-DepthPlan plan_in_depth(const ObstacleSet& obstacles, std::shared_ptr<const SeaFloor> floor, const Vec3& start, const Vec3& goal,
-                        const DepthPlanOptions& options);
+DepthPlan plan_in_depth(const ObstacleSet& obstacles, std::shared_ptr<const SeaFloor> floor, const Vec3& start,
+                        const Vec3& goal, const DepthPlanOptions& options);
 
 }  // namespace deepguide

@@ -100,12 +100,13 @@ LegCost leg_cost_economical(const Vec2& a, const Vec2& b, double min_speed_mps, 
   return out;
 }
 
-LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s,
-                         const CurrentAtTime& current, const LegOptions& options) {
+LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s, const CurrentAtTime& current,
+                         const LegOptions& options) {
   check_speed(speed_mps, "speed");
   if (!std::isfinite(depart_s)) throw InputError("leg cost: expected a finite departure time");
   // The pieces' geometry, without currents (they depend on when the vehicle gets there).
-  const Pieces p = cut(a, b, [](const Vec2&) { return Vec2(0.0, 0.0); }, options);
+  const Pieces p = cut(
+      a, b, [](const Vec2&) { return Vec2(0.0, 0.0); }, options);
   LegCost out;
   out.length_m = p.length;
   out.speed_mps = speed_mps;

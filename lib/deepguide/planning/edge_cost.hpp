@@ -49,9 +49,9 @@ struct LegOptions {
 struct LegCost {
   bool feasible = false;
   double length_m = 0.0;
-  double time_s = 0.0;    ///< +inf when infeasible
-  double energy_j = 0.0;  ///< +inf when infeasible
-  double speed_mps = 0.0; ///< through the water
+  double time_s = 0.0;     ///< +inf when infeasible
+  double energy_j = 0.0;   ///< +inf when infeasible
+  double speed_mps = 0.0;  ///< through the water
 };
 
 /// The leg a -> b at `speed_mps` through the water. Throws InputError for a
@@ -75,8 +75,8 @@ using CurrentAtTime = std::function<std::optional<Vec2>(const Vec2&, double)>;
 /// t_{k+1} = t_k + dl / s(x_k, t_k + dl / (2 s(x_k, t_k))), the current taken
 /// at the piece's middle in space and (by one predictor step) in time. A leg
 /// is infeasible where the current has no value at a piece or at its arrival.
-LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s,
-                         const CurrentAtTime& current, const LegOptions& options = {});
+LegCost leg_cost_in_time(const Vec2& a, const Vec2& b, double speed_mps, double depart_s, const CurrentAtTime& current,
+                         const LegOptions& options = {});
 
 /// Lower bound of the time over `distance_m` at `speed_mps` with currents up to `max_current_mps`.
 double time_lower_bound(double distance_m, double speed_mps, double max_current_mps);

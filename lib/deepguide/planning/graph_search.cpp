@@ -1,9 +1,9 @@
 #include "deepguide/planning/graph_search.hpp"
 
+#include <algorithm>
 #include <boost/graph/astar_search.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <boost/property_map/function_property_map.hpp>
-#include <algorithm>
 #include <limits>
 #include <unordered_map>
 #include <utility>
@@ -70,12 +70,13 @@ void run_search(const Graph& graph, GraphVertex source, GraphVertex target, Sear
                               .weight_map(weight)
                               .visitor(StopAtTarget<boost::default_astar_visitor>(target, expanded, budget)));
     } else {
-      boost::dijkstra_shortest_paths(graph, source,
-                                     boost::vertex_index_map(boost::typed_identity_property_map<GraphVertex>())
-                                         .predecessor_map(pred.data())
-                                         .distance_map(dist.data())
-                                         .weight_map(weight)
-                                         .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, expanded, budget)));
+      boost::dijkstra_shortest_paths(
+          graph, source,
+          boost::vertex_index_map(boost::typed_identity_property_map<GraphVertex>())
+              .predecessor_map(pred.data())
+              .distance_map(dist.data())
+              .weight_map(weight)
+              .visitor(StopAtTarget<boost::default_dijkstra_visitor>(target, expanded, budget)));
     }
   } catch (const TargetReached&) {
   } catch (const Stopped& s) {
@@ -138,8 +139,8 @@ SearchResult shortest_path(const ImplicitGraph& graph, GraphVertex source, Graph
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   SearchResult result;
   const auto weight = [](const ImplicitEdge& e) { return e.cost; };
-  run_search(graph, source, target, algorithm, heuristic, boost::make_function_property_map<ImplicitEdge, double>(weight),
-             pred, dist, budget, result);
+  run_search(graph, source, target, algorithm, heuristic,
+             boost::make_function_property_map<ImplicitEdge, double>(weight), pred, dist, budget, result);
   return finish(source, target, pred, dist, result);
 }
 
@@ -147,9 +148,9 @@ std::string search_stop_message(SearchStop stop, std::size_t expanded) {
   switch (stop) {
     case SearchStop::none: return "";
     case SearchStop::budget:
-      return "the search stopped after " + std::to_string(expanded) + " vertices, its budget; no route is proven missing";
-    case SearchStop::cancelled:
-      return "the search was cancelled after " + std::to_string(expanded) + " vertices";
+      return "the search stopped after " + std::to_string(expanded) +
+             " vertices, its budget; no route is proven missing";
+    case SearchStop::cancelled: return "the search was cancelled after " + std::to_string(expanded) + " vertices";
   }
   return "";
 }

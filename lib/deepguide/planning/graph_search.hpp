@@ -17,9 +17,8 @@
 
 namespace DEEPGUIDE_API deepguide {
 
-using PlanningGraph =
-    boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS, boost::no_property,
-                          boost::property<boost::edge_weight_t, double>>;
+using PlanningGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS, boost::no_property,
+                                            boost::property<boost::edge_weight_t, double>>;
 using GraphVertex = boost::graph_traits<PlanningGraph>::vertex_descriptor;
 
 enum class SearchAlgorithm { astar, dijkstra };
@@ -27,7 +26,7 @@ enum class SearchAlgorithm { astar, dijkstra };
 struct SearchResult {
   bool found = false;
   SearchStop stopped = SearchStop::none;  ///< not none: found is false, and no route is proven missing
-  std::vector<GraphVertex> path;  ///< source ... target
+  std::vector<GraphVertex> path;          ///< source ... target
   double cost = 0.0;
   std::size_t expanded = 0;  ///< vertices examined (popped from the queue)
 };

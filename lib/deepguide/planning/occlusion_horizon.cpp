@@ -16,7 +16,6 @@ namespace {
 // (a piece's far vertex sets the horizon), long enough to keep the R-tree small.
 constexpr std::size_t kPieceEdges = 8;
 
-
 // Removes the open interval (lo, hi) of the real line from `set`; true if it
 // took anything (a point of the set strictly inside counts).
 bool remove_open(BearingSet& set, double lo, double hi) {
@@ -123,7 +122,8 @@ std::vector<BgPolygon> bearing_wedges(const Vec2& p, double lo, double hi, doubl
   for (int k = 0; k < pieces; ++k) {
     const double a = lo + (hi - lo) * k / pieces, b = lo + (hi - lo) * (k + 1) / pieces;
     BgPolygon wedge;
-    for (const double bearing : {a, 0.5 * (a + b), b}) wedge.outer().push_back(to_bg(p + 2.0 * far * on_square(bearing)));
+    for (const double bearing : {a, 0.5 * (a + b), b})
+      wedge.outer().push_back(to_bg(p + 2.0 * far * on_square(bearing)));
     wedge.outer().push_back(to_bg(p));
     bg::correct(wedge);
     out.push_back(std::move(wedge));

@@ -81,8 +81,8 @@ class OcclusionHorizon {
   std::vector<Vec2> points_;                      // the pieces' vertices, piece after piece
   std::vector<std::size_t> piece_begin_;          // piece k is points_[piece_begin_[k], piece_begin_[k + 1])
   boost::geometry::index::rtree<BoxItem, boost::geometry::index::rstar<16>> boxes_;
-  BgBox extent_;                   // of every piece: a square holding it has seen them all
-  double first_radius_m_ = 1.0;    // the first square's half side: a few pieces across
+  BgBox extent_;                 // of every piece: a square holding it has seen them all
+  double first_radius_m_ = 1.0;  // the first square's half side: a few pieces across
   double margin_m_;
 };
 

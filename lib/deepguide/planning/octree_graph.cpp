@@ -113,8 +113,10 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
     free_.push_back(static_cast<std::uint32_t>(i));
   }
   if (free_.empty()) {
-    throw InputError("octree: no free cell in the volume (every cell is outside the band, in the sea floor's "
-                     "clearance or within " + general(volume.field().margin()) + " m of an obstacle)");
+    throw InputError(
+        "octree: no free cell in the volume (every cell is outside the band, in the sea floor's "
+        "clearance or within " +
+        general(volume.field().margin()) + " m of an obstacle)");
   }
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -187,11 +189,13 @@ PlanResult OctreeGraph::solve(const Vec3& start, const Vec3& goal, SearchAlgorit
   for (const auto& [w, len] : goal_joins) goal_side.insert(w);
   const bool direct = flyable(start, goal) && volume_->segment_free(start, goal);
 
-  const auto position = [&](std::size_t v) { return v == sv ? start : v == gv ? goal : centre(static_cast<std::uint32_t>(v)); };
+  const auto position = [&](std::size_t v) {
+    return v == sv ? start : v == gv ? goal : centre(static_cast<std::uint32_t>(v));
+  };
   ImplicitGraph graph;
   graph.vertex_count = n + 2;
-  graph.successors = [&, buffer = std::vector<std::pair<std::size_t, bool>>()](
-                         std::size_t v, ImplicitGraph::Successors& out) mutable {
+  graph.successors = [&, buffer = std::vector<std::pair<std::size_t, bool>>()](std::size_t v,
+                                                                               ImplicitGraph::Successors& out) mutable {
     if (v == gv) return;
     if (v == sv) {
       for (const auto& [w, len] : start_joins) out.emplace_back(w, len);
@@ -229,9 +233,8 @@ PlanResult OctreeGraph::solve(const Vec3& start, const Vec3& goal, SearchAlgorit
   for (GraphVertex v : found.path) points.push_back(position(v));
   if (options_.smooth && points.size() > 2) {
     // Keeping every leg flyable.
-    points = pull_string(points, [this](const Vec3& a, const Vec3& b) {
-      return flyable(a, b) && volume_->segment_free(a, b);
-    });
+    points = pull_string(points,
+                         [this](const Vec3& a, const Vec3& b) { return flyable(a, b) && volume_->segment_free(a, b); });
   }
   for (const Vec3& p : points) {
     result.route.points.push_back(p.head<2>());

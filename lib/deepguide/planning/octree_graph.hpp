@@ -48,7 +48,7 @@ struct OctreeOptions {
   double max_dive_deg = 30.0;  ///< steepest dive or climb, degrees from horizontal, in (0, 90)
   Vec2 area_min{0.0, 0.0};     ///< the horizontal work area (local frame)
   Vec2 area_max{0.0, 0.0};
-  bool smooth = false;         ///< shortcut the cell-centre route where the straight leg is free and flyable
+  bool smooth = false;  ///< shortcut the cell-centre route where the straight leg is free and flyable
   /// Refused above this many cells classified (InputError); a leaf costs
   /// 16 bytes in the tree and 4 in the vertex map.
   std::size_t max_cells = 60'000'000;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
@@ -38,11 +38,11 @@ constexpr double kMinGraphMargin = 1e-6;
 struct Planner::Impl {
   explicit Impl(ObstacleField f) : field(std::move(f)) {}
   ObstacleField field;
-  BgMultiPolygon zones;                      // visibility graphs only
+  BgMultiPolygon zones;  // visibility graphs only
   std::unique_ptr<VisibilityGraph> visibility;
   std::unique_ptr<TangentGraph> tangent;
   std::unique_ptr<QuadtreeGraph> quadtree;
-  std::unique_ptr<RouteGraph> registered;  // a graph from the registry's build function
+  std::unique_ptr<RouteGraph> registered;        // a graph from the registry's build function
   std::unique_ptr<ObstacleField> turning_field;  // the quadtree's, within a turning radius
   // With a turning radius: the graph without it, built when no route is
   // found, to say where the radius closes the way.
@@ -76,7 +76,8 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   }
   const GraphEntry& entry = graph_entry(options.graph);
   if (entry.can.in_depth) {
-    throw InputError("--graph " + entry.name + ": plans in depth (depth_planning.hpp), not among obstacles in the plane");
+    throw InputError("--graph " + entry.name +
+                     ": plans in depth (depth_planning.hpp), not among obstacles in the plane");
   }
   const bool weighed = options.cost != nullptr && options.cost->kind != CostKind::length;
   if (weighed) validate(*options.cost);
@@ -94,8 +95,9 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     throw InputError("turn radius: expected a radius > 0 m (or 0 for none), got " + general(options.turn_radius_m));
   }
   if (options.turn_radius_m > 0.0 && options.graph == GraphKind::quadtree && !options.quadtree.smooth) {
-    throw InputError("turn radius: expected --graph tangent, visibility or visibility-full, or quadtree with "
-                     "--smooth (the quadtree's cell-to-cell steps cannot be rounded)");
+    throw InputError(
+        "turn radius: expected --graph tangent, visibility or visibility-full, or quadtree with "
+        "--smooth (the quadtree's cell-to-cell steps cannot be rounded)");
   }
   if (options.turn_radius_m > 0.0 && !entry.can.turn_radius) {
     throw InputError("turn radius: expected --graph " +
@@ -126,16 +128,16 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
       impl_->turning_field = std::make_unique<ObstacleField>(turning, options.margin + options.tolerance);
       cells_field = impl_->turning_field.get();
     }
-    impl_->quadtree = std::make_unique<QuadtreeGraph>(*cells_field, quadtree_area(obstacles, options.quadtree,
-                                                                                  options.margin));
+    impl_->quadtree =
+        std::make_unique<QuadtreeGraph>(*cells_field, quadtree_area(obstacles, options.quadtree, options.margin));
   } else if (options.graph == GraphKind::tangent) {
     impl_->tangent =
         std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus, options.turn_radius_m);
   } else {
     impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
     if (options.turn_radius_m > 0.0) {
-      impl_->zones = rounded_zone_polygons(impl_->zones, obstacles, graph_margin, options.turn_radius_m,
-                                           options.tolerance);
+      impl_->zones =
+          rounded_zone_polygons(impl_->zones, obstacles, graph_margin, options.turn_radius_m, options.tolerance);
     }
     impl_->visibility = std::make_unique<VisibilityGraph>(
         impl_->zones,
@@ -219,8 +221,8 @@ Vec2 escape_point(const ObstacleField& field, const Vec2& p, std::string& obstac
 // route without it that is tighter than the radius.
 std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   const std::string radius = general(options_.turn_radius_m) + " m";
-  const std::string none = "no route keeps the " + general(options_.margin) + " m margin turning no tighter than " +
-                           radius;
+  const std::string none =
+      "no route keeps the " + general(options_.margin) + " m margin turning no tighter than " + radius;
   if (!impl_->plain) {
     impl_->plain = std::make_unique<TangentGraph>(impl_->field.obstacles(), std::max(options_.margin, kMinGraphMargin),
                                                   options_.tolerance);
@@ -347,8 +349,9 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     }
     if (!(options_.turn_radius_m > 0.0)) throw InputError(std::string(which) + ": expected a turning radius > 0");
     if (problem.escape && problem.start_heading && !impl_->field.is_free(problem.start)) {
-      throw InputError("a start heading: expected a start outside every safety zone (an escape leaves the zone "
-                       "along its normal, whatever the heading)");
+      throw InputError(
+          "a start heading: expected a start outside every safety zone (an escape leaves the zone "
+          "along its normal, whatever the heading)");
     }
   }
   std::string escaped_from;
@@ -394,8 +397,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     }
     rounding_failed = !refine_and_round(out.result);
   }
-  out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start},
-                          impl_->field);
+  out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start}, impl_->field);
   if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
   // A rounded polygon route whose joined corners or fillets come near another
   // zone is refused, saying where, rather than returned to fail the check.
@@ -403,7 +405,8 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   if (rounded && (!out.check.safe || !out.legs_check->safe)) {
     const RouteCheck& bad = out.check.safe ? *out.legs_check : out.check;
     out.result.found = false;
-    out.result.message = unrounded_message(bad.worst_point, "rounding its corners comes within the margin of another zone");
+    out.result.message =
+        unrounded_message(bad.worst_point, "rounding its corners comes within the margin of another zone");
     rounding_failed = true;
   }
   if (out.result.stats.stopped != SearchStop::none) {

@@ -25,8 +25,7 @@ void for_each_edge(const Ring& ring, F f) {
 
 }  // namespace
 
-PolygonVisibility::PolygonVisibility(BgMultiPolygon polygons, double eps)
-    : polygons_(std::move(polygons)), eps_(eps) {
+PolygonVisibility::PolygonVisibility(BgMultiPolygon polygons, double eps) : polygons_(std::move(polygons)), eps_(eps) {
   std::vector<EdgeItem> edges;
   std::vector<BoxItem> boxes;
   for (std::size_t i = 0; i < polygons_.size(); ++i) {

@@ -143,8 +143,10 @@ std::size_t QuadtreeGraph::attach(const PlanningProblem& problem) {
     }
     for (std::size_t w : joins) {
       const double len = (position(w) - point).norm();
-      if (vertex == sv) boost::add_edge(sv, w, len, graph_);
-      else boost::add_edge(w, gv, len, graph_);
+      if (vertex == sv)
+        boost::add_edge(sv, w, len, graph_);
+      else
+        boost::add_edge(w, gv, len, graph_);
       ++attached;
     }
   }
@@ -161,7 +163,7 @@ void QuadtreeGraph::detach() {
 }
 
 PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost,
-                                 const SearchBudget& budget) {
+                                const SearchBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = free_.size();
   const GraphVertex sv = start_vertex(), gv = goal_vertex();

@@ -89,12 +89,12 @@ class QuadtreeGraph {
   const ObstacleField* field_;
   QuadtreeOptions options_;
   std::unique_ptr<CellTree<2>> tree_;
-  std::vector<std::size_t> free_;        // graph vertex -> leaf
-  std::vector<std::size_t> vertex_of_;   // leaf -> graph vertex (npos: occupied)
-  std::vector<Vec2> centres_;            // graph vertex -> its cell's centre (searches ask often)
+  std::vector<std::size_t> free_;       // graph vertex -> leaf
+  std::vector<std::size_t> vertex_of_;  // leaf -> graph vertex (npos: occupied)
+  std::vector<Vec2> centres_;           // graph vertex -> its cell's centre (searches ask often)
   PlanningGraph graph_;
   std::array<Vec2, 2> ends_{Vec2::Zero(), Vec2::Zero()};  // the attached start and goal
-  struct EdgeIndex;  // R-tree of the cell edges' boxes (edges_blocked_by)
+  struct EdgeIndex;                                       // R-tree of the cell edges' boxes (edges_blocked_by)
   void index_edges();
   std::shared_ptr<const EdgeIndex> edge_index_;
   std::size_t edges_ = 0;

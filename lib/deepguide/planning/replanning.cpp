@@ -13,7 +13,7 @@
 namespace deepguide {
 
 std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFrame& frame,
-                                       const std::string& source_crs) {
+                                         const std::string& source_crs) {
   ObstacleReadOptions options;
   options.local_crs = frame.id();
   options.source_crs = source_crs;

@@ -26,26 +26,26 @@ namespace DEEPGUIDE_API deepguide {
 /// reveals and how far the vehicle has sailed when it comes (world/sonar.hpp
 /// has the sonar's own Detection).
 struct ReplanEvent {
-  double along_m = 0.0;    ///< distance sailed when the sonar reports it (m)
-  ObstacleSet obstacles;   ///< what it reports (usually one obstacle)
+  double along_m = 0.0;   ///< distance sailed when the sonar reports it (m)
+  ObstacleSet obstacles;  ///< what it reports (usually one obstacle)
 };
 
 struct Repair {
-  double along_m = 0.0;          ///< distance sailed when the route was repaired (at a vertex)
-  Vec2 vehicle{0.0, 0.0};        ///< where the vehicle was
-  std::size_t blocked_edges = 0; ///< directed edges the detection blocked (not blocked before)
+  double along_m = 0.0;           ///< distance sailed when the route was repaired (at a vertex)
+  Vec2 vehicle{0.0, 0.0};         ///< where the vehicle was
+  std::size_t blocked_edges = 0;  ///< directed edges the detection blocked (not blocked before)
   bool found = false;
-  std::vector<Vec2> route;       ///< from the vehicle to the goal
-  double cost = 0.0;             ///< its length (+inf when none)
-  std::size_t expanded = 0;      ///< vertices D* Lite processed for this repair
-  double repair_ms = 0.0;        ///< blocking the edges and repairing
+  std::vector<Vec2> route;   ///< from the vehicle to the goal
+  double cost = 0.0;         ///< its length (+inf when none)
+  std::size_t expanded = 0;  ///< vertices D* Lite processed for this repair
+  double repair_ms = 0.0;    ///< blocking the edges and repairing
 };
 
 struct Replay {
   std::vector<Vec2> initial_route;  ///< D* Lite's first route: the one the vehicle sails until a report
   double initial_cost = 0.0;
-  std::vector<Repair> repairs;   ///< one per detection, in order
-  std::vector<Vec2> track;       ///< every vertex the vehicle reached, start first
+  std::vector<Repair> repairs;  ///< one per detection, in order
+  std::vector<Vec2> track;      ///< every vertex the vehicle reached, start first
   std::vector<GraphVertex> track_vertices;
   bool reached_goal = false;
 };
@@ -56,7 +56,7 @@ struct Replay {
 /// local frame `frame`. Throws InputError naming the file, the feature and
 /// the field for a missing, non-numeric or negative value.
 std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFrame& frame,
-                                       const std::string& source_crs = "");
+                                         const std::string& source_crs = "");
 
 /// Plans from start to goal on `graph`, then replays the detections (with
 /// the given safety margin around each). Throws NoRouteError when start or
@@ -66,7 +66,6 @@ std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFra
 /// while start and goal are still attached (graph.goal_vertex()): tests and
 /// benchmarks compare with a search from scratch on the changed graph there.
 Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections,
-                         double margin,
-                         const std::function<void(const Repair&, GraphVertex)>& after_repair = {});
+                         double margin, const std::function<void(const Repair&, GraphVertex)>& after_repair = {});
 
 }  // namespace deepguide

@@ -2,8 +2,8 @@
 // A planned route in the local frame, and what every planner reports with it.
 
 #include <cstddef>
-#include <optional>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,9 +31,9 @@ struct RouteLeg {
   Kind kind = Kind::line;
   Vec2 from, to;
   double length_m = 0.0;
-  int turn = 0;             ///< arcs: +1 anticlockwise (turning left), -1 clockwise
-  double radius_m = 0.0;    ///< arcs: largest radius of curvature along the arc
-  std::string obstacle;     ///< arcs: the obstacle whose zone the arc follows
+  int turn = 0;           ///< arcs: +1 anticlockwise (turning left), -1 clockwise
+  double radius_m = 0.0;  ///< arcs: largest radius of curvature along the arc
+  std::string obstacle;   ///< arcs: the obstacle whose zone the arc follows
   /// Arcs: the curve itself, the boundary of core (+) disc(offset_m) from the
   /// point whose outward normal has angle phi_from to the one at phi_to
   /// (phi_to - phi_from has the sign of turn). A circle when core.a == core.b:
@@ -79,14 +79,14 @@ enum class SearchStop { none, budget, cancelled };
 struct PlanStats {
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;
-  std::size_t open_water_vertices = 0;  ///< of graph_vertices, lattice points (--waypoint-grid)
-  std::size_t expanded = 0;   ///< vertices the search examined
+  std::size_t open_water_vertices = 0;    ///< of graph_vertices, lattice points (--waypoint-grid)
+  std::size_t expanded = 0;               ///< vertices the search examined
   SearchStop stopped = SearchStop::none;  ///< the search's budget ran out, or it was cancelled (PlannerOptions::budget)
-  double build_ms = 0.0;      ///< building the environment's graph (once per environment)
-  double query_ms = 0.0;      ///< attaching start and goal plus the search
+  double build_ms = 0.0;                  ///< building the environment's graph (once per environment)
+  double query_ms = 0.0;                  ///< attaching start and goal plus the search
   /// Continuous refinement of a time or energy route (route_refinement.hpp).
   std::size_t refine_sweeps = 0;
-  double refine_gain = 0.0;   ///< the fraction of the graph route's cost it saved
+  double refine_gain = 0.0;  ///< the fraction of the graph route's cost it saved
   double refine_ms = 0.0;
 };
 
@@ -107,10 +107,10 @@ struct PlanningProblem {
 /// The common result of every planner's solve(problem).
 struct PlanResult {
   bool found = false;
-  Route route;               ///< a polyline; curved legs are approximated from outside
-  std::vector<RouteLeg> legs;  ///< exact lines and arcs, where the planner knows them
-  double exact_length_m = 0.0; ///< length of the legs (0 when legs is empty)
-  double cost = 0.0;         ///< the route's cost: metres, or the cost model's s or J (the search's, or the refined route's)
+  Route route;                  ///< a polyline; curved legs are approximated from outside
+  std::vector<RouteLeg> legs;   ///< exact lines and arcs, where the planner knows them
+  double exact_length_m = 0.0;  ///< length of the legs (0 when legs is empty)
+  double cost = 0.0;  ///< the route's cost: metres, or the cost model's s or J (the search's, or the refined route's)
   PlanStats stats;
   std::string message;  ///< why no route was found, one line
 };

@@ -10,9 +10,7 @@
 #include "deepguide/core/format.hpp"
 
 namespace deepguide {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 std::string RouteCheck::describe() const {
   // No verdict word: callers put their own ("UNSAFE: ...", an error message).
@@ -25,14 +23,12 @@ std::string RouteCheck::describe() const {
          fixed(min_clearance_m, digits) == fixed(margin_m, digits)) {
     ++digits;
   }
-  std::string s =
-      segments == 0 ? "waypoint 0 " : (of_legs ? "leg " : "segment ") + std::to_string(worst_segment) + " ";
+  std::string s = segments == 0 ? "waypoint 0 " : (of_legs ? "leg " : "segment ") + std::to_string(worst_segment) + " ";
   const std::string obstacle = "obstacle '" + printable(worst_obstacle) + "'";
   if (min_clearance_m > 0.0) {
     s += (segments == 0 ? "lies " : "passes ") + fixed(min_clearance_m, digits) + " m from " + obstacle;
   } else if (min_clearance_m < 0.0) {
-    s += (segments == 0 ? "lies inside " : "enters ") + obstacle + " (" + fixed(-min_clearance_m, digits) +
-         " m deep)";
+    s += (segments == 0 ? "lies inside " : "enters ") + obstacle + " (" + fixed(-min_clearance_m, digits) + " m deep)";
   } else {
     s += "touches " + obstacle;
   }
@@ -167,7 +163,8 @@ DepthRouteCheck check_route_in_depth(const Route& route, const WaterVolume& volu
   std::vector<Vec3> p;
   for (std::size_t i = 0; i < route.points.size(); ++i) {
     p.emplace_back(route.points[i].x(), route.points[i].y(), route.depth_m[i]);
-    if (!p.back().allFinite()) throw InputError("route check in depth: waypoint " + std::to_string(i) + " is not finite");
+    if (!p.back().allFinite())
+      throw InputError("route check in depth: waypoint " + std::to_string(i) + " is not finite");
   }
   if (!(max_dive_deg > 0.0 && max_dive_deg < 90.0)) {
     throw InputError("route check in depth: expected a dive angle between 0 and 90 degrees");

@@ -65,7 +65,7 @@ struct DepthRouteCheck {
   double steepest_deg = 0.0;          ///< the steepest leg's angle from horizontal
   /// Smallest floor depth minus the route's depth over the route (+inf without a floor).
   double min_floor_gap_m = std::numeric_limits<double>::infinity();
-  std::string describe() const;       ///< "leg 3 comes within 0.42 m of the sea floor ...", or a summary
+  std::string describe() const;  ///< "leg 3 comes within 0.42 m of the sea floor ...", or a summary
 };
 
 /// Checks a route whose waypoints carry depth_m. Throws InputError for a

@@ -99,11 +99,13 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
       r.why = (parts.size() > 1 ? part.label + ": " : std::string()) + check.describe(no_go.frame);
       const ChartCrossing& c = *check.first;
       const Vec2 ll = no_go.frame.to_lonlat(c.at);
-      j["first_crossing"] = {{"part", part.label},      {"feature", c.feature->id}, {"cell", c.feature->cell},
-                             {"class", c.feature->cls}, {"rcid", c.feature->rcid},  {"reason", c.feature->reason},
-                             {"leg", c.leg + 1},        {"along_m", c.along_m},     {"lon", ll.x()},
-                             {"lat", ll.y()}};
-      if (std::isfinite(c.feature->charted_depth_m)) j["first_crossing"]["charted_depth_m"] = c.feature->charted_depth_m;
+      j["first_crossing"] = {{"part", part.label},      {"feature", c.feature->id},
+                             {"cell", c.feature->cell}, {"class", c.feature->cls},
+                             {"rcid", c.feature->rcid}, {"reason", c.feature->reason},
+                             {"leg", c.leg + 1},        {"along_m", c.along_m},
+                             {"lon", ll.x()},           {"lat", ll.y()}};
+      if (std::isfinite(c.feature->charted_depth_m))
+        j["first_crossing"]["charted_depth_m"] = c.feature->charted_depth_m;
     } else if (r.safe) {
       r.why = check.describe(no_go.frame);
     }

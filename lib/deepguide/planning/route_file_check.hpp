@@ -16,16 +16,16 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct RouteFileCheckOptions {
-  std::string route;                   ///< the route file (RTZ, GPX, GeoJSON, KML, ...)
-  std::vector<std::string> obstacles;  ///< obstacle files
-  std::vector<std::string> charts;     ///< S-57 cells, folders of cells, prepared charts
-  std::string crs;                     ///< the local frame ("" : from the inputs)
-  std::string src_crs;                 ///< CRS of inputs that carry none
-  double margin_m = 5.0;               ///< clearance the route must keep, >= 0
+  std::string route;                        ///< the route file (RTZ, GPX, GeoJSON, KML, ...)
+  std::vector<std::string> obstacles;       ///< obstacle files
+  std::vector<std::string> charts;          ///< S-57 cells, folders of cells, prepared charts
+  std::string crs;                          ///< the local frame ("" : from the inputs)
+  std::string src_crs;                      ///< CRS of inputs that carry none
+  double margin_m = 5.0;                    ///< clearance the route must keep, >= 0
   double operating_depth_m = std::nan("");  ///< needed with charts (m, positive down)
-  double vertical_clearance_m = 2.0;   ///< water kept under the vehicle, with charts
-  bool restricted_areas = false;       ///< charts: RESTRN 7, 8, 14 are no-go too
-  bool zone_of_confidence = true;      ///< charts: widen by each area's zone of confidence
+  double vertical_clearance_m = 2.0;        ///< water kept under the vehicle, with charts
+  bool restricted_areas = false;            ///< charts: RESTRN 7, 8, 14 are no-go too
+  bool zone_of_confidence = true;           ///< charts: widen by each area's zone of confidence
 };
 
 struct RouteFileCheckReport {

@@ -13,8 +13,8 @@
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -24,11 +24,16 @@ namespace {
 void set_json_field(OGRFeature& f, const std::string& key, const nlohmann::json& v) {
   const int i = f.GetFieldIndex(key.c_str());
   if (i < 0) return;
-  if (v.is_number_integer()) f.SetField(i, static_cast<GIntBig>(v.get<long long>()));
-  else if (v.is_number()) f.SetField(i, v.get<double>());
-  else if (v.is_string()) f.SetField(i, v.get<std::string>().c_str());
-  else if (v.is_boolean()) f.SetField(i, v.get<bool>() ? 1 : 0);
-  else f.SetFieldNull(i);
+  if (v.is_number_integer())
+    f.SetField(i, static_cast<GIntBig>(v.get<long long>()));
+  else if (v.is_number())
+    f.SetField(i, v.get<double>());
+  else if (v.is_string())
+    f.SetField(i, v.get<std::string>().c_str());
+  else if (v.is_boolean())
+    f.SetField(i, v.get<bool>() ? 1 : 0);
+  else
+    f.SetFieldNull(i);
 }
 
 OGRFieldType field_type(const nlohmann::json& v) {
@@ -136,8 +141,7 @@ double rtz_number(xmlNodePtr n, const char* attribute, double lo, double hi, con
 std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
   xmlSetGenericErrorFunc(nullptr, xml_quiet);
   refuse_special_file(path);  // libxml2 would wait on a named pipe for ever
-  std::unique_ptr<xmlDoc, decltype(&xmlFreeDoc)> doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET),
-                                                     &xmlFreeDoc);
+  std::unique_ptr<xmlDoc, decltype(&xmlFreeDoc)> doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET), &xmlFreeDoc);
   xmlSetGenericErrorFunc(nullptr, nullptr);
   if (!doc) {
     const xmlError* e = xmlGetLastError();
@@ -166,8 +170,8 @@ std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
       out.push_back(std::move(p));
     }
   }
-  if (out.size() < 2) throw InputError(path + ": expected an RTZ route with at least 2 waypoints, got " +
-                                       std::to_string(out.size()));
+  if (out.size() < 2)
+    throw InputError(path + ": expected an RTZ route with at least 2 waypoints, got " + std::to_string(out.size()));
   return out;
 }
 
@@ -239,7 +243,8 @@ std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
 std::vector<RouteFilePart> read_route_parts(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": expected an existing route file, found none");
-  if (ascii_lower(std::filesystem::path(path).extension().string()) == ".rtz") return {{"route", read_rtz(path), false}};
+  if (ascii_lower(std::filesystem::path(path).extension().string()) == ".rtz")
+    return {{"route", read_rtz(path), false}};
   std::vector<RouteFilePart> parts = read_ogr_parts(path);
   if (parts.empty()) throw InputError(path + ": expected a route line or points, found none");
   // Waypoints without a line (a CSV of waypoints, a GPX of marks) are a route
@@ -260,7 +265,8 @@ std::vector<RouteFileWaypoint> read_route_waypoints(const std::string& path) {
   throw InputError(path + ": expected a LineString feature (the route line), found none");
 }
 
-Route route_in_frame(const std::vector<RouteFileWaypoint>& waypoints, const LocalFrame& frame, const std::string& where) {
+Route route_in_frame(const std::vector<RouteFileWaypoint>& waypoints, const LocalFrame& frame,
+                     const std::string& where) {
   Route route;
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
     const Vec2 p = frame.from_lonlat(waypoints[i].lonlat);

@@ -57,7 +57,8 @@ std::vector<RouteFilePart> read_route_parts(const std::string& path);
 
 /// Waypoints in the local frame; `where` names them in the error for one
 /// outside the frame's area of use ("route.rtz: route").
-Route route_in_frame(const std::vector<RouteFileWaypoint>& waypoints, const LocalFrame& frame, const std::string& where);
+Route route_in_frame(const std::vector<RouteFileWaypoint>& waypoints, const LocalFrame& frame,
+                     const std::string& where);
 
 /// read_route_waypoints in the local frame. Throws InputError naming the
 /// waypoint for one outside the frame's area of use.

@@ -160,7 +160,7 @@ RefinedRoute refine_route(const CostModel& model, std::vector<Vec2> points, cons
   double finest = std::max(options.finest_leg_m, length / options.finest_division);
   finest = std::max(finest, length / static_cast<double>(std::max<std::size_t>(options.max_points, 2) - 1));
   double best = out.cost_before;
-  for (double h = std::max(0.25 * length, finest); ; h *= 0.5) {
+  for (double h = std::max(0.25 * length, finest);; h *= 0.5) {
     h = std::max(h, finest);
     std::vector<Vec2> p = divided(points, h);
     ++out.levels;

@@ -70,7 +70,7 @@ struct RefinedRoute {
   std::vector<Vec2> points;
   double cost_before = 0.0;  ///< the given route's, in the model's kind
   double cost_after = 0.0;
-  std::size_t sweeps = 0;     ///< Gauss-Seidel sweeps over all levels
+  std::size_t sweeps = 0;  ///< Gauss-Seidel sweeps over all levels
   std::size_t levels = 0;
 };
 

@@ -153,11 +153,10 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     const ObstacleField all(obstacles, options.margin);
     const std::vector<Vec2>& points = plan.outcome.result.route.points;
     const bool escaped = !plan.outcome.escaped_from.empty() && points.size() > 2;
-    plan.outcome.check = check_route(
-        !plan.outcome.result.found ? std::vector<Vec2>{problem.start}
-        : escaped                  ? std::vector<Vec2>(points.begin() + 1, points.end())
-                                   : points,
-        all);
+    plan.outcome.check = check_route(!plan.outcome.result.found ? std::vector<Vec2>{problem.start}
+                                     : escaped                  ? std::vector<Vec2>(points.begin() + 1, points.end())
+                                                                : points,
+                                     all);
   }
   return plan;
 }

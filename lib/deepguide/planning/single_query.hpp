@@ -43,7 +43,7 @@ struct SingleQueryPlan {
   std::size_t obstacles_used = 0;
   std::size_t obstacles_total = 0;
   int rounds = 0;
-  double bound_m = 0.0;  ///< U of the last round (infinite: all obstacles, no focus)
+  double bound_m = 0.0;   ///< U of the last round (infinite: all obstacles, no focus)
   double build_ms = 0.0;  ///< graph builds over all rounds
   double query_ms = 0.0;  ///< queries over all rounds
 };

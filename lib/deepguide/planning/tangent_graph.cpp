@@ -44,7 +44,7 @@ struct Node {
   std::size_t piece;  // kNoPiece for start and goal
   double phi;         // outward normal angle on the piece, in [0, 2 pi)
   Vec2 p;
-  int orient = 0;     // the way round the piece a route passes here: +1 anticlockwise, -1 clockwise
+  int orient = 0;  // the way round the piece a route passes here: +1 anticlockwise, -1 clockwise
 };
 
 // The way round a piece of a route moving along `d` where the piece's outward
@@ -117,13 +117,12 @@ struct TangentGraph::Impl {
   bool turns_along(std::size_t piece, double phi0, double phi1) const {
     const ZonePiece& z = pieces[piece];
     if (turn_radius <= 0.0) return true;
-    const double least = z.kind == ZonePiece::Kind::ellipse
-                             ? least_offset_ellipse_radius(z.ellipse, z.margin, phi0, phi1)
-                             : z.margin;
+    const double least =
+        z.kind == ZonePiece::Kind::ellipse ? least_offset_ellipse_radius(z.ellipse, z.margin, phi0, phi1) : z.margin;
     return least >= turn_radius * (1.0 - 1e-12);
   }
   std::unique_ptr<ObstacleField> field;  // shifted frame, accepts margin - kTouchEps
-  std::vector<Segment> tangents;      // collision-free common tangents
+  std::vector<Segment> tangents;         // collision-free common tangents
   double build_ms = 0.0;
 
   // The environment's graph, built once: vertex 0 and 1 are reserved for
@@ -151,7 +150,8 @@ struct TangentGraph::Impl {
   // phi) of one way round for which `want(a, b)` holds.
   template <class Want>
   void add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all, Want want,
-                PlanningGraph& graph, std::vector<Arc>& out, std::unordered_map<std::uint64_t, std::size_t>& index) const;
+                PlanningGraph& graph, std::vector<Arc>& out,
+                std::unordered_map<std::uint64_t, std::size_t>& index) const;
 
   // The obstacle polygons: a segment crossing one is blocked for certain,
   // found far faster than the exact polygon test, which then only judges the
@@ -162,7 +162,7 @@ struct TangentGraph::Impl {
   // segment or point was built on (`skip_*` are piece indices or kNoPiece).
   std::size_t own_ellipse(std::size_t piece) const {
     return piece != kNoPiece && pieces[piece].kind == ZonePiece::Kind::ellipse ? pieces[piece].obstacle
-                                                                              : ObstacleField::kNone;
+                                                                               : ObstacleField::kNone;
   }
   bool segment_free(const Vec2& a, const Vec2& b, std::size_t piece_a = kNoPiece,
                     std::size_t piece_b = kNoPiece) const {
@@ -172,8 +172,7 @@ struct TangentGraph::Impl {
   bool arc_free(std::size_t piece, double phi0, double phi1) const;
   // Tangents from p to the pieces whose lower bound of |x - s| + |x - g| is
   // within `bound` (all pieces for an infinite bound).
-  void add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low,
-                          double bound) const;
+  void add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low, double bound) const;
   // The collision-free common tangents of pieces i and j, from i to j.
   void common_tangents(std::size_t i, std::size_t j, std::vector<Segment>& out) const;
   std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
@@ -292,8 +291,9 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
     std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return m.nodes[x].phi < m.nodes[y].phi; });
     // An arc is no shorter than its chord: the focus judges arcs by chords.
     m.add_arcs(
-        i, ids, m.nodes, [&](std::size_t a, std::size_t b) { return m.focus.keeps_segment(m.nodes[a].p, m.nodes[b].p); },
-        m.base, m.arcs, m.arc_of);
+        i, ids, m.nodes,
+        [&](std::size_t a, std::size_t b) { return m.focus.keeps_segment(m.nodes[a].p, m.nodes[b].p); }, m.base, m.arcs,
+        m.arc_of);
   }
   m.base_edges = segment_ends.size() + m.arcs.size();
   m.build_ms = elapsed_ms(t0);
@@ -662,8 +662,8 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
         // itself may go either way round.
         const Vec2 d = end == 0 ? Vec2(seg.b.p - seg.a.p) : Vec2(seg.a.p - seg.b.p);
         const double w = d.norm();
-        const std::vector<int> ways = w > 0.0 ? std::vector<int>{orientation(unit(seg.b.phi), d)}
-                                              : std::vector<int>{+1, -1};
+        const std::vector<int> ways =
+            w > 0.0 ? std::vector<int>{orientation(unit(seg.b.phi), d)} : std::vector<int>{+1, -1};
         for (int orient : ways) {
           const int way = m.end_way[seg.b.piece];
           if (way != 0 && orient != way) continue;  // the other end's circle, sailed the wrong way round
@@ -725,8 +725,9 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
       std::vector<std::size_t> ids = m.on_piece[i];
       ids.insert(ids.end(), added[i].begin(), added[i].end());
       std::sort(ids.begin(), ids.end(), [&](std::size_t x, std::size_t y) { return nodes[x].phi < nodes[y].phi; });
-      m.add_arcs(i, ids, nodes, [&](std::size_t a, std::size_t b) { return a >= m.env_nodes || b >= m.env_nodes; },
-                 graph, arcs, arc_of);
+      m.add_arcs(
+          i, ids, nodes, [&](std::size_t a, std::size_t b) { return a >= m.env_nodes || b >= m.env_nodes; }, graph,
+          arcs, arc_of);
     }
     const std::function<double(GraphVertex)> h = [&](GraphVertex v) { return (nodes[v].p - g).norm(); };
     return shortest_path(graph, 0, 1, algorithm, h, {}, budget);

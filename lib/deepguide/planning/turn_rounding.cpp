@@ -51,7 +51,8 @@ std::vector<TurningCircle> turning_circles(const ObstacleSet& obstacles, double 
       for (std::size_t j = 0; j < n; ++j) {
         const Vec2& v = pts[j];
         const Vec2 e1 = (v - pts[(j + n - 1) % n]).normalized(), e2 = (pts[(j + 1) % n] - v).normalized();
-        if (!(e1.x() * e2.y() - e1.y() * e2.x() < -1e-12)) continue;  // straight on, or a corner the water does not wrap
+        if (!(e1.x() * e2.y() - e1.y() * e2.x() < -1e-12))
+          continue;  // straight on, or a corner the water does not wrap
         // Outward normals are the edges turned left.
         const Vec2 w = (Vec2(-e1.y(), e1.x()) + Vec2(-e2.y(), e2.x())).normalized();
         out.push_back({v - (inset - kPush) * w, index});

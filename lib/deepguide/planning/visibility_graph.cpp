@@ -98,8 +98,8 @@ std::vector<Link> pairs_within_horizons(const std::vector<Vec2>& points, const s
   std::vector<Horizon> seen(m);
   parallel_blocks(m, 256, workers, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t u = begin; u < end; ++u) {
-      seen[u] = occlusion.horizon(points[u], supporting_bearings(to_prev[u], to_next[u], visibility.eps()),
-                                  kHorizonPieces);
+      seen[u] =
+          occlusion.horizon(points[u], supporting_bearings(to_prev[u], to_next[u], visibility.eps()), kHorizonPieces);
     }
   });
   double open_pairs = 0.0;
@@ -188,8 +188,9 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   // orientation tests lose six digits on them.
   BgBox box;
   bg::envelope(zones, box);
-  origin_ = zones.empty() ? Vec2::Zero() : Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()),
-                                               0.5 * (box.min_corner().y() + box.max_corner().y()));
+  origin_ = zones.empty() ? Vec2::Zero()
+                          : Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()),
+                                 0.5 * (box.min_corner().y() + box.max_corner().y()));
   focus_ = focus.shifted(origin_);
   BgMultiPolygon local = zones;
   double extent = 1.0;
@@ -268,8 +269,8 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   const auto test_pair = [&](std::size_t ui, std::size_t uj, const Horizon* seen_j) {
     const std::size_t i = usable[ui], j = usable[uj];
     const Vec2 d = corners_[j].p - corners_[i].p;
-    if (reduced && (!supports_line(to_prev[ui], to_next[ui], d, eps) ||
-                    !supports_line(to_prev[uj], to_next[uj], -d, eps))) {
+    if (reduced &&
+        (!supports_line(to_prev[ui], to_next[ui], d, eps) || !supports_line(to_prev[uj], to_next[uj], -d, eps))) {
       return -1.0;
     }
     if (seen_j != nullptr && !seen_j->sees(-d)) return -1.0;
@@ -287,7 +288,8 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
   }
   // In corner order, as a single all-pairs loop adds them: the search breaks
   // ties by the order of out-edges, so the same graph gives the same route.
-  std::sort(links.begin(), links.end(), [](const Link& a, const Link& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
+  std::sort(links.begin(), links.end(),
+            [](const Link& a, const Link& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
   for (const Link& l : links) {
     boost::add_edge(usable[l.u], usable[l.v], l.w, graph_);
     boost::add_edge(usable[l.v], usable[l.u], l.w, graph_);
@@ -396,8 +398,8 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   EdgeCostFn priced;
   if (cost != nullptr) {
     priced = [&](GraphVertex from, GraphVertex to, double label) {
-      const LegCost leg = price_leg(*cost, position(from) + origin_, position(to) + origin_,
-                                    departure_after(*cost, label));
+      const LegCost leg =
+          price_leg(*cost, position(from) + origin_, position(to) + origin_, departure_after(*cost, label));
       return edge_weight(*cost, leg);
     };
   }
@@ -428,8 +430,10 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
         if (variant_ == VisibilityVariant::reduced && !supporting_at(c, point)) continue;
         if (!visibility_->segment_visible(point, c.p)) continue;
         const double w = (c.p - point).norm();
-        if (vertex == sv) link(sv, i, w);
-        else link(i, gv, w);
+        if (vertex == sv)
+          link(sv, i, w);
+        else
+          link(i, gv, w);
       }
     }
     if (direct) link(sv, gv, (g - s).norm());
@@ -439,9 +443,9 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
   // No way at all, or none the current allows? The length search tells.
   bool current_blocks = false;
   if (!found.found && found.stopped == SearchStop::none && cost != nullptr) {
-    current_blocks =
-        shortest_path(graph_, sv, gv, algorithm, [&](GraphVertex v) { return (position(v) - g).norm(); }, {}, budget)
-            .found;
+    current_blocks = shortest_path(
+                         graph_, sv, gv, algorithm, [&](GraphVertex v) { return (position(v) - g).norm(); }, {}, budget)
+                         .found;
   }
 
   PlanResult result;

@@ -66,8 +66,8 @@ class VisibilityGraph {
 
  private:
   struct Corner {
-    Vec2 p, prev, next;  // translated to origin_
-    bool convex;         // the obstacle's interior angle is below 180 degrees
+    Vec2 p, prev, next;       // translated to origin_
+    bool convex;              // the obstacle's interior angle is below 180 degrees
     bool open_water = false;  // a lattice point: no polygon, every direction supports
   };
   static constexpr std::size_t kNoVertex = static_cast<std::size_t>(-1);

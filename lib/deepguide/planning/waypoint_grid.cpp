@@ -41,7 +41,8 @@ void validate(const WaypointGrid& grid) {
                   grid.spacing_m, points, grid.max.x() - grid.min.x(), grid.max.y() - grid.min.y(),
                   WaypointGrid::kMaxPoints,
                   std::ceil(std::sqrt((grid.max.x() - grid.min.x()) * (grid.max.y() - grid.min.y()) /
-                                      static_cast<double>(WaypointGrid::kMaxPoints))) + 1.0);
+                                      static_cast<double>(WaypointGrid::kMaxPoints))) +
+                      1.0);
     throw InputError(buf);
   }
 }

@@ -6,7 +6,6 @@
 
 #include "deepguide/core/angles.hpp"
 
-
 namespace deepguide {
 namespace {
 

@@ -22,13 +22,13 @@ namespace DEEPGUIDE_API deepguide {
 struct ZonePiece {
   enum class Kind { ellipse, capsule };
   Kind kind = Kind::ellipse;
-  Ellipse ellipse;     ///< kind == ellipse
+  Ellipse ellipse;  ///< kind == ellipse
   /// kind == ellipse: unit vector along the major axis, cached from
   /// ellipse.theta (support functions run millions of times per graph).
   /// Set by zone_pieces(); keep it in step when changing theta.
   Vec2 axis{1.0, 0.0};
-  Vec2 a, b;           ///< kind == capsule: the edge (a == b: a disc)
-  double margin = 0;   ///< d
+  Vec2 a, b;                 ///< kind == capsule: the edge (a == b: a disc)
+  double margin = 0;         ///< d
   std::size_t obstacle = 0;  ///< obstacle index: ellipses first, then polygons (ObstacleField numbering)
 
   double support(const Vec2& u) const;

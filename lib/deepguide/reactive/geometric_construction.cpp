@@ -40,21 +40,19 @@ int side_for(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p,
 }
 
 struct Tuning {
-  double blend;    ///< exit_blend_fraction
-  double passage;  ///< geometric_passage_m
+  double blend;            ///< exit_blend_fraction
+  double passage;          ///< geometric_passage_m
   double turn_rate = 0.0;  ///< turn_rate_limit; 0: the course line alone
   double speed = 0.0;      ///< through the water, for the turn
   double margin = 0.0;
-  double turn_lag = 0.0;   ///< turn_lag_s
-  double rate_now = 0.0;   ///< the vehicle's present turning rate
+  double turn_lag = 0.0;  ///< turn_lag_s
+  double rate_now = 0.0;  ///< the vehicle's present turning rate
 };
 
 /// The hysteresis band of a vehicle that sails the construction (a turning
 /// rate known): a fifth of the margin, at least 1 m; 0 for the construction
 /// itself (the figures' gradient lines, a vehicle that turns at once).
-double sailing_band(const Tuning& tuning) {
-  return tuning.turn_rate > 0.0 ? std::max(1.0, 0.2 * tuning.margin) : 0.0;
-}
+double sailing_band(const Tuning& tuning) { return tuning.turn_rate > 0.0 ? std::max(1.0, 0.2 * tuning.margin) : 0.0; }
 
 /// How deep a sailed turn may cut into a zone (the security ellipse, which
 /// lies outside the margin's offset curve) before another course is sought.
@@ -108,7 +106,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
 /// Whether the zones labelled `id` surround p: every direction from p meets
 /// one of them (or p is on or in one).
 bool surrounded(const std::vector<Ellipse>& zones, const std::vector<std::size_t>& group, std::size_t id,
-                 const Vec2& p) {
+                const Vec2& p) {
   std::vector<std::pair<double, double>> arcs;  // [from, to] anticlockwise, from in [0, 2 pi)
   for (std::size_t m = 0; m < zones.size(); ++m) {
     if (group[m] != id) continue;
@@ -191,8 +189,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     const double band = sailing_band(tuning);
     for (std::size_t i = 0; i < zones.size() && active < 0; ++i) {
       const Ellipse& z = zones[i];
-      if (engaged_with(*memory, z.centre, match_radius(z)) &&
-          segment_intersects(widened(z, band), p, g)) {
+      if (engaged_with(*memory, z.centre, match_radius(z)) && segment_intersects(widened(z, band), p, g)) {
         active = static_cast<std::ptrdiff_t>(i);
       }
     }

@@ -12,7 +12,7 @@ using namespace reactive_detail;
 
 struct Force {
   Vec2 value{0.0, 0.0};
-  std::ptrdiff_t inside = -1;    ///< the zone p is deepest in, -1 none
+  std::ptrdiff_t inside = -1;     ///< the zone p is deepest in, -1 none
   std::ptrdiff_t strongest = -1;  ///< the zone pushing hardest, -1 none
 };
 

@@ -50,13 +50,13 @@ std::string_view to_string(ReactiveMethod method);
 std::optional<ReactiveMethod> parse_reactive_method(std::string_view name);
 
 struct ReactiveParams {
-  double margin_m = 10.0;           ///< security margin around each reported object, >= 0
+  double margin_m = 10.0;                    ///< security margin around each reported object, >= 0
   double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< commanded speed through the water (cruise), > 0
-  double arrival_radius_m = 5.0;    ///< within this of the target: status arrived, >= 0
+  double arrival_radius_m = 5.0;             ///< within this of the target: status arrived, >= 0
   /// Distance beyond the security zone within which an object influences the
   /// dipole and potential methods (outside it their field is pure attraction), > 0.
   double influence_m = 60.0;
-  double potential_gain = 1.0;      ///< (c) repulsive gain relative to the unit attraction, > 0
+  double potential_gain = 1.0;  ///< (c) repulsive gain relative to the unit attraction, > 0
   /// (b) and the zone exits of (a): inside a zone the course turns from the
   /// boundary tangent to the outward normal over this fraction of the way to
   /// the centre (an assumed blend; 0.25 by default), in (0, 1].
@@ -112,15 +112,15 @@ struct ReactiveInput {
   double speed_mps = 0.0;
   Vec2 target{0.0, 0.0};
   std::span<const Ellipse> objects;  ///< reported footprints (local frame), not inflated
-  double turn_rate = 0.0;   ///< present turning rate (rad/s, ccw > 0), for a method that sails its course; 0 unknown
+  double turn_rate = 0.0;  ///< present turning rate (rad/s, ccw > 0), for a method that sails its course; 0 unknown
 };
 
 enum class ReactiveStatus {
-  ok,               ///< a course towards the target
-  arrived,          ///< within arrival_radius_m of the target
-  leaving_zone,     ///< inside a security zone, leading out (the geometric method's sector 3)
-  target_in_zone,   ///< the target lies inside a security zone: heading for the nearest reachable point
-  stalled,          ///< the field vanishes here (stagnation point, local minimum): course held
+  ok,              ///< a course towards the target
+  arrived,         ///< within arrival_radius_m of the target
+  leaving_zone,    ///< inside a security zone, leading out (the geometric method's sector 3)
+  target_in_zone,  ///< the target lies inside a security zone: heading for the nearest reachable point
+  stalled,         ///< the field vanishes here (stagnation point, local minimum): course held
 };
 std::string_view to_string(ReactiveStatus status);
 
@@ -131,7 +131,7 @@ struct ReactiveCommand {
   /// positive), known to guidance that follows a curved path; 0 otherwise.
   double course_rate = 0.0;
   ReactiveStatus status = ReactiveStatus::ok;
-  int sector = 0;          ///< the geometric method's sector 1, 2 or 3; 0 for the others
+  int sector = 0;                     ///< the geometric method's sector 1, 2 or 3; 0 for the others
   std::ptrdiff_t active_object = -1;  ///< index into objects of the object steered around, -1 none
 };
 

@@ -82,8 +82,7 @@ bool engaged_with(const ReactiveMemory& memory, const Vec2& centre, double match
 void release(ReactiveMemory& memory);
 
 /// The first zone the segment p -> q enters (p outside every zone), -1 none.
-std::ptrdiff_t first_zone_hit(std::span<const Ellipse> zones, const Vec2& p, const Vec2& q,
-                              std::ptrdiff_t skip = -1);
+std::ptrdiff_t first_zone_hit(std::span<const Ellipse> zones, const Vec2& p, const Vec2& q, std::ptrdiff_t skip = -1);
 
 /// The zone that contains p most deeply (largest depth fraction), -1 none.
 std::ptrdiff_t deepest_zone(std::span<const Ellipse> zones, const Vec2& p);

@@ -93,8 +93,7 @@ struct Canvas::Impl {
   cairo_surface_t* surface = nullptr;
   cairo_t* cr = nullptr;
 
-  Impl(const std::string& path, ImageFormat f, int w, int h)
-      : output(path), format(f), width(w), height(h) {}
+  Impl(const std::string& path, ImageFormat f, int w, int h) : output(path), format(f), width(w), height(h) {}
   ~Impl() { release(); }
 
   void release() {
@@ -105,8 +104,8 @@ struct Canvas::Impl {
   }
 
   [[noreturn]] void fail(cairo_status_t status) const {
-    throw InputError(output.destination().string() + ": could not write the image (cairo: " +
-                     cairo_status_to_string(status) + ")");
+    throw InputError(output.destination().string() +
+                     ": could not write the image (cairo: " + cairo_status_to_string(status) + ")");
   }
 
   // Fills and text are always antialiased; apply() may turn it off for a stroke.
@@ -155,14 +154,13 @@ Canvas::Canvas(const std::string& path, int width_px, int height_px) {
   const ImageFormat format = image_format_for(path);
   // Cairo's image surfaces stop at 32767 pixels a side.
   if (width_px < 1 || height_px < 1 || width_px > 32767 || height_px > 32767) {
-    throw InputError(path + ": expected an image size of 1 to 32767 pixels a side, got " +
-                     std::to_string(width_px) + " x " + std::to_string(height_px));
+    throw InputError(path + ": expected an image size of 1 to 32767 pixels a side, got " + std::to_string(width_px) +
+                     " x " + std::to_string(height_px));
   }
   impl_ = std::make_unique<Impl>(path, format, width_px, height_px);
   const std::string temp = impl_->output.temp_path().string();
-  impl_->surface = format == ImageFormat::png
-                       ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, width_px, height_px)
-                       : cairo_svg_surface_create(temp.c_str(), width_px, height_px);
+  impl_->surface = format == ImageFormat::png ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, width_px, height_px)
+                                              : cairo_svg_surface_create(temp.c_str(), width_px, height_px);
   if (const cairo_status_t s = cairo_surface_status(impl_->surface); s != CAIRO_STATUS_SUCCESS) impl_->fail(s);
   impl_->cr = cairo_create(impl_->surface);
   if (const cairo_status_t s = cairo_status(impl_->cr); s != CAIRO_STATUS_SUCCESS) impl_->fail(s);
@@ -293,8 +291,8 @@ void Canvas::image(const PixelRect& rect, int width, int height, const std::vect
   cairo_surface_destroy(src);
 }
 
-void Canvas::text(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color,
-                  TextAlign align, bool bold) {
+void Canvas::text(const Vec2& anchor, const std::string& text, double size_px, const Rgba& color, TextAlign align,
+                  bool bold) {
   if (text.empty()) return;
   impl_->font(size_px, bold);
   cairo_text_extents_t ext;
@@ -329,7 +327,8 @@ double measure_text_width(const std::string& text, double size_px, bool bold) {
   // A 1 x 1 surface measures as any other: text extents do not depend on it.
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
   cairo_t* cr = cairo_create(surface);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size_px);
   cairo_text_extents_t ext{};
   cairo_text_extents(cr, text.c_str(), &ext);

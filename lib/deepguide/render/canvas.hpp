@@ -89,8 +89,8 @@ Rgba rgb_hex(unsigned hex, double alpha = 1.0);
 
 struct Stroke {
   Rgba color;
-  double width = 1.0;         ///< pixels
-  std::vector<double> dash;   ///< on/off lengths in pixels; empty = solid
+  double width = 1.0;        ///< pixels
+  std::vector<double> dash;  ///< on/off lengths in pixels; empty = solid
   /// Antialiased edges. Off suits dense hairlines (graphs) in PNGs: they
   /// compress several times better and look the same at a glance.
   bool antialias = true;
@@ -131,10 +131,8 @@ class Canvas {
   /// Strokes many separate segments as one path.
   void stroke_segments(const std::vector<std::pair<Vec2, Vec2>>& segments, const Stroke& stroke);
   /// A closed polygon, filled and/or outlined.
-  void shape(const std::vector<Vec2>& points, const std::optional<Rgba>& fill,
-             const std::optional<Stroke>& outline);
-  void circle(const Vec2& centre, double radius, const std::optional<Rgba>& fill,
-              const std::optional<Stroke>& outline);
+  void shape(const std::vector<Vec2>& points, const std::optional<Rgba>& fill, const std::optional<Stroke>& outline);
+  void circle(const Vec2& centre, double radius, const std::optional<Rgba>& fill, const std::optional<Stroke>& outline);
 
   /// Paints an image of width x height pixels (0xAARRGGBB, premultiplied
   /// alpha, row by row from the top) stretched over `rect`; pixels stay sharp.

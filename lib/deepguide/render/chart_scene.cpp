@@ -12,16 +12,16 @@
 #include <set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/render/enc_layer.hpp"
 #include "deepguide/render/map_furniture.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"
-#include "deepguide/render/enc_layer.hpp"
-#include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/s57_chart.hpp"
 
@@ -138,8 +138,9 @@ struct Shading {
 
 // Paints one raster into the map image (width x height pixels over `map`):
 // one decimated read of the window the map shows, then nearest cells.
-void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>& land, int width, int height, const PixelRect& map,
-                  const ViewTransform& view, const LocalFrame& frame, const RasterSource& source, const Shading& shading) {
+void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>& land, int width, int height,
+                  const PixelRect& map, const ViewTransform& view, const LocalFrame& frame, const RasterSource& source,
+                  const Shading& shading) {
   gdal::QuietErrors quiet;
   detail::OpenedBathymetry r = detail::open_bathymetry(source.path, source.read);
   const double* gt = r.geotransform;
@@ -158,7 +159,8 @@ void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>&
   local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   if (!local.IsSame(r.srs.get())) {
     const gdal::TransformPtr ct = gdal::make_transform(local, *r.srs);
-    if (!ct) throw InputError(source.path + ": expected a CRS PROJ can transform to " + frame.id() + ", got " + r.info.crs);
+    if (!ct)
+      throw InputError(source.path + ": expected a CRS PROJ can transform to " + frame.id() + ", got " + r.info.crs);
     std::vector<int> ok(n, 0);
     ct->Transform(static_cast<int>(n), xs.data(), ys.data(), nullptr, ok.data());
     for (std::size_t k = 0; k < n; ++k) {
@@ -188,7 +190,8 @@ void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>&
   extra.eResampleAlg = GRIORA_NearestNeighbour;
   if (r.band->RasterIO(GF_Read, x0, y0, win_w, win_h, buf.data(), bw, bh, GDT_Float32, 0, 0, &extra) != CE_None) {
     const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(source.path + ": expected readable cells" + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+    throw InputError(source.path + ": expected readable cells" +
+                     (why.empty() ? std::string() : ", got: " + printable(why, 160)));
   }
   for (std::size_t k = 0; k < n; ++k) {
     const double col = xs[k], row = ys[k];
@@ -231,7 +234,8 @@ struct Painter {
   Rgba band_color(double d) const {
     if (layout.band_colors.empty()) return style.shallow;
     const auto it = std::upper_bound(layout.band_edges.begin(), layout.band_edges.end(), d);
-    const std::size_t band = it == layout.band_edges.begin() ? 0 : static_cast<std::size_t>(it - layout.band_edges.begin()) - 1;
+    const std::size_t band =
+        it == layout.band_edges.begin() ? 0 : static_cast<std::size_t>(it - layout.band_edges.begin()) - 1;
     return layout.band_colors[std::min(band, layout.band_colors.size() - 1)];
   }
 
@@ -257,7 +261,11 @@ struct Painter {
 
   Stroke danger_line(const std::string& id) const {
     const bool blocks = !scene.has_depth || scene.blocking.count(id) > 0;
-    return {blocks && scene.has_depth ? style.no_go : blocks ? style.text : style.passable, 1.3 * u, {2.0 * u, 2.5 * u}};
+    return {blocks && scene.has_depth ? style.no_go
+            : blocks                  ? style.text
+                                      : style.passable,
+            1.3 * u,
+            {2.0 * u, 2.5 * u}};
   }
 
   // The water image, and land and no-data cells alone (transparent elsewhere)
@@ -284,8 +292,8 @@ struct Painter {
     if (!land.empty()) canvas.image(layout.map, w, h, land);
     if (scene.enc) {
       LabelPlacer placer;
-      draw_enc_layer(canvas, layout.view, *scene.enc, EncStyle{}, u,
-                     [&](double d) { return band_color(d); }, placer);
+      draw_enc_layer(
+          canvas, layout.view, *scene.enc, EncStyle{}, u, [&](double d) { return band_color(d); }, placer);
     }
     for (const PolygonObstacle& p : scene.no_go) {
       for (const auto& ring : polygon_px(p.footprint)) {
@@ -421,7 +429,8 @@ struct Painter {
 
 std::string default_title(const ChartRenderOptions& o, const std::string& frame_id) {
   std::string names;
-  for (const std::string& f : o.charts) names += (names.empty() ? "" : ", ") + std::filesystem::path(f).filename().string();
+  for (const std::string& f : o.charts)
+    names += (names.empty() ? "" : ", ") + std::filesystem::path(f).filename().string();
   std::string t = names + "  (" + frame_id + ")";
   if (!std::isnan(o.depth_m)) t += ", no-go at " + format_number(o.depth_m) + " m";
   return t;
@@ -433,7 +442,8 @@ Rgba depth_band_color(const ChartStyle& style, std::size_t i, std::size_t n) {
   const double f = n > 1 ? static_cast<double>(i) / static_cast<double>(n - 1) : 0.0;
   // Slightly faster darkening at first: the shallow bands, where it matters, stay apart.
   const double g = std::pow(f, 0.85);
-  return {style.shallow.r + g * (style.deep.r - style.shallow.r), style.shallow.g + g * (style.deep.g - style.shallow.g),
+  return {style.shallow.r + g * (style.deep.r - style.shallow.r),
+          style.shallow.g + g * (style.deep.g - style.shallow.g),
           style.shallow.b + g * (style.deep.b - style.shallow.b), 1.0};
 }
 
@@ -528,9 +538,9 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
 
   ChartLayout l;
   l.frame_id = frame.id();
-  l.extent = !options.extent.empty()                  ? options.extent
+  l.extent = !options.extent.empty()               ? options.extent
              : scene.rasters.empty() && !scene.enc ? content.padded(0.05 * std::max(content.width(), content.height()))
-                                                    : content;
+                                                   : content;
   l.width = options.width_px;
   l.unit = options.width_px / 1200.0;
   const double u = l.unit;

@@ -33,8 +33,8 @@ namespace DEEPGUIDE_API deepguide {
 
 struct ChartStyle {
   Rgba background = rgb_hex(0xffffff);
-  Rgba shallow = rgb_hex(0xe3f2fd);   ///< the shallowest depth band
-  Rgba deep = rgb_hex(0x2f6eaa);      ///< the deepest depth band
+  Rgba shallow = rgb_hex(0xe3f2fd);  ///< the shallowest depth band
+  Rgba deep = rgb_hex(0x2f6eaa);     ///< the deepest depth band
   Rgba land = rgb_hex(0xf0e2bd);
   Rgba nodata = rgb_hex(0xd9d9d9);
   Rgba sea = rgb_hex(0xeef4f9);       ///< map area outside every raster
@@ -80,9 +80,9 @@ struct ChartLayout {
   double unit = 1.0;
   PixelRect map;
   PixelRect footer;
-  WorldBox extent;      ///< local frame (m)
-  ViewTransform view;   ///< local frame -> pixels
-  std::string frame_id;  ///< the local frame, e.g. "EPSG:32632"
+  WorldBox extent;                 ///< local frame (m)
+  ViewTransform view;              ///< local frame -> pixels
+  std::string frame_id;            ///< the local frame, e.g. "EPSG:32632"
   std::vector<double> band_edges;  ///< depth band edges (m), shallow to deep; empty without rasters
   std::vector<Rgba> band_colors;   ///< one per band (edges.size() - 1)
   double true_north_deg = 0.0;     ///< clockwise from the map's up to true north, at the centre

@@ -63,7 +63,8 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
   double deepest = *std::max_element(route.depth_m.begin(), route.depth_m.end());
   const int samples = 400;
   for (int k = 0; k <= samples; ++k) {
-    if (volume.floor() != nullptr) deepest = std::max(deepest, volume.floor()->depth_at(track.point_at(l.along_m * k / samples)));
+    if (volume.floor() != nullptr)
+      deepest = std::max(deepest, volume.floor()->depth_at(track.point_at(l.along_m * k / samples)));
   }
   const double step = nice_tick_step(std::max(deepest, 1.0) * 1.05, 7);
   l.depth_top_m = 0.0;
@@ -112,7 +113,8 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
 
   // Band limits.
   for (double z : {band.min_depth_m, band.max_depth_m}) {
-    if (std::isfinite(z)) canvas.stroke_polyline({{x.px_lo, y.to_px(z)}, {x.px_hi, y.to_px(z)}}, clearance_stroke(kBand, u));
+    if (std::isfinite(z))
+      canvas.stroke_polyline({{x.px_lo, y.to_px(z)}, {x.px_hi, y.to_px(z)}}, clearance_stroke(kBand, u));
   }
   // Obstacles whose zone the track crosses: where, along the track, the
   // track is within the margin of the footprint; drawn from the top down.
@@ -123,8 +125,10 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
     for (std::size_t i : field.near(p, p, field.margin())) {
       if (field.distance_to(i, p) >= field.margin()) continue;
       auto& runs = crossed[i];
-      if (!runs.empty() && runs.back().second == c - 1) runs.back().second = c;
-      else runs.emplace_back(c, c);
+      if (!runs.empty() && runs.back().second == c - 1)
+        runs.back().second = c;
+      else
+        runs.emplace_back(c, c);
     }
   }
   l.obstacles_crossed = crossed.size();
@@ -134,12 +138,13 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
     const double top = std::isfinite(zone_top) ? zone_top + c_m : l.depth_top_m;
     for (const auto& [c0, c1] : runs) {
       const double x0 = plot.x + c0, x1 = plot.x + c1 + 1.0;
-      canvas.fill_rect({x0, y.to_px(top), x1 - x0, plot.y + plot.height - y.to_px(top)}, Rgba{kObstacle.r, kObstacle.g, kObstacle.b, 0.45});
-      if (std::isfinite(zone_top)) canvas.stroke_polyline({{x0, y.to_px(zone_top)}, {x1, y.to_px(zone_top)}}, clearance_stroke(kObstacle, u));
+      canvas.fill_rect({x0, y.to_px(top), x1 - x0, plot.y + plot.height - y.to_px(top)},
+                       Rgba{kObstacle.r, kObstacle.g, kObstacle.b, 0.45});
+      if (std::isfinite(zone_top))
+        canvas.stroke_polyline({{x0, y.to_px(zone_top)}, {x1, y.to_px(zone_top)}}, clearance_stroke(kObstacle, u));
     }
-    const auto& widest = *std::max_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-      return a.second - a.first < b.second - b.first;
-    });
+    const auto& widest = *std::max_element(
+        runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.second - a.first < b.second - b.first; });
     canvas.text_with_halo({plot.x + 0.5 * (widest.first + widest.second + 1), y.to_px(top) - 6.0 * u},
                           field.obstacle_name(i), 11.5 * u, kObstacle, rgb_hex(0xffffff), 2.5 * u, TextAlign::centre);
   }
@@ -176,23 +181,31 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
   std::snprintf(cells, sizeof cells, "octree cells cut (smallest %.2f m high, %.2f m wide)", top_cell, width_cell);
   const std::vector<LegendEntry> entries{
       {"route, steepest leg " + std::to_string(static_cast<int>(std::lround(plan.check.steepest_deg))) + "\u00b0",
-       [u](Canvas& c, const Vec2& m) { c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, route_stroke(u)); }},
-      {"sea floor, and its clearance", [u](Canvas& c, const Vec2& m) {
+       [u](Canvas& c, const Vec2& m) {
+         c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, route_stroke(u));
+       }},
+      {"sea floor, and its clearance",
+       [u](Canvas& c, const Vec2& m) {
          c.fill_rect({m.x() - 15 * u, m.y() - 2 * u, 30 * u, 8 * u}, kFloor);
          c.stroke_polyline({m - Vec2(15 * u, 5 * u), m + Vec2(15 * u, -5 * u)}, clearance_stroke(kFloor, u));
        }},
-      {"obstacle, and its top less the clearance", [u](Canvas& c, const Vec2& m) {
-         c.fill_rect({m.x() - 15 * u, m.y() - 3 * u, 30 * u, 10 * u}, Rgba{kObstacle.r, kObstacle.g, kObstacle.b, 0.45});
+      {"obstacle, and its top less the clearance",
+       [u](Canvas& c, const Vec2& m) {
+         c.fill_rect({m.x() - 15 * u, m.y() - 3 * u, 30 * u, 10 * u},
+                     Rgba{kObstacle.r, kObstacle.g, kObstacle.b, 0.45});
          c.stroke_polyline({m - Vec2(15 * u, 5 * u), m + Vec2(15 * u, -5 * u)}, clearance_stroke(kObstacle, u));
        }},
-      {"depth band", [u](Canvas& c, const Vec2& m) {
+      {"depth band",
+       [u](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, clearance_stroke(kBand, u));
        }},
-      {cells, [u](Canvas& c, const Vec2& m) {
+      {cells,
+       [u](Canvas& c, const Vec2& m) {
          c.fill_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, rgb_hex(0xeef4fa));
          c.stroke_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, Stroke{rgb_hex(0xc3d3e3), 1.0 * u, {}});
        }},
-      {"occupied cells", [u](Canvas& c, const Vec2& m) {
+      {"occupied cells",
+       [u](Canvas& c, const Vec2& m) {
          c.fill_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, rgb_hex(0xd5d9de));
        }},
   };

@@ -23,10 +23,10 @@ struct DepthProfileLayout {
   int width = 0;
   int height = 0;
   double unit = 1.0;
-  double along_m = 0.0;                  ///< the track's horizontal length
+  double along_m = 0.0;                            ///< the track's horizontal length
   double depth_top_m = 0.0, depth_bottom_m = 0.0;  ///< the depth axis
-  double exaggeration = 1.0;             ///< vertical scale over horizontal scale
-  std::size_t obstacles_crossed = 0;     ///< obstacles whose zone the track crosses
+  double exaggeration = 1.0;                       ///< vertical scale over horizontal scale
+  std::size_t obstacles_crossed = 0;               ///< obstacles whose zone the track crosses
 };
 
 /// Draws the profile of plan's route to `path` (.png or .svg), atomically.

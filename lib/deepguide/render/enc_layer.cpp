@@ -124,8 +124,8 @@ EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame&
   return layer;
 }
 
-void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& layer, const EncStyle& style,
-                    double u, const std::function<Rgba(double)>& depth_color, LabelPlacer& labels) {
+void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& layer, const EncStyle& style, double u,
+                    const std::function<Rgba(double)>& depth_color, LabelPlacer& labels) {
   const double required = layer.no_go ? layer.no_go->required_depth_m : NAN;
   auto too_shallow = [&](double d) { return layer.no_go && (!(d >= 0.0) || d < required); };
   // Depth areas, then land over them.
@@ -189,7 +189,8 @@ void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& l
   }
   // Dangers: a symbol by kind at each point, an outline round each area.
   for (const EncLayer::Danger& d : layer.dangers) {
-    const Rgba c = too_shallow(d.depth) || std::isnan(d.depth) ? (layer.no_go ? style.no_go : style.danger) : style.danger;
+    const Rgba c =
+        too_shallow(d.depth) || std::isnan(d.depth) ? (layer.no_go ? style.no_go : style.danger) : style.danger;
     const Stroke line{c, 1.3 * u, {}};
     for (const BgPolygon& p : d.area) {
       for (const auto& r : rings_px(p, view)) canvas.stroke_polyline(r, Stroke{c, 1.2 * u, {1.5 * u, 2.0 * u}}, true);

@@ -61,7 +61,7 @@ struct EncStyle {
   Rgba land_edge = rgb_hex(0x9c8a5a);
   Rgba structure = rgb_hex(0x5c5f66);
   Rgba danger = rgb_hex(0x2b2d31);
-  Rgba no_go = rgb_hex(0xc2255c);       ///< hatching, the safety contour, dangers too shallow
+  Rgba no_go = rgb_hex(0xc2255c);  ///< hatching, the safety contour, dangers too shallow
   Rgba sounding = rgb_hex(0x5b6b7c);
 };
 

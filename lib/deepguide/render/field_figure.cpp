@@ -32,8 +32,8 @@ FieldFigure field_figure_for(const Scenario& scenario, ReactiveMethod method) {
   FieldFigure f;
   f.method = method;
   f.params = scenario.reactive;
-  f.map = reactive_map_for(scenario, "Gradient lines of the " + std::string(to_string(method)) +
-                                         " method: " + scenario.name);
+  f.map = reactive_map_for(scenario,
+                           "Gradient lines of the " + std::string(to_string(method)) + " method: " + scenario.name);
   return f;
 }
 
@@ -59,10 +59,9 @@ FieldFigureGeometry field_figure_geometry(const FieldFigure& figure) {
     return (a - figure.map.start).squaredNorm() < (b - figure.map.start).squaredNorm();
   });
   g.start_line = static_cast<std::size_t>(nearest - seeds.begin());
-  g.lines = gradient_lines(figure.method, figure.params, seeds, figure.map.target, figure.map.objects, area,
-                           g.options);
-  std::vector<GradientLine> dividers = dividing_lines(figure.method, figure.params, seeds, g.lines,
-                                                      figure.map.target, figure.map.objects, area, g.options);
+  g.lines = gradient_lines(figure.method, figure.params, seeds, figure.map.target, figure.map.objects, area, g.options);
+  std::vector<GradientLine> dividers = dividing_lines(figure.method, figure.params, seeds, g.lines, figure.map.target,
+                                                      figure.map.objects, area, g.options);
   g.dividing = dividers.size();
   for (GradientLine& d : dividers) g.lines.push_back(std::move(d));
   return g;
@@ -114,19 +113,23 @@ FieldFigureGeometry render_field_figure(const FieldFigure& figure, const std::st
   }
 
   std::vector<LegendEntry> legend{
-      {"gradient line", [&](Canvas& c, const Vec2& m) {
+      {"gradient line",
+       [&](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, Stroke{color, 1.3 * u, {}});
        }},
-      {"the line from the start", [&](Canvas& c, const Vec2& m) {
+      {"the line from the start",
+       [&](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, Stroke{color, 3.0 * u, {}});
        }},
-      {"field direction", [&](Canvas& c, const Vec2& m) {
+      {"field direction",
+       [&](Canvas& c, const Vec2& m) {
          std::vector<std::pair<Vec2, Vec2>> a;
          add_arrow(a, m, Vec2(1.0, 0.0), 0.5 * spacing);
          c.stroke_segments(a, Stroke{grey_arrow(), 1.1 * u, {}});
        }},
   };
-  if (std::any_of(g.lines.begin(), g.lines.end(), [](const GradientLine& line) { return line.end == LineEnd::stalled; })) {
+  if (std::any_of(g.lines.begin(), g.lines.end(),
+                  [](const GradientLine& line) { return line.end == LineEnd::stalled; })) {
     legend.push_back({"line ends: field vanishes", [&](Canvas& c, const Vec2& m) { end_dot(c, m, color, u); }});
   }
   end_reactive_map(canvas, figure.map, l, legend);

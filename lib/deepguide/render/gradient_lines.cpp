@@ -49,7 +49,8 @@ std::vector<Vec2> upstream_seeds(const WorldBox& area, const Vec2& start, const 
   const Vec2 across = Vec2(-along.y(), along.x()) / along.norm();
   const auto [t0, t1] = box_span(area, start, across);
   std::vector<Vec2> seeds;
-  for (double k = std::ceil(t0 / spacing_m); k * spacing_m <= t1; k += 1.0) seeds.push_back(start + k * spacing_m * across);
+  for (double k = std::ceil(t0 / spacing_m); k * spacing_m <= t1; k += 1.0)
+    seeds.push_back(start + k * spacing_m * across);
   return seeds;
 }
 

@@ -45,7 +45,7 @@ struct GradientLine {
 };
 
 struct GradientLineOptions {
-  double step_m = 1.0;          ///< arc-length step h, > 0
+  double step_m = 1.0;  ///< arc-length step h, > 0
   std::size_t max_steps = 20000;
 };
 

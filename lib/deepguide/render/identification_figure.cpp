@@ -114,7 +114,7 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
   const Scenario& sc = figure.scenario;
   const IdentifyResult& run = figure.run;
   ReactiveMapLayout l;
-  std::vector<IdentifyPhase> phases;  // in the order they appear
+  std::vector<IdentifyPhase> phases;              // in the order they appear
   for (const IdentifySample& x : run.trajectory)  // `done` is the last sample only: nothing to draw
     if (x.phase != IdentifyPhase::done && std::find(phases.begin(), phases.end(), x.phase) == phases.end())
       phases.push_back(x.phase);
@@ -182,10 +182,9 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
     double reach = 0.0;
     while (reach < diagonal && l.area.contains(run.goal + (reach + 5.0) * e)) reach += 5.0;
     canvas.text_with_halo(px(run.goal + 0.9 * reach * e - 0.8 * shade_half_width(safety, e) * n),
-                          "positioning area (flow shade)", 13.0 * u, style.text, style.sea, 2.5 * u,
-                          TextAlign::right);
-    canvas.text_with_halo(px(id.object.centre - 0.22 * diagonal * e + 0.08 * diagonal * n), "evasive area",
-                          13.0 * u, style.text, style.sea, 2.5 * u, TextAlign::centre);
+                          "positioning area (flow shade)", 13.0 * u, style.text, style.sea, 2.5 * u, TextAlign::right);
+    canvas.text_with_halo(px(id.object.centre - 0.22 * diagonal * e + 0.08 * diagonal * n), "evasive area", 13.0 * u,
+                          style.text, style.sea, 2.5 * u, TextAlign::centre);
   } else {
     std::vector<Vec2> ring;
     for (int i = 0; i < 360; ++i) {
@@ -234,14 +233,13 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
                         c.shape(box, with_alpha(area_color, 0.18), Stroke{area_color, 1.4 * u, {}});
                       }});
   } else {
-    legend.push_back({"path " + format_number(id.around.distance_m) + " m off the object",
-                      [guide](Canvas& c, const Vec2& m) {
-                        c.stroke_polyline({m - Vec2(18, 0), m + Vec2(18, 0)}, guide);
-                      }});
+    legend.push_back(
+        {"path " + format_number(id.around.distance_m) + " m off the object", [guide](Canvas& c, const Vec2& m) {
+           c.stroke_polyline({m - Vec2(18, 0), m + Vec2(18, 0)}, guide);
+         }});
   }
-  legend.push_back({identification_summary(run), [u](Canvas& c, const Vec2& m) {
-                      switch_dot(c, m, rgb_hex(0x495057), u);
-                    }});
+  legend.push_back(
+      {identification_summary(run), [u](Canvas& c, const Vec2& m) { switch_dot(c, m, rgb_hex(0x495057), u); }});
   end_reactive_map(canvas, figure.map, l, legend);
   canvas.finish();
   return l;

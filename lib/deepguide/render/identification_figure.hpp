@@ -24,7 +24,7 @@ namespace DEEPGUIDE_API deepguide {
 
 struct IdentificationFigure {
   ReactiveMap map;
-  Scenario scenario;  ///< with its identify section (the object, the mode, the current)
+  Scenario scenario;   ///< with its identify section (the object, the mode, the current)
   IdentifyResult run;  ///< with its trajectory
   int width_px = 1200;
 };

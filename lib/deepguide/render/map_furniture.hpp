@@ -34,7 +34,7 @@ void draw_scale_bar(Canvas& canvas, double px_per_m, double x, double y, double 
 /// A north arrow whose tip is at (cx, top), turned clockwise by rotate_deg
 /// from the image's up (0 = grid north on a north-up map), and a note
 /// right-aligned at note_right_x below it.
-void draw_north_arrow(Canvas& canvas, double cx, double top, double unit, double rotate_deg,
-                      const std::string& note, double note_right_x, const FurnitureColors& colors);
+void draw_north_arrow(Canvas& canvas, double cx, double top, double unit, double rotate_deg, const std::string& note,
+                      double note_right_x, const FurnitureColors& colors);
 
 }  // namespace deepguide

@@ -44,15 +44,16 @@ MissionFigure mission_figure_for(const Mission& mission, const MissionPlan& writ
   return f;
 }
 
-MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan& written, const PlannedMission& planned,
-                                       const MissionRun& run, double zoom_m) {
+MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan& written,
+                                       const PlannedMission& planned, const MissionRun& run, double zoom_m) {
   MissionFigure f = mission_figure_for(mission, written, planned);
   f.plan = &run.plan;
   for (const MissionSample& p : run.track) {
     f.track.push_back(p.position);
     f.track_reactive.push_back(p.reactive);
   }
-  const auto first_reactive = std::find_if(run.track.begin(), run.track.end(), [](const MissionSample& p) { return p.reactive; });
+  const auto first_reactive =
+      std::find_if(run.track.begin(), run.track.end(), [](const MissionSample& p) { return p.reactive; });
   // The sample before the first reactive one is where the reactive level took the helm.
   if (first_reactive != run.track.end()) {
     f.marks.emplace_back((first_reactive == run.track.begin() ? first_reactive : first_reactive - 1)->position, "A");
@@ -109,7 +110,8 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
       for (const Vec2& p : pts) out.push_back(view.to_pixel(p));
       return out;
     };
-    for (const Run& r : written) canvas.stroke_polyline(px(r.points), Stroke{style.written, 1.4 * u, {5.0 * u, 4.0 * u}});
+    for (const Run& r : written)
+      canvas.stroke_polyline(px(r.points), Stroke{style.written, 1.4 * u, {5.0 * u, 4.0 * u}});
     if (f.detected != nullptr) {
       for (const EllipticCylinder& c : f.detected->ellipses) {
         std::vector<Vec2> ring;
@@ -173,7 +175,8 @@ ChartLayout render_mission(const MissionFigure& f, const std::string& path, cons
         {style.conflict, 2.2, false, f.unresolved.empty() ? "conflict (ring)" : "conflict (ring), unresolved (cross)"});
   }
   const bool reactive = std::find(f.track_reactive.begin(), f.track_reactive.end(), true) != f.track_reactive.end();
-  if (!f.track.empty()) o.overlay_legend.push_back({style.track, 1.8, false, reactive ? "track, plan level" : "track sailed"});
+  if (!f.track.empty())
+    o.overlay_legend.push_back({style.track, 1.8, false, reactive ? "track, plan level" : "track sailed"});
   if (reactive) o.overlay_legend.push_back({style.reactive, 1.8, false, "track, reactive level"});
   if (f.detected != nullptr && !f.detected->empty()) {
     o.overlay_legend.push_back({style.conflict, 5.0, false, "object the sonar found (its estimate)"});
@@ -191,11 +194,11 @@ ChartLayout render_mission_file(const std::string& mission, const std::string& p
   }
   f.width_px = o.width_px;
   const MissionPlan& shown = *f.plan;
-  f.title = !o.title.empty() ? o.title
-                             : printf_text("%s: %.2f km, %s; %zu conflict(s), %zu resolved",
-                                           printable(l.mission.name, 120).c_str(), shown.length_m / 1000.0,
-                                           clock_text(plan_duration(shown)).c_str(), planned.resolutions.size(),
-                                           planned.resolutions.size() - f.unresolved.size());
+  f.title = !o.title.empty()
+                ? o.title
+                : printf_text("%s: %.2f km, %s; %zu conflict(s), %zu resolved", printable(l.mission.name, 120).c_str(),
+                              shown.length_m / 1000.0, clock_text(plan_duration(shown)).c_str(),
+                              planned.resolutions.size(), planned.resolutions.size() - f.unresolved.size());
   return render_mission(f, path);
 }
 

@@ -22,17 +22,17 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct MissionFigure {
-  std::vector<std::string> charts;     ///< drawn as `render chart` draws them
-  std::vector<std::string> obstacles;  ///< obstacle files, drawn as further obstacles
-  std::string crs;                     ///< the mission's frame, e.g. "EPSG:32632"
-  const MissionPlan* plan = nullptr;   ///< the plan to show (required)
-  const MissionPlan* written = nullptr;  ///< optional: the plan as written, before mission control
-  std::vector<Vec2> conflicts;         ///< where dangers began (on the written plan)
-  std::vector<Vec2> unresolved;        ///< where a conflict could not be resolved
-  std::vector<Vec2> track;             ///< optional: the track sailed in simulation
-  std::vector<bool> track_reactive;    ///< optional, one per track point: the reactive level steered to it
+  std::vector<std::string> charts;                  ///< drawn as `render chart` draws them
+  std::vector<std::string> obstacles;               ///< obstacle files, drawn as further obstacles
+  std::string crs;                                  ///< the mission's frame, e.g. "EPSG:32632"
+  const MissionPlan* plan = nullptr;                ///< the plan to show (required)
+  const MissionPlan* written = nullptr;             ///< optional: the plan as written, before mission control
+  std::vector<Vec2> conflicts;                      ///< where dangers began (on the written plan)
+  std::vector<Vec2> unresolved;                     ///< where a conflict could not be resolved
+  std::vector<Vec2> track;                          ///< optional: the track sailed in simulation
+  std::vector<bool> track_reactive;                 ///< optional, one per track point: the reactive level steered to it
   std::vector<std::pair<Vec2, std::string>> marks;  ///< optional: labelled points, e.g. {where, "A"}
-  const ObstacleSet* detected = nullptr;  ///< optional: objects the sonar found that nobody knew
+  const ObstacleSet* detected = nullptr;            ///< optional: objects the sonar found that nobody knew
   std::string title;
   int width_px = 1200;
   WorldBox extent;  ///< the part to show (local frame); empty: the plans and the track, padded
@@ -66,8 +66,8 @@ MissionFigure mission_figure_for(const Mission& mission, const MissionPlan& writ
 /// reactive level first took over. With zoom_m > 0, the square of half-side
 /// zoom_m around the first object found. Titled with the run's outcome.
 /// Refers to `written` and `run`: they must outlive it.
-MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan& written, const PlannedMission& planned,
-                                       const MissionRun& run, double zoom_m = 0.0);
+MissionFigure simulated_mission_figure(const Mission& mission, const MissionPlan& written,
+                                       const PlannedMission& planned, const MissionRun& run, double zoom_m = 0.0);
 
 /// Draws the figure to `path` (.png or .svg), atomically. Throws InputError
 /// for a missing plan or what render_chart refuses.

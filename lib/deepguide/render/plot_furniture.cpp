@@ -68,8 +68,8 @@ std::string format_tick(double value, double step) {
   return buf;
 }
 
-void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const PlotAxis& y,
-               const AxesOptions& options, double u, const AxesStyle& style) {
+void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const PlotAxis& y, const AxesOptions& options,
+               double u, const AxesStyle& style) {
   const std::vector<double> xt = options.x_ticks ? nice_ticks(x.lo, x.hi, options.max_x_ticks) : std::vector<double>{};
   const std::vector<double> yt = nice_ticks(y.lo, y.hi, options.max_y_ticks);
   const double x_step = nice_tick_step(x.hi - x.lo, options.max_x_ticks);
@@ -105,20 +105,20 @@ void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const P
 }
 
 namespace {
-constexpr double kLegendRow = 26.0;     // design units per row
+constexpr double kLegendRow = 26.0;  // design units per row
 constexpr double kSwatchWidth = 30.0;
 constexpr double kLabelGap = 8.0;
 constexpr double kLegendFont = 14.0;
 }  // namespace
 
 double legend_height(std::size_t entries, int columns, double u) {
-  const std::size_t rows = (entries + static_cast<std::size_t>(std::max(1, columns)) - 1) /
-                           static_cast<std::size_t>(std::max(1, columns));
+  const std::size_t rows =
+      (entries + static_cast<std::size_t>(std::max(1, columns)) - 1) / static_cast<std::size_t>(std::max(1, columns));
   return static_cast<double>(rows) * kLegendRow * u;
 }
 
-void draw_legend(Canvas& canvas, const std::vector<LegendEntry>& entries, const PixelRect& rect, int columns,
-                 double u, const Rgba& text) {
+void draw_legend(Canvas& canvas, const std::vector<LegendEntry>& entries, const PixelRect& rect, int columns, double u,
+                 const Rgba& text) {
   columns = std::max(1, columns);
   const double column_width = rect.width / columns;
   for (std::size_t i = 0; i < entries.size(); ++i) {

@@ -69,8 +69,8 @@ struct AxesOptions {
 
 /// Grid lines, the frame, outward ticks with their numbers and the titles
 /// around `plot`.
-void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const PlotAxis& y,
-               const AxesOptions& options, double unit, const AxesStyle& style);
+void draw_axes(Canvas& canvas, const PixelRect& plot, const PlotAxis& x, const PlotAxis& y, const AxesOptions& options,
+               double unit, const AxesStyle& style);
 
 /// One legend line: a swatch drawn centred at `mid` (about 30 x 16 design
 /// units) and its label.

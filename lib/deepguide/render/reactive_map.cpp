@@ -125,8 +125,8 @@ ReactiveMapLayout reactive_map_layout(const ReactiveMap& map, const WorldBox& ex
   l.y = {l.area.min.y(), l.area.max.y(), l.plot.y + l.plot.height, l.plot.y};
   l.legend_entries = legend_entries;
   l.legend_columns = std::max(1, legend_columns);
-  const double legend_h = legend_height(kMapLegendColumns, kMapLegendColumns, u) +
-                          legend_height(legend_entries, l.legend_columns, u);
+  const double legend_h =
+      legend_height(kMapLegendColumns, kMapLegendColumns, u) + legend_height(legend_entries, l.legend_columns, u);
   l.legend = {l.plot.x, l.plot.y + l.plot.height + kXNumbers * u, l.plot.width, legend_h};
   l.height = static_cast<int>(std::ceil(l.legend.y + legend_h + kBottom * u));
   return l;

@@ -60,11 +60,11 @@ struct ReactiveMapLayout {
   int width = 0;
   int height = 0;
   double unit = 1.0;
-  PixelRect plot;       ///< the map area
-  PixelRect legend;     ///< both legends
-  WorldBox area;        ///< the world box the plot shows (m)
-  ViewTransform view;   ///< world -> pixels
-  PlotAxis x, y;        ///< the same mapping as view, per axis
+  PixelRect plot;                  ///< the map area
+  PixelRect legend;                ///< both legends
+  WorldBox area;                   ///< the world box the plot shows (m)
+  ViewTransform view;              ///< world -> pixels
+  PlotAxis x, y;                   ///< the same mapping as view, per axis
   std::size_t legend_entries = 0;  ///< the caller's entries
   int legend_columns = 1;
 };

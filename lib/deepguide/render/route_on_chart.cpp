@@ -24,7 +24,8 @@ ChartLayout render_route_on_chart(const RouteOnChart& r, const std::string& path
     for (const Vec2& p : r.route) px.push_back(view.to_pixel(p));
     canvas.stroke_polyline(px, Stroke{Rgba{1.0, 1.0, 1.0, 0.9}, 5.0 * u, {}});  // a halo over the hatching
     canvas.stroke_polyline(px, Stroke{route_color, 2.6 * u, {}});
-    for (std::size_t k = 1; k + 1 < px.size(); ++k) canvas.circle(px[k], 2.6 * u, Rgba{1.0, 1.0, 1.0, 1.0}, Stroke{route_color, 1.4 * u, {}});
+    for (std::size_t k = 1; k + 1 < px.size(); ++k)
+      canvas.circle(px[k], 2.6 * u, Rgba{1.0, 1.0, 1.0, 1.0}, Stroke{route_color, 1.4 * u, {}});
     canvas.circle(px.front(), 6.0 * u, start, Stroke{Rgba{1.0, 1.0, 1.0, 1.0}, 1.5 * u, {}});
     canvas.circle(px.back(), 6.0 * u, goal, Stroke{Rgba{1.0, 1.0, 1.0, 1.0}, 1.5 * u, {}});
   };

@@ -15,11 +15,11 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // Design units (at 1200 px wide); multiplied by RouteLayout::unit.
-constexpr double kSide = 24.0;        // left/right margin
-constexpr double kTitleBand = 52.0;   // title band height
-constexpr double kFooter = 100.0;     // footer height
+constexpr double kSide = 24.0;       // left/right margin
+constexpr double kTitleBand = 52.0;  // title band height
+constexpr double kFooter = 100.0;    // footer height
 constexpr double kScaleBarMax = 250.0;
-constexpr double kLegendX = 330.0;    // legend left edge, from the image's left
+constexpr double kLegendX = 330.0;  // legend left edge, from the image's left
 
 bool finite(const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
@@ -54,8 +54,8 @@ WorldBox content_box(const RouteScene& scene) {
   if (scene.obstacles != nullptr) {
     for (const EllipticCylinder& c : scene.obstacles->ellipses) {
       const Ellipse& e = c.footprint;
-      if (!finite(e.centre) || !std::isfinite(e.a) || !std::isfinite(e.b) || !std::isfinite(e.theta) ||
-          !(e.a > 0.0) || !(e.b > 0.0)) {
+      if (!finite(e.centre) || !std::isfinite(e.a) || !std::isfinite(e.b) || !std::isfinite(e.theta) || !(e.a > 0.0) ||
+          !(e.b > 0.0)) {
         throw InputError("route chart: obstacle '" + c.id + "': expected a finite ellipse with positive axes");
       }
       box.extend(ellipse_box(e, d));
@@ -322,12 +322,13 @@ struct Painter {
       const Vec2 a = line[i], b = line[i + 1];
       const double len = (b - a).norm();
       const double w = canvas.text_width(scene.leg_labels[i], size);
-      if (len < w + 20.0 * u) continue;  // too short on the map to carry it
+      if (len < w + 20.0 * u) continue;        // too short on the map to carry it
       Vec2 normal(-(b - a).y(), (b - a).x());  // pixel rows grow downwards: this is to the right...
       normal = -normal / len;                  // ...so flip it to the left of travel
       const Vec2 mid = 0.5 * (a + b) + 12.0 * u * normal;
-      const TextAlign align = normal.x() < -0.3 ? TextAlign::right : normal.x() > 0.3 ? TextAlign::left
-                                                                                      : TextAlign::centre;
+      const TextAlign align = normal.x() < -0.3  ? TextAlign::right
+                              : normal.x() > 0.3 ? TextAlign::left
+                                                 : TextAlign::centre;
       canvas.text_with_halo(mid + Vec2(0.0, 4.0 * u), scene.leg_labels[i], size, style.route, style.sea, 2.5 * u,
                             align);
     }
@@ -366,14 +367,29 @@ struct Painter {
                    furniture());
   }
 
-  enum class Swatch { obstacle, zone, zone_polygon, graph, route, start, goal, current, cell, detected, repaired, track };
+  enum class Swatch {
+    obstacle,
+    zone,
+    zone_polygon,
+    graph,
+    route,
+    start,
+    goal,
+    current,
+    cell,
+    detected,
+    repaired,
+    track
+  };
 
   void swatch(Swatch kind, double x, double y) {
     const double sw = 30.0 * u;
     const Vec2 mid(x + sw / 2.0, y);
     switch (kind) {
       case Swatch::obstacle:
-        canvas.fill_rings({{{x + 4 * u, y - 6 * u}, {x + sw - 4 * u, y - 6 * u}, {x + sw - 4 * u, y + 6 * u},
+        canvas.fill_rings({{{x + 4 * u, y - 6 * u},
+                            {x + sw - 4 * u, y - 6 * u},
+                            {x + sw - 4 * u, y + 6 * u},
                             {x + 4 * u, y + 6 * u}}},
                           style.obstacle);
         break;
@@ -386,33 +402,27 @@ struct Painter {
       case Swatch::zone_polygon:
         canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{style.zone_polygon, 1.6 * u, {}});
         break;
-      case Swatch::graph:
-        canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{style.graph_edge, 1.6 * u, {}});
-        break;
+      case Swatch::graph: canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{style.graph_edge, 1.6 * u, {}}); break;
       case Swatch::route:
         canvas.stroke_polyline({{x, y}, {x + sw, y}}, route_stroke());
         waypoint(mid);
         break;
-      case Swatch::start:
-        start_marker(mid);
-        break;
-      case Swatch::goal:
-        goal_marker(mid);
-        break;
+      case Swatch::start: start_marker(mid); break;
+      case Swatch::goal: goal_marker(mid); break;
       case Swatch::detected:
-        canvas.fill_rings({{{x + 4 * u, y - 6 * u}, {x + sw - 4 * u, y - 6 * u}, {x + sw - 4 * u, y + 6 * u},
+        canvas.fill_rings({{{x + 4 * u, y - 6 * u},
+                            {x + sw - 4 * u, y - 6 * u},
+                            {x + sw - 4 * u, y + 6 * u},
                             {x + 4 * u, y + 6 * u}}},
                           style.detected);
         break;
       case Swatch::repaired:
         canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{style.repaired, 2.2 * u, {6.0 * u, 4.0 * u}});
         break;
-      case Swatch::track:
-        canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{track_band(), 9.0 * u, {}});
-        break;
+      case Swatch::track: canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{track_band(), 9.0 * u, {}}); break;
       case Swatch::cell: {
-        const std::vector<Vec2> box{{x + 4 * u, y - 7 * u}, {x + sw - 4 * u, y - 7 * u}, {x + sw - 4 * u, y + 7 * u},
-                                    {x + 4 * u, y + 7 * u}};
+        const std::vector<Vec2> box{
+            {x + 4 * u, y - 7 * u}, {x + sw - 4 * u, y - 7 * u}, {x + sw - 4 * u, y + 7 * u}, {x + 4 * u, y + 7 * u}};
         canvas.fill_rings({box}, style.occupied_cell);
         canvas.stroke_polyline(box, Stroke{style.cell, 1.0 * u, {}}, true);
         break;

@@ -25,14 +25,14 @@ namespace DEEPGUIDE_API deepguide {
 
 /// Colours of the route chart (tests read them back from the pixels).
 struct RouteStyle {
-  Rgba background = rgb_hex(0xffffff);     ///< title band and footer
-  Rgba sea = rgb_hex(0xeef4f9);            ///< map area
-  Rgba frame = rgb_hex(0x8a96a3);          ///< map border
-  Rgba obstacle = rgb_hex(0x3c3f44);       ///< footprint fill
-  Rgba safety_zone = rgb_hex(0xd9480f);    ///< exact zone outline (dashed)
-  Rgba zone_polygon = rgb_hex(0x7b5ea7);   ///< the planner's enclosing polygons
-  Rgba graph_edge = rgb_hex(0xb4c2d0);     ///< planning graph
-  Rgba route = rgb_hex(0x1864d6);          ///< route line and waypoint outlines
+  Rgba background = rgb_hex(0xffffff);    ///< title band and footer
+  Rgba sea = rgb_hex(0xeef4f9);           ///< map area
+  Rgba frame = rgb_hex(0x8a96a3);         ///< map border
+  Rgba obstacle = rgb_hex(0x3c3f44);      ///< footprint fill
+  Rgba safety_zone = rgb_hex(0xd9480f);   ///< exact zone outline (dashed)
+  Rgba zone_polygon = rgb_hex(0x7b5ea7);  ///< the planner's enclosing polygons
+  Rgba graph_edge = rgb_hex(0xb4c2d0);    ///< planning graph
+  Rgba route = rgb_hex(0x1864d6);         ///< route line and waypoint outlines
   Rgba start = rgb_hex(0x2f9e44);
   Rgba goal = rgb_hex(0xc92a2a);
   Rgba text = rgb_hex(0x212529);
@@ -45,15 +45,15 @@ struct RouteStyle {
 };
 
 struct RouteScene {
-  const ObstacleSet* obstacles = nullptr;  ///< optional; local frame (m)
-  double margin = 0.0;                     ///< safety margin (m); zones drawn when > 0
-  const BgMultiPolygon* zone_polygons = nullptr;          ///< optional: the planner's zone polygons
-  std::vector<std::pair<Vec2, Vec2>> graph_edges;         ///< optional: the planning graph
+  const ObstacleSet* obstacles = nullptr;          ///< optional; local frame (m)
+  double margin = 0.0;                             ///< safety margin (m); zones drawn when > 0
+  const BgMultiPolygon* zone_polygons = nullptr;   ///< optional: the planner's zone polygons
+  std::vector<std::pair<Vec2, Vec2>> graph_edges;  ///< optional: the planning graph
   /// Optional: quadtree cells as (min corner, max corner), free and occupied
   /// (the seed's Fig. 7): outlines, occupied ones shaded.
   std::vector<std::pair<Vec2, Vec2>> free_cells;
   std::vector<std::pair<Vec2, Vec2>> occupied_cells;
-  std::vector<Vec2> route;                                ///< waypoints, start to goal
+  std::vector<Vec2> route;  ///< waypoints, start to goal
   std::optional<Vec2> start;
   std::optional<Vec2> goal;
   std::string title;

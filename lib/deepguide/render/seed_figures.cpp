@@ -65,9 +65,9 @@ WrittenSeedFigure fig4_two_levels(const Job& job) {
   MissionFigure f = simulated_mission_figure(l.mission, l.plan, planned, run, kFig4Zoom_m);
   f.width_px = job.width_px;
   f.title = title(4, f.marks.empty() ? "the two levels of control: " + std::string(run.completed ? "" : "NOT ") +
-                                            "completed, the reactive level never steered"
-                                      : std::string("the reactive level reacts at A, the repaired plan is sailed") +
-                                            (run.completed && !run.collided ? "" : " (NOT completed safely)"));
+                                           "completed, the reactive level never steered"
+                                     : std::string("the reactive level reacts at A, the repaired plan is sailed") +
+                                           (run.completed && !run.collided ? "" : " (NOT completed safely)"));
   render_mission(f, job.path);
 
   double reactive_s = 0.0;
@@ -75,9 +75,13 @@ WrittenSeedFigure fig4_two_levels(const Job& job) {
     if (run.track[k].reactive) reactive_s += run.track[k].time_s - run.track[k - 1].time_s;
   }
   WrittenSeedFigure w;
-  w.facts = {{"completed", run.completed ? 1.0 : 0.0}, {"collided", run.collided ? 1.0 : 0.0},
-             {"found", static_cast<double>(run.detected.size())}, {"replans", static_cast<double>(run.replans)},
-             {"reactive_s", reactive_s}, {"time_s", run.time_s}, {"min_clearance_m", run.min_clearance_m}};
+  w.facts = {{"completed", run.completed ? 1.0 : 0.0},
+             {"collided", run.collided ? 1.0 : 0.0},
+             {"found", static_cast<double>(run.detected.size())},
+             {"replans", static_cast<double>(run.replans)},
+             {"reactive_s", reactive_s},
+             {"time_s", run.time_s},
+             {"min_clearance_m", run.min_clearance_m}};
   w.summary = std::string(run.completed ? "completed" : "NOT completed") + " in " + clock_text(run.time_s) + ", " +
               std::to_string(run.detected.size()) + " object(s) found, reactive level " + fixed(reactive_s, 0) +
               " s, " + std::to_string(run.replans) + " replan(s), least clearance " + metres(run.min_clearance_m, 1) +
@@ -111,8 +115,8 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
   const PlanOutcome outcome = planner.solve({sc.start, sc.target, false});
   const PlanResult& r = outcome.result;
   if (!r.found) {
-    throw InputError(printable(job.input(kObstacleField), 200) + ": expected a route from start to target, got none: " +
-                     r.message);
+    throw InputError(printable(job.input(kObstacleField), 200) +
+                     ": expected a route from start to target, got none: " + r.message);
   }
 
   RouteScene scene;
@@ -136,10 +140,10 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
       free_cells += leaf.state == CellState::free ? 1 : 0;
     }
   }
-  const std::string sizes = std::to_string(r.stats.graph_vertices) + " vertices, " +
-                            std::to_string(r.stats.graph_edges) + " edges";
-  const std::string route = "route " + fixed(r.route.length(), 1) + " m, " + std::to_string(r.route.points.size()) +
-                            " waypoints";
+  const std::string sizes =
+      std::to_string(r.stats.graph_vertices) + " vertices, " + std::to_string(r.stats.graph_edges) + " edges";
+  const std::string route =
+      "route " + fixed(r.route.length(), 1) + " m, " + std::to_string(r.route.points.size()) + " waypoints";
   scene.title = title(number, (kind == GraphKind::quadtree ? "quadtree graph, " : "visibility graph, ") + sizes + "; " +
                                   route + " (margin " + general(options.margin) + " m)");
   render_route(scene, job.path, job.width_px);
@@ -198,7 +202,8 @@ void add_runs(WrittenSeedFigure& w, const std::vector<SimulationResult>& runs, b
     if (!w.summary.empty()) w.summary += "; ";
     if (rates) {
       w.summary += m + " max |r_ref| " + fixed(rad_to_deg(s.max_abs_rate_ref), 1) + " deg/s (RMS " +
-                   fixed(rad_to_deg(s.rms_rate_ref), 2) + "), max |r| " + fixed(rad_to_deg(s.max_abs_rate), 1) + " deg/s";
+                   fixed(rad_to_deg(s.rms_rate_ref), 2) + "), max |r| " + fixed(rad_to_deg(s.max_abs_rate), 1) +
+                   " deg/s";
     } else {
       w.summary += m + " " + fixed(s.path_length_m, 0) + " m, least clearance " + metres(s.min_clearance_m, 1) +
                    (s.collided ? ", COLLIDED" : "") + (s.reached ? "" : ", target not reached");
@@ -250,15 +255,23 @@ std::string known_numbers() {
 
 const std::vector<SeedFigureSpec>& seed_figure_specs() {
   static const std::vector<SeedFigureSpec> specs = {
-      {4, "fig04_two_levels", "route by the two levels of control: reactive reaction at A, then the repaired plan",
+      {4,
+       "fig04_two_levels",
+       "route by the two levels of control: reactive reaction at A, then the repaired plan",
        {kEncounter, kEncounterUnknown, kKnownObstacles, kVehicle}},
-      {6, "fig06_visibility_graph", "visibility graph over the obstacle scenario and its shortest route",
+      {6,
+       "fig06_visibility_graph",
+       "visibility graph over the obstacle scenario and its shortest route",
        {kObstacleField, kVehicle}},
-      {7, "fig07_quadtree_graph", "quadtree graph over the same obstacles and its shortest route",
+      {7,
+       "fig07_quadtree_graph",
+       "quadtree graph over the same obstacles and its shortest route",
        {kObstacleField, kVehicle}},
       {8, "fig08_dipole_gradient_lines", "gradient lines of the harmonic dipole potential", {kOneObstacle, kVehicle}},
       {10, "fig10_geometric_gradient_lines", "gradient lines by geometric construction", {kOneObstacle, kVehicle}},
-      {11, "fig11_paths", "paths of the dipole method and the geometric construction through the obstacle scenario",
+      {11,
+       "fig11_paths",
+       "paths of the dipole method and the geometric construction through the obstacle scenario",
        {kObstacleField, kVehicle}},
       {12, "fig12_turning_rates", "reference turning rate r_ref of both methods over time", {kObstacleField, kVehicle}},
   };

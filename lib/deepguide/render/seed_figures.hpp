@@ -45,8 +45,8 @@ namespace DEEPGUIDE_API deepguide {
 /// One of the seed's figures, as this module redraws it.
 struct SeedFigureSpec {
   int number = 0;
-  std::string stem;     ///< the file name without extension, e.g. "fig06_visibility_graph"
-  std::string caption;  ///< what it shows, one line
+  std::string stem;                 ///< the file name without extension, e.g. "fig06_visibility_graph"
+  std::string caption;              ///< what it shows, one line
   std::vector<std::string> inputs;  ///< bundled files it is drawn from, relative to the data root
 };
 
@@ -54,8 +54,8 @@ struct SeedFigureSpec {
 const std::vector<SeedFigureSpec>& seed_figure_specs();
 
 struct SeedFigureOptions {
-  std::string data_root;   ///< the folder holding data/ (the project's root, or an installed share/deepguide)
-  std::string output_dir;  ///< made when missing
+  std::string data_root;          ///< the folder holding data/ (the project's root, or an installed share/deepguide)
+  std::string output_dir;         ///< made when missing
   std::string extension = "png";  ///< png or svg
   int width_px = 1200;
   std::vector<int> only;  ///< figure numbers to draw; empty = all
@@ -64,8 +64,8 @@ struct SeedFigureOptions {
 struct WrittenSeedFigure {
   int number = 0;
   std::string path;
-  std::string summary;                   ///< one line: the numbers the figure shows
-  std::map<std::string, double> facts;   ///< the same as numbers, by name (e.g. "route_m", "geometric_max_r_ref_deg_s")
+  std::string summary;                  ///< one line: the numbers the figure shows
+  std::map<std::string, double> facts;  ///< the same as numbers, by name (e.g. "route_m", "geometric_max_r_ref_deg_s")
 };
 
 /// The first of `candidates` that holds every figure's inputs. Throws

@@ -13,7 +13,8 @@ namespace {
 
 void end_cross(Canvas& c, const Vec2& at, const Rgba& color, double u) {
   const double r = 7.0 * u;
-  const std::vector<std::pair<Vec2, Vec2>> x{{at + Vec2(-r, -r), at + Vec2(r, r)}, {at + Vec2(-r, r), at + Vec2(r, -r)}};
+  const std::vector<std::pair<Vec2, Vec2>> x{{at + Vec2(-r, -r), at + Vec2(r, r)},
+                                             {at + Vec2(-r, r), at + Vec2(r, -r)}};
   c.stroke_segments(x, Stroke{rgb_hex(0xffffff), 6.0 * u, {}});
   c.stroke_segments(x, Stroke{color, 3.0 * u, {}});
 }
@@ -62,8 +63,8 @@ ReactiveMapLayout render_trajectory_figure(const TrajectoryFigure& figure, const
       }
       for (const TrajectorySample& s : run.trajectory) tracks.extend(s.position);
     }
-    const bool collided = std::any_of(figure.runs.begin(), figure.runs.end(),
-                                      [](const SimulationResult& r) { return r.stats.collided; });
+    const bool collided =
+        std::any_of(figure.runs.begin(), figure.runs.end(), [](const SimulationResult& r) { return r.stats.collided; });
     l = reactive_map_layout(figure.map, tracks, figure.width_px, figure.runs.size() + (collided ? 1 : 0), 1);
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());

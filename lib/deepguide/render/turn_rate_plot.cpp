@@ -44,8 +44,8 @@ std::string panel_label(const SimulationResult& run) {
   char buf[200];
   std::snprintf(buf, sizeof buf,
                 "max |r_ref| %.1f \u00b0/s, max |r| %.1f \u00b0/s, RMS r %.2f \u00b0/s, %d heading reversal%s, %s",
-                rad_to_deg(s.max_abs_rate_ref), rad_to_deg(s.max_abs_rate), rad_to_deg(s.rms_rate),
-                s.heading_reversals, s.heading_reversals == 1 ? "" : "s", std::string(to_string(run.end)).c_str());
+                rad_to_deg(s.max_abs_rate_ref), rad_to_deg(s.max_abs_rate), rad_to_deg(s.rms_rate), s.heading_reversals,
+                s.heading_reversals == 1 ? "" : "s", std::string(to_string(run.end)).c_str());
   return buf;
 }
 
@@ -67,8 +67,8 @@ TurnRateLayout turn_rate_layout(const TurnRatePlot& plot) {
   double peak = std::abs(rad_to_deg(plot.max_turn_rate));
   for (const SimulationResult& run : plot.runs) {
     if (run.trajectory.empty()) {
-      throw InputError("turn-rate plot: expected a recorded trajectory for the " +
-                       std::string(to_string(run.method)) + " method");
+      throw InputError("turn-rate plot: expected a recorded trajectory for the " + std::string(to_string(run.method)) +
+                       " method");
     }
     for (const TrajectorySample& s : run.trajectory) {
       if (!std::isfinite(s.time_s) || !std::isfinite(s.rate) || !std::isfinite(s.rate_ref)) {
@@ -154,10 +154,12 @@ TurnRateLayout render_turn_rate_plot(const TurnRatePlot& plot, const std::string
 
   const ReactiveMethod first = plot.runs.front().method;
   const std::vector<LegendEntry> legend{
-      {"r, the vehicle's turning rate", [first, u](Canvas& c, const Vec2& m) {
+      {"r, the vehicle's turning rate",
+       [first, u](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, rate_stroke(first, u));
        }},
-      {"r_ref, the autopilot's reference", [u](Canvas& c, const Vec2& m) {
+      {"r_ref, the autopilot's reference",
+       [u](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, reference_stroke(u));
        }},
       {"\u00b1r_max = " + format_number(std::round(limit * 100.0) / 100.0) + " \u00b0/s, the vehicle's limit",

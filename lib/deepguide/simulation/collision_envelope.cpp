@@ -43,8 +43,8 @@ void CollisionWatch::observe(const VehicleState& state) {
     CollisionCause c;
     c.obstacle = i;
     c.time_s = state.time_s;
-    const std::string name = scenario_.obstacles[i].id.empty() ? "obstacle " + std::to_string(i + 1)
-                                                               : printable(scenario_.obstacles[i].id);
+    const std::string name =
+        scenario_.obstacles[i].id.empty() ? "obstacle " + std::to_string(i + 1) : printable(scenario_.obstacles[i].id);
     if (!first_seen_[i]) {
       c.unavoidable = true;
       c.reason = name + " was never in the sonar's view before the vehicle met it";

@@ -26,14 +26,14 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct CollisionCause {
-  std::size_t obstacle = 0;         ///< index into the scenario's obstacles
-  double time_s = 0.0;              ///< when the vehicle entered its footprint
-  bool seen = false;                ///< it had been in the sonar's sector before
+  std::size_t obstacle = 0;  ///< index into the scenario's obstacles
+  double time_s = 0.0;       ///< when the vehicle entered its footprint
+  bool seen = false;         ///< it had been in the sonar's sector before
   double seen_time_s = 0.0;
   double seen_distance_m = 0.0;     ///< from the vehicle to the footprint then
   double escape_clearance_m = 0.0;  ///< the better hard-over turn's least clearance to it then (< 0: both hit it)
   bool unavoidable = false;
-  std::string reason;               ///< one line, naming the obstacle
+  std::string reason;  ///< one line, naming the obstacle
 };
 
 /// The least clearance to `footprint` of a hard-over turn to `side` (+1 port,

@@ -52,8 +52,7 @@ struct UnitStep {
 // The perimeter of the offset path (Ramanujan's ellipse perimeter + 2 pi D).
 double around_length(const Ellipse& e, double d) {
   const double a = e.a, b = e.b, h = (a - b) * (a - b) / ((a + b) * (a + b));
-  return std::numbers::pi * (a + b) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h))) +
-         2.0 * std::numbers::pi * d;
+  return std::numbers::pi * (a + b) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h))) + 2.0 * std::numbers::pi * d;
 }
 
 std::string where(double t, const Vec2& p) {
@@ -66,32 +65,22 @@ std::string where(double t, const Vec2& p) {
 
 std::string_view to_string(IdentifyPhase phase) {
   switch (phase) {
-    case IdentifyPhase::evasive:
-      return "evasive";
-    case IdentifyPhase::positioning:
-      return "positioning";
-    case IdentifyPhase::steering:
-      return "steering";
-    case IdentifyPhase::tracking:
-      return "tracking";
-    case IdentifyPhase::done:
-      return "done";
-    case IdentifyPhase::overpowered:
-      return "overpowered";
+    case IdentifyPhase::evasive: return "evasive";
+    case IdentifyPhase::positioning: return "positioning";
+    case IdentifyPhase::steering: return "steering";
+    case IdentifyPhase::tracking: return "tracking";
+    case IdentifyPhase::done: return "done";
+    case IdentifyPhase::overpowered: return "overpowered";
   }
   return "?";
 }
 
 std::string_view to_string(IdentifyEnd end) {
   switch (end) {
-    case IdentifyEnd::held:
-      return "held";
-    case IdentifyEnd::laps_done:
-      return "laps_done";
-    case IdentifyEnd::overpowered:
-      return "overpowered";
-    case IdentifyEnd::time_out:
-      return "time_out";
+    case IdentifyEnd::held: return "held";
+    case IdentifyEnd::laps_done: return "laps_done";
+    case IdentifyEnd::overpowered: return "overpowered";
+    case IdentifyEnd::time_out: return "time_out";
   }
   return "?";
 }
@@ -198,23 +187,22 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     }
     const AutopilotOutput ap = plant.steer({u.course, u.speed_mps, sc.depth_m, u.course_rate, u.is_heading});
     const double object_distance = signed_distance(object, state.position);
-    const IdentifySample x{
-        .vehicle = {.time_s = t,
-                    .position = state.position,
-                    .heading = state.heading,
-                    .course_cmd = u.course,
-                    .rate_cmd = k == 0 ? 0.0 : wrap_pi(u.course - last_course_cmd) / h,
-                    .rate_ref = ap.rate_ref,
-                    .rate = state.yaw_rate,
-                    .speed_mps = state.speed_mps,
-                    .clearance_m = clearance.at(state.position),
-                    .course_unreachable = ap.course_unreachable},
-        .phase = u.phase,
-        .object_distance_m = object_distance,
-        .distance_error_m = object_distance - u.requested_m,
-        .cross_track_m = u.cross_track_m,
-        .goal_error_m = u.goal_error_m,
-        .laps = u.laps};
+    const IdentifySample x{.vehicle = {.time_s = t,
+                                       .position = state.position,
+                                       .heading = state.heading,
+                                       .course_cmd = u.course,
+                                       .rate_cmd = k == 0 ? 0.0 : wrap_pi(u.course - last_course_cmd) / h,
+                                       .rate_ref = ap.rate_ref,
+                                       .rate = state.yaw_rate,
+                                       .speed_mps = state.speed_mps,
+                                       .clearance_m = clearance.at(state.position),
+                                       .course_unreachable = ap.course_unreachable},
+                           .phase = u.phase,
+                           .object_distance_m = object_distance,
+                           .distance_error_m = object_distance - u.requested_m,
+                           .cross_track_m = u.cross_track_m,
+                           .goal_error_m = u.goal_error_m,
+                           .laps = u.laps};
     last_course_cmd = u.course;
     if (k == 0) result.start_phase = u.phase;
     if (k > 0 && u.phase != last_phase) result.switches.push_back({t, state.position, last_phase, u.phase});

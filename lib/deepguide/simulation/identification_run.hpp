@@ -88,7 +88,7 @@ struct IdentifyStats {
   /// Times the vehicle left position after reaching it (out of the shade, or
   /// back to steering); aligning's hold then starts again.
   int position_lost = 0;
-  ErrorStats station_keeping_m;     ///< aligning only (0 going around)
+  ErrorStats station_keeping_m;  ///< aligning only (0 going around)
   ErrorStats cross_track_m;
   ErrorStats distance_error_m;
   double requested_distance_m = 0.0;  ///< from the object's footprint
@@ -101,7 +101,7 @@ std::string_view to_string(IdentifyEnd end);
 
 struct IdentifyResult {
   IdentifyMode mode = IdentifyMode::align;
-  std::vector<IdentifySample> trajectory;  ///< empty when not recorded
+  std::vector<IdentifySample> trajectory;              ///< empty when not recorded
   IdentifyPhase start_phase = IdentifyPhase::evasive;  ///< the mode at t = 0
   std::vector<ModeSwitch> switches;                    ///< every change after it
   IdentifyStats stats;

@@ -25,7 +25,7 @@ constexpr double kArrival_m = 5.0;
 constexpr double kKnownSlack_m = 10.0;  // a contact this near a known footprint is that obstacle
 constexpr double kSameContact_m = 10.0;
 constexpr double kTrackWindow_m = 15.0;  // per step the vehicle moves well under a metre
-constexpr double kRetry_s = 10.0;         // an evasion that cannot be planned yet is tried again after this
+constexpr double kRetry_s = 10.0;        // an evasion that cannot be planned yet is tried again after this
 
 // The plan level: the plan's lines and arcs followed one after another
 // (path_following.hpp; corners turned on the vehicle's radius), and the
@@ -42,7 +42,8 @@ class PlanTrack {
         follower_.legs.push_back(line_leg(b.from, b.to));
       } else {
         const Vec2 r = b.from - b.centre;
-        follower_.legs.push_back(circle_leg(b.centre, b.radius_m, std::atan2(r.y(), r.x()), b.turn * b.length_m / b.radius_m));
+        follower_.legs.push_back(
+            circle_leg(b.centre, b.radius_m, std::atan2(r.y(), r.x()), b.turn * b.length_m / b.radius_m));
       }
       start_.push_back(b.start_m);
     }
@@ -80,8 +81,9 @@ class PlanTrack {
 
 Vec2 local_current(const Mission& mission) {
   if (!mission.current_file.empty()) {
-    throw InputError(mission.source + ": environment.current_file: the mission simulation takes a constant current "
-                                      "(current: SPEED_MPS,DIR_DEG) for now");
+    throw InputError(mission.source +
+                     ": environment.current_file: the mission simulation takes a constant current "
+                     "(current: SPEED_MPS,DIR_DEG) for now");
   }
   return constant_current(mission);
 }
@@ -127,10 +129,10 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
   double reactive_until = 0.0;
   double pending_at = 0.0;  // when the planner's evasion is ready
   Vec2 reactive_target{0.0, 0.0};
-  std::optional<PlannedMission> pending;   // the evasion planned, spliced in when the planner is done
-  std::vector<Vec2> handled;               // centres of unknown contacts already reacted to
+  std::optional<PlannedMission> pending;         // the evasion planned, spliced in when the planner is done
+  std::vector<Vec2> handled;                     // centres of unknown contacts already reacted to
   std::vector<std::pair<Vec2, double>> waiting;  // contacts whose evasion could not be planned yet, and when to retry
-  double rendezvous_m = -1.0;              // where the reactive level hands back, on the plan of the time
+  double rendezvous_m = -1.0;                    // where the reactive level hands back, on the plan of the time
   const double zone_margin = mission.margin_m + 0.7;
   const ObstacleField known_field(env.obstacles, 0.0);
   // A contact is a known obstacle when it lies within kKnownSlack_m of a known
@@ -145,7 +147,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     return false;
   };
   std::vector<char> held(run.plan.basics.size(), 0);
-  double held_s = 0.0;                     // time spent holding (the plant's clock stops meanwhile)
+  double held_s = 0.0;  // time spent holding (the plant's clock stops meanwhile)
   bool inside = false;
   double next_sample = 0.0;
   run.min_clearance_m = std::numeric_limits<double>::infinity();
@@ -162,13 +164,15 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     const Vec2 pos = s.position;
     run.length_m += (pos - last).norm();
     last = pos;
-    if (!reactive) plan_track.steer(pos, s.ground_velocity, mission.vehicle, std::max(plan_speed, 0.1), options.lookahead_m);
+    if (!reactive)
+      plan_track.steer(pos, s.ground_velocity, mission.vehicle, std::max(plan_speed, 0.1), options.lookahead_m);
     const PlanPosition here = position_at(run.plan, plan_track.along());
     plan_speed = here.speed_mps;
 
     // Truth: clearance and collisions.
     for (std::size_t i : truth_field.near(pos, pos, 100.0)) {
-      if (truth_volume.zone_top(i) < s.depth_m) run.min_clearance_m = std::min(run.min_clearance_m, truth_field.distance_to(i, pos));
+      if (truth_volume.zone_top(i) < s.depth_m)
+        run.min_clearance_m = std::min(run.min_clearance_m, truth_field.distance_to(i, pos));
     }
     const WaterVolume::Verdict v = truth_volume.check_point({pos.x(), pos.y(), s.depth_m});
     if (v.blocked && !inside) {
@@ -228,13 +232,15 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         ObstacleSet contact;
         contact.ellipses.push_back(object);
         const std::vector<Conflict> ahead = observe_collisions(run.plan, contact, nullptr, observe);
-        const auto danger = std::find_if(ahead.begin(), ahead.end(), [&](const Conflict& x) { return x.along_m > plan_track.along(); });
+        const auto danger =
+            std::find_if(ahead.begin(), ahead.end(), [&](const Conflict& x) { return x.along_m > plan_track.along(); });
         if (danger == ahead.end()) continue;
         const double speed = std::max(here.speed_mps, 0.1);
         const double lead = 2.0 * turn_radius(mission.vehicle, speed) + zone_margin;
         // Mission control plans the evasion, the contact among the known obstacles.
         Mission rules = mission;
-        if (mission.control.unknown_objects == ControlRules::Reaction::identify) rules.control.identify.push_back(object.id);
+        if (mission.control.unknown_objects == ControlRules::Reaction::identify)
+          rules.control.identify.push_back(object.id);
         MissionEnvironment seen_env = env;
         seen_env.obstacles.ellipses.insert(seen_env.obstacles.ellipses.end(), run.detected.ellipses.begin(),
                                            run.detected.ellipses.end());
@@ -254,36 +260,41 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         }
         handled.push_back(c.centre);
         run.detected.ellipses.push_back(object);
-        event(t, pos, object.id + " at " + point_text(c.centre) + " is on no chart and endangers the plan " +
-                          fixed(danger->along_m - plan_track.along(), 0) + " m ahead");
+        event(t, pos,
+              object.id + " at " + point_text(c.centre) + " is on no chart and endangers the plan " +
+                  fixed(danger->along_m - plan_track.along(), 0) + " m ahead");
         if (ok) {
           // The rendezvous is on the route as written, so the new plan's point for it is the place.
           reactive_target = position_at(planned.plan, mine->rendezvous_m).xy;
           pending = std::move(planned);
           pending_at = t + options.planning_delay_s;
           if (!imminent) {
-            event(t, pos, object.id + " lies farther along the plan: the planner repairs it while the plan level keeps control");
+            event(
+                t, pos,
+                object.id + " lies farther along the plan: the planner repairs it while the plan level keeps control");
             break;
           }
           event(t, pos, "the reactive level takes over until the evasion is planned");
         } else {
           // The rendezvous past the danger, from goal points on the contact alone.
           const ObstacleField contact_field(contact, zone_margin);
-          const WaterVolume contact_volume(contact_field, nullptr,
-                                           {mission.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()});
+          const WaterVolume contact_volume(
+              contact_field, nullptr, {mission.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()});
           std::string why;
           const std::optional<EvasionStretch> stretch =
               goal_points(track_danger(run.plan, contact_volume, 2.0), danger->along_m, lead, plan_track.along(), &why);
           rendezvous_m = stretch ? stretch->rendezvous_m : run.plan.length_m;
           const bool planner_failed = mine != planned.resolutions.end() && !mine->resolved;
           if (planner_failed || !stretch) {
-            event(t, pos, "no evasion could be planned (" + (planner_failed ? mine->problem : why) +
-                              "): the reactive level steers to the rendezvous " +
-                              point_text(position_at(run.plan, rendezvous_m).xy),
+            event(t, pos,
+                  "no evasion could be planned (" + (planner_failed ? mine->problem : why) +
+                      "): the reactive level steers to the rendezvous " +
+                      point_text(position_at(run.plan, rendezvous_m).xy),
                   true);
           } else {
-            event(t, pos, object.id + " is too near for the planner: the reactive level evades it to the rendezvous " +
-                              point_text(position_at(run.plan, rendezvous_m).xy));
+            event(t, pos,
+                  object.id + " is too near for the planner: the reactive level evades it to the rendezvous " +
+                      point_text(position_at(run.plan, rendezvous_m).xy));
           }
         }
         if (ok) {
@@ -327,7 +338,8 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
           const BasicManoeuvre& b = run.plan.basics[i];
           if (b.kind != BasicManoeuvre::Kind::point || held[i] || b.start_m > rendezvous_m) continue;
           held[i] = 1;
-          if (b.hold_s > 0.0) event(t, pos, "the hold at " + point_text(b.from) + " was skipped by the reactive level", true);
+          if (b.hold_s > 0.0)
+            event(t, pos, "the hold at " + point_text(b.from) + " was skipped by the reactive level", true);
         }
         plan_track.reset(run.plan, rendezvous_m, pos, kTrackWindow_m);
         rendezvous_m = -1.0;
@@ -338,15 +350,16 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
     if (reactive) {
       ReactiveParams params = sailing_params(sc.reactive, sc.vehicle);
       params.speed_mps = std::max(here.speed_mps, 0.1);
-      const double cog = s.ground_velocity.squaredNorm() > 0.0 ? std::atan2(s.ground_velocity.y(), s.ground_velocity.x())
-                                                               : s.heading;
+      const double cog =
+          s.ground_velocity.squaredNorm() > 0.0 ? std::atan2(s.ground_velocity.y(), s.ground_velocity.x()) : s.heading;
       const ReactiveCommand cmd =
           reactive_command(ReactiveMethod::geometric, params, memory,
                            {t, pos, cog, s.speed_mps, reactive_target, contacts.ellipses(), s.yaw_rate});
       if (cmd.status == ReactiveStatus::target_in_zone && !pending) {
         // The rendezvous lies inside an object's zone: no way on. Stop short and say so.
-        event(t, pos, "the rendezvous " + point_text(reactive_target) +
-                          " lies inside an object's security zone: the vehicle stops short, the mission cannot go on",
+        event(t, pos,
+              "the rendezvous " + point_text(reactive_target) +
+                  " lies inside an object's security zone: the vehicle stops short, the mission cannot go on",
               true);
         break;
       }
@@ -354,7 +367,8 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
       set.speed_mps = cmd.speed_mps;
     } else {
       set.speed_mps = std::max(here.speed_mps, 0.1);
-      const PathFollower::Command c = plan_track.steer(pos, s.ground_velocity, mission.vehicle, set.speed_mps, options.lookahead_m);
+      const PathFollower::Command c =
+          plan_track.steer(pos, s.ground_velocity, mission.vehicle, set.speed_mps, options.lookahead_m);
       if (c.at_end) {
         // Past the last leg's end, short of arriving: home on the plan's end.
         const Vec2 end = position_at(run.plan, run.plan.length_m).xy - pos;

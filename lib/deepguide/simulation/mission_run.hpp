@@ -54,7 +54,8 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct MissionRunOptions {
-  double lookahead_m = 0.0;       ///< the path follower's; 0: 0.3 x the turn radius at the manoeuvre's speed (path_lookahead)
+  double lookahead_m =
+      0.0;  ///< the path follower's; 0: 0.3 x the turn radius at the manoeuvre's speed (path_lookahead)
   double planning_delay_s = 5.0;  ///< the evasion planner's time on the vehicle
   double max_time_s = 0.0;        ///< 0: twice the plan's time + 600 s
   std::uint64_t seed = 1;         ///< the sonar's noise
@@ -65,15 +66,15 @@ struct MissionSample {
   double time_s = 0.0;
   Vec2 position{0.0, 0.0};
   double depth_m = 0.0;
-  double heading = 0.0;  ///< math rad
-  double along_m = 0.0;  ///< the vehicle's place on the plan of the time
-  bool reactive = false; ///< the reactive level had control
+  double heading = 0.0;   ///< math rad
+  double along_m = 0.0;   ///< the vehicle's place on the plan of the time
+  bool reactive = false;  ///< the reactive level had control
 };
 
 struct MissionEvent {
   double time_s = 0.0;
   Vec2 where{0.0, 0.0};
-  std::string what;  ///< one line
+  std::string what;    ///< one line
   bool alarm = false;  ///< a collision, or an evasion that could not be planned
 };
 
@@ -81,12 +82,13 @@ struct MissionRun {
   bool completed = false;
   bool collided = false;
   double time_s = 0.0;
-  double length_m = 0.0;          ///< over ground
-  double min_clearance_m = 0.0;   ///< to the footprints of true obstacles the vehicle is not above (within 100 m; +inf if none)
+  double length_m = 0.0;  ///< over ground
+  double min_clearance_m =
+      0.0;  ///< to the footprints of true obstacles the vehicle is not above (within 100 m; +inf if none)
   std::vector<MissionSample> track;
   std::vector<MissionEvent> events;
-  MissionPlan plan;               ///< the plan at the end (with the evasions planned on the way)
-  ObstacleSet detected;           ///< unknown objects the sonar found, as their contacts' estimates
+  MissionPlan plan;      ///< the plan at the end (with the evasions planned on the way)
+  ObstacleSet detected;  ///< unknown objects the sonar found, as their contacts' estimates
   std::size_t replans = 0;
 };
 

@@ -36,14 +36,13 @@ namespace DEEPGUIDE_API deepguide {
 /// The point of one leg nearest to p (clamped to the leg).
 struct PathPoint {
   Vec2 point{0.0, 0.0};
-  double to_end_m = 0.0;    ///< along the leg from `point` to the leg's end
-  Vec2 tangent{1.0, 0.0};   ///< unit, in the direction of travel
-  double curvature = 0.0;   ///< signed, ccw > 0 (1/m)
-  double left_m = 0.0;      ///< p's signed distance left of the leg at `point`
-  bool past_end = false;    ///< p lies beyond the leg's end (abeam or after)
+  double to_end_m = 0.0;   ///< along the leg from `point` to the leg's end
+  Vec2 tangent{1.0, 0.0};  ///< unit, in the direction of travel
+  double curvature = 0.0;  ///< signed, ccw > 0 (1/m)
+  double left_m = 0.0;     ///< p's signed distance left of the leg at `point`
+  bool past_end = false;   ///< p lies beyond the leg's end (abeam or after)
 };
 PathPoint nearest_on_leg(const RouteLeg& leg, const Vec2& p);
-
 
 /// The follower's state: which leg it is on.
 struct PathFollower {

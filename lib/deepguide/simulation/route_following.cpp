@@ -71,8 +71,7 @@ SimulationResult follow_route(const Scenario& sc, const Route& route, const Rout
   std::size_t leg = 0;  // steering along legs[leg] -> legs[leg + 1]
   const Guidance line_of_sight = [&](double, const VehicleState& state) {
     const Vec2& p = state.position;
-    while (leg + 2 < legs.size() &&
-           (passed(p, legs[leg], legs[leg + 1]) || (p - legs[leg + 1]).norm() < lookahead)) {
+    while (leg + 2 < legs.size() && (passed(p, legs[leg], legs[leg + 1]) || (p - legs[leg + 1]).norm() < lookahead)) {
       ++leg;
     }
     const Vec2 a = legs[leg], b = legs[leg + 1];
@@ -98,9 +97,8 @@ SimulationResult follow_route(const Scenario& sc, const std::vector<RouteLeg>& l
   double length = 0.0;
   for (const RouteLeg& leg : legs) length += leg.length_m;
   const double lead = options.lead_m >= 0.0 ? options.lead_m : path_lead(sc.vehicle, sc.reactive.speed_mps);
-  PathFollower follower{legs,
-                        options.lookahead_m > 0.0 ? options.lookahead_m : path_lookahead(sc.vehicle, sc.reactive.speed_mps),
-                        lead};
+  PathFollower follower{
+      legs, options.lookahead_m > 0.0 ? options.lookahead_m : path_lookahead(sc.vehicle, sc.reactive.speed_mps), lead};
   const Guidance along_the_path = [&](double, const VehicleState& state) {
     ReactiveCommand cmd;
     cmd.speed_mps = sc.reactive.speed_mps;

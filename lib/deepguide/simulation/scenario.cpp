@@ -10,8 +10,8 @@
 #include <initializer_list>
 #include <sstream>
 
-#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
@@ -289,8 +289,7 @@ void read_current(const Mapping& root, const std::string& base_dir, Scenario& sc
   CurrentOptions options;
   options.depth_m = sc.depth_m;
   options.assumed_crs = sc.frame->id();
-  auto field =
-      std::make_shared<const CurrentField>(load_current_field(root.path("current_file", base_dir), options));
+  auto field = std::make_shared<const CurrentField>(load_current_field(root.path("current_file", base_dir), options));
   sc.current_time_offset_s = field->times_s.empty() ? 0.0 : field->times_s.front();
   const auto [lo, hi] = work_box(sc);
   check_current_coverage(*field, *sc.frame, lo, hi, sc.current_time_offset_s, sc.current_time_offset_s);
@@ -415,8 +414,9 @@ void validate_identify(const Scenario& sc, const Fail& fail, const Within& withi
   speed_ok("identify.align.max_speed_mps", id.align.max_speed_mps);
   speed_ok("identify.around.speed_mps", id.around.speed_mps);
   if (security_ellipse(e, id.align.standoff_m).contains(sc.start) && id.mode == IdentifyMode::align) {
-    fail("start", "a start outside the " + object + "'s safety ellipse (standoff " + yaml_number(id.align.standoff_m) +
-                      " m)", "inside it");
+    fail("start",
+         "a start outside the " + object + "'s safety ellipse (standoff " + yaml_number(id.align.standoff_m) + " m)",
+         "inside it");
   }
   if (e.contains(sc.start)) fail("start", "a start outside the " + object, "inside it");
   if (id.mode == IdentifyMode::around) {

@@ -1,7 +1,7 @@
 #include "deepguide/simulation/scenario_writer.hpp"
 
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "deepguide/core/angles.hpp"
@@ -30,7 +30,9 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-std::string point(const Vec2& p) { return "{x: " + yaml_exact_number(p.x()) + ", y: " + yaml_exact_number(p.y()) + "}"; }
+std::string point(const Vec2& p) {
+  return "{x: " + yaml_exact_number(p.x()) + ", y: " + yaml_exact_number(p.y()) + "}";
+}
 
 }  // namespace
 
@@ -48,13 +50,15 @@ std::string scenario_yaml(const Scenario& sc, const std::string& comment) {
   o << "name: " << quoted(sc.name) << "\n";
   o << "start: " << point(sc.start) << "\n";
   o << "target: " << point(sc.target) << "\n";
-  if (sc.start_heading) o << "start_heading_deg: " << yaml_exact_number(math_rad_to_heading_deg(*sc.start_heading)) << "\n";
+  if (sc.start_heading)
+    o << "start_heading_deg: " << yaml_exact_number(math_rad_to_heading_deg(*sc.start_heading)) << "\n";
   o << "depth_m: " << yaml_exact_number(sc.depth_m) << "\n";
   o << "obstacles:" << (sc.obstacles.empty() ? " []" : "") << "\n";
   for (const EllipticCylinder& c : sc.obstacles) {
     const Ellipse& e = c.footprint;
-    o << "  - {id: " << quoted(c.id) << ", x: " << yaml_exact_number(e.centre.x()) << ", y: " << yaml_exact_number(e.centre.y())
-      << ", semi_major_m: " << yaml_exact_number(e.a) << ", semi_minor_m: " << yaml_exact_number(e.b)
+    o << "  - {id: " << quoted(c.id) << ", x: " << yaml_exact_number(e.centre.x())
+      << ", y: " << yaml_exact_number(e.centre.y()) << ", semi_major_m: " << yaml_exact_number(e.a)
+      << ", semi_minor_m: " << yaml_exact_number(e.b)
       << ", orientation_deg: " << yaml_exact_number(math_rad_to_heading_deg(e.theta)) << "}\n";
   }
   if (sc.current.norm() > 0.0) {
@@ -63,15 +67,21 @@ std::string scenario_yaml(const Scenario& sc, const std::string& comment) {
   }
   o << "seed: " << sc.sonar.seed << "\n";
   const SonarParams& s = sc.sonar;
-  o << "sonar: {range_m: " << yaml_exact_number(s.range_m) << ", field_of_view_deg: " << yaml_exact_number(rad_to_deg(s.field_of_view))
-    << ", update_rate_hz: " << yaml_exact_number(s.update_rate_hz) << ", position_sigma_m: " << yaml_exact_number(s.position_sigma_m)
-    << ", position_sigma_per_m: " << yaml_exact_number(s.position_sigma_per_m) << ", size_sigma_m: " << yaml_exact_number(s.size_sigma_m)
+  o << "sonar: {range_m: " << yaml_exact_number(s.range_m)
+    << ", field_of_view_deg: " << yaml_exact_number(rad_to_deg(s.field_of_view))
+    << ", update_rate_hz: " << yaml_exact_number(s.update_rate_hz)
+    << ", position_sigma_m: " << yaml_exact_number(s.position_sigma_m)
+    << ", position_sigma_per_m: " << yaml_exact_number(s.position_sigma_per_m)
+    << ", size_sigma_m: " << yaml_exact_number(s.size_sigma_m)
     << ", size_sigma_per_m: " << yaml_exact_number(s.size_sigma_per_m) << "}\n";
   const ReactiveParams& r = sc.reactive;
-  o << "reactive: {margin_m: " << yaml_exact_number(r.margin_m) << ", arrival_radius_m: " << yaml_exact_number(r.arrival_radius_m)
-    << ", influence_m: " << yaml_exact_number(r.influence_m) << ", potential_gain: " << yaml_exact_number(r.potential_gain)
-    << ", speed_mps: " << yaml_exact_number(r.speed_mps) << ", exit_blend_fraction: " << yaml_exact_number(r.exit_blend_fraction)
-    << ", dipole_axis_band_m: " << yaml_exact_number(r.dipole_axis_band_m) << ", dipole_blend_m: " << yaml_exact_number(r.dipole_blend_m)
+  o << "reactive: {margin_m: " << yaml_exact_number(r.margin_m)
+    << ", arrival_radius_m: " << yaml_exact_number(r.arrival_radius_m)
+    << ", influence_m: " << yaml_exact_number(r.influence_m)
+    << ", potential_gain: " << yaml_exact_number(r.potential_gain) << ", speed_mps: " << yaml_exact_number(r.speed_mps)
+    << ", exit_blend_fraction: " << yaml_exact_number(r.exit_blend_fraction)
+    << ", dipole_axis_band_m: " << yaml_exact_number(r.dipole_axis_band_m)
+    << ", dipole_blend_m: " << yaml_exact_number(r.dipole_blend_m)
     << ", geometric_passage_m: " << yaml_exact_number(r.geometric_passage_m)
     << ", potential_stall_fraction: " << yaml_exact_number(r.potential_stall_fraction) << "}\n";
   o << "contacts: {gate_m: " << yaml_exact_number(sc.contacts.gate_m);

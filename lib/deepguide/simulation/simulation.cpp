@@ -21,16 +21,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string_view to_string(SimulationEnd end) {
   switch (end) {
-    case SimulationEnd::reached:
-      return "reached";
-    case SimulationEnd::stalled:
-      return "stalled";
-    case SimulationEnd::target_in_zone:
-      return "target_in_zone";
-    case SimulationEnd::no_progress:
-      return "no_progress";
-    case SimulationEnd::time_out:
-      return "time_out";
+    case SimulationEnd::reached: return "reached";
+    case SimulationEnd::stalled: return "stalled";
+    case SimulationEnd::target_in_zone: return "target_in_zone";
+    case SimulationEnd::no_progress: return "no_progress";
+    case SimulationEnd::time_out: return "time_out";
   }
   return "?";
 }
@@ -105,8 +100,8 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
     if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
       contacts.update(sonar->detections(), t);
     }
-    const ReactiveInput input{t,         state.position,      course_over_ground(state), state.speed_mps,
-                              sc.target, contacts.ellipses(), state.yaw_rate};
+    const ReactiveInput input{
+        t, state.position, course_over_ground(state), state.speed_mps, sc.target, contacts.ellipses(), state.yaw_rate};
     return reactive_command(method, params, memory, input);
   };
   SimulationResult result = simulate_guided(sc, reactive, options);

@@ -35,7 +35,6 @@ void append_vehicle_columns(std::string& out, const TrajectorySample& x) {
   }
 }
 
-
 }  // namespace
 
 std::string trajectory_csv(std::span<const TrajectorySample> trajectory) {
@@ -55,9 +54,9 @@ void write_trajectory_csv(const std::string& path, std::span<const TrajectorySam
 }
 
 std::string identification_csv(std::span<const IdentifySample> trajectory) {
-  std::string out =
-      std::string(kVehicleHeader) + ",mode,object_distance_m,distance_error_m,cross_track_m,goal_error_m,laps,"
-                                    "course_unreachable\n";
+  std::string out = std::string(kVehicleHeader) +
+                    ",mode,object_distance_m,distance_error_m,cross_track_m,goal_error_m,laps,"
+                    "course_unreachable\n";
   out.reserve(out.size() + trajectory.size() * 150);
   for (const IdentifySample& x : trajectory) {
     append_vehicle_columns(out, x.vehicle);

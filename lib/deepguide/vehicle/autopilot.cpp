@@ -49,11 +49,9 @@ double crab_heading(double course, double speed_mps, const Vec2& current, bool& 
 AutopilotOutput autopilot_step(const VehicleParams& p, AutopilotState& memory, const VehicleState& vehicle,
                                const AutopilotSetpoint& setpoint, const Vec2& current_estimate) {
   if (!std::isfinite(setpoint.course) || !std::isfinite(setpoint.speed_mps) || !std::isfinite(setpoint.depth_m) ||
-      !std::isfinite(setpoint.course_rate) ||
-      !current_estimate.allFinite()) {
+      !std::isfinite(setpoint.course_rate) || !current_estimate.allFinite()) {
     // A guidance method that divides by zero must not steer the vehicle with NaN.
-    throw input_error({"autopilot", "", "set-point"}, "finite course, speed, depth and current",
-                      "a NaN or infinity");
+    throw input_error({"autopilot", "", "set-point"}, "finite course, speed, depth and current", "a NaN or infinity");
   }
   const double h = p.step_s;
   const AutopilotTuning& tune = p.autopilot;

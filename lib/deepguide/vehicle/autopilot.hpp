@@ -71,9 +71,9 @@ struct AutopilotSetpoint {
 /// first step starts the reference at the vehicle's course over ground.
 struct AutopilotState {
   bool started = false;
-  double course_ref = 0.0;  ///< chi_r, math rad
-  double rate_ref = 0.0;    ///< r_r, rad/s (ccw positive)
-  double integral = 0.0;    ///< int of the heading error (rad s)
+  double course_ref = 0.0;    ///< chi_r, math rad
+  double rate_ref = 0.0;      ///< r_r, rad/s (ccw positive)
+  double integral = 0.0;      ///< int of the heading error (rad s)
   bool heading_mode = false;  ///< the reference is a heading (AutopilotSetpoint::heading_mode)
 
   bool operator==(const AutopilotState&) const = default;
@@ -81,9 +81,9 @@ struct AutopilotState {
 
 struct AutopilotOutput {
   VehicleCommand command;
-  double course_ref = 0.0;        ///< reference course (math rad)
-  double rate_ref = 0.0;          ///< reference turning rate (rad/s, ccw positive)
-  double heading_setpoint = 0.0;  ///< heading that makes good course_ref in the current (math rad)
+  double course_ref = 0.0;          ///< reference course (math rad)
+  double rate_ref = 0.0;            ///< reference turning rate (rad/s, ccw positive)
+  double heading_setpoint = 0.0;    ///< heading that makes good course_ref in the current (math rad)
   bool rudder_saturated = false;    ///< |delta_c| reached max_rudder
   bool course_unreachable = false;  ///< the current is too strong for this course at this speed
   bool speed_limited = false;       ///< the speed set-point was outside [0, max_speed]

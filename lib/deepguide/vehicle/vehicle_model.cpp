@@ -18,8 +18,7 @@ struct Clamped {
 };
 
 template <class Current>
-Continuous derivative(const VehicleParams& p, const Clamped& c, const Continuous& s, double t,
-                      const Current& current) {
+Continuous derivative(const VehicleParams& p, const Clamped& c, const Continuous& s, double t, const Current& current) {
   Continuous ds{};
   ds.d = std::clamp((c.d_c - s.d) / p.rudder_time_constant_s, -p.max_rudder_rate, p.max_rudder_rate);
   const double r = std::clamp(s.r, -p.max_turn_rate, p.max_turn_rate);
@@ -42,8 +41,7 @@ Continuous axpy(const Continuous& s, double h, const Continuous& k) {
 template <class Current>
 void rk4_step(const VehicleParams& p, VehicleState& state, const VehicleCommand& command, const Current& current) {
   const Clamped c{std::clamp(command.rudder, -p.max_rudder, p.max_rudder),
-                  std::clamp(command.speed_mps, 0.0, p.max_speed_mps),
-                  std::clamp(command.depth_m, 0.0, p.max_depth_m)};
+                  std::clamp(command.speed_mps, 0.0, p.max_speed_mps), std::clamp(command.depth_m, 0.0, p.max_depth_m)};
   const double h = p.step_s;
   const double t = state.time_s;
   const Continuous s{state.position.x(), state.position.y(), state.depth_m, state.heading,
@@ -52,7 +50,9 @@ void rk4_step(const VehicleParams& p, VehicleState& state, const VehicleCommand&
   const Continuous k2 = derivative(p, c, axpy(s, 0.5 * h, k1), t + 0.5 * h, current);
   const Continuous k3 = derivative(p, c, axpy(s, 0.5 * h, k2), t + 0.5 * h, current);
   const Continuous k4 = derivative(p, c, axpy(s, h, k3), t + h, current);
-  auto combine = [h](double v, double a, double b, double cc, double d) { return v + h / 6.0 * (a + 2.0 * b + 2.0 * cc + d); };
+  auto combine = [h](double v, double a, double b, double cc, double d) {
+    return v + h / 6.0 * (a + 2.0 * b + 2.0 * cc + d);
+  };
   Continuous n{};
   n.x = combine(s.x, k1.x, k2.x, k3.x, k4.x);
   n.y = combine(s.y, k1.y, k2.y, k3.y, k4.y);

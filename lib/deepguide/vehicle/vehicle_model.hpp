@@ -74,8 +74,7 @@ VehicleState make_vehicle_state(const Vec2& position, double depth_m, double hea
                                 const Vec2& current = Vec2::Zero());
 
 /// Advances `state` by params.step_s in a uniform current (m/s, east/north).
-void step_vehicle(const VehicleParams& params, VehicleState& state, const VehicleCommand& command,
-                  const Vec2& current);
+void step_vehicle(const VehicleParams& params, VehicleState& state, const VehicleCommand& command, const Vec2& current);
 
 /// Same, with a current field evaluated at the RK4 stages.
 void step_vehicle(const VehicleParams& params, VehicleState& state, const VehicleCommand& command,

@@ -11,9 +11,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 
 namespace deepguide {
@@ -33,8 +33,8 @@ double from_si(Unit u, double v) {
 }
 
 struct Field {
-  const char* key;   // in the file, with its unit
-  Unit scale;        // the file's unit
+  const char* key;  // in the file, with its unit
+  Unit scale;       // the file's unit
   double& (*ref)(VehicleParams&);
   double lo;         // exclusive
   double hi;         // inclusive
@@ -52,44 +52,38 @@ const Field kFields[] = {
      "a speed in m/s"},
     {"cruise_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.cruise_speed_mps; }, 0.0, 20.0,
      "a speed in knots"},
-    {"max_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0,
-     "a speed in m/s"},
-    {"max_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0,
-     "a speed in knots"},
-    {"min_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.min_speed_mps; }, 0.0, 20.0,
-     "a speed in m/s"},
-    {"min_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.min_speed_mps; }, 0.0, 20.0,
-     "a speed in knots"},
+    {"max_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0, "a speed in m/s"},
+    {"max_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.max_speed_mps; }, 0.0, 20.0, "a speed in knots"},
+    {"min_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.min_speed_mps; }, 0.0, 20.0, "a speed in m/s"},
+    {"min_speed_kn", kKn, [](VehicleParams& p) -> double& { return p.min_speed_mps; }, 0.0, 20.0, "a speed in knots"},
     {"hotel_power_w", kSI, [](VehicleParams& p) -> double& { return p.energy.hotel_power_w; }, 0.0, 1e7,
      "a power in W"},
-    {"propulsion_k_w_per_mps3", kSI, [](VehicleParams& p) -> double& { return p.energy.propulsion_k_w_per_mps3; },
-     0.0, 1e7, "a coefficient in W/(m/s)^3"},
-    {"speed_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.speed_time_constant_s; }, 0.0,
-     3600.0, "a time constant in seconds"},
+    {"propulsion_k_w_per_mps3", kSI, [](VehicleParams& p) -> double& { return p.energy.propulsion_k_w_per_mps3; }, 0.0,
+     1e7, "a coefficient in W/(m/s)^3"},
+    {"speed_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.speed_time_constant_s; }, 0.0, 3600.0,
+     "a time constant in seconds"},
     {"nomoto_gain_per_s", kSI, [](VehicleParams& p) -> double& { return p.nomoto_gain_per_s; }, 0.0, 10.0,
      "a Nomoto gain K in 1/s"},
-    {"nomoto_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.nomoto_time_constant_s; }, 0.0,
-     3600.0, "a time constant in seconds"},
+    {"nomoto_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.nomoto_time_constant_s; }, 0.0, 3600.0,
+     "a time constant in seconds"},
     {"max_rudder_deg", kDeg, [](VehicleParams& p) -> double& { return p.max_rudder; }, 0.0, deg_to_rad(90.0),
      "a rudder angle in degrees"},
     {"max_rudder_rate_deg_s", kDeg, [](VehicleParams& p) -> double& { return p.max_rudder_rate; }, 0.0,
      deg_to_rad(1000.0), "a rudder rate in deg/s"},
-    {"rudder_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.rudder_time_constant_s; }, 0.0,
-     60.0, "a time constant in seconds"},
+    {"rudder_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.rudder_time_constant_s; }, 0.0, 60.0,
+     "a time constant in seconds"},
     {"max_turn_rate_deg_s", kDeg, [](VehicleParams& p) -> double& { return p.max_turn_rate; }, 0.0, deg_to_rad(180.0),
      "a turning rate in deg/s"},
-    {"max_vertical_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.max_vertical_speed_mps; }, 0.0,
-     20.0, "a vertical speed in m/s"},
-    {"depth_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.depth_time_constant_s; }, 0.0,
-     3600.0, "a time constant in seconds"},
-    {"max_depth_m", kSI, [](VehicleParams& p) -> double& { return p.max_depth_m; }, 0.0, 11000.0,
-     "a depth in metres"},
+    {"max_vertical_speed_mps", kSI, [](VehicleParams& p) -> double& { return p.max_vertical_speed_mps; }, 0.0, 20.0,
+     "a vertical speed in m/s"},
+    {"depth_time_constant_s", kSI, [](VehicleParams& p) -> double& { return p.depth_time_constant_s; }, 0.0, 3600.0,
+     "a time constant in seconds"},
+    {"max_depth_m", kSI, [](VehicleParams& p) -> double& { return p.max_depth_m; }, 0.0, 11000.0, "a depth in metres"},
     {"step_s", kSI, [](VehicleParams& p) -> double& { return p.step_s; }, 0.0, 1.0, "a time step in seconds"},
 };
 const Field kAutopilotFields[] = {
-    {"natural_frequency_rad_s", kSI,
-     [](VehicleParams& p) -> double& { return p.autopilot.natural_frequency_rad_s; }, 0.0, 10.0,
-     "a natural frequency in rad/s"},
+    {"natural_frequency_rad_s", kSI, [](VehicleParams& p) -> double& { return p.autopilot.natural_frequency_rad_s; },
+     0.0, 10.0, "a natural frequency in rad/s"},
     {"damping_ratio", kSI, [](VehicleParams& p) -> double& { return p.autopilot.damping_ratio; }, 0.0, 10.0,
      "a damping ratio"},
     {"reference_natural_frequency_rad_s", kSI,
@@ -137,20 +131,22 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
   const Field* cruise = key_of("cruise_speed_mps");
   const Field* max = key_of("max_speed_mps");
   if (p.cruise_speed_mps > p.max_speed_mps) {
-    throw input_error(where(cruise->key), std::string("cruise speed <= ") + max->key + " (" +
-                                              general(from_si(max->scale, p.max_speed_mps), 10) + ")",
-                      general(from_si(cruise->scale, p.cruise_speed_mps), 10));
+    throw input_error(
+        where(cruise->key),
+        std::string("cruise speed <= ") + max->key + " (" + general(from_si(max->scale, p.max_speed_mps), 10) + ")",
+        general(from_si(cruise->scale, p.cruise_speed_mps), 10));
   }
   const Field* min = key_of("min_speed_mps");
   if (p.min_speed_mps > p.cruise_speed_mps) {
-    throw input_error(where(min->key), std::string("a minimum speed <= ") + cruise->key + " (" +
-                                           general(from_si(cruise->scale, p.cruise_speed_mps), 10) + ")",
+    throw input_error(where(min->key),
+                      std::string("a minimum speed <= ") + cruise->key + " (" +
+                          general(from_si(cruise->scale, p.cruise_speed_mps), 10) + ")",
                       general(from_si(min->scale, p.min_speed_mps), 10));
   }
   // RK4 on a first-order lag is accurate to about (h/T)^4 / 120; half the smallest
   // time constant keeps that under 1e-3 and far inside the stability bound 2.78 T.
-  const double smallest = std::min({p.nomoto_time_constant_s, p.rudder_time_constant_s, p.speed_time_constant_s,
-                                    p.depth_time_constant_s});
+  const double smallest =
+      std::min({p.nomoto_time_constant_s, p.rudder_time_constant_s, p.speed_time_constant_s, p.depth_time_constant_s});
   // Below a millisecond a step buys no accuracy (the time constants are
   // seconds) and only multiplies the work: 1e-9 s made one run take minutes
   // per simulated second and gigabytes of samples.
@@ -158,14 +154,16 @@ void check(VehicleParams p, const std::string& source, const KeyLines& lines,
     throw input_error(where("step_s"), "a step >= " + general(kMinStep_s, 10) + " s", general(p.step_s, 10));
   }
   if (p.step_s > 0.5 * smallest) {
-    throw input_error(where("step_s"), "a step <= half the smallest time constant (" + general(0.5 * smallest, 10) + " s)",
+    throw input_error(where("step_s"),
+                      "a step <= half the smallest time constant (" + general(0.5 * smallest, 10) + " s)",
                       general(p.step_s, 10));
   }
   const double capability = std::min(p.max_turn_rate, p.nomoto_gain_per_s * p.max_rudder);
   if (p.autopilot.max_reference_turn_rate > capability) {
     throw input_error(where("autopilot.max_reference_turn_rate_deg_s"),
                       "a reference turning rate <= what the vehicle can turn, min(max_turn_rate_deg_s, K x "
-                      "max_rudder_deg) = " + general(rad_to_deg(capability), 10) + " deg/s",
+                      "max_rudder_deg) = " +
+                          general(rad_to_deg(capability), 10) + " deg/s",
                       general(rad_to_deg(p.autopilot.max_reference_turn_rate), 10));
   }
 }
@@ -247,7 +245,8 @@ VehicleParams read_vehicle_file(const std::string& path) {
   // A vehicle file is a page of text; refuse anything that cannot be one.
   constexpr std::uintmax_t kMaxBytes = 1 << 20;
   const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxBytes) throw input_error({path, "", ""}, "a vehicle file under 1 MiB", std::to_string(size) + " bytes");
+  if (ec || size > kMaxBytes)
+    throw input_error({path, "", ""}, "a vehicle file under 1 MiB", std::to_string(size) + " bytes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw input_error({path, "", ""}, "a readable vehicle file");
   std::ostringstream text;

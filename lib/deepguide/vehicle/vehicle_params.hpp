@@ -22,8 +22,8 @@
 
 #include <string>
 
-#include "deepguide/core/api.hpp"
 #include "deepguide/core/angles.hpp"
+#include "deepguide/core/api.hpp"
 #include "deepguide/vehicle/energy_model.hpp"
 
 namespace DEEPGUIDE_API deepguide {
@@ -33,8 +33,8 @@ inline constexpr double kMetresPerSecondPerKnot = 1852.0 / 3600.0;
 /// The course autopilot's tuning (autopilot.hpp): PID by pole placement on the
 /// Nomoto model and a second-order reference model with a turning-rate limit.
 struct AutopilotTuning {
-  double natural_frequency_rad_s = 0.3;  ///< closed-loop omega_n (model; gives Kp = 1.44)
-  double damping_ratio = 1.0;            ///< closed-loop zeta (model: critically damped)
+  double natural_frequency_rad_s = 0.3;            ///< closed-loop omega_n (model; gives Kp = 1.44)
+  double damping_ratio = 1.0;                      ///< closed-loop zeta (model: critically damped)
   double reference_natural_frequency_rad_s = 0.2;  ///< est.: slower than the loop, so it can follow
   /// Reference turning-rate limit: 0.8 K delta_max keeps the rudder out of
   /// saturation (a rule of thumb); 5 deg/s = 0.8 x 6.25 deg/s with the defaults.
@@ -45,19 +45,19 @@ struct AutopilotTuning {
 
 struct VehicleParams {
   std::string name = "DeepC-like";
-  double length_m = 5.8;   ///< seed; informational
-  double mass_kg = 2400.0;  ///< seed; informational (the Nomoto model hides it in K, T)
+  double length_m = 5.8;                                    ///< seed; informational
+  double mass_kg = 2400.0;                                  ///< seed; informational (the Nomoto model hides it in K, T)
   double cruise_speed_mps = 4.0 * kMetresPerSecondPerKnot;  ///< seed: 4 kn
   double max_speed_mps = 6.0 * kMetresPerSecondPerKnot;     ///< seed: 6 kn
   /// est.: 1 kn, the slowest speed with steerage way; the floor of --speed optimal.
   double min_speed_mps = 1.0 * kMetresPerSecondPerKnot;
   double speed_time_constant_s = 20.0;  ///< T_u, model
 
-  double nomoto_gain_per_s = 0.25;       ///< K (r per rad of rudder), model
-  double nomoto_time_constant_s = 4.0;   ///< T, model
-  double max_rudder = deg_to_rad(25.0);  ///< delta_max, model
+  double nomoto_gain_per_s = 0.25;            ///< K (r per rad of rudder), model
+  double nomoto_time_constant_s = 4.0;        ///< T, model
+  double max_rudder = deg_to_rad(25.0);       ///< delta_max, model
   double max_rudder_rate = deg_to_rad(10.0);  ///< model
-  double rudder_time_constant_s = 0.5;   ///< T_delta of the rudder servo, model
+  double rudder_time_constant_s = 0.5;        ///< T_delta of the rudder servo, model
   /// Hard turning-rate limit. est.: 6 deg/s, just under K delta_max = 6.25 deg/s,
   /// so a hard-over turn at cruise has the radius u / r_max = 19.6 m (3.4 L).
   double max_turn_rate = deg_to_rad(6.0);

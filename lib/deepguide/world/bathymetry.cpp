@@ -30,8 +30,10 @@ GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOption
   std::error_code ec;
   // GDAL's virtual files (/vsimem/, /vsizip/ ...) are not on the file system.
   const bool virtual_file = path.rfind("/vsi", 0) == 0;
-  if (!virtual_file && !fs::exists(path, ec)) throw InputError(path + ": expected an existing bathymetry raster, found none");
-  if (!virtual_file && fs::is_directory(path, ec)) throw InputError(path + ": expected a bathymetry raster file, got a folder");
+  if (!virtual_file && !fs::exists(path, ec))
+    throw InputError(path + ": expected an existing bathymetry raster, found none");
+  if (!virtual_file && fs::is_directory(path, ec))
+    throw InputError(path + ": expected a bathymetry raster file, got a folder");
   std::vector<const char*> oo;
   for (const auto& o : options.open_options) oo.push_back(o.c_str());
   oo.push_back(nullptr);
@@ -40,8 +42,9 @@ GDALDatasetUniquePtr open_raster(const std::string& path, const BathymetryOption
   GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, oo.data());
   if (!ds || ds->GetRasterCount() == 0) {
     const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(path + ": expected a raster GDAL can open" +
-                     (why.empty() ? std::string(", got a file no raster driver recognises") : ", got: " + printable(why, 160)));
+    throw InputError(
+        path + ": expected a raster GDAL can open" +
+        (why.empty() ? std::string(", got a file no raster driver recognises") : ", got: " + printable(why, 160)));
   }
   if (!virtual_file) require_complete_raster(*ds, path);
   return ds;
@@ -70,10 +73,10 @@ std::pair<VerticalSense, std::string> detect_sense(GDALDataset& ds, GDALRasterBa
     for (const char* w : {"elevation", "height", "topograph", "altitude"})
       if (t.find(w) != std::string::npos)
         return {VerticalSense::elevation, std::string("band ") + what + " '" + printable(text) + "' says elevation"};
-    if (t == "z") return {VerticalSense::elevation, std::string("band ") + what + " 'z' (GMT grid: elevation, positive up)"};
+    if (t == "z")
+      return {VerticalSense::elevation, std::string("band ") + what + " 'z' (GMT grid: elevation, positive up)"};
   }
-  return {VerticalSense::elevation,
-          "the file does not say; assumed elevation, positive up (GDAL/GMT/NOAA convention)"};
+  return {VerticalSense::elevation, "the file does not say; assumed elevation, positive up (GDAL/GMT/NOAA convention)"};
 }
 
 // CF lon/lat axes (NetCDF x/y with units degrees_east/degrees_north) without a CRS.
@@ -147,7 +150,8 @@ void read_stated_range(GDALRasterBand& band, OpenedBathymetry& r) {
   }
   const std::vector<double> lo = numbers_in(item(band, "valid_min")), hi = numbers_in(item(band, "valid_max"));
   if (lo.size() == 1 && std::isfinite(lo[0])) r.stated_min = lo[0], r.stated_from = "valid_min";
-  if (hi.size() == 1 && std::isfinite(hi[0])) r.stated_max = hi[0], r.stated_from = lo.size() == 1 ? "valid_min/valid_max" : "valid_max";
+  if (hi.size() == 1 && std::isfinite(hi[0]))
+    r.stated_max = hi[0], r.stated_from = lo.size() == 1 ? "valid_min/valid_max" : "valid_max";
 }
 
 bool OpenedBathymetry::is_nodata(double value) const {
@@ -155,7 +159,8 @@ bool OpenedBathymetry::is_nodata(double value) const {
 }
 
 void OpenedBathymetry::require_plausible(double value, std::size_t column, std::size_t row) const {
-  const std::string cell = info.path + ": the cell at column " + std::to_string(column) + ", row " + std::to_string(row);
+  const std::string cell =
+      info.path + ": the cell at column " + std::to_string(column) + ", row " + std::to_string(row);
   // The stated range went through text (GDAL's metadata) and may hold a
   // float32 bound: compared with a margin far below any damage that matters.
   const double slack = 1e-6 * std::max({1.0, std::abs(stated_min), std::abs(stated_max)});
@@ -200,9 +205,9 @@ OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOption
     const double cells = static_cast<double>(info.width) * static_cast<double>(info.height);
     if (block_bytes > kMaxRasterBlockBytes || cells > kMaxRasterCells) {
       throw InputError(path + ": expected a bathymetry raster of at most " + general(kMaxRasterCells) +
-                       " cells read in blocks of at most " + general(kMaxRasterBlockBytes / 1048576.0) +
-                       " MiB, got " + std::to_string(info.width) + " x " + std::to_string(info.height) +
-                       " cells in blocks of " + fixed(block_bytes / 1048576.0, 0) + " MiB (a damaged header?)");
+                       " cells read in blocks of at most " + general(kMaxRasterBlockBytes / 1048576.0) + " MiB, got " +
+                       std::to_string(info.width) + " x " + std::to_string(info.height) + " cells in blocks of " +
+                       fixed(block_bytes / 1048576.0, 0) + " MiB (a damaged header?)");
     }
   }
   {
@@ -231,10 +236,13 @@ OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOption
     info.crs_source = "CF lon/lat axes (degrees_east/degrees_north)";
   } else if (!options.assumed_crs.empty()) {
     srs = gdal::srs_from_user_input(options.assumed_crs);
-    if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
+    if (!srs)
+      throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
     info.crs_source = "assumed (option)";
   } else {
-    throw InputError(path + ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
+    throw InputError(
+        path +
+        ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
   }
   info.crs = gdal::srs_id(*srs);
   {
@@ -258,8 +266,8 @@ OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOption
     auto geo = gdal::wgs84();
     auto ct = gdal::make_transform(*srs, *geo);
     double w, s, e, n;
-    if (!ct || !ct->TransformBounds(std::min(x0, x1), std::min(y0, y1), std::max(x0, x1), std::max(y0, y1), &w, &s,
-                                    &e, &n, 21)) {
+    if (!ct || !ct->TransformBounds(std::min(x0, x1), std::min(y0, y1), std::max(x0, x1), std::max(y0, y1), &w, &s, &e,
+                                    &n, 21)) {
       throw InputError(path + ": expected a raster extent that converts to lon/lat from " + info.crs + ", got " +
                        "one PROJ cannot transform");
     }
@@ -321,8 +329,8 @@ BathymetryInfo inspect_bathymetry(const std::string& path, const BathymetryOptio
       const int w = std::min(win_w, info.width - x);
       if (band.RasterIO(GF_Read, x, y, w, h, buf.data(), w, h, GDT_Float64, 0, 0, nullptr) != CE_None) {
         const std::string why = gdal::QuietErrors::last_message();
-        throw InputError(path + ": expected readable cells in the window at column " + std::to_string(x) +
-                         ", row " + std::to_string(y) + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+        throw InputError(path + ": expected readable cells in the window at column " + std::to_string(x) + ", row " +
+                         std::to_string(y) + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
       }
       ++info.windows_read;
       const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);

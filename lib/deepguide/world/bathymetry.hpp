@@ -56,8 +56,8 @@ struct BathymetryInfo {
   std::string crs_source;  ///< "file", "CF lon/lat axes" or "assumed (option)"
   int width = 0;
   int height = 0;
-  double pixel_x = 0;  ///< geotransform pixel size, x (CRS units)
-  double pixel_y = 0;  ///< geotransform pixel size, y (negative for north-up rasters)
+  double pixel_x = 0;   ///< geotransform pixel size, x (CRS units)
+  double pixel_y = 0;   ///< geotransform pixel size, y (negative for north-up rasters)
   LonLatExtent extent;  ///< of the raster's outer edges, WGS 84 lon/lat
   bool has_nodata = false;
   double nodata = std::numeric_limits<double>::quiet_NaN();

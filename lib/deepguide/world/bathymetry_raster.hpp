@@ -35,7 +35,7 @@ struct OpenedBathymetry {
   /// it says nothing.
   double stated_min = -std::numeric_limits<double>::infinity();
   double stated_max = std::numeric_limits<double>::infinity();
-  std::string stated_from;  ///< the attribute the range came from
+  std::string stated_from;    ///< the attribute the range came from
   double unpack_scale = 1.0;  ///< the band's scale and offset (a packed band's raw value * scale + offset)
   double unpack_offset = 0.0;
   /// InputError naming the cell when a valid cell's value cannot be true: off

@@ -13,8 +13,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/safety_zone.hpp"
-#include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/bathymetry.hpp"
+#include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/no_go_union.hpp"
@@ -89,9 +89,9 @@ void raster_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
   for (int i = 1; i <= ds.GetRasterCount(); ++i) {
     GDALRasterBand* band = ds.GetRasterBand(i);
     const std::string desc = band->GetDescription();
-    info.layers.push_back({"band " + std::to_string(i), static_cast<std::size_t>(b.width) * b.height,
-                           (desc.empty() ? std::string() : printable(desc) + ", ") +
-                               GDALGetDataTypeName(band->GetRasterDataType())});
+    info.layers.push_back(
+        {"band " + std::to_string(i), static_cast<std::size_t>(b.width) * b.height,
+         (desc.empty() ? std::string() : printable(desc) + ", ") + GDALGetDataTypeName(band->GetRasterDataType())});
   }
   const LocalFrame frame = frame_for(info.extent, o);
   info.local_crs = frame.id();
@@ -247,8 +247,9 @@ GDALDatasetUniquePtr open_chart(const std::string& path) {
       gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY, cell_name ? s57_only : nullptr);
   if (!ds) {
     const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(path + (cell_name ? ": expected an S-57 ENC cell GDAL's S57 driver can read, got "
-                                       : ": expected a chart GDAL can open (raster, S-57 cell or vector file), got ") +
+    throw InputError(path +
+                     (cell_name ? ": expected an S-57 ENC cell GDAL's S57 driver can read, got "
+                                : ": expected a chart GDAL can open (raster, S-57 cell or vector file), got ") +
                      (why.empty() ? std::string("a file no driver recognises") : printable(why, 160)));
   }
   return ds;
@@ -259,8 +260,7 @@ ChartKind kind_of(GDALDataset& ds, const std::string& path) {
   if (driver == "S57") return ChartKind::s57;
   if (ds.GetRasterCount() > 0) return ChartKind::raster;
   if (ds.GetLayerCount() > 0) return ChartKind::vector;
-  throw InputError(path + ": expected a chart (raster bands or vector layers), got a " + driver +
-                   " file with neither");
+  throw InputError(path + ": expected a chart (raster bands or vector layers), got a " + driver + " file with neither");
 }
 
 }  // namespace
@@ -296,7 +296,8 @@ nlohmann::json to_json(const ChartInfo& info) {
   j["crs"] = info.crs;
   j["local_crs"] = info.local_crs;
   nlohmann::json layers = nlohmann::json::array();
-  for (const ChartLayer& l : info.layers) layers.push_back({{"name", l.name}, {"features", l.features}, {"detail", l.detail}});
+  for (const ChartLayer& l : info.layers)
+    layers.push_back({{"name", l.name}, {"features", l.features}, {"detail", l.detail}});
   j["layers"] = layers;
   j["extent"] = {{"west", number_or_null(info.extent.west)},
                  {"east", number_or_null(info.extent.east)},
@@ -322,8 +323,8 @@ nlohmann::json to_json(const ChartInfo& info) {
   }
   if (info.no_go) {
     const NoGoSummary& n = *info.no_go;
-    nlohmann::json g = {{"depth_m", n.depth_m},      {"clearance_m", n.clearance_m}, {"area_m2", n.area_m2},
-                        {"polygons", n.polygons}};
+    nlohmann::json g = {
+        {"depth_m", n.depth_m}, {"clearance_m", n.clearance_m}, {"area_m2", n.area_m2}, {"polygons", n.polygons}};
     if (info.kind == ChartKind::raster) {
       g["no_go_cells"] = n.no_go_cells;
       g["total_cells"] = n.total_cells;

@@ -39,18 +39,18 @@ enum class ChartKind { raster, s57, vector };
 const char* to_string(ChartKind kind);
 
 struct ChartLayer {
-  std::string name;      ///< raster: "band N"; S-57: object class; vector: layer name
+  std::string name;          ///< raster: "band N"; S-57: object class; vector: layer name
   std::size_t features = 0;  ///< features (vector, S-57); cells (raster)
-  std::string detail;    ///< raster: band description and type; vector: geometry type
+  std::string detail;        ///< raster: band description and type; vector: geometry type
 };
 
 struct NoGoSummary {
   double depth_m = 0;
   double clearance_m = 0;
-  double area_m2 = 0;             ///< no-go area (m2, local frame)
-  std::size_t polygons = 0;       ///< raster: no-go polygons; else hazards left (footprints unioned)
-  std::size_t no_go_cells = 0;    ///< raster only
-  std::size_t total_cells = 0;    ///< raster only
+  double area_m2 = 0;                ///< no-go area (m2, local frame)
+  std::size_t polygons = 0;          ///< raster: no-go polygons; else hazards left (footprints unioned)
+  std::size_t no_go_cells = 0;       ///< raster only
+  std::size_t total_cells = 0;       ///< raster only
   std::size_t hazards_passable = 0;  ///< S-57 / vector: hazards the vehicle passes over
   /// S-57: no-go features per object class (SOUNDG: soundings), and the planners' polygon vertices.
   std::map<std::string, std::size_t> no_go_by_class;
@@ -69,7 +69,7 @@ struct ChartInfo {
   double min_depth_m = std::numeric_limits<double>::quiet_NaN();
   double max_depth_m = std::numeric_limits<double>::quiet_NaN();
   std::size_t hazards = 0;
-  std::size_t land_features = 0;  ///< S-57: LNDARE features
+  std::size_t land_features = 0;                 ///< S-57: LNDARE features
   std::map<std::string, std::size_t> zoc_areas;  ///< S-57: M_QUAL areas per CATZOC letter
   // Raster facts.
   int raster_width = 0, raster_height = 0;

@@ -6,9 +6,9 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 
 namespace deepguide {
 

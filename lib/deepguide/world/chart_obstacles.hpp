@@ -43,7 +43,7 @@ struct ChartObstacleOptions {
 
 struct ChartFileObstacles {
   std::string path;
-  std::string kind;  ///< to_string(ChartKind): "bathymetry raster", "S-57 cell", "hazard file"
+  std::string kind;             ///< to_string(ChartKind): "bathymetry raster", "S-57 cell", "hazard file"
   std::size_t obstacles = 0;    ///< obstacles taken from the file
   std::size_t passed_over = 0;  ///< hazards left out because the vehicle passes over them
 };

@@ -10,8 +10,8 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/core/utc_time.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/raster_completeness.hpp"
 
@@ -28,7 +28,6 @@ std::string trim(const std::string& s) {
   return s.substr(a, s.find_last_not_of(" \t") - a + 1);
 }
 
-
 // ------------------------------------------------------------------ time
 
 // "UNITS since YYYY-MM-DD[( |T)hh:mm[:ss[.f]]][Z| UTC|+hh[:mm]]" -> (seconds per unit, epoch of the origin).
@@ -38,11 +37,16 @@ std::optional<std::pair<double, double>> parse_time_units(const std::string& tex
   if (since == std::string::npos) return std::nullopt;
   const std::string unit = trim(t.substr(0, since));
   double per = 0;
-  if (unit == "seconds" || unit == "second" || unit == "secs" || unit == "sec" || unit == "s") per = 1;
-  else if (unit == "minutes" || unit == "minute" || unit == "mins" || unit == "min") per = 60;
-  else if (unit == "hours" || unit == "hour" || unit == "hrs" || unit == "hr" || unit == "h") per = 3600;
-  else if (unit == "days" || unit == "day" || unit == "d") per = 86400;
-  else return std::nullopt;
+  if (unit == "seconds" || unit == "second" || unit == "secs" || unit == "sec" || unit == "s")
+    per = 1;
+  else if (unit == "minutes" || unit == "minute" || unit == "mins" || unit == "min")
+    per = 60;
+  else if (unit == "hours" || unit == "hour" || unit == "hrs" || unit == "hr" || unit == "h")
+    per = 3600;
+  else if (unit == "days" || unit == "day" || unit == "d")
+    per = 86400;
+  else
+    return std::nullopt;
 
   const std::optional<double> origin = parse_iso8601(t.substr(since + 7), false);
   if (!origin) return std::nullopt;
@@ -60,7 +64,8 @@ struct Axis {
 Axis ascending_axis(std::vector<double> values, const std::string& path, const std::string& name) {
   Axis a;
   for (double v : values) {
-    if (!std::isfinite(v)) throw InputError(path + ": axis '" + printable(name) + "': expected finite coordinates, got NaN or infinity");
+    if (!std::isfinite(v))
+      throw InputError(path + ": axis '" + printable(name) + "': expected finite coordinates, got NaN or infinity");
   }
   if (values.size() >= 2 && values[1] < values[0]) {
     std::reverse(values.begin(), values.end());
@@ -112,7 +117,8 @@ Role role_of(const GDALDimension& dim) {
 
 std::vector<double> read_vector(const GDALMDArray& a, const std::string& path) {
   if (a.GetDimensionCount() != 1) {
-    throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected a one-dimensional coordinate variable");
+    throw InputError(path + ": variable '" + printable(a.GetName()) +
+                     "': expected a one-dimensional coordinate variable");
   }
   // A header can state any length; the values are read only for a length a
   // real axis can have (GEBCO's 15" longitudes are 86 400; the soak found
@@ -128,8 +134,8 @@ std::vector<double> read_vector(const GDALMDArray& a, const std::string& path) {
   const GUInt64 start = 0;
   const std::size_t count = n;
   if (n > 0 && !a.Read(&start, &count, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out.data())) {
-    throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected readable values, got: " +
-                     printable(gdal::QuietErrors::last_message(), 160));
+    throw InputError(path + ": variable '" + printable(a.GetName()) +
+                     "': expected readable values, got: " + printable(gdal::QuietErrors::last_message(), 160));
   }
   return out;
 }
@@ -166,9 +172,10 @@ Variables find_uv(const GDALGroup& root, const std::string& path, const CurrentO
     std::string names;
     for (const auto& n : root.GetMDArrayNames()) names += (names.empty() ? "" : ", ") + n;
     const std::string which = !out.u && !out.v ? "u and v" : (!out.u ? "u" : "v");
-    const std::string asked = !options.u_variable.empty() || !options.v_variable.empty()
-                                  ? " (asked for '" + printable(options.u_variable) + "'/'" + printable(options.v_variable) + "')"
-                                  : "";
+    const std::string asked =
+        !options.u_variable.empty() || !options.v_variable.empty()
+            ? " (asked for '" + printable(options.u_variable) + "'/'" + printable(options.v_variable) + "')"
+            : "";
     throw InputError(path + ": expected current variables " + which + asked +
                      " (standard_name eastward/northward_sea_water_velocity or a name such as water_u/water_v, u/v, "
                      "uo/vo), got variables: " +
@@ -187,9 +194,7 @@ struct Unpack {
   double scale = 1;
   double offset = 0;
 
-  bool same(double v, double f) const {
-    return v == f || (float32 && static_cast<float>(v) == static_cast<float>(f));
-  }
+  bool same(double v, double f) const { return v == f || (float32 && static_cast<float>(v) == static_cast<float>(f)); }
   double operator()(double raw) const {
     if (std::isnan(raw) || (has_fill && same(raw, fill)) || (has_missing && same(raw, missing))) return kNaN;
     return raw * scale + offset;
@@ -288,8 +293,8 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
     }
   }
   if (ix < 0 || iy < 0) {
-    throw InputError(path + ": variable '" + printable(f.u_name) + "': expected horizontal dimensions (lon/x and lat/y), got " +
-                     shape(du));
+    throw InputError(path + ": variable '" + printable(f.u_name) +
+                     "': expected horizontal dimensions (lon/x and lat/y), got " + shape(du));
   }
   const auto xvar = du[static_cast<std::size_t>(ix)]->GetIndexingVariable();
   const auto yvar = du[static_cast<std::size_t>(iy)]->GetIndexingVariable();
@@ -315,7 +320,8 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
     srs_source = "file";
   } else if (!options.assumed_crs.empty()) {
     srs = gdal::srs_from_user_input(options.assumed_crs);
-    if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
+    if (!srs)
+      throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
     srs_source = "assumed (option)";
   } else {
     throw InputError(path + ": expected lon/lat axes (units degrees_east/degrees_north) or a CRS (grid_mapping), got " +
@@ -380,10 +386,11 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
         up = std::all_of(z.begin(), z.end(), [](double d) { return d <= 0; }) &&
              std::any_of(z.begin(), z.end(), [](double d) { return d < 0; });
       }
-      if (up) for (double& d : z) d = -d;
+      if (up)
+        for (double& d : z) d = -d;
     } else if (nz > 1) {
-      throw InputError(path + ": dimension '" + printable(zdim->GetName()) + "': expected a depth coordinate variable for " +
-                       std::to_string(nz) + " levels, got none");
+      throw InputError(path + ": dimension '" + printable(zdim->GetName()) +
+                       "': expected a depth coordinate variable for " + std::to_string(nz) + " levels, got none");
     }
     std::vector<std::size_t> order(nz);
     for (std::size_t i = 0; i < nz; ++i) order[i] = i;
@@ -393,8 +400,8 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
       k0 = k1 = order.front();
       f.depth_levels = "level " + std::to_string(k0 + 1) + " of " + std::to_string(nz) + " (" + fixed(z[k0], 1) + " m)";
     } else if (d > z[order.back()]) {
-      throw InputError(path + ": depth: expected a depth within the field's levels (" + fixed(z[order.front()], 1) + " .. " +
-                       fixed(z[order.back()], 1) + " m), got " + fixed(d, 1) + " m");
+      throw InputError(path + ": depth: expected a depth within the field's levels (" + fixed(z[order.front()], 1) +
+                       " .. " + fixed(z[order.back()], 1) + " m), got " + fixed(d, 1) + " m");
     } else {
       std::size_t i = 0;
       while (z[order[i + 1]] < d) ++i;
@@ -405,10 +412,11 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
         k0 = k1;
         wk = 0;
       }
-      f.depth_levels = k0 == k1 || wk == 0.0
-                           ? "level " + std::to_string(k0 + 1) + " of " + std::to_string(nz) + " (" + fixed(z[k0], 1) + " m)"
-                           : "between levels " + std::to_string(k0 + 1) + " and " + std::to_string(k1 + 1) + " of " +
-                                 std::to_string(nz) + " (" + fixed(z[k0], 1) + " and " + fixed(z[k1], 1) + " m)";
+      f.depth_levels =
+          k0 == k1 || wk == 0.0
+              ? "level " + std::to_string(k0 + 1) + " of " + std::to_string(nz) + " (" + fixed(z[k0], 1) + " m)"
+              : "between levels " + std::to_string(k0 + 1) + " and " + std::to_string(k1 + 1) + " of " +
+                    std::to_string(nz) + " (" + fixed(z[k0], 1) + " and " + fixed(z[k1], 1) + " m)";
       if (wk == 0.0) k1 = k0;
     }
   } else {
@@ -434,8 +442,8 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
     std::vector<double> buf(plane * nt);
     if (!a.Read(start.data(), count.data(), nullptr, stride.data(), GDALExtendedDataType::Create(GDT_Float64),
                 buf.data(), buf.data(), buf.size() * sizeof(double))) {
-      throw InputError(path + ": variable '" + printable(a.GetName()) + "': expected readable values, got: " +
-                       printable(gdal::QuietErrors::last_message(), 160));
+      throw InputError(path + ": variable '" + printable(a.GetName()) +
+                       "': expected readable values, got: " + printable(gdal::QuietErrors::last_message(), 160));
     }
     const Unpack unpack = unpack_of(a);
     for (double& v : buf) v = unpack(v);
@@ -468,7 +476,8 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
 
 CurrentField load_two_band(GDALDataset& ds, const std::string& path, const CurrentOptions& options) {
   if (ds.GetRasterCount() != 2) {
-    throw InputError(path + ": expected a two-band raster (band 1 u east, band 2 v north, m/s) or a NetCDF file with u/v " +
+    throw InputError(path +
+                     ": expected a two-band raster (band 1 u east, band 2 v north, m/s) or a NetCDF file with u/v " +
                      "variables, got a raster with " + std::to_string(ds.GetRasterCount()) + " band(s)");
   }
   CurrentField f;
@@ -485,15 +494,20 @@ CurrentField load_two_band(GDALDataset& ds, const std::string& path, const Curre
     set_crs(f, *srs, "file");
   } else if (!options.assumed_crs.empty()) {
     srs = gdal::srs_from_user_input(options.assumed_crs);
-    if (!srs) throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
+    if (!srs)
+      throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
     set_crs(f, *srs, "assumed (option)");
   } else {
-    throw InputError(path + ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
+    throw InputError(
+        path +
+        ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
   }
   double gt[6];
-  if (ds.GetGeoTransform(gt) != CE_None) throw InputError(path + ": expected a georeferenced raster (a geotransform), got none");
+  if (ds.GetGeoTransform(gt) != CE_None)
+    throw InputError(path + ": expected a georeferenced raster (a geotransform), got none");
   if (gt[2] != 0.0 || gt[4] != 0.0) throw InputError(path + ": expected a north-up raster, got a rotated geotransform");
-  const std::size_t nx = static_cast<std::size_t>(ds.GetRasterXSize()), ny = static_cast<std::size_t>(ds.GetRasterYSize());
+  const std::size_t nx = static_cast<std::size_t>(ds.GetRasterXSize()),
+                    ny = static_cast<std::size_t>(ds.GetRasterYSize());
   check_size(path, nx, ny, 1, options);
   std::vector<double> xs(nx), ys(ny);
   for (std::size_t i = 0; i < nx; ++i) xs[i] = gt[0] + (static_cast<double>(i) + 0.5) * gt[1];
@@ -507,8 +521,8 @@ CurrentField load_two_band(GDALDataset& ds, const std::string& path, const Curre
     std::vector<double> buf(nx * ny);
     if (band.RasterIO(GF_Read, 0, 0, static_cast<int>(nx), static_cast<int>(ny), buf.data(), static_cast<int>(nx),
                       static_cast<int>(ny), GDT_Float64, 0, 0, nullptr) != CE_None) {
-      throw InputError(path + ": band " + std::to_string(b) + ": expected readable cells, got: " +
-                       printable(gdal::QuietErrors::last_message(), 160));
+      throw InputError(path + ": band " + std::to_string(b) +
+                       ": expected readable cells, got: " + printable(gdal::QuietErrors::last_message(), 160));
     }
     Unpack unpack;
     int has = 0;
@@ -560,15 +574,17 @@ CurrentField load_current_field(const std::string& path, const CurrentOptions& o
   GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_RASTER | GDAL_OF_READONLY, two_band);
   if (!ds || ds->GetRasterCount() == 0) {
     const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(path + ": expected a current field GDAL can open (NetCDF with u/v or a two-band raster)" +
-                     (why.empty() ? std::string(", got a file no driver recognises") : ", got: " + printable(why, 160)));
+    throw InputError(
+        path + ": expected a current field GDAL can open (NetCDF with u/v or a two-band raster)" +
+        (why.empty() ? std::string(", got a file no driver recognises") : ", got: " + printable(why, 160)));
   }
   require_complete_raster(*ds, path);
   return load_two_band(*ds, path, options);
 }
 
 CurrentField parse_constant_current(const std::string& text, const std::string& what) {
-  const std::string expected = "SPEED_MPS,DIR_DEG (speed >= 0 m/s, direction it sets towards, clockwise from true north)";
+  const std::string expected =
+      "SPEED_MPS,DIR_DEG (speed >= 0 m/s, direction it sets towards, clockwise from true north)";
   const auto comma = text.find(',');
   double v[2] = {0.0, 0.0};
   bool ok = comma != std::string::npos && text.find(',', comma + 1) == std::string::npos;

@@ -78,19 +78,19 @@ struct CurrentOptions {
 /// A current field in its own CRS. Plain data; node (i, j) of step k sits at
 /// u[(k * ny() + j) * nx() + i], x ascending with i, y ascending with j; NaN = unknown.
 struct CurrentField {
-  std::string source;      ///< the file, or e.g. "--current" for a constant
-  std::string driver;      ///< GDAL short name ("netCDF", "GTiff"), or "constant"
-  std::string u_name;      ///< variable or band that gave u
+  std::string source;  ///< the file, or e.g. "--current" for a constant
+  std::string driver;  ///< GDAL short name ("netCDF", "GTiff"), or "constant"
+  std::string u_name;  ///< variable or band that gave u
   std::string v_name;
-  std::string crs;         ///< "EPSG:4326", "EPSG:32632", ...
+  std::string crs;  ///< "EPSG:4326", "EPSG:32632", ...
   std::string crs_wkt;
   std::string crs_source;  ///< "CF lon/lat axes", "file", "assumed (option)"
   bool geographic = true;  ///< x = longitude, y = latitude (degrees)
 
-  bool constant = false;                           ///< the same everywhere, always
-  Eigen::Vector2d constant_velocity{0.0, 0.0};     ///< m/s, (east, north), when constant
+  bool constant = false;                        ///< the same everywhere, always
+  Eigen::Vector2d constant_velocity{0.0, 0.0};  ///< m/s, (east, north), when constant
 
-  std::vector<double> x;        ///< node coordinates, strictly ascending
+  std::vector<double> x;  ///< node coordinates, strictly ascending
   std::vector<double> y;
   std::vector<double> times_s;  ///< seconds since the Unix epoch, ascending; 0 or 1 entries = steady
   std::vector<double> u;        ///< m/s, along the CRS's x axis

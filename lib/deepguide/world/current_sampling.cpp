@@ -39,8 +39,10 @@ std::optional<Eigen::Vector2d> sample_native(const CurrentField& f, const Eigen:
   if (f.constant) return f.constant_velocity;
   double px = p.x();
   if (f.geographic && !f.x.empty()) {
-    if (px < f.x.front()) px += 360.0;
-    else if (px > f.x.back()) px -= 360.0;
+    if (px < f.x.front())
+      px += 360.0;
+    else if (px > f.x.back())
+      px -= 360.0;
   }
   const auto lx = locate(f.x, px);
   const auto ly = locate(f.y, p.y());
@@ -91,7 +93,8 @@ struct CurrentSampler::Lattice {
   bool at(const Eigen::Vector2d& xy, double& ox, double& oy, double& oc, double& os) const {
     const double gx = (xy.x() - origin.x()) / step_x, gy = (xy.y() - origin.y()) / step_y;
     if (!(gx >= 0 && gy >= 0 && gx <= static_cast<double>(nx - 1) && gy <= static_cast<double>(ny - 1))) return false;
-    const std::size_t i = std::min(static_cast<std::size_t>(gx), nx - 2), j = std::min(static_cast<std::size_t>(gy), ny - 2);
+    const std::size_t i = std::min(static_cast<std::size_t>(gx), nx - 2),
+                      j = std::min(static_cast<std::size_t>(gy), ny - 2);
     const double tx = gx - static_cast<double>(i), ty = gy - static_cast<double>(j);
     auto bil = [&](const std::vector<double>& c) {
       const std::size_t b = j * nx + i;
@@ -160,12 +163,14 @@ struct ExactMap {
 bool same_crs(const CurrentField& f, const LocalFrame& frame) {
   if (f.constant || f.geographic) return false;
   OGRSpatialReference a, b;
-  if (a.importFromWkt(f.crs_wkt.c_str()) != OGRERR_NONE || b.importFromWkt(frame.wkt().c_str()) != OGRERR_NONE) return false;
+  if (a.importFromWkt(f.crs_wkt.c_str()) != OGRERR_NONE || b.importFromWkt(frame.wkt().c_str()) != OGRERR_NONE)
+    return false;
   return a.IsSame(&b) != 0;
 }
 
 // Local bounding box of the field's nodes (densified boundary through OSR).
-std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> local_box_of(const CurrentField& f, const LocalFrame& frame) {
+std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> local_box_of(const CurrentField& f,
+                                                                        const LocalFrame& frame) {
   std::unique_ptr<OGRSpatialReference> srs;
   gdal::TransformPtr to_geo{nullptr, nullptr};
   if (!f.geographic) {
@@ -234,8 +239,8 @@ CurrentSampler::CurrentSampler(std::shared_ptr<const CurrentField> field, const 
     lat->sin_rot.resize(n_x * n_y);
     for (std::size_t j = 0; j < n_y; ++j)
       for (std::size_t i = 0; i < n_x; ++i) {
-        const Eigen::Vector3d m = exact.at(lo + Eigen::Vector2d(static_cast<double>(i) * lat->step_x,
-                                                                static_cast<double>(j) * lat->step_y));
+        const Eigen::Vector3d m =
+            exact.at(lo + Eigen::Vector2d(static_cast<double>(i) * lat->step_x, static_cast<double>(j) * lat->step_y));
         lat->fx[j * n_x + i] = m.x();
         lat->fy[j * n_x + i] = m.y();
         lat->cos_rot[j * n_x + i] = std::cos(m.z());
@@ -283,8 +288,14 @@ CurrentCoverage check_current_coverage(const CurrentField& f, const LocalFrame& 
   for (int e = 0; e < 4; ++e)
     for (int s = 0; s <= kSteps; ++s) {
       const double t = static_cast<double>(s) / kSteps;
-      const Eigen::Vector2d p(e == 0 ? lo.x() + t * (hi.x() - lo.x()) : e == 1 ? hi.x() : e == 2 ? hi.x() - t * (hi.x() - lo.x()) : lo.x(),
-                              e == 0 ? lo.y() : e == 1 ? lo.y() + t * (hi.y() - lo.y()) : e == 2 ? hi.y() : hi.y() - t * (hi.y() - lo.y()));
+      const Eigen::Vector2d p(e == 0   ? lo.x() + t * (hi.x() - lo.x())
+                              : e == 1 ? hi.x()
+                              : e == 2 ? hi.x() - t * (hi.x() - lo.x())
+                                       : lo.x(),
+                              e == 0   ? lo.y()
+                              : e == 1 ? lo.y() + t * (hi.y() - lo.y())
+                              : e == 2 ? hi.y()
+                                       : hi.y() - t * (hi.y() - lo.y()));
       const Eigen::Vector2d ll = frame.to_lonlat(p);
       lon0 = std::fmin(lon0, ll.x());
       lon1 = std::fmax(lon1, ll.x());
@@ -292,10 +303,13 @@ CurrentCoverage check_current_coverage(const CurrentField& f, const LocalFrame& 
       lat1 = std::fmax(lat1, ll.y());
       Eigen::Vector2d q = exact.field_of(ll);
       if (f.geographic && q.allFinite()) {
-        if (q.x() < f.x.front()) q.x() += 360.0;
-        else if (q.x() > f.x.back()) q.x() -= 360.0;
+        if (q.x() < f.x.front())
+          q.x() += 360.0;
+        else if (q.x() > f.x.back())
+          q.x() -= 360.0;
       }
-      if (!q.allFinite() || !inside || q.x() < f.x.front() || q.x() > f.x.back() || q.y() < f.y.front() || q.y() > f.y.back()) {
+      if (!q.allFinite() || !inside || q.x() < f.x.front() || q.x() > f.x.back() || q.y() < f.y.front() ||
+          q.y() > f.y.back()) {
         inside = false;
         continue;
       }
@@ -314,16 +328,18 @@ CurrentCoverage check_current_coverage(const CurrentField& f, const LocalFrame& 
   if (!inside || !time_ok) {
     std::string times;
     if (!f.times_s.empty()) {
-      times = " (times " + format_utc(f.times_s.front()) + (f.steady() ? std::string(", steady") : " .. " + format_utc(f.times_s.back())) + ")";
+      times = " (times " + format_utc(f.times_s.front()) +
+              (f.steady() ? std::string(", steady") : " .. " + format_utc(f.times_s.back())) + ")";
     }
-    std::string work = "lon " + fixed(lon0, 4) + " .. " + fixed(lon1, 4) + ", lat " + fixed(lat0, 4) + " .. " + fixed(lat1, 4);
+    std::string work =
+        "lon " + fixed(lon0, 4) + " .. " + fixed(lon1, 4) + ", lat " + fixed(lat0, 4) + " .. " + fixed(lat1, 4);
     if (timed) {
       work += ", times " + format_utc(std::isfinite(time_first_s) ? time_first_s : time_last_s) + " .. " +
               format_utc(std::isfinite(time_last_s) ? time_last_s : time_first_s);
     }
-    throw InputError(f.source + ": the current field covers lon " + fixed(f.extent.west, 4) + " .. " + fixed(f.extent.east, 4) +
-                     ", lat " + fixed(f.extent.south, 4) + " .. " + fixed(f.extent.north, 4) + times + "; the work area " +
-                     work + " is " + (inside ? "outside its time axis" : "outside"));
+    throw InputError(f.source + ": the current field covers lon " + fixed(f.extent.west, 4) + " .. " +
+                     fixed(f.extent.east, 4) + ", lat " + fixed(f.extent.south, 4) + " .. " + fixed(f.extent.north, 4) +
+                     times + "; the work area " + work + " is " + (inside ? "outside its time axis" : "outside"));
   }
   const std::size_t nx = f.nx(), ny = f.ny(), steps = f.steps();
   for (std::size_t j = 0; j < ny; ++j) {

@@ -38,8 +38,7 @@ namespace DEEPGUIDE_API deepguide {
 /// The velocity (m/s, along the field CRS's axes) at field coordinates
 /// (x, y) and time; std::nullopt outside the nodes, outside a time-dependent
 /// field's time axis, or where a node used is unknown. Exact at nodes and steps.
-std::optional<Eigen::Vector2d> sample_native(const CurrentField& field, const Eigen::Vector2d& field_xy,
-                                             double time_s);
+std::optional<Eigen::Vector2d> sample_native(const CurrentField& field, const Eigen::Vector2d& field_xy, double time_s);
 
 /// A field bound to a local frame; sample() does no GDAL/OSR call (see the
 /// header comment). Thread-safe for concurrent sample() calls.

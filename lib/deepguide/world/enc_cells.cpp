@@ -20,9 +20,8 @@ bool is_base_cell_name(const fs::path& p) { return ascii_lower(p.extension().str
 // BASE.001 .. BASE.999: an update, which is read only with its base cell.
 bool is_update_name(const fs::path& p) {
   const std::string ext = p.extension().string();
-  return ext.size() == 4 && ext != ".000" && std::all_of(ext.begin() + 1, ext.end(), [](char c) {
-           return c >= '0' && c <= '9';
-         });
+  return ext.size() == 4 && ext != ".000" &&
+         std::all_of(ext.begin() + 1, ext.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // The update number of BASE.NNN (1..999), or 0 when `p` is not an update of `stem`.
@@ -87,7 +86,8 @@ std::vector<EncCellFiles> find_enc_cells(const std::vector<std::string>& paths) 
           ++here;
         }
       }
-      if (here == 0) throw InputError(printable(arg, 240) + ": expected a folder holding S-57 cells (*.000), found none");
+      if (here == 0)
+        throw InputError(printable(arg, 240) + ": expected a folder holding S-57 cells (*.000), found none");
       continue;
     }
     if (is_update_name(arg)) {
@@ -97,7 +97,8 @@ std::vector<EncCellFiles> find_enc_cells(const std::vector<std::string>& paths) 
                        printable(base.filename().string(), 80) + " (its updates beside it are applied in order)");
     }
     if (!is_base_cell_name(arg)) {
-      throw InputError(printable(arg, 240) + ": expected an S-57 base cell named *.000 (updates *.001.. are found beside it)");
+      throw InputError(printable(arg, 240) +
+                       ": expected an S-57 base cell named *.000 (updates *.001.. are found beside it)");
     }
     bases.emplace(fs::weakly_canonical(arg, ec), fs::path(arg));
   }

@@ -57,8 +57,8 @@ void check_options(const EncNoGoOptions& o) {
        "a depth uncertainty >= 0 m", u.depth_fixed_m);
   need(std::isfinite(u.depth_fraction) && u.depth_fraction >= 0.0 && u.depth_fraction < 1.0,
        "unassessed zone of confidence", "a depth fraction in [0, 1)", u.depth_fraction);
-  need(std::isfinite(u.position_m) && u.position_m > 0.0, "unassessed zone of confidence",
-       "a position accuracy > 0 m", u.position_m);
+  need(std::isfinite(u.position_m) && u.position_m > 0.0, "unassessed zone of confidence", "a position accuracy > 0 m",
+       u.position_m);
 }
 
 BgBox envelope(const BgMultiPolygon& m) { return bg::return_envelope<BgBox>(m); }
@@ -132,11 +132,14 @@ struct DepthAreas {
     BgBox box;
     bool any = false;
     auto grow = [&](const Vec2& p) {
-      if (!any) box = BgBox(to_bg(p), to_bg(p)), any = true;
-      else bg::expand(box, to_bg(p));
+      if (!any)
+        box = BgBox(to_bg(p), to_bg(p)), any = true;
+      else
+        bg::expand(box, to_bg(p));
     };
     for (const Vec2& p : f.points) grow(p);
-    for (const auto& l : f.lines) for (const Vec2& p : l) grow(p);
+    for (const auto& l : f.lines)
+      for (const Vec2& p : l) grow(p);
     if (!f.areas.empty()) {
       const BgBox a = envelope(f.areas);
       grow(to_eigen(a.min_corner()));
@@ -257,8 +260,8 @@ struct Builder {
   }
 
   // An area with charted depth z: no-go where too shallow in its zones of confidence.
-  void add_area_by_depth(const EncCell& c, const EncFeature& f, const BgMultiPolygon& area, double z,
-                         const char* what, const ZocZones& zones) {
+  void add_area_by_depth(const EncCell& c, const EncFeature& f, const BgMultiPolygon& area, double z, const char* what,
+                         const ZocZones& zones) {
     if (area.empty()) return;
     EncNoGoFeature n = base(c, f);
     n.charted_depth_m = z;
@@ -342,8 +345,8 @@ struct Builder {
     add(std::move(n));
   }
 
-  void add_points_by_depth(const EncCell& c, const EncFeature& f, const std::vector<double>& depths,
-                           const char* what, const ZocZones& zones) {
+  void add_points_by_depth(const EncCell& c, const EncFeature& f, const std::vector<double>& depths, const char* what,
+                           const ZocZones& zones) {
     for (std::size_t k = 0; k < f.points.size(); ++k) {
       const double z = depths[k];
       const int zi = o.zone_of_confidence ? zones.at(f.points[k], std::isnan(z) ? 0.0 : z, o) : -1;
@@ -367,7 +370,7 @@ struct Builder {
     ZocZones zones;
     DepthAreas depth_areas;
     std::vector<EncFeature> features;  // clipped to what no better cell covers
-    std::vector<bool> clipped_area;     // per feature: its area lost a part to a better cell
+    std::vector<bool> clipped_area;    // per feature: its area lost a part to a better cell
     for (const EncFeature& f : c.features) {
       EncFeature g = f;
       const bool near_better =
@@ -419,7 +422,10 @@ struct Builder {
       if (kDepthAreas.count(f.cls)) {
         add_area_by_depth(c, f, f.areas, f.drval1, "DRVAL1", zones);  // lines of a depth area bound nothing
       } else if (kAlways.count(f.cls)) {
-        add_whole(c, f, zones, f.cls == "UNSARE" ? "unsurveyed" : f.cls == "LNDARE" ? "land" : "hit at any depth",
+        add_whole(c, f, zones,
+                  f.cls == "UNSARE"   ? "unsurveyed"
+                  : f.cls == "LNDARE" ? "land"
+                                      : "hit at any depth",
                   kNaN);
       } else if (kDangers.count(f.cls)) {
         const std::optional<double> z = hazard_depth(f, depth_areas.least_drval1(f));
@@ -517,7 +523,12 @@ ZocFigures zoc_figures(int catzoc, const EncNoGoOptions& options) {
 std::optional<double> hazard_depth(const EncFeature& h, double surrounding_drval1) {
   if (!std::isnan(h.valsou)) return h.valsou;
   switch (h.watlev) {
-    case 1: case 2: case 4: case 5: case 6: case 7: return 0.0;
+    case 1:
+    case 2:
+    case 4:
+    case 5:
+    case 6:
+    case 7: return 0.0;
     default: break;
   }
   if (h.cls == "WRECKS" && h.catwrk == 1) return kNonDangerousWreckDepth;
@@ -540,7 +551,8 @@ EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<Lo
   for (const EncCell& c : read.cells) {
     const auto it = c.layer_counts.find("DEPARE");
     if (it == c.layer_counts.end() || it->second == 0) {
-      throw InputError(printable(c.path, 240) + ": expected depth areas (DEPARE) to tell deep water from shallow, "
+      throw InputError(printable(c.path, 240) +
+                       ": expected depth areas (DEPARE) to tell deep water from shallow, "
                        "found none (not a navigational ENC?)");
     }
   }
@@ -582,7 +594,7 @@ EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<Lo
   if (!covered.empty()) {
     BgBox box = envelope(covered);
     const double pad = std::max(5000.0, 0.1 * std::max(box.max_corner().x() - box.min_corner().x(),
-                                                        box.max_corner().y() - box.min_corner().y()));
+                                                       box.max_corner().y() - box.min_corner().y()));
     BgPolygon outer;
     bg::convert(BgBox(BgPoint(box.min_corner().x() - pad, box.min_corner().y() - pad),
                       BgPoint(box.max_corner().x() + pad, box.max_corner().y() + pad)),

@@ -101,17 +101,17 @@ struct EncCellSummary {
 
 struct EncNoGo {
   LocalFrame frame;
-  double required_depth_m = 0;  ///< D = operating depth + vertical clearance
+  double required_depth_m = 0;        ///< D = operating depth + vertical clearance
   std::vector<EncCellSummary> cells;  ///< best scale first (the order overlaps are decided in)
   std::vector<EncNoGoFeature> features;
   /// What the planners take: the no-go areas merged and simplified outward
   /// (ids "enc/N"), and point hazards as discs (their feature ids) where they
   /// reach outside those areas.
   ObstacleSet obstacles;
-  std::map<std::string, std::size_t> no_go_by_class;    ///< features (points: soundings) per class
+  std::map<std::string, std::size_t> no_go_by_class;     ///< features (points: soundings) per class
   std::map<std::string, std::size_t> passable_by_class;  ///< deep enough to pass over
   std::map<std::string, std::size_t> zoc_areas;          ///< M_QUAL areas per CATZOC letter ("A1", ..., "U", "none")
-  std::size_t vertices = 0;  ///< distinct polygon vertices of obstacles.polygons
+  std::size_t vertices = 0;                              ///< distinct polygon vertices of obstacles.polygons
 };
 
 /// CATZOC code (1..6) -> "A1", "A2", "B", "C", "D", "U"; other -> "unknown".

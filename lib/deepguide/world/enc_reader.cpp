@@ -84,8 +84,11 @@ std::vector<int> int_list_field(const OGRFeature& f, const char* name) {
 class ToFrame {
  public:
   ToFrame(const LocalFrame& frame, std::string path)
-      : path_(std::move(path)), srs_(gdal::srs_from_user_input(frame.wkt())), wgs84_(gdal::wgs84()),
-        ct_(gdal::make_transform(*wgs84_, *srs_)), frame_id_(frame.id()) {
+      : path_(std::move(path)),
+        srs_(gdal::srs_from_user_input(frame.wkt())),
+        wgs84_(gdal::wgs84()),
+        ct_(gdal::make_transform(*wgs84_, *srs_)),
+        frame_id_(frame.id()) {
     if (!ct_) throw InputError(shown(path_) + ": no transformation from WGS 84 to " + frame_id_);
   }
 
@@ -101,12 +104,8 @@ class ToFrame {
         }
         break;
       }
-      case wkbLineString:
-        f.lines.push_back(line(*g.toLineString(), where));
-        break;
-      case wkbPolygon:
-        add_polygon(*g.toPolygon(), f.areas, where);
-        break;
+      case wkbLineString: f.lines.push_back(line(*g.toLineString(), where)); break;
+      case wkbPolygon: add_polygon(*g.toPolygon(), f.areas, where); break;
       case wkbMultiPoint:
       case wkbMultiLineString:
       case wkbMultiPolygon:
@@ -124,7 +123,8 @@ class ToFrame {
     if (poly.IsEmpty() || outer == nullptr || outer->getNumPoints() < 4) return;  // degenerate: no area
     BgPolygon p;
     ring(*outer, p.outer(), where);
-    for (int k = 0; k < poly.getNumInteriorRings(); ++k) ring(*poly.getInteriorRing(k), p.inners().emplace_back(), where);
+    for (int k = 0; k < poly.getNumInteriorRings(); ++k)
+      ring(*poly.getInteriorRing(k), p.inners().emplace_back(), where);
     boost::geometry::correct(p);
     out.push_back(std::move(p));
   }
@@ -209,7 +209,8 @@ OpenCell open_and_identify(const EncCellFiles& files, bool apply_updates, OGREnv
     const std::size_t next = static_cast<std::size_t>(std::max(c.update_number, 0));
     const std::string bad = next < files.updates.size() ? files.updates[next] : files.base;
     throw InputError(shown(bad) + ": expected update " + std::to_string(next + 1) + " of " + shown(files.base) +
-                     " (edition " + c.edition + ") that GDAL's S57 driver applies, got a sequence that stops at update " +
+                     " (edition " + c.edition +
+                     ") that GDAL's S57 driver applies, got a sequence that stops at update " +
                      std::to_string(c.update_number) + " (damaged, or of another edition)");
   }
   if (OGRLayer* covr = oc.ds->GetLayerByName("M_COVR")) {
@@ -256,8 +257,8 @@ void read_features(OpenCell& oc, const ToFrame& to_frame, const EncReadRequest& 
       all.Merge(e);
       if (!asked && !coverage) continue;
       const int ri = f->GetFieldIndex("RCID");
-      const long long rcid = ri >= 0 && f->IsFieldSetAndNotNull(ri) ? f->GetFieldAsInteger64(ri)
-                                                                     : static_cast<long long>(f->GetFID());
+      const long long rcid =
+          ri >= 0 && f->IsFieldSetAndNotNull(ri) ? f->GetFieldAsInteger64(ri) : static_cast<long long>(f->GetFID());
       const std::string where = feature_where(c.path, cls, rcid);
       if (coverage) {
         if (int_field(*f, "CATCOV") != 1) continue;
@@ -277,7 +278,8 @@ void read_features(OpenCell& oc, const ToFrame& to_frame, const EncReadRequest& 
       ef.drval1 = real_field(*f, "DRVAL1");
       ef.drval2 = real_field(*f, "DRVAL2");
       ef.valsou = real_field(*f, "VALSOU");
-      for (const auto& [field, value] : {std::pair{"DRVAL1", ef.drval1}, {"DRVAL2", ef.drval2}, {"VALSOU", ef.valsou}}) {
+      for (const auto& [field, value] :
+           {std::pair{"DRVAL1", ef.drval1}, {"DRVAL2", ef.drval2}, {"VALSOU", ef.valsou}}) {
         if (!std::isnan(value)) require_plausible_depth(value, where + " " + field);
       }
       ef.watlev = int_field(*f, "WATLEV");
@@ -327,7 +329,8 @@ EncCells read_enc_cells(const std::vector<EncCellFiles>& files, const std::optio
     open.push_back(open_and_identify(f, request.apply_updates, coverage));
     if (!use) {
       if (!coverage.IsInit()) {
-        throw InputError(shown(f.base) + ": expected a coverage area (M_COVR with CATCOV 1) to choose the local frame "
+        throw InputError(shown(f.base) +
+                         ": expected a coverage area (M_COVR with CATCOV 1) to choose the local frame "
                          "by, found none; name one with --crs");
       }
       use = LocalFrame::utm_for(0.5 * (coverage.MinX + coverage.MaxX), 0.5 * (coverage.MinY + coverage.MaxY));

@@ -34,8 +34,8 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct EncFeature {
-  std::string cls;     ///< S-57 object class (the OGR layer), e.g. "DEPARE"
-  long long rcid = 0;  ///< the feature record's id, RCID
+  std::string cls;                   ///< S-57 object class (the OGR layer), e.g. "DEPARE"
+  long long rcid = 0;                ///< the feature record's id, RCID
   std::vector<Vec2> points;          ///< Point and MultiPoint parts
   std::vector<double> point_depths;  ///< SOUNDG: depth of each point (m, positive down); else empty
   std::vector<std::vector<Vec2>> lines;
@@ -43,23 +43,23 @@ struct EncFeature {
   double drval1 = std::numeric_limits<double>::quiet_NaN();  ///< depth range value 1 (m)
   double drval2 = std::numeric_limits<double>::quiet_NaN();
   double valsou = std::numeric_limits<double>::quiet_NaN();  ///< value of sounding (m; < 0 dries)
-  int watlev = 0;  ///< water level effect: 1 partly submerged at HW, 2 always dry, 3 always under water,
-                   ///< 4 covers and uncovers, 5 awash, 6 subject to inundation, 7 floating
-  int catwrk = 0;  ///< category of wreck: 1 non-dangerous, 2 dangerous, 3 distributed remains, ...
-  int expsou = 0;  ///< exposition of sounding: 1 within the surrounding depth, 2 shoaler, 3 deeper
-  int catzoc = 0;  ///< M_QUAL: zone of confidence 1 A1, 2 A2, 3 B, 4 C, 5 D, 6 U
+  int watlev = 0;           ///< water level effect: 1 partly submerged at HW, 2 always dry, 3 always under water,
+                            ///< 4 covers and uncovers, 5 awash, 6 subject to inundation, 7 floating
+  int catwrk = 0;           ///< category of wreck: 1 non-dangerous, 2 dangerous, 3 distributed remains, ...
+  int expsou = 0;           ///< exposition of sounding: 1 within the surrounding depth, 2 shoaler, 3 deeper
+  int catzoc = 0;           ///< M_QUAL: zone of confidence 1 A1, 2 A2, 3 B, 4 C, 5 D, 6 U
   std::vector<int> restrn;  ///< restrictions (7 entry prohibited, 8 entry restricted, 14 area to be avoided, ...)
 };
 
 struct EncCell {
-  std::string path;  ///< the base cell as given
-  std::string name;  ///< DSID_DSNM without extension, e.g. "US4MD81M"
-  int usage_band = 0;             ///< DSID_INTU: 1 overview .. 6 berthing
-  long compilation_scale = 0;     ///< DSPM_CSCL: 1:n
-  std::string edition;            ///< DSID_EDTN
-  int update_number = 0;          ///< DSID_UPDN after the updates applied
-  std::string issue_date;         ///< DSID_ISDT
-  BgMultiPolygon coverage;        ///< M_COVR CATCOV = 1, in the frame
+  std::string path;            ///< the base cell as given
+  std::string name;            ///< DSID_DSNM without extension, e.g. "US4MD81M"
+  int usage_band = 0;          ///< DSID_INTU: 1 overview .. 6 berthing
+  long compilation_scale = 0;  ///< DSPM_CSCL: 1:n
+  std::string edition;         ///< DSID_EDTN
+  int update_number = 0;       ///< DSID_UPDN after the updates applied
+  std::string issue_date;      ///< DSID_ISDT
+  BgMultiPolygon coverage;     ///< M_COVR CATCOV = 1, in the frame
   std::vector<EncFeature> features;
   std::map<std::string, std::size_t> layer_counts;  ///< features per class in the whole cell
 };

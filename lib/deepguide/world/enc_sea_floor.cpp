@@ -37,8 +37,8 @@ std::unique_ptr<OGRGeometry> ogr_area(const BgMultiPolygon& area) {
 
 }  // namespace
 
-SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame& frame, const Vec2& lo,
-                       const Vec2& hi, double spacing, EncNoGoOptions options) {
+SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame& frame, const Vec2& lo, const Vec2& hi,
+                       double spacing, EncNoGoOptions options) {
   if (!std::isfinite(spacing) || spacing <= 0.0) {
     throw InputError("sea floor spacing: expected a spacing > 0 m, got " + std::to_string(spacing));
   }
@@ -61,8 +61,7 @@ SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame&
   gdal::QuietErrors quiet;
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
   if (mem == nullptr) throw InputError("sea floor: GDAL has no MEM driver");
-  GDALDatasetUniquePtr ds(
-      mem->Create("", static_cast<int>(nx), static_cast<int>(ny), 1, GDT_Float64, nullptr));
+  GDALDatasetUniquePtr ds(mem->Create("", static_cast<int>(nx), static_cast<int>(ny), 1, GDT_Float64, nullptr));
   if (!ds) throw InputError("sea floor: GDAL could not make a grid of " + std::to_string(nx * ny) + " nodes");
   // Node (i, j) is the centre of pixel (i, ny - 1 - j): rows run north to south.
   const double top = lo.y() + static_cast<double>(ny - 1) * spacing + 0.5 * spacing;
@@ -113,8 +112,8 @@ SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame&
   auto at = [&](std::ptrdiff_t i, std::ptrdiff_t j) {
     i = std::clamp<std::ptrdiff_t>(i, 0, static_cast<std::ptrdiff_t>(nx) - 1);
     j = std::clamp<std::ptrdiff_t>(j, 0, static_cast<std::ptrdiff_t>(ny) - 1);
-    const double v = pixels[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(ny) - 1 - j) * nx +
-                            static_cast<std::size_t>(i)];
+    const double v =
+        pixels[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(ny) - 1 - j) * nx + static_cast<std::size_t>(i)];
     return std::isnan(v) ? 0.0 : v;
   };
   std::vector<double> depths(nx * ny);

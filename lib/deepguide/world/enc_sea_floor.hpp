@@ -23,7 +23,7 @@ namespace DEEPGUIDE_API deepguide {
 
 /// The floor over [lo, hi] in `frame`. Throws what enc_no_go throws, and
 /// InputError for a spacing that is not finite and > 0 or an empty box.
-SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame& frame, const Vec2& lo,
-                       const Vec2& hi, double spacing, EncNoGoOptions options = {});
+SeaFloor enc_sea_floor(const std::vector<std::string>& charts, const LocalFrame& frame, const Vec2& lo, const Vec2& hi,
+                       double spacing, EncNoGoOptions options = {});
 
 }  // namespace deepguide

@@ -26,20 +26,13 @@ constexpr char kUnitTerminator = 0x1f;
 // NOAA writes "(b11,2b12)").
 const std::map<std::string_view, std::string_view>& standard_labels() {
   static const std::map<std::string_view, std::string_view> labels = {
-      {"VRID", "RCNM!RCID!RVER!RUIN"},
-      {"ATTV", "*ATTL!ATVL"},
-      {"VRPC", "VPUI!VPIX!NVPT"},
-      {"VRPT", "*NAME!ORNT!USAG!TOPI!MASK"},
-      {"SGCC", "CCUI!CCIX!CCNC"},
-      {"SG2D", "*YCOO!XCOO"},
-      {"SG3D", "*YCOO!XCOO!VE3D"},
-      {"FRID", "RCNM!RCID!PRIM!GRUP!OBJL!RVER!RUIN"},
-      {"FOID", "AGEN!FIDN!FIDS"},
-      {"ATTF", "*ATTL!ATVL"},
-      {"NATF", "*ATTL!ATVL"},
-      {"FFPC", "FFUI!FFIX!NFPT"},
-      {"FFPT", "*LNAM!RIND!COMT"},
-      {"FSPC", "FSUI!FSIX!NSPT"},
+      {"VRID", "RCNM!RCID!RVER!RUIN"},  {"ATTV", "*ATTL!ATVL"},
+      {"VRPC", "VPUI!VPIX!NVPT"},       {"VRPT", "*NAME!ORNT!USAG!TOPI!MASK"},
+      {"SGCC", "CCUI!CCIX!CCNC"},       {"SG2D", "*YCOO!XCOO"},
+      {"SG3D", "*YCOO!XCOO!VE3D"},      {"FRID", "RCNM!RCID!PRIM!GRUP!OBJL!RVER!RUIN"},
+      {"FOID", "AGEN!FIDN!FIDS"},       {"ATTF", "*ATTL!ATVL"},
+      {"NATF", "*ATTL!ATVL"},           {"FFPC", "FFUI!FFIX!NFPT"},
+      {"FFPT", "*LNAM!RIND!COMT"},      {"FSPC", "FSUI!FSIX!NSPT"},
       {"FSPT", "*NAME!ORNT!USAG!MASK"},
   };
   return labels;
@@ -75,12 +68,13 @@ std::string read_record(std::string_view rec, bool first, std::vector<Field>& fi
   const std::size_t pos_size = static_cast<std::size_t>(leader[21] - '0');
   const std::size_t tag_size = static_cast<std::size_t>(leader[23] - '0');
   const std::size_t entry = tag_size + len_size + pos_size;
-  if (len_size == 0 || pos_size == 0 || tag_size == 0 || base < 25 || base > rec.size() || rec[base - 1] != kFieldTerminator ||
-      (base - 25) % entry != 0) {
+  if (len_size == 0 || pos_size == 0 || tag_size == 0 || base < 25 || base > rec.size() ||
+      rec[base - 1] != kFieldTerminator || (base - 25) % entry != 0) {
     return "a directory that does not end where the leader says";
   }
   for (std::size_t at = 24; at + entry <= base - 1; at += entry) {
-    const std::string_view len = rec.substr(at + tag_size, len_size), pos = rec.substr(at + tag_size + len_size, pos_size);
+    const std::string_view len = rec.substr(at + tag_size, len_size),
+                           pos = rec.substr(at + tag_size + len_size, pos_size);
     if (!digits(len) || !digits(pos)) return "a directory entry with a letter where its length or position goes";
     const std::uint64_t l = number(len), p = number(pos);
     if (l == 0 || base + p + l > rec.size() || rec[base + p + l - 1] != kFieldTerminator) {
@@ -114,9 +108,12 @@ std::string check_descriptions(const std::vector<Field>& fields) {
 std::string check_instruction(const std::vector<Field>& fields, bool update) {
   for (const Field& f : fields) {
     std::size_t at = 0;
-    if (f.tag == "FRID") at = 11;
-    else if (f.tag == "VRID") at = 7;
-    else continue;
+    if (f.tag == "FRID")
+      at = 11;
+    else if (f.tag == "VRID")
+      at = 7;
+    else
+      continue;
     if (f.data.size() <= at) return "a " + std::string(f.tag) + " field too short for its update instruction";
     const auto ruin = static_cast<unsigned char>(f.data[at]);
     if (update ? (ruin < 1 || ruin > 3) : ruin != 1) {

@@ -3,9 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 #include <numbers>
 #include <optional>
-#include <mutex>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
@@ -64,8 +64,7 @@ LocalFrame LocalFrame::from_user_crs(const std::string& crs, const std::string& 
   auto impl = std::make_shared<Impl>();
   impl->srs = gdal::srs_from_user_input(crs);
   if (!impl->srs) {
-    throw InputError(what + ": expected a known coordinate reference system such as EPSG:32632, got '" +
-                     crs + "'");
+    throw InputError(what + ": expected a known coordinate reference system such as EPSG:32632, got '" + crs + "'");
   }
   if (!impl->srs->IsProjected()) {
     throw InputError(what + ": expected a projected (metric) CRS for the local frame, got '" + crs +

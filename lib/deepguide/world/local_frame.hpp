@@ -28,9 +28,7 @@ class LocalFrame {
 
   /// Geographic WGS 84 longitude/latitude (degrees) -> local (x, y) in metres.
   Eigen::Vector2d from_lonlat(double lon_deg, double lat_deg) const;
-  Eigen::Vector2d from_lonlat(const Eigen::Vector2d& lonlat) const {
-    return from_lonlat(lonlat.x(), lonlat.y());
-  }
+  Eigen::Vector2d from_lonlat(const Eigen::Vector2d& lonlat) const { return from_lonlat(lonlat.x(), lonlat.y()); }
   /// Local (x, y) in metres -> (longitude, latitude) in degrees.
   Eigen::Vector2d to_lonlat(const Eigen::Vector2d& xy) const;
 

@@ -20,8 +20,8 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
-#include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/geometry/polygon_ops.hpp"
+#include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -89,8 +89,8 @@ class TempFile {
  public:
   TempFile() {
     static std::atomic<unsigned> counter{0};
-    path_ = (fs::temp_directory_path() / ("deepguide-nogo-" + std::to_string(::getpid()) + "-" +
-                                          std::to_string(counter++) + ".tif"))
+    path_ = (fs::temp_directory_path() /
+             ("deepguide-nogo-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".tif"))
                 .string();
   }
   ~TempFile() {
@@ -131,8 +131,7 @@ class PixelToFrame {
       xs[i] = gt_[0] + xs[i] * gt_[1];
       ys[i] = gt_[3] + ys[i] * gt_[5];
     }
-    if (ct_ && !xs.empty() &&
-        !ct_->Transform(static_cast<int>(xs.size()), xs.data(), ys.data(), nullptr, nullptr)) {
+    if (ct_ && !xs.empty() && !ct_->Transform(static_cast<int>(xs.size()), xs.data(), ys.data(), nullptr, nullptr)) {
       throw InputError(path + ": expected cells that convert to the local frame, got one PROJ cannot transform");
     }
   }
@@ -267,13 +266,13 @@ NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const N
   } else {
     mask_file = std::make_unique<TempFile>();
     const char* create[] = {"TILED=NO", "BLOCKYSIZE=1", "COMPRESS=DEFLATE", "ZLEVEL=1", nullptr};
-    mask.reset(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(mask_file->path().c_str(), width, height,
-                                                                         1, GDT_Byte, const_cast<char**>(create)));
+    mask.reset(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(mask_file->path().c_str(), width, height, 1,
+                                                                        GDT_Byte, const_cast<char**>(create)));
   }
   if (!mask) {
     throw InputError(path + ": expected room for the no-go mask (" + std::to_string(width) + " x " +
-                     std::to_string(height) + " cells) in " + fs::temp_directory_path().string() + ", got: " +
-                     printable(gdal::QuietErrors::last_message(), 160));
+                     std::to_string(height) + " cells) in " + fs::temp_directory_path().string() +
+                     ", got: " + printable(gdal::QuietErrors::last_message(), 160));
   }
   double identity[6] = {0, 1, 0, 0, 0, 1};  // the outlines come in pixel corners
   mask->SetGeoTransform(identity);
@@ -290,8 +289,8 @@ NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const N
       const int w = std::min(win_w, width - x);
       if (band.RasterIO(GF_Read, x, y, w, h, buf.data(), w, h, GDT_Float64, 0, 0, nullptr) != CE_None) {
         const std::string why = gdal::QuietErrors::last_message();
-        throw InputError(path + ": expected readable cells in the window at column " + std::to_string(x) +
-                         ", row " + std::to_string(y) + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
+        throw InputError(path + ": expected readable cells in the window at column " + std::to_string(x) + ", row " +
+                         std::to_string(y) + (why.empty() ? std::string() : ", got: " + printable(why, 160)));
       }
       const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
       for (std::size_t i = 0; i < n; ++i) {
@@ -343,8 +342,8 @@ NoGoArea compute_no_go(const std::string& path, const LocalFrame& frame, const N
                                       OGRLayer::ToHandle(&sink), 0, nullptr, drop_mask_cache, &progress);
     sink.rethrow();
     if (err != CE_None) {
-      throw InputError(path + ": expected a mask GDAL can polygonize, got: " +
-                       printable(gdal::QuietErrors::last_message(), 160));
+      throw InputError(
+          path + ": expected a mask GDAL can polygonize, got: " + printable(gdal::QuietErrors::last_message(), 160));
     }
   }
   mask.reset();
@@ -390,14 +389,15 @@ NoGoArea compute_no_go(const SeaFloor& floor, const LocalFrame& frame, const NoG
   GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
   if (gtiff == nullptr) throw InputError("sea floor: expected GDAL's GTiff driver");
   static std::atomic<unsigned long> serial{0};
-  const std::string path = "/vsimem/deepguide_sea_floor_" + std::to_string(::getpid()) + "_" +
-                           std::to_string(serial++) + ".tif";
+  const std::string path =
+      "/vsimem/deepguide_sea_floor_" + std::to_string(::getpid()) + "_" + std::to_string(serial++) + ".tif";
   {
     GDALDatasetUniquePtr ds(
         gtiff->Create(path.c_str(), static_cast<int>(w), static_cast<int>(h), 1, GDT_Float32, nullptr));
     if (!ds) throw InputError("sea floor: expected room for an in-memory copy of " + std::to_string(w * h) + " cells");
-    double transform[6] = {floor.origin().x(), floor.spacing(), 0.0,
-                           floor.origin().y() + floor.spacing() * static_cast<double>(h), 0.0, -floor.spacing()};
+    double transform[6] = {
+        floor.origin().x(), floor.spacing(), 0.0, floor.origin().y() + floor.spacing() * static_cast<double>(h), 0.0,
+        -floor.spacing()};
     ds->SetGeoTransform(transform);
     ds->SetProjection(frame.wkt().c_str());
     GDALRasterBand& band = *ds->GetRasterBand(1);

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <optional>
 
-#include "deepguide/core/format.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -23,9 +23,8 @@ void from_cells(const NoGoExportRequest& r, NoGoExportReport& out) {
   opts.restricted_areas = r.restricted_areas;
   opts.zone_of_confidence = r.zone_of_confidence;
   const auto t0 = std::chrono::steady_clock::now();
-  const EncNoGo no_go =
-      enc_no_go(r.charts, r.crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(r.crs)),
-                opts);
+  const EncNoGo no_go = enc_no_go(
+      r.charts, r.crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(r.crs)), opts);
   out.seconds = seconds_since(t0);
   write_obstacles(r.output, no_go.obstacles, no_go.frame);
   out.from_cells = true;
@@ -81,8 +80,12 @@ nlohmann::json NoGoExportReport::to_json() const {
   if (from_cells) {
     nlohmann::json list = nlohmann::json::array();
     for (const EncCellSummary& c : cells) {
-      list.push_back({{"path", c.path}, {"name", c.name}, {"scale", c.compilation_scale}, {"usage_band", c.usage_band},
-                      {"edition", c.edition}, {"updates", c.update_number}});
+      list.push_back({{"path", c.path},
+                      {"name", c.name},
+                      {"scale", c.compilation_scale},
+                      {"usage_band", c.usage_band},
+                      {"edition", c.edition},
+                      {"updates", c.update_number}});
     }
     return {{"cells", list},
             {"output", request.output},
@@ -120,36 +123,39 @@ std::string NoGoExportReport::to_text() const {
   if (from_cells) {
     for (const EncCellSummary& c : cells) {
       text += report_line("cell", c.name + "  1:" + std::to_string(c.compilation_scale) + ", band " +
-                               std::to_string(c.usage_band) + ", edition " + c.edition + ", update " +
-                               std::to_string(c.update_number));
+                                      std::to_string(c.usage_band) + ", edition " + c.edition + ", update " +
+                                      std::to_string(c.update_number));
     }
     text += report_line("local frame", local_crs + " (" + local_crs_name + ")");
     text += report_line("rule", "charted depth less its zone of confidence < " + fixed(o.operating_depth_m, 2) +
-                             " m (operating) + " + fixed(o.vertical_clearance_m, 2) + " m (clearance)" +
-                             (request.zone_of_confidence ? "" : " (zones ignored)"));
+                                    " m (operating) + " + fixed(o.vertical_clearance_m, 2) + " m (clearance)" +
+                                    (request.zone_of_confidence ? "" : " (zones ignored)"));
     std::string classes;
-    for (const auto& [cls, n] : no_go_by_class) classes += (classes.empty() ? "" : ", ") + cls + " " + std::to_string(n);
+    for (const auto& [cls, n] : no_go_by_class)
+      classes += (classes.empty() ? "" : ", ") + cls + " " + std::to_string(n);
     text += report_line("no-go", classes);
-    text += report_line("planners", std::to_string(polygons) + " polygon(s) with " + std::to_string(vertices) + " corners, " +
-                                 std::to_string(discs) + " disc(s) (tolerance " + fixed(o.simplify_tolerance_m, 2) +
-                                 " m, outward only)");
+    text += report_line("planners", std::to_string(polygons) + " polygon(s) with " + std::to_string(vertices) +
+                                        " corners, " + std::to_string(discs) + " disc(s) (tolerance " +
+                                        fixed(o.simplify_tolerance_m, 2) + " m, outward only)");
   } else {
     const BathymetryInfo& r = area.raster;
-    text += report_line("raster", request.charts.front() + "  [" + r.driver + ", " + r.crs + "] " + std::to_string(r.width) +
-                               " x " + std::to_string(r.height) + " cells");
+    text += report_line("raster", request.charts.front() + "  [" + r.driver + ", " + r.crs + "] " +
+                                      std::to_string(r.width) + " x " + std::to_string(r.height) + " cells");
     text += report_line("local frame", local_crs + " (" + local_crs_name + ")");
-    text += report_line("rule", "depth < " + fixed(o.operating_depth_m, 2) + " m (operating) + " +
-                             fixed(o.vertical_clearance_m, 2) + " m (clearance), land, " +
-                             (request.nodata_is_no_go ? "and cells without data" : "cells without data are water"));
-    const double pct = area.total_cells > 0 ? 100.0 * static_cast<double>(area.no_go_cells) /
-                                                  static_cast<double>(area.total_cells)
-                                            : 0.0;
-    text += report_line("no-go cells", std::to_string(area.no_go_cells) + " of " + std::to_string(area.total_cells) + " (" +
-                                    fixed(pct, 1) + "%), " + fixed(area.cell_area_m2, 1) + " m2 each");
+    text +=
+        report_line("rule", "depth < " + fixed(o.operating_depth_m, 2) + " m (operating) + " +
+                                fixed(o.vertical_clearance_m, 2) + " m (clearance), land, " +
+                                (request.nodata_is_no_go ? "and cells without data" : "cells without data are water"));
+    const double pct = area.total_cells > 0
+                           ? 100.0 * static_cast<double>(area.no_go_cells) / static_cast<double>(area.total_cells)
+                           : 0.0;
+    text += report_line("no-go cells", std::to_string(area.no_go_cells) + " of " + std::to_string(area.total_cells) +
+                                           " (" + fixed(pct, 1) + "%), " + fixed(area.cell_area_m2, 1) + " m2 each");
     text += report_line("polygons", std::to_string(polygons) + ", area " + fixed(area.area_m2, 1) + " m2");
-    text += report_line("vertices", std::to_string(area.vertices_before_simplify) + " before, " +
-                                 std::to_string(area.vertices_after_simplify) + " after simplification (tolerance " +
-                                 fixed(o.simplify_tolerance_m, 2) + " m, outward only)");
+    text +=
+        report_line("vertices", std::to_string(area.vertices_before_simplify) + " before, " +
+                                    std::to_string(area.vertices_after_simplify) + " after simplification (tolerance " +
+                                    fixed(o.simplify_tolerance_m, 2) + " m, outward only)");
   }
   text += report_line("time", fixed(seconds, 2) + " s");
   text += report_line("wrote", request.output);

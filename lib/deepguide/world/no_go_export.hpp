@@ -21,14 +21,14 @@ struct NoGoExportRequest {
   /// One bathymetry raster, or S-57 cells (*.000 with their updates) and
   /// folders of cells.
   std::vector<std::string> charts;
-  std::string output;   ///< obstacle file (.geojson/.json, .gpkg, .csv)
-  std::string crs;      ///< local frame ("": the UTM zone of the chart)
-  std::string src_crs;  ///< raster: the CRS of one that carries none
+  std::string output;                              ///< obstacle file (.geojson/.json, .gpkg, .csv)
+  std::string crs;                                 ///< local frame ("": the UTM zone of the chart)
+  std::string src_crs;                             ///< raster: the CRS of one that carries none
   VerticalSense sense = VerticalSense::automatic;  ///< raster values
   bool nodata_is_no_go = true;                     ///< raster: cells without data
   bool restricted_areas = false;                   ///< S-57: RESTRN 7, 8, 14 no-go too
   bool zone_of_confidence = true;                  ///< S-57: charted values less their uncertainty
-  NoGoOptions nogo;  ///< operating depth, vertical clearance, simplification tolerance
+  NoGoOptions nogo;                                ///< operating depth, vertical clearance, simplification tolerance
 };
 
 struct NoGoExportReport {

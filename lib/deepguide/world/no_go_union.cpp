@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <limits>
 #include <boost/geometry.hpp>
 #include <boost/geometry/algorithms/point_on_surface.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -73,8 +73,7 @@ void from_ogr(const OGRGeometry& g, std::vector<BgPolygon>& out) {
     case wkbGeometryCollection:
       for (const OGRGeometry* part : *g.toGeometryCollection()) from_ogr(*part, out);
       break;
-    default:
-      break;  // lines and points of a degenerate overlay carry no area
+    default: break;  // lines and points of a degenerate overlay carry no area
   }
 }
 

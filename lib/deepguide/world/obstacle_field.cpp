@@ -309,9 +309,8 @@ double ObstacleField::distance_to(std::size_t obstacle, const Vec2& p) const {
 
 SegmentDistance ObstacleField::segment_distance_to(std::size_t obstacle, const Vec2& a, const Vec2& b) const {
   const std::size_t n_ellipses = obstacles_.ellipses.size();
-  return obstacle < n_ellipses
-             ? segment_signed_distance(obstacles_.ellipses[obstacle].footprint, a, b)
-             : segment_signed_distance(obstacles_.polygons.at(obstacle - n_ellipses).footprint, a, b);
+  return obstacle < n_ellipses ? segment_signed_distance(obstacles_.ellipses[obstacle].footprint, a, b)
+                               : segment_signed_distance(obstacles_.polygons.at(obstacle - n_ellipses).footprint, a, b);
 }
 
 double ObstacleField::clearance(const Vec2& p) const {
@@ -360,8 +359,8 @@ bool ObstacleField::segment_free(const Vec2& a, const Vec2& b, std::size_t skip_
       if (v == Verdict::clear) continue;
       if (v == Verdict::blocked) return false;
     } else {
-      const double box_distance = a == b ? bg::distance(to_bg(a), it->first)
-                                         : bg::distance(BgSegment(to_bg(a), to_bg(b)), it->first);
+      const double box_distance =
+          a == b ? bg::distance(to_bg(a), it->first) : bg::distance(BgSegment(to_bg(a), to_bg(b)), it->first);
       if (box_distance > 0.0 && box_distance >= threshold_) continue;  // a meeting box bounds nothing
     }
     const double exact = a == b ? distance_to(i, a) : segment_distance_to(i, a, b).distance;

@@ -66,9 +66,9 @@ class ObstacleField {
  public:
   /// Obstacle indices: ellipses first (0 .. E-1), then polygons (E .. E+P-1).
   struct Nearest {
-    double distance;           ///< signed, m; +inf when there are no obstacles
-    std::size_t obstacle;      ///< index of the nearest obstacle (0 when there are none)
-    Vec2 point_on_segment;     ///< point of the segment closest to it
+    double distance;        ///< signed, m; +inf when there are no obstacles
+    std::size_t obstacle;   ///< index of the nearest obstacle (0 when there are none)
+    Vec2 point_on_segment;  ///< point of the segment closest to it
   };
 
   /// Builds the R-tree of obstacle bounding boxes. Throws InputError for a

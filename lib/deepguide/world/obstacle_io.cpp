@@ -124,8 +124,9 @@ Eigen::Vector2d to_geo(OGRCoordinateTransformation& ct, double x, double y, cons
   }
   if (std::abs(y) > 90.0 || std::abs(x) > 540.0) {
     throw input_error(w, "a position on the Earth (lon/lat within +-180/+-90 after transformation)",
-                      "(" + general(x) + ", " + general(y) + "); a file without a CRS is read as lon/lat: "
-                      "give its CRS with --src-crs");
+                      "(" + general(x) + ", " + general(y) +
+                          "); a file without a CRS is read as lon/lat: "
+                          "give its CRS with --src-crs");
   }
   return {x, y};
 }
@@ -190,8 +191,8 @@ void require_simple(const BgPolygon& footprint, const InputLocation& where) {
   throw input_error(w, "a simple polygon (repair it first, e.g. ogr2ogr -makevalid)", got);
 }
 
-void read_polygon(const OGRPolygon& poly, OGRCoordinateTransformation& ct, const InputLocation& where,
-                  GeoRecord rec, std::vector<GeoRecord>& out) {
+void read_polygon(const OGRPolygon& poly, OGRCoordinateTransformation& ct, const InputLocation& where, GeoRecord rec,
+                  std::vector<GeoRecord>& out) {
   if (poly.IsEmpty() || poly.getExteriorRing() == nullptr || poly.getExteriorRing()->getNumPoints() < 4) {
     InputLocation w = where;
     w.field = "geometry";
@@ -310,12 +311,13 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
     for (const std::string& o : csv_options) open_options.push_back(o.c_str());
   }
   open_options.push_back(nullptr);
-  GDALDatasetUniquePtr ds =
-      gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, open_options.data());
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, open_options.data());
   if (!ds) {
     std::string why = gdal::QuietErrors::last_message();
-    throw InputError(path + ": expected a vector file GDAL can read (GeoJSON, GeoPackage, Shapefile, "
-                            "CSV, ...)" + (why.empty() ? std::string() : ", got: " + why));
+    throw InputError(path +
+                     ": expected a vector file GDAL can read (GeoJSON, GeoPackage, Shapefile, "
+                     "CSV, ...)" +
+                     (why.empty() ? std::string() : ", got: " + why));
   }
   result.info.driver = ds->GetDriver() != nullptr ? ds->GetDriver()->GetDescription() : "";
   // GDAL opens a file whose CRS it cannot resolve and silently falls back to
@@ -323,8 +325,10 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
   if (const std::string why = gdal::QuietErrors::last_message(); !why.empty()) {
     const bool crs = why.find("crs") != std::string::npos || why.find("PROJ") != std::string::npos ||
                      why.find("CRS") != std::string::npos || why.find("SRS") != std::string::npos;
-    throw InputError(path + (crs ? ": field 'crs': expected a coordinate reference system GDAL knows, got: "
-                                 : ": expected a readable vector file, got: ") + why);
+    throw InputError(path +
+                     (crs ? ": field 'crs': expected a coordinate reference system GDAL knows, got: "
+                          : ": expected a readable vector file, got: ") +
+                     why);
   }
 
   const auto geo = gdal::wgs84();
@@ -369,8 +373,7 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
                        "transformed to WGS 84, got '" + crs_name + "'");
     }
     for (auto& feature : *layer) {
-      InputLocation where{path, describe_feature(*feature, result.info.driver, layer->GetName(), several_layers),
-                          ""};
+      InputLocation where{path, describe_feature(*feature, result.info.driver, layer->GetName(), several_layers), ""};
       GeoRecord rec;
       rec.where = where;
       rec.fid = feature->GetFID();
@@ -408,8 +411,7 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
             ++result.info.polygons;
           }
           break;
-        default:
-          throw input_error(gw, "a Point or Polygon geometry", OGRGeometryTypeToName(g->getGeometryType()));
+        default: throw input_error(gw, "a Point or Polygon geometry", OGRGeometryTypeToName(g->getGeometryType()));
       }
     }
   }
@@ -417,8 +419,7 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
   return result;
 }
 
-Eigen::Vector2d to_local_checked(const LocalFrame& frame, const Eigen::Vector2d& lonlat,
-                                 const InputLocation& where) {
+Eigen::Vector2d to_local_checked(const LocalFrame& frame, const Eigen::Vector2d& lonlat, const InputLocation& where) {
   const Eigen::Vector2d xy = frame.from_lonlat(lonlat);
   if (!xy.allFinite()) {
     InputLocation w = where;
@@ -477,8 +478,7 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
         p.height_m = r.height_m;
         p.top_depth_m = r.top_depth_m;
         for (std::size_t k = 0; k < r.rings.size(); ++k) {
-          auto& ring = k == 0 ? p.footprint.outer()
-                              : p.footprint.inners().emplace_back();
+          auto& ring = k == 0 ? p.footprint.outer() : p.footprint.inners().emplace_back();
           for (const auto& ll : r.rings[k]) ring.push_back(to_bg(to_local_checked(*frame, ll, r.where)));
         }
         boost::geometry::correct(p.footprint);
@@ -540,8 +540,7 @@ void write_obstacles(const std::string& path, const ObstacleSet& obstacles, cons
       layer_options = {"GEOMETRY=AS_WKT", "CREATE_CSVT=NO"};
     }
     layer_options.push_back(nullptr);
-    OGRLayer* layer = ds->CreateLayer("obstacles", geo.get(), wkbUnknown,
-                                      const_cast<char**>(layer_options.data()));
+    OGRLayer* layer = ds->CreateLayer("obstacles", geo.get(), wkbUnknown, const_cast<char**>(layer_options.data()));
     if (layer == nullptr) fail_write(path, "create the obstacles layer");
     OGRFieldDefn id_field("id", OFTString);
     layer->CreateField(&id_field);
@@ -583,7 +582,8 @@ void write_obstacles(const std::string& path, const ObstacleSet& obstacles, cons
       add_ring(p.footprint.outer());
       for (const auto& inner : p.footprint.inners()) add_ring(inner);
       f.SetGeometry(&poly);
-      for (const char* name : {"semi_major_m", "semi_minor_m", "orientation_deg"}) f.SetFieldNull(f.GetFieldIndex(name));
+      for (const char* name : {"semi_major_m", "semi_minor_m", "orientation_deg"})
+        f.SetFieldNull(f.GetFieldIndex(name));
       set_optional(f, "height_m", p.height_m);
       set_optional(f, "top_depth_m", p.top_depth_m);
       if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write obstacle '" + p.id + "'");

@@ -51,9 +51,9 @@ struct ObstacleSourceInfo {
 
 /// Where one obstacle came from, and what else its feature carried.
 struct ObstacleOrigin {
-  std::size_t source = 0;  ///< index into LoadedObstacles::sources
-  std::int64_t fid = 0;    ///< OGR feature id in its layer
-  InputLocation where;     ///< file and feature (field empty), for messages
+  std::size_t source = 0;            ///< index into LoadedObstacles::sources
+  std::int64_t fid = 0;              ///< OGR feature id in its layer
+  InputLocation where;               ///< file and feature (field empty), for messages
   Eigen::Vector2d lonlat{0.0, 0.0};  ///< Points: the centre as read, lon/lat, before the local frame
   double heading_deg = 0.0;          ///< Points: orientation_deg as read (0 when absent)
   /// One per ObstacleReadOptions::extra_fields; nullopt when absent, null or empty.
@@ -70,8 +70,7 @@ struct LoadedObstacles {
 
 /// Reads every feature of every layer of each path into one set in one local
 /// frame. Throws InputError (one line: file, feature, field, expectation).
-LoadedObstacles load_obstacles(const std::vector<std::string>& paths,
-                               const ObstacleReadOptions& options = {});
+LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const ObstacleReadOptions& options = {});
 
 /// Output formats, chosen from the file extension.
 enum class ObstacleFormat { geojson, geopackage, csv };

@@ -41,8 +41,7 @@ constexpr const char* kObstacleLayer = "obstacles";
 constexpr const char* kDetectionLayer = "detections";
 
 // Extra fields asked of load_obstacles: the store's first three, the detections' last three.
-const std::vector<std::string> kExtraFields = {"first_seen", "last_seen", "sightings", "time", "mission",
-                                               "contact_id"};
+const std::vector<std::string> kExtraFields = {"first_seen", "last_seen", "sightings", "time", "mission", "contact_id"};
 enum ExtraIndex { kFirstSeen, kLastSeen, kSightings, kTime, kMission, kContactId };
 
 using Millis = std::int64_t;  // milliseconds since 1970-01-01T00:00:00Z
@@ -92,13 +91,14 @@ const FieldSpec kDetectionFields[] = {
     {"imported_at", OFTString, OFTString, "text"},
 };
 
-void check_layer(GDALDataset& ds, const std::string& path, const char* name, bool spatial,
-                 const FieldSpec* fields, std::size_t n_fields) {
+void check_layer(GDALDataset& ds, const std::string& path, const char* name, bool spatial, const FieldSpec* fields,
+                 std::size_t n_fields) {
   OGRLayer* layer = ds.GetLayerByName(name);
   const InputLocation where{path, std::string("layer '") + name + "'", ""};
   if (layer == nullptr) {
-    throw input_error(where, std::string("the obstacle store's ") + (spatial ? "Point layer" : "attribute table") +
-                                 " (a GeoPackage written by 'deepguide obstacles import')",
+    throw input_error(where,
+                      std::string("the obstacle store's ") + (spatial ? "Point layer" : "attribute table") +
+                          " (a GeoPackage written by 'deepguide obstacles import')",
                       "none");
   }
   if (spatial) {
@@ -282,8 +282,8 @@ std::vector<StoredObstacle> parse_stored(const LoadedObstacles& l) {
     StoredObstacle s;
     s.fid = o.fid;
     s.obstacle = l.obstacles.ellipses[i];
-    for (const auto& [index, name, target] : {std::tuple{kFirstSeen, "first_seen", &s.first_seen},
-                                              std::tuple{kLastSeen, "last_seen", &s.last_seen}}) {
+    for (const auto& [index, name, target] :
+         {std::tuple{kFirstSeen, "first_seen", &s.first_seen}, std::tuple{kLastSeen, "last_seen", &s.last_seen}}) {
       InputLocation w = o.where;
       w.field = name;
       if (!o.extra[index]) throw input_error(w, "an ISO 8601 UTC time", "no value");
@@ -396,7 +396,8 @@ void fill_feature(OGRFeature& f, const Working& w, const LocalFrame& frame) {
   f.SetField("id", o.id.c_str());
   f.SetField("semi_major_m", e.a);
   f.SetField("semi_minor_m", e.b);
-  f.SetField("orientation_deg", axis_heading_deg(w.as_read ? w.heading_deg : frame.local_to_heading(e.theta, e.centre)));
+  f.SetField("orientation_deg",
+             axis_heading_deg(w.as_read ? w.heading_deg : frame.local_to_heading(e.theta, e.centre)));
   for (const auto& [name, v] : {std::pair{"height_m", o.height_m}, std::pair{"top_depth_m", o.top_depth_m}}) {
     if (v) {
       f.SetField(name, *v);
@@ -462,14 +463,16 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
     // The store is a GeoPackage: a new one named .geojson (or anything but
     // .gpkg) would be a GeoPackage that every other tool misreads.
     if (ascii_lower(fs::path(store_path).extension().string()) != ".gpkg") {
-      throw InputError(store_path + ": expected a new obstacle store's name to end in .gpkg (it is a GeoPackage), got '" +
+      throw InputError(store_path +
+                       ": expected a new obstacle store's name to end in .gpkg (it is a GeoPackage), got '" +
                        printable(fs::path(store_path).extension().string()) + "'");
     }
     // Check every detection before a new store appears on disk.
     parse_detections(load_obstacles(detection_paths, read), 0, import_ms);
     summary.created = create_store(store_path);
   }
-  if (fs::is_directory(store_path, ec)) throw InputError(store_path + ": expected an obstacle store file, got a folder");
+  if (fs::is_directory(store_path, ec))
+    throw InputError(store_path + ": expected an obstacle store file, got a folder");
   check_writable(store_path);
   const StoreLock lock(store_path);
   GDALDatasetUniquePtr ds = open_store(store_path, true);  // also rolls back what a killed import left

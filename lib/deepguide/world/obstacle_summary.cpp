@@ -33,9 +33,12 @@ ObstacleSummary summarize(const LoadedObstacles& loaded) {
     s.max_x = std::max(s.max_x, x1), s.max_y = std::max(s.max_y, y1);
   };
   auto vertical = [&](const auto& o) {
-    if (o.height_m) ++s.with_height;
-    else if (o.top_depth_m) ++s.with_top_depth;
-    else ++s.full_column;
+    if (o.height_m)
+      ++s.with_height;
+    else if (o.top_depth_m)
+      ++s.with_top_depth;
+    else
+      ++s.full_column;
   };
   for (const EllipticCylinder& c : set.ellipses) {
     const Ellipse& e = c.footprint;
@@ -92,13 +95,15 @@ nlohmann::json to_json(const ObstacleSummary& s) {
   j["semi_major_m"] = stats_json(s.semi_major_m);
   j["semi_minor_m"] = stats_json(s.semi_minor_m);
   j["footprint_area_m2"] = stats_json(s.footprint_area_m2);
-  j["vertical"] = {{"height_above_seafloor", s.with_height},
-                   {"top_depth", s.with_top_depth},
-                   {"full_water_column", s.full_column}};
+  j["vertical"] = {
+      {"height_above_seafloor", s.with_height}, {"top_depth", s.with_top_depth}, {"full_water_column", s.full_column}};
   auto& src = j["sources"] = nlohmann::json::array();
   for (const auto& info : s.sources) {
-    src.push_back({{"path", info.path}, {"driver", info.driver}, {"crs", info.crs},
-                   {"ellipses", info.ellipses}, {"polygons", info.polygons}});
+    src.push_back({{"path", info.path},
+                   {"driver", info.driver},
+                   {"crs", info.crs},
+                   {"ellipses", info.ellipses},
+                   {"polygons", info.polygons}});
   }
   return j;
 }

@@ -22,9 +22,9 @@ struct ObstacleSummary {
   std::size_t ellipses = 0;
   std::size_t polygons = 0;
   bool has_extent = false;
-  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;          ///< footprints' box, local metres
-  double west = 0, south = 0, east = 0, north = 0;             ///< the same box's corners in lon/lat
-  RangeStats semi_major_m, semi_minor_m, footprint_area_m2;   ///< ellipses; area over all obstacles
+  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;         ///< footprints' box, local metres
+  double west = 0, south = 0, east = 0, north = 0;           ///< the same box's corners in lon/lat
+  RangeStats semi_major_m, semi_minor_m, footprint_area_m2;  ///< ellipses; area over all obstacles
   std::size_t with_height = 0, with_top_depth = 0, full_column = 0;
   std::string local_crs_id, local_crs_name;
   std::vector<ObstacleSourceInfo> sources;

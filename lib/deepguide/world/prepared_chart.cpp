@@ -32,9 +32,14 @@ void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& pa
   const auto geo = gdal::wgs84();
   OGRLayer* layer = ds.CreateLayer(kFeatureLayer, geo.get(), wkbUnknown, nullptr);
   if (layer == nullptr) fail_write(path, "create the no_go_features layer");
-  for (const auto& [name, type] : std::initializer_list<std::pair<const char*, OGRFieldType>>{
-           {"id", OFTString}, {"cell", OFTString}, {"class", OFTString}, {"rcid", OFTInteger64},
-           {"reason", OFTString}, {"charted_depth_m", OFTReal}, {"radius_m", OFTReal}}) {
+  for (const auto& [name, type] :
+       std::initializer_list<std::pair<const char*, OGRFieldType>>{{"id", OFTString},
+                                                                   {"cell", OFTString},
+                                                                   {"class", OFTString},
+                                                                   {"rcid", OFTInteger64},
+                                                                   {"reason", OFTString},
+                                                                   {"charted_depth_m", OFTReal},
+                                                                   {"radius_m", OFTReal}}) {
     OGRFieldDefn fd(name, type);
     if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
   }
@@ -77,10 +82,16 @@ void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& pa
 void write_meta(GDALDataset& ds, const EncNoGo& no_go, const EncNoGoOptions& o, const std::string& path) {
   OGRLayer* layer = ds.CreateLayer(kMetaLayer, nullptr, wkbNone, nullptr);
   if (layer == nullptr) fail_write(path, "create the deepguide_chart table");
-  for (const auto& [name, type] : std::initializer_list<std::pair<const char*, OGRFieldType>>{
-           {"format", OFTString}, {"depth_m", OFTReal}, {"vertical_clearance_m", OFTReal},
-           {"required_depth_m", OFTReal}, {"zone_of_confidence", OFTInteger}, {"restricted_areas", OFTInteger},
-           {"simplify_tolerance_m", OFTReal}, {"local_crs", OFTString}, {"cells", OFTString}}) {
+  for (const auto& [name, type] :
+       std::initializer_list<std::pair<const char*, OGRFieldType>>{{"format", OFTString},
+                                                                   {"depth_m", OFTReal},
+                                                                   {"vertical_clearance_m", OFTReal},
+                                                                   {"required_depth_m", OFTReal},
+                                                                   {"zone_of_confidence", OFTInteger},
+                                                                   {"restricted_areas", OFTInteger},
+                                                                   {"simplify_tolerance_m", OFTReal},
+                                                                   {"local_crs", OFTString},
+                                                                   {"cells", OFTString}}) {
     OGRFieldDefn fd(name, type);
     if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
   }
@@ -118,8 +129,7 @@ bool is_prepared_chart(const std::string& path) {
   return ds && ds->GetLayerByName(kMetaLayer) != nullptr;
 }
 
-void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options,
-                          bool replace) {
+void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace) {
   if (ascii_lower(fs::path(path).extension().string()) != ".gpkg") {
     throw InputError(shown(path) + ": expected a GeoPackage name (*.gpkg) for a prepared chart");
   }
@@ -235,8 +245,9 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
     auto flags = [](bool zoc, bool restricted) {
       return std::string(zoc ? "zones of confidence" : "--no-zoc") + (restricted ? " and --restricted" : "");
     };
-    throw InputError(shown(charts.front()) + ": prepared with " + flags(info.zone_of_confidence, info.restricted_areas) +
-                     ", expected " + flags(options.zone_of_confidence, options.restricted_areas) +
+    throw InputError(shown(charts.front()) + ": prepared with " +
+                     flags(info.zone_of_confidence, info.restricted_areas) + ", expected " +
+                     flags(options.zone_of_confidence, options.restricted_areas) +
                      ": prepare it again with these options");
   }
   return out;

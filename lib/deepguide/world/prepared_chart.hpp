@@ -38,8 +38,7 @@ bool is_prepared_chart(const std::string& path);
 
 /// Writes the no-go atomically (a failed write leaves no file; an existing
 /// file is replaced only with `replace`). Throws InputError naming the file.
-void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options,
-                          bool replace);
+void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace);
 
 /// Reads a prepared chart into `frame` (or the frame it was prepared in) for
 /// `depth_m` and `vertical_clearance_m`; throws InputError naming the file

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "deepguide/world/gdal_support.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/input_files.hpp"
+#include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
 
@@ -57,7 +57,8 @@ class ClassicHeader {
         std::uint64_t cells = 1;
         for (std::uint64_t k = 0, nd = count(); k < nd; ++k) {
           const std::uint64_t id = count();
-          if (id >= dims.size()) fail("a variable names dimension " + std::to_string(id) + " of " + std::to_string(dims.size()));
+          if (id >= dims.size())
+            fail("a variable names dimension " + std::to_string(id) + " of " + std::to_string(dims.size()));
           if (k == 0 && dims[id] == 0) {
             v.record = true;
           } else {
@@ -97,7 +98,8 @@ class ClassicHeader {
     return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
   }
   static std::uint64_t product(std::uint64_t a, std::uint64_t b) {
-    return b != 0 && a > std::numeric_limits<std::uint64_t>::max() / b ? std::numeric_limits<std::uint64_t>::max() : a * b;
+    return b != 0 && a > std::numeric_limits<std::uint64_t>::max() / b ? std::numeric_limits<std::uint64_t>::max()
+                                                                       : a * b;
   }
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -141,10 +143,17 @@ class ClassicHeader {
   }
   std::uint64_t size_of(std::uint64_t nc_type) const {
     switch (nc_type) {
-      case 1: case 2: case 7: return 1;   // byte, char, ubyte
-      case 3: case 8: return 2;           // short, ushort
-      case 4: case 5: case 9: return 4;   // int, float, uint
-      case 6: case 10: case 11: return 8;  // double, int64, uint64
+      case 1:
+      case 2:
+      case 7: return 1;  // byte, char, ubyte
+      case 3:
+      case 8: return 2;  // short, ushort
+      case 4:
+      case 5:
+      case 9: return 4;  // int, float, uint
+      case 6:
+      case 10:
+      case 11: return 8;  // double, int64, uint64
       default: fail("type " + std::to_string(nc_type));
     }
   }
@@ -201,16 +210,16 @@ void require_complete_ascii_grid(const std::string& path, std::uint64_t columns,
       if (*first == '+') ++first;  // from_chars takes no plus sign
       const auto [ptr, err] = std::from_chars(first, token.data() + token.size(), v);
       if (err != std::errc() || ptr != token.data() + token.size()) {
-        throw InputError(path + ": line " + std::to_string(line_no) + ": expected a number of the ESRI ASCII grid, got '" +
-                         printable(std::string(token), 40) + "'");
+        throw InputError(path + ": line " + std::to_string(line_no) +
+                         ": expected a number of the ESRI ASCII grid, got '" + printable(std::string(token), 40) + "'");
       }
       ++numbers;
     }
   }
   if (numbers != columns * rows) {
     throw InputError(path + ": expected " + std::to_string(columns) + " x " + std::to_string(rows) + " = " +
-                     std::to_string(columns * rows) + " numbers in the ESRI ASCII grid, got " + std::to_string(numbers) +
-                     (numbers < columns * rows ? ": the file is cut short" : ""));
+                     std::to_string(columns * rows) + " numbers in the ESRI ASCII grid, got " +
+                     std::to_string(numbers) + (numbers < columns * rows ? ": the file is cut short" : ""));
   }
 }
 
@@ -228,8 +237,8 @@ void require_complete_raster(GDALDataset& dataset, const std::string& path) {
     if (name != text) continue;
     std::error_code ec;
     const auto bytes = std::filesystem::file_size(path, ec);
-    const auto cells = static_cast<std::uint64_t>(dataset.GetRasterXSize()) *
-                       static_cast<std::uint64_t>(dataset.GetRasterYSize());
+    const auto cells =
+        static_cast<std::uint64_t>(dataset.GetRasterXSize()) * static_cast<std::uint64_t>(dataset.GetRasterYSize());
     if (!ec && cells > bytes) {
       throw InputError(path + ": expected a text grid (" + name + ") with a character at least for each of its " +
                        std::to_string(dataset.GetRasterXSize()) + " x " + std::to_string(dataset.GetRasterYSize()) +

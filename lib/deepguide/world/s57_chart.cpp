@@ -214,36 +214,28 @@ S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S
         continue;
       }
       switch (wkbFlatten(g->getGeometryType())) {
-        case wkbPoint:
-          add_circle(*g->toPoint(), id);
-          break;
+        case wkbPoint: add_circle(*g->toPoint(), id); break;
         case wkbMultiPoint: {
           int k = 0;
           for (const OGRPoint* p : *g->toMultiPoint()) add_circle(*p, part_id(k++));
           break;
         }
-        case wkbPolygon:
-          add_polygon(*g->toPolygon(), id);
-          break;
+        case wkbPolygon: add_polygon(*g->toPolygon(), id); break;
         case wkbMultiPolygon: {
           int k = 0;
           for (const OGRPolygon* p : *g->toMultiPolygon()) add_polygon(*p, part_id(k++));
           break;
         }
         case wkbLineString:
-        case wkbMultiLineString:
-          ++out.skipped_lines;
-          break;
+        case wkbMultiLineString: ++out.skipped_lines; break;
         default:
-          throw input_error(where, "a Point, Polygon or line geometry",
-                            OGRGeometryTypeToName(g->getGeometryType()));
+          throw input_error(where, "a Point, Polygon or line geometry", OGRGeometryTypeToName(g->getGeometryType()));
       }
     }
   }
   check_read(path);
   if (!std::isnan(options.operating_depth_m)) {
-    out.removed_by_depth =
-        remove_passable(out.obstacles, options.operating_depth_m, options.vertical_clearance_m);
+    out.removed_by_depth = remove_passable(out.obstacles, options.operating_depth_m, options.vertical_clearance_m);
   }
   return out;
 }

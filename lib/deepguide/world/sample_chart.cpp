@@ -19,7 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 // Design coordinates: metres from the raster's south-west corner (x east, y north).
 struct Shoal {
   Vec2 centre;
@@ -28,7 +27,7 @@ struct Shoal {
 };
 constexpr double kShoalBankDistance = 380.0;  // bank crest, metres off the coast
 constexpr double kShoalBankWidth = 140.0;
-constexpr double kHarbourDepth = 12.0;        // the basin is dredged like the channel
+constexpr double kHarbourDepth = 12.0;  // the basin is dredged like the channel
 
 const Shoal kShoals[] = {
     {{1750.0, 1250.0}, 120.0, 4.5},  // Mittelgrund: a shallow shoal east of the route
@@ -129,7 +128,8 @@ const SampleChartLayout& sample_chart_layout() {
 
 float SampleChart::at(int col, int row) const {
   const SampleChartLayout& l = sample_chart_layout();
-  return elevation.at(static_cast<std::size_t>(row) * static_cast<std::size_t>(l.width) + static_cast<std::size_t>(col));
+  return elevation.at(static_cast<std::size_t>(row) * static_cast<std::size_t>(l.width) +
+                      static_cast<std::size_t>(col));
 }
 
 SampleChart make_sample_chart(const SampleChartOptions& options) {
@@ -205,7 +205,8 @@ SampleChart make_sample_chart(const SampleChartOptions& options) {
     z.position = c / static_cast<double>(z.ring.size());
     chart.hazards.push_back(std::move(z));
   };
-  area("foul-1", "foul ground", "Foul ground off the headland", {{180, 840}, {420, 800}, {480, 960}, {300, 1040}, {160, 980}}, 3.0);
+  area("foul-1", "foul ground", "Foul ground off the headland",
+       {{180, 840}, {420, 800}, {480, 960}, {300, 1040}, {160, 980}}, 3.0);
   area("spoil-1", "spoil ground", "Disused spoil ground", {{420, 1480}, {720, 1440}, {760, 1680}, {440, 1720}}, 15.0);
   return chart;
 }
@@ -214,17 +215,17 @@ namespace {
 
 [[noreturn]] void fail_write(const std::string& path, const std::string& what) {
   const std::string why = gdal::QuietErrors::last_message();
-  throw InputError(path + ": could not " + what + (why.empty() ? std::string() : " (GDAL: " + printable(why, 160) + ")"));
+  throw InputError(path + ": could not " + what +
+                   (why.empty() ? std::string() : " (GDAL: " + printable(why, 160) + ")"));
 }
 
 void write_raster(const std::string& path, const fs::path& temp, const SampleChart& chart) {
   const SampleChartLayout& l = sample_chart_layout();
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   if (driver == nullptr) fail_write(path, "find GDAL's GTiff driver");
-  const char* options[] = {"TILED=YES",  "BLOCKXSIZE=256", "BLOCKYSIZE=256", "COMPRESS=DEFLATE",
+  const char* options[] = {"TILED=YES",   "BLOCKXSIZE=256", "BLOCKYSIZE=256", "COMPRESS=DEFLATE",
                            "PREDICTOR=3", "ZLEVEL=9",       nullptr};
-  GDALDatasetUniquePtr ds(
-      driver->Create(temp.c_str(), l.width, l.height, 1, GDT_Float32, const_cast<char**>(options)));
+  GDALDatasetUniquePtr ds(driver->Create(temp.c_str(), l.width, l.height, 1, GDT_Float32, const_cast<char**>(options)));
   if (!ds) fail_write(path, "create the GeoTIFF");
   double gt[6] = {l.west, l.cell_m, 0.0, l.north, 0.0, -l.cell_m};
   OGRSpatialReference srs;
@@ -236,8 +237,8 @@ void write_raster(const std::string& path, const fs::path& temp, const SampleCha
   band->SetDescription("elevation");
   band->SetUnitType("m");
   band->SetNoDataValue(l.nodata);
-  if (band->RasterIO(GF_Write, 0, 0, l.width, l.height, const_cast<float*>(chart.elevation.data()), l.width,
-                     l.height, GDT_Float32, 0, 0, nullptr) != CE_None) {
+  if (band->RasterIO(GF_Write, 0, 0, l.width, l.height, const_cast<float*>(chart.elevation.data()), l.width, l.height,
+                     GDT_Float32, 0, 0, nullptr) != CE_None) {
     fail_write(path, "write the cells");
   }
   ds.reset();  // flushes and closes

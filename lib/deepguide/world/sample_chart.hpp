@@ -73,8 +73,8 @@ struct SampleHazard {
   std::string id;
   std::string kind;  ///< "wreck", "rock", "foul ground", "spoil ground"
   std::string name;
-  Vec2 position{0.0, 0.0};      ///< point hazards: centre
-  double semi_major_m = 0.0;    ///< point hazards
+  Vec2 position{0.0, 0.0};    ///< point hazards: centre
+  double semi_major_m = 0.0;  ///< point hazards
   double semi_minor_m = 0.0;
   double orientation_deg = 0.0;  ///< major axis, clockwise from true north
   double top_depth_m = 0.0;

@@ -31,8 +31,8 @@ SeaFloor::SeaFloor(const Vec2& origin, double spacing, std::size_t nx, std::size
   }
   if (nx < 2 || ny < 2 || nx > depth_.size() / ny || depth_.size() != nx * ny || !origin.allFinite()) {
     throw InputError("sea floor: expected a grid of at least 2 x 2 nodes with one depth each, got " +
-                     std::to_string(nx) + " x " + std::to_string(ny) + " nodes and " +
-                     std::to_string(depth_.size()) + " depths");
+                     std::to_string(nx) + " x " + std::to_string(ny) + " nodes and " + std::to_string(depth_.size()) +
+                     " depths");
   }
   for (double& d : depth_) {
     if (!std::isfinite(d)) d = 0.0;  // no data: not water to dive in
@@ -75,7 +75,8 @@ double SeaFloor::depth_at(const Vec2& p) const {
   const auto i = std::min(static_cast<std::ptrdiff_t>(u), static_cast<std::ptrdiff_t>(nx_) - 2);
   const auto j = std::min(static_cast<std::ptrdiff_t>(v), static_cast<std::ptrdiff_t>(ny_) - 2);
   const double fu = u - static_cast<double>(i), fv = v - static_cast<double>(j);
-  return (1 - fv) * ((1 - fu) * node(i, j) + fu * node(i + 1, j)) + fv * ((1 - fu) * node(i, j + 1) + fu * node(i + 1, j + 1));
+  return (1 - fv) * ((1 - fu) * node(i, j) + fu * node(i + 1, j)) +
+         fv * ((1 - fu) * node(i, j + 1) + fu * node(i + 1, j + 1));
 }
 
 std::pair<double, double> SeaFloor::depth_range(const Vec2& lo, const Vec2& hi) const {
@@ -182,7 +183,8 @@ SeaFloor::Gap SeaFloor::lowest_gap(const Vec3& a, const Vec3& b) const {
 SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame, const Vec2& area_min,
                                const Vec2& area_max, double spacing, const BathymetryOptions& options) {
   if (!(spacing >= 0.0) || !std::isfinite(spacing)) {
-    throw InputError(path + ": sea floor node spacing: expected > 0 m (or 0: the raster's own), got " + general(spacing));
+    throw InputError(path + ": sea floor node spacing: expected > 0 m (or 0: the raster's own), got " +
+                     general(spacing));
   }
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
@@ -206,12 +208,26 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
   // Warped so that pixel centres fall on the nodes: node (i, j) is the centre
   // of column i, row ny - 1 - j (rows run north to south).
   const double h = 0.5 * spacing;
-  std::vector<std::string> args = {"-of", "MEM", "-s_srs", raster.info.crs_wkt, "-t_srs", frame.wkt(),
-                                   "-te", exact(area_min.x() - h), exact(area_min.y() - h),
+  std::vector<std::string> args = {"-of",
+                                   "MEM",
+                                   "-s_srs",
+                                   raster.info.crs_wkt,
+                                   "-t_srs",
+                                   frame.wkt(),
+                                   "-te",
+                                   exact(area_min.x() - h),
+                                   exact(area_min.y() - h),
                                    exact(area_min.x() + (nxd - 0.5) * spacing),
                                    exact(area_min.y() + (nyd - 0.5) * spacing),
-                                   "-ts", std::to_string(nx), std::to_string(ny), "-r", raster.to_depth < 0.0 ? "max" : "min", "-ot", "Float64",
-                                   "-dstnodata", "nan"};
+                                   "-ts",
+                                   std::to_string(nx),
+                                   std::to_string(ny),
+                                   "-r",
+                                   raster.to_depth < 0.0 ? "max" : "min",
+                                   "-ot",
+                                   "Float64",
+                                   "-dstnodata",
+                                   "nan"};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -237,13 +253,13 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
   GDALDatasetUniquePtr warped(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &source, warp_options, &usage_error)));
   GDALWarpAppOptionsFree(warp_options);
   if (!warped) {
-    throw InputError(path + ": sea floor: expected a raster GDAL can warp into " + frame.id() + ", got: " +
-                     gdal::QuietErrors::last_message());
+    throw InputError(path + ": sea floor: expected a raster GDAL can warp into " + frame.id() +
+                     ", got: " + gdal::QuietErrors::last_message());
   }
   std::vector<double> rows(nx * ny);
   if (warped->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, static_cast<int>(nx), static_cast<int>(ny), rows.data(),
-                                          static_cast<int>(nx), static_cast<int>(ny), GDT_Float64, 0, 0,
-                                          nullptr) != CE_None) {
+                                         static_cast<int>(nx), static_cast<int>(ny), GDT_Float64, 0, 0,
+                                         nullptr) != CE_None) {
     throw InputError(path + ": sea floor: reading the warped raster failed: " + gdal::QuietErrors::last_message());
   }
   // Each node first holds the shallowest chart value in its own cell (the
@@ -263,7 +279,8 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
     }
   }
   if (valid == 0) {
-    throw InputError(path + ": sea floor: expected a raster that covers the work area, got one that does not "
+    throw InputError(path +
+                     ": sea floor: expected a raster that covers the work area, got one that does not "
                      "reach it (or has no data there)");
   }
   std::vector<double> depths(nx * ny);
@@ -271,7 +288,8 @@ SeaFloor SeaFloor::from_raster(const std::string& path, const LocalFrame& frame,
     for (std::size_t i = 0; i < nx; ++i) {
       double d = cell[j * nx + i];
       for (std::size_t jj = j > 0 ? j - 1 : 0; jj <= std::min(j + 1, ny - 1); ++jj) {
-        for (std::size_t ii = i > 0 ? i - 1 : 0; ii <= std::min(i + 1, nx - 1); ++ii) d = std::min(d, cell[jj * nx + ii]);
+        for (std::size_t ii = i > 0 ? i - 1 : 0; ii <= std::min(i + 1, nx - 1); ++ii)
+          d = std::min(d, cell[jj * nx + ii]);
       }
       depths[j * nx + i] = d;
     }

@@ -39,8 +39,8 @@
 #include <random>
 #include <vector>
 
-#include "deepguide/core/api.hpp"
 #include "deepguide/core/angles.hpp"
+#include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/world/obstacle.hpp"
 
@@ -52,10 +52,10 @@ struct SonarParams {
   double range_m = 120.0;
   double field_of_view = deg_to_rad(120.0);  ///< full horizontal opening (rad), centred on the heading
   double update_rate_hz = 2.0;
-  double position_sigma_m = 0.5;        ///< s0 of the centre error (per axis)
-  double position_sigma_per_m = 0.01;   ///< s1: metres of error per metre of range
-  double size_sigma_m = 0.25;           ///< s0 of the semi-axis error
-  double size_sigma_per_m = 0.01;       ///< s1 of the semi-axis error
+  double position_sigma_m = 0.5;       ///< s0 of the centre error (per axis)
+  double position_sigma_per_m = 0.01;  ///< s1: metres of error per metre of range
+  double size_sigma_m = 0.25;          ///< s0 of the semi-axis error
+  double size_sigma_per_m = 0.01;      ///< s1 of the semi-axis error
   std::uint64_t seed = 1;
 };
 
@@ -63,17 +63,17 @@ struct SonarParams {
 void validate(const SonarParams& params);
 
 struct Detection {
-  Ellipse estimate;        ///< the ellipse the sonar reports (local frame)
-  double range_m = 0.0;    ///< true distance sonar -> nearest point of the obstacle
-  double bearing = 0.0;    ///< math angle (rad) of that nearest point seen from the sonar
-  double time_s = 0.0;     ///< scan time
+  Ellipse estimate;          ///< the ellipse the sonar reports (local frame)
+  double range_m = 0.0;      ///< true distance sonar -> nearest point of the obstacle
+  double bearing = 0.0;      ///< math angle (rad) of that nearest point seen from the sonar
+  double time_s = 0.0;       ///< scan time
   std::size_t obstacle = 0;  ///< index of the true obstacle in the list scanned (for evaluation)
 
   /// Bit-for-bit equality (for reproducibility checks).
   bool operator==(const Detection& o) const {
     return estimate.centre == o.estimate.centre && estimate.a == o.estimate.a && estimate.b == o.estimate.b &&
-           estimate.theta == o.estimate.theta && range_m == o.range_m && bearing == o.bearing &&
-           time_s == o.time_s && obstacle == o.obstacle;
+           estimate.theta == o.estimate.theta && range_m == o.range_m && bearing == o.bearing && time_s == o.time_s &&
+           obstacle == o.obstacle;
   }
 };
 

@@ -67,12 +67,14 @@ WaterVolume::WaterVolume(const ObstacleField& field, const SeaFloor* floor, cons
     : field_(&field), floor_(floor), options_(options) {
   const double top = options.min_depth_m, bottom = options.max_depth_m;
   if (!(bottom > 0.0) || !(top >= 0.0) || std::isnan(bottom) || !std::isfinite(top)) {
-    throw InputError("depth band: expected a band below the surface (top >= 0 m, bottom > 0 m, depths positive "
-                     "down), got " + general(top) + " .. " + general(bottom) + " m");
+    throw InputError(
+        "depth band: expected a band below the surface (top >= 0 m, bottom > 0 m, depths positive "
+        "down), got " +
+        general(top) + " .. " + general(bottom) + " m");
   }
   if (!(top < bottom)) {
-    throw InputError("depth band: expected its top (" + general(top) + " m) above its bottom (" +
-                     general(bottom) + " m)");
+    throw InputError("depth band: expected its top (" + general(top) + " m) above its bottom (" + general(bottom) +
+                     " m)");
   }
   const double c = options.vertical_clearance_m;
   if (!(c >= 0.0) || !std::isfinite(c)) {
@@ -101,12 +103,10 @@ WaterVolume::WaterVolume(const ObstacleField& field, const SeaFloor* floor, cons
   }
 }
 
-WaterVolume::Verdict WaterVolume::check_point(const Vec3& p) const {
-  return check_segment(p, p);
-}
+WaterVolume::Verdict WaterVolume::check_point(const Vec3& p) const { return check_segment(p, p); }
 
 std::vector<std::pair<double, double>> WaterVolume::capsule_intervals(std::size_t i, const Vec2& a2,
-                                                                       const Vec2& b2) const {
+                                                                      const Vec2& b2) const {
   const BgPolygon& poly = field_->obstacles().polygons[i - field_->obstacles().ellipses.size()].footprint;
   // A zero margin leaves the capsules without inside (the zone is the
   // polygon itself): a micrometre keeps them, erring on the safe side.
@@ -223,8 +223,9 @@ WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) co
     if (p.z() > top + kRounding) {
       const std::string name = field_->obstacle_name(i);
       if (std::isinf(top)) return {true, "enters the safety zone of obstacle '" + name + "'", p};
-      return {true, "passes over obstacle '" + name + "' " + fixed(p.z() - top, 2) + " m too deep (its top less " +
-                        general(c) + " m clearance is at depth " + fixed(top, 2) + " m)",
+      return {true,
+              "passes over obstacle '" + name + "' " + fixed(p.z() - top, 2) + " m too deep (its top less " +
+                  general(c) + " m clearance is at depth " + fixed(top, 2) + " m)",
               p};
     }
   }

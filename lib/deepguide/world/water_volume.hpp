@@ -26,8 +26,8 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deepguide/core/api.hpp"
@@ -37,8 +37,8 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct VolumeOptions {
-  double vertical_clearance_m = 2.0;  ///< kept over the sea floor and over obstacle tops
-  double min_depth_m = 2.0;           ///< the band's top (m, positive down), >= 0
+  double vertical_clearance_m = 2.0;                             ///< kept over the sea floor and over obstacle tops
+  double min_depth_m = 2.0;                                      ///< the band's top (m, positive down), >= 0
   double max_depth_m = std::numeric_limits<double>::infinity();  ///< the band's bottom
 };
 
