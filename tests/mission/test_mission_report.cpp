@@ -27,7 +27,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 }  // namespace
 
-TEST(MissionReport, CheckListsEachConflictOnceInTextAndJson) {
+TEST(MissionReport, CheckListsEveryConflictInTextAndJson) {
   const MissionCheckReport report = check_mission_file(kSample);
   const nlohmann::json j = report.to_json();
   ASSERT_GE(report.conflicts.size(), 2u);
