@@ -30,7 +30,7 @@ void register_chart_nogo(CLI::App& chart) {
       "--no-zoc", f->no_zoc,
       "S-57: take charted depths and positions as exact (default: less the zone of confidence's uncertainty)");
   cmd->add_option("--depth", r.nogo.operating_depth_m, "Operating depth of the vehicle (m, positive down)")->required();
-  cmd->add_option("--clearance", r.nogo.vertical_clearance_m, "Water kept above the sea floor (m)")
+  cmd->add_option("--clearance,--vertical-clearance", r.nogo.vertical_clearance_m, "Water kept above the sea floor (m)")
       ->capture_default_str();
   cmd->add_option("--tolerance", r.nogo.simplify_tolerance_m,
                   "Simplification tolerance (m): polygons grow by at most this much, never shrink; 0 = exact cells")

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <map>
 #include <new>
 
 #include "commands.hpp"
@@ -18,6 +19,58 @@ void add_frame_options(CLI::App& cmd, FrameOptions& options) {
                  "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the data)");
   cmd.add_option("--src-crs", options.src_crs,
                  "CRS of input files that carry none, e.g. a CSV in UTM (default: EPSG:4326 lon/lat)");
+}
+
+namespace {
+
+// The library's messages name the parameters its callers set (core/error.hpp);
+// the command line's user set them as flags.
+const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter = {
+    {"charts", "--chart"},
+    {"clearance_m", "--clearance"},
+    {"cost", "--cost"},
+    {"data_root", "--data"},
+    {"depart_s", "--depart"},
+    {"depth_m", "--depth"},
+    {"escape", "--escape"},
+    {"format", "--format"},
+    {"fresh", "--fresh"},
+    {"goal", "--to"},
+    {"goal_heading", "--to-heading"},
+    {"graph", "--graph"},
+    {"local_crs", "--crs"},
+    {"margin", "--margin"},
+    {"margin_m", "--margin"},
+    {"max_dive_deg", "--max-dive"},
+    {"merge_distance_m", "--merge-distance"},
+    {"methods", "--methods"},
+    {"min_cell_m", "--min-cell"},
+    {"name", "--name"},
+    {"operating_depth_m", "--depth"},
+    {"overwrite", "--overwrite"},
+    {"replan_events", "--replan-events"},
+    {"search", "--search"},
+    {"shard", "--shard"},
+    {"smooth", "--smooth"},
+    {"spacing_m", "--waypoint-grid"},
+    {"speed", "--speed"},
+    {"src_crs", "--src-crs"},
+    {"start", "--from"},
+    {"start_heading", "--from-heading"},
+    {"tolerance", "--tolerance"},
+    {"turn_radius_m", "--turn-radius"},
+    {"vehicle", "--vehicle"},
+    {"vertical_clearance_m", "--vertical-clearance"},
+    {"waypoint_grid", "--waypoint-grid"},
+    {"width_px", "--width"},
+};
+
+}  // namespace
+
+std::optional<std::string> flag_of_parameter(std::string_view parameter) {
+  const auto it = kFlagOfParameter.find(parameter);
+  if (it == kFlagOfParameter.end()) return std::nullopt;
+  return std::string(it->second);
 }
 
 int run(int argc, char** argv) {
@@ -57,7 +110,7 @@ int run(int argc, char** argv) {
   // Every message is one line a terminal shows as it is: what a file put in
   // an id or a name (a newline, an escape sequence, U+202E) is escaped here
   // whatever the message that carries it.
-  const auto one_line = [](const char* what) { return printable(what, 4000); };
+  const auto one_line = [](const char* what) { return printable(rename_parameters(what, flag_of_parameter), 4000); };
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -3,7 +3,9 @@
 
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace deepguide {
 class LocalFrame;
@@ -16,6 +18,10 @@ namespace deepguide::app {
 /// Parses the command line, runs the command and returns the exit code
 /// (apps/cli.cpp): what `main` does, callable in-process.
 int run(int argc, char** argv);
+
+/// The flag that sets a parameter a library message names ("min_cell_m" ->
+/// "--min-cell"); nothing for a parameter no flag sets.
+std::optional<std::string> flag_of_parameter(std::string_view parameter);
 
 /// Options every command that reads obstacles or charts shares.
 struct FrameOptions {

@@ -222,7 +222,7 @@ TEST(BathymetryReal, JD211BagMatchesSources) {
 
 TEST(BathymetryReal, NominalOnlyBagHasNoCrs) {
   REAL_FILE_OR_SKIP(path, "bag-ons/nominal_only.bag");
-  expect_one_line_error([&] { inspect_bathymetry(path); }, "give the CRS it uses (--src-crs");
+  expect_one_line_error([&] { inspect_bathymetry(path); }, "give the CRS it uses (`src_crs`");
   // Its coordinates are synthetic; any projected CRS makes it readable.
   const BathymetryInfo b = inspect_bathymetry(path, assumed("EPSG:32631"));
   EXPECT_EQ(b.width, 10);
@@ -279,7 +279,7 @@ TEST(BathymetryReal, TutBathyBermudaAllSea) {
 TEST(BathymetryReal, Bathy1mAzoresHasLand) {
   REAL_FILE_OR_SKIP(path, "bathy-gmt-cache/bathy_1m.nc");
   // Its axes are plain x/y without units: no CRS in the file.
-  expect_one_line_error([&] { inspect_bathymetry(path); }, "give the CRS it uses (--src-crs");
+  expect_one_line_error([&] { inspect_bathymetry(path); }, "give the CRS it uses (`src_crs`");
   const BathymetryInfo b = inspect_bathymetry(path, assumed("EPSG:4326"));
   EXPECT_EQ(b.width, 601);
   EXPECT_EQ(b.height, 451);

@@ -142,7 +142,7 @@ TEST(Suite, WrittenFilesAndOnDemandGiveTheSameScenarios) {
   EXPECT_EQ(generated_scenario_id(7, 12), "scenario-0007");
   EXPECT_EQ(generated_scenario_id(7, 100000), "scenario-00007");
   // No silent overwrite; with overwrite the folder is replaced whole.
-  deepguide::test::expect_one_line_error([&] { write_suite(tmp.file("files"), "x", p, true, false); }, "--overwrite");
+  deepguide::test::expect_one_line_error([&] { write_suite(tmp.file("files"), "x", p, true, false); }, "`overwrite`");
   p.scenarios = 3;
   write_suite(tmp.file("files"), "three", p, true, true);
   EXPECT_EQ(read_suite(tmp.file("files")).scenarios.size(), 3u);

@@ -351,7 +351,7 @@ TEST(PlanExport, WritesAreAtomicAndNeverReplaceWithoutOverwrite) {
     export_plan(s.mission, s.plan, path, ExportFormat::gpx);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("--overwrite"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("`overwrite`"), std::string::npos) << e.what();
   }
   std::ifstream kept(path);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "precious");

@@ -229,18 +229,18 @@ TEST(CostPlanning, WaypointGridsAreCheckedAndAvoidTheZones) {
     }
     return std::string();
   };
-  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, 0.0); }), {"--waypoint-grid", "> 0"});
-  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, -5.0); }), {"--waypoint-grid", "-5"});
+  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, 0.0); }), {"`spacing_m`", "> 0"});
+  expect_error(error_of([] { waypoint_grid_for({0, 0}, {1000, 0}, -5.0); }), {"`spacing_m`", "-5"});
   expect_error(error_of([] {
                  waypoint_grid_for({0, 0}, {1e6, 1e6}, 10.0);
                }),
-               {"--waypoint-grid", "at most 40000", "spacing of at least"});
+               {"`spacing_m`", "at most 40000", "spacing of at least"});
   expect_error(error_of([] {
                  PlannerOptions o = options_with(nullptr, SearchAlgorithm::astar, GraphKind::tangent);
                  o.grid = waypoint_grid_for({0, 0}, {1000, 0}, 50.0);
                  Planner p(ObstacleSet{}, o);
                }),
-               {"--waypoint-grid", "visibility"});
+               {"`waypoint_grid`", "visibility"});
   // Lattice points never lie inside a zone, and routes through the lattice pass the checker.
   ObstacleSet set;
   set.polygons.push_back(box(-100.0, -300.0, 100.0, 300.0, "reef"));
@@ -411,21 +411,21 @@ TEST(CostPlanning, BadModelsAreRefused) {
   expect_error(refused(m), {"propulsion_k_w_per_mps3", "-60"});
   m.leg.energy = {};
   m.speed_mps = 9.0;
-  expect_error(refused(m), {"--speed", "maximum"});
+  expect_error(refused(m), {"`speed`", "maximum"});
   m.speed_mps = kCruise;
   // A departure outside a time-dependent field's axis.
   m.steady = false;
   m.time_first_s = 1.5e9;
   m.time_last_s = 1.5e9 + 86400.0;
   m.depart_s = 1.5e9 - 3600.0;
-  expect_error(refused(m), {"--depart", "2017-07-14T02:40:00Z", "2017-07-15T02:40:00Z", "2017-07-14T01:40:00Z"});
+  expect_error(refused(m), {"`depart_s`", "2017-07-14T02:40:00Z", "2017-07-15T02:40:00Z", "2017-07-14T01:40:00Z"});
   m.depart_s = 1.5e9 + 3600.0;
   EXPECT_EQ(refused(m), "");
   m.economical = true;
-  expect_error(refused(m), {"--speed optimal", "steady"});
+  expect_error(refused(m), {"`speed` optimal", "steady"});
   m.kind = CostKind::time;
   m.steady = true;
-  expect_error(refused(m), {"--speed optimal", "--cost energy", "--speed 3.08"});
+  expect_error(refused(m), {"`speed` optimal", "`cost` energy", "`speed` 3.08"});
   m.kind = CostKind::energy;
   // The planner refuses the tangent graph for time and energy.
   m.economical = false;
@@ -435,7 +435,7 @@ TEST(CostPlanning, BadModelsAreRefused) {
                     options_with(std::make_shared<CostModel>(m), SearchAlgorithm::astar, GraphKind::tangent));
     FAIL() << "the tangent graph took an energy model";
   } catch (const InputError& e) {
-    expect_error(e.what(), {"--cost energy", "visibility"});
+    expect_error(e.what(), {"`cost` energy", "visibility"});
   }
 }
 

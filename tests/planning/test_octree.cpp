@@ -244,10 +244,10 @@ TEST(Octree, BadInputIsRefusedWithAClearError) {
     }
     return std::string("no InputError");
   };
-  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(0.0, 30.0)); }).find("--min-cell"), std::string::npos);
-  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(-1.0, 30.0)); }).find("--min-cell"), std::string::npos);
-  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(2.0, 90.0)); }).find("--max-dive"), std::string::npos);
-  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(2.0, 0.0)); }).find("--max-dive"), std::string::npos);
+  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(0.0, 30.0)); }).find("`min_cell_m`"), std::string::npos);
+  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(-1.0, 30.0)); }).find("`min_cell_m`"), std::string::npos);
+  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(2.0, 90.0)); }).find("`max_dive_deg`"), std::string::npos);
+  EXPECT_NE(message([&] { OctreeGraph(volume, options_over(2.0, 0.0)); }).find("`max_dive_deg`"), std::string::npos);
   // No free cell: a floor everywhere shallower than the band's top plus the clearance.
   const SeaFloor shoal({0.0, 0.0}, 100.0, 5, 5, std::vector<double>(25, 6.0));
   const WaterVolume dry(field, &shoal, {2.0, 5.0, 90.0});

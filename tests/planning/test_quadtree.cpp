@@ -204,11 +204,11 @@ TEST(Quadtree, BadInputIsRefusedWithAClearError) {
   q.area_min = {-50.0, -50.0};
   q.area_max = {150.0, 150.0};
   q.min_cell_m = 0.0;
-  expect_error(error_of([&] { QuadtreeGraph g(field, q); }), {"--min-cell", "> 0"});
+  expect_error(error_of([&] { QuadtreeGraph g(field, q); }), {"`min_cell_m`", "> 0"});
   q.min_cell_m = -2.0;
-  expect_error(error_of([&] { QuadtreeGraph g(field, q); }), {"--min-cell", "-2"});
+  expect_error(error_of([&] { QuadtreeGraph g(field, q); }), {"`min_cell_m`", "-2"});
   q.min_cell_m = 1e-9;
-  expect_error(error_of([&] { QuadtreeGraph g(field, q); }), {"--min-cell", "levels"});
+  expect_error(error_of([&] { QuadtreeGraph g(field, q); }), {"`min_cell_m`", "levels"});
   // An area wholly inside the block's zone has no free cell.
   q.min_cell_m = 2.0;
   q.area_min = {20.0, 20.0};
@@ -226,5 +226,5 @@ TEST(Quadtree, BadInputIsRefusedWithAClearError) {
                  o.grid = waypoint_grid_for({0, 0}, {100, 100}, 10.0);
                  Planner p(set, o);
                }),
-               {"--waypoint-grid", "quadtree"});
+               {"`waypoint_grid`", "quadtree"});
 }

@@ -150,13 +150,13 @@ TEST(RoutePlanReport, BadRequestsAreOneLineErrors) {
   RoutePlanRequest heading = round_one_disc();
   heading.problem.start_heading = 0.0;
   heading.turn_radius_m = 20.0;
-  EXPECT_NE(message(heading).find("expected --graph tangent"), std::string::npos) << message(heading);
+  EXPECT_NE(message(heading).find("expected `graph` tangent"), std::string::npos) << message(heading);
   heading.graph = GraphKind::tangent;
   heading.turn_radius_m.reset();
-  EXPECT_NE(message(heading).find("--turn-radius or --vehicle"), std::string::npos) << message(heading);
+  EXPECT_NE(message(heading).find("`turn_radius_m` or `vehicle`"), std::string::npos) << message(heading);
   RoutePlanRequest smooth = round_one_disc();
   smooth.smooth = true;
-  EXPECT_NE(message(smooth).find("--smooth"), std::string::npos);
+  EXPECT_NE(message(smooth).find("`smooth`"), std::string::npos);
   RoutePlanRequest radius = round_one_disc();
   radius.turn_radius_m = -1.0;
   EXPECT_NE(message(radius).find("> 0 m, got -1"), std::string::npos) << message(radius);

@@ -209,12 +209,12 @@ TEST(RenderChart, RouteOverAnEncCell) {
   ScratchDir dir;
   const std::string out = dir.file("route.png");
   RouteOnChart r;
-  r.charts = {cell};
-  r.depth_m = 1.0;
-  r.local_crs = "EPSG:32617";
-  const LocalFrame frame = LocalFrame::from_user_crs(r.local_crs);
+  r.chart.charts = {cell};
+  r.chart.depth_m = 1.0;
+  r.chart.local_crs = "EPSG:32617";
+  const LocalFrame frame = LocalFrame::from_user_crs(r.chart.local_crs);
   r.route = {frame.from_lonlat(-81.84, 24.59), frame.from_lonlat(-81.83, 24.55)};
-  r.width_px = 900;
+  r.chart.width_px = 900;
   const ChartLayout l = render_route_on_chart(r, out);
   EXPECT_EQ(l.width, 900);
   // The map holds the route's box widened by a fifth of its size (at least 1 km).

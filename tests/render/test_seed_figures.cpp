@@ -224,7 +224,7 @@ TEST(SeedFigures, BadInputIsOneLineAndWritesNothing) {
   test::expect_error(test::error_of([&] {
                        locate_seed_data({"/nonexistent-deepguide", dir.path().string()});
                      }),
-                     {"/nonexistent-deepguide lacks data/missions/encounter.yaml", "--data"});
+                     {"/nonexistent-deepguide lacks data/missions/encounter.yaml", "`data_root`"});
   EXPECT_EQ(locate_seed_data({"/nonexistent-deepguide", DEEPGUIDE_SOURCE_DIR}), DEEPGUIDE_SOURCE_DIR);
   EXPECT_FALSE(std::filesystem::exists(dir.file("figs")));
 

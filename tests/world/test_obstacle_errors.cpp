@@ -147,7 +147,7 @@ TEST(ObstacleErrors, CoordinatesOffTheEarth) {
   // A CSV in UTM metres without a CRS is read as lon/lat and must not pass.
   ScratchDir dir;
   const std::string p = dir.write("utm.csv", "x,y,semi_major_m\n512345,6012345,3\n");
-  expect_error(error_of({p}), {p.c_str(), "line 2", "geometry", "--src-crs"});
+  expect_error(error_of({p}), {p.c_str(), "line 2", "geometry", "`src_crs`"});
   // The same file with its CRS named is fine.
   EXPECT_EQ(error_of({p}, {"", "EPSG:32632"}), "");
 }
@@ -163,9 +163,9 @@ TEST(ObstacleErrors, UnknownCrsInFile) {
 
 TEST(ObstacleErrors, UnknownCrsOptions) {
   const std::string sample = test::source_file("data/sample_obstacles.geojson");
-  expect_error(error_of({sample}, {"EPSG:999999", ""}), {"--crs", "EPSG:999999", "expected"});
-  expect_error(error_of({sample}, {"", "EPSG:999999"}), {"--src-crs", "EPSG:999999"});
-  expect_error(error_of({sample}, {"EPSG:4326", ""}), {"--crs", "projected"});
+  expect_error(error_of({sample}, {"EPSG:999999", ""}), {"`local_crs`", "EPSG:999999", "expected"});
+  expect_error(error_of({sample}, {"", "EPSG:999999"}), {"`src_crs`", "EPSG:999999"});
+  expect_error(error_of({sample}, {"EPSG:4326", ""}), {"`local_crs`", "projected"});
 }
 
 TEST(ObstacleErrors, UnsupportedGeometry) {

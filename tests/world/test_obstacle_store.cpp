@@ -456,8 +456,9 @@ TEST(ObstacleStoreErrors, BadDetectionFilesLeaveNoStore) {
   EXPECT_NE(missing.find("none.csv: expected an existing file"), std::string::npos) << missing;
   ObstacleStoreOptions o = utm_options();
   o.merge_distance_m = -1.0;
-  EXPECT_NE(error_of([&] { import_detections(store, {dir.write("ok.csv", mission_a())}, o); }).find("--merge-distance"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { import_detections(store, {dir.write("ok.csv", mission_a())}, o); }).find("`merge_distance_m`"),
+      std::string::npos);
   EXPECT_NE(error_of([&] { import_detections(store, {}, utm_options()); }).find("at least one detection file"),
             std::string::npos);
 }

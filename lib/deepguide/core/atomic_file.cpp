@@ -85,8 +85,7 @@ void AtomicOutput::commit(bool replace) {
       return;
     }
     if (errno == EEXIST) {
-      throw InputError(destination_.string() +
-                       ": expected a new file, got one that exists (give --overwrite to replace it)");
+      throw InputError(destination_.string() + ": expected a new file, got one that exists (`overwrite` replaces it)");
     }
     // A file system without hard links: the plain rename (checked for existence before writing).
   }

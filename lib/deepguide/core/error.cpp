@@ -1,5 +1,7 @@
 #include "deepguide/core/error.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <sstream>
 #include <utility>
@@ -92,6 +94,35 @@ void require_param(bool ok, const char* group, const char* field, const char* ex
   std::ostringstream text;
   text << got;
   throw input_error({group, "", field}, expected, text.str());
+}
+
+std::string rename_parameters(std::string_view message,
+                              const std::function<std::optional<std::string>(std::string_view)>& rename) {
+  const auto is_name = [](std::string_view s) {
+    if (s.empty() || !std::isalpha(static_cast<unsigned char>(s.front()))) return false;
+    return std::all_of(s.begin(), s.end(),
+                       [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
+  };
+  std::string out;
+  std::size_t at = 0;
+  while (at < message.size()) {
+    const std::size_t open = message.find('`', at);
+    const std::size_t close = open == std::string_view::npos ? open : message.find('`', open + 1);
+    if (close == std::string_view::npos) break;
+    const std::string_view name = message.substr(open + 1, close - open - 1);
+    const std::optional<std::string> renamed = is_name(name) ? rename(name) : std::nullopt;
+    out.append(message.substr(at, open - at));
+    if (renamed) {
+      out += *renamed;
+      at = close + 1;
+    } else {
+      // The closing backquote may open the next name: "`a b` `c`".
+      out.append(message.substr(open, close - open));
+      at = close;
+    }
+  }
+  out.append(message.substr(at));
+  return out;
 }
 
 }  // namespace deepguide

@@ -1,12 +1,18 @@
 #pragma once
 // Errors that reach the user. Every one is a single line that names where the
 // problem is (file, feature or line, field) and what was expected.
-// Exit codes (apps/main.cpp): 1 bad input (and internal errors), 2 usage,
+// A message names a parameter the caller set by its field in backquotes,
+// "`margin`: expected ...", so that a program with its own names for them
+// (the command line's flags) can rename each with rename_parameters.
+// Exit codes (apps/cli.cpp): 1 bad input (and internal errors), 2 usage,
 // 3 no safe route or a manoeuvre that cannot be done, 4 done with some inputs
 // skipped.
 
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "deepguide/core/api.hpp"
 
@@ -61,5 +67,12 @@ InputError input_error(const InputLocation& where, const std::string& expected, 
 /// expected, got) unless `ok`. E.g. "reactive: field 'margin_m': expected a
 /// margin >= 0 m, got -1".
 void require_param(bool ok, const char* group, const char* field, const char* expected, double got);
+
+/// `message` with each parameter name in backquotes (`min_cell_m`: a letter,
+/// then letters, digits and '_') replaced by what `rename` returns for it,
+/// backquotes included; a name it returns nothing for, and any other text,
+/// stays as it is.
+std::string rename_parameters(std::string_view message,
+                              const std::function<std::optional<std::string>(std::string_view)>& rename);
 
 }  // namespace deepguide

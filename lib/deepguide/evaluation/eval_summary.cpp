@@ -47,7 +47,7 @@ ClaimCheck visibility_claim(const EvaluationRun& run, const RowsByScenario& rows
   const std::string quad = first_of(run.manifest.methods, "quadtree");
   if (vis.empty() || quad.empty()) {
     c.verdict = "not tested";
-    c.evidence.push_back("the run needs a visibility and a quadtree method (e.g. --methods visibility,quadtree)");
+    c.evidence.push_back("the run needs a visibility and a quadtree method among its methods");
     return c;
   }
   std::vector<double> vis_ms, quad_ms, vis_size, quad_size, ratio;
@@ -98,7 +98,7 @@ ClaimCheck turning_claim(const EvaluationRun& run, const RowsByScenario& rows) {
                    std::count(run.manifest.methods.begin(), run.manifest.methods.end(), "dipole");
   if (!has) {
     c.verdict = "not tested";
-    c.evidence.push_back("the run needs the geometric and dipole methods (e.g. --methods geometric,dipole)");
+    c.evidence.push_back("the run needs the geometric and dipole methods among its methods");
     return c;
   }
   std::vector<double> geo, dip;

@@ -169,13 +169,13 @@ std::string progress_line(std::size_t done, std::size_t total, double elapsed_s)
 Shard slurm_array_shard(const char* task_id, const char* task_min, const char* task_count) {
   if (task_id == nullptr || task_count == nullptr) {
     throw InputError(
-        "--shard slurm: expected SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it as a task of a "
+        "`shard` slurm: expected SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it as a task of a "
         "Slurm job array, sbatch --array)");
   }
   const auto whole = [](const char* t, const char* name) {
     const std::string s(t);
     if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) {
-      throw InputError(std::string("--shard slurm: ") + name + ": expected a whole number, got '" + printable(s) + "'");
+      throw InputError(std::string("`shard` slurm: ") + name + ": expected a whole number, got '" + printable(s) + "'");
     }
     return std::stol(s);
   };
@@ -196,13 +196,13 @@ Shard parse_shard(const std::string& text) {
   };
   if (slash == std::string::npos || !whole(text.substr(0, slash), s.index) || !whole(text.substr(slash + 1), s.count) ||
       s.count < 1 || s.count > 100000 || s.index < 1 || s.index > s.count) {
-    throw InputError("--shard: expected K/N with 1 <= K <= N <= 100000 (e.g. 3/8), got '" + printable(text) + "'");
+    throw InputError("`shard`: expected K/N with 1 <= K <= N <= 100000 (e.g. 3/8), got '" + printable(text) + "'");
   }
   return s;
 }
 
 EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, const EvaluateOptions& options) {
-  if (options.methods.empty()) throw InputError("--methods: expected at least one method");
+  if (options.methods.empty()) throw InputError("`methods`: expected at least one method");
   RunManifest manifest;
   manifest.suite = suite.name;
   manifest.suite_source = suite.source;
@@ -212,7 +212,7 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   manifest.timing = options.timing;
   for (const EvalMethod& m : options.methods) {
     if (std::find(manifest.methods.begin(), manifest.methods.end(), m.name) != manifest.methods.end()) {
-      throw InputError("--methods: expected each method once, got '" + m.name + "' twice");
+      throw InputError("`methods`: expected each method once, got '" + m.name + "' twice");
     }
     manifest.methods.push_back(m.name);
   }
@@ -232,21 +232,20 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   const bool earlier = fs::exists(dir / kManifest, ec) || fs::exists(dir / kRows, ec);
   if (earlier && !options.fresh) {
     if (!fs::exists(dir / kManifest, ec)) {
-      throw InputError(out_dir + ": expected run.json beside rows.csv (give --fresh to start over)");
+      throw InputError(out_dir + ": expected run.json beside rows.csv (`fresh` starts over)");
     }
     const RunManifest before = read_manifest(dir / kManifest);
     if (before.suite != manifest.suite || before.scenarios != manifest.scenarios ||
         before.methods != manifest.methods || before.shard != manifest.shard || before.timing != manifest.timing) {
       throw InputError(out_dir + ": holds another run (suite " + before.suite + ", " +
                        std::to_string(before.scenarios) + " scenarios, shard " + std::to_string(before.shard.index) +
-                       "/" + std::to_string(before.shard.count) +
-                       "): give --fresh to discard it, or another -o folder");
+                       "/" + std::to_string(before.shard.count) + "): `fresh` discards it; or run into another folder");
     }
     if (!before.suite_fingerprint.empty() && before.suite_fingerprint != manifest.suite_fingerprint) {
       throw InputError(out_dir + ": holds a run of suite " + before.suite + " with other scenarios (fingerprint " +
                        before.suite_fingerprint + ", now " + manifest.suite_fingerprint +
-                       ": regenerated, edited, or files instead of on demand): give --fresh to discard the old "
-                       "rows, or another -o folder");
+                       ": regenerated, edited, or files instead of on demand): `fresh` discards the old "
+                       "rows; or run into another folder");
     }
     std::size_t dropped = 0;
     // run.json is written first: a kill before rows.csv leaves an empty journal.
@@ -387,7 +386,7 @@ EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, cons
       const std::string name = e.path().filename().string();
       if (name == FolderLock::kFileName) continue;
       throw InputError(out_dir + ": expected a new or empty folder for the merged run, got one holding " +
-                       printable(name) + " (give --overwrite to replace the run in it)");
+                       printable(name) + " (`overwrite` replaces the run in it)");
     }
   }
   EvaluationRun merged;

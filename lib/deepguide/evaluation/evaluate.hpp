@@ -40,7 +40,7 @@ struct Shard {
   int count = 1;  ///< N
   bool operator==(const Shard&) const = default;
 };
-/// "K/N" with 1 <= K <= N <= 100000; InputError naming --shard otherwise.
+/// "K/N" with 1 <= K <= N <= 100000; InputError naming `shard` otherwise.
 Shard parse_shard(const std::string& text);
 /// The shard of a Slurm array task: K = SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1,
 /// N = SLURM_ARRAY_TASK_COUNT (the variables' values; `task_min` may be null:

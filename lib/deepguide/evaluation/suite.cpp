@@ -240,7 +240,7 @@ std::string write_suite(const std::string& dir, const std::string& given_name, c
     throw InputError(dir + ": expected a new folder outside the current one (it would be replaced whole)");
   }
   if (fs::exists(target, ec) && !overwrite) {
-    throw InputError(dir + ": expected a new folder, got one that exists (give --overwrite to replace it)");
+    throw InputError(dir + ": expected a new folder, got one that exists (`overwrite` replaces it)");
   }
   if (!fs::is_directory(target.parent_path(), ec)) {
     throw InputError(dir + ": expected an existing folder '" + target.parent_path().string() + "' to write into");

@@ -41,7 +41,7 @@ ExportFormat parse_export_format(const std::string& name) {
   for (const FormatName& f : formats()) {
     if (name == f.name) return f.format;
   }
-  throw InputError("--format: expected yaml, geojson, gpx, kml, csv, plan, moos or rtz, got '" + printable(name) + "'");
+  throw InputError("`format`: expected yaml, geojson, gpx, kml, csv, plan, moos or rtz, got '" + printable(name) + "'");
 }
 
 ExportFormat export_format_for(const std::string& path) {
@@ -121,7 +121,7 @@ namespace detail {
 void write_atomically(const std::string& path, bool overwrite, const std::function<void(const std::string&)>& write) {
   std::error_code ec;
   if (!overwrite && fs::exists(path, ec)) {
-    throw InputError(path + ": expected a new file, got one that exists (give --overwrite to replace it)");
+    throw InputError(path + ": expected a new file, got one that exists (`overwrite` replaces it)");
   }
   AtomicOutput out(path);
   try {

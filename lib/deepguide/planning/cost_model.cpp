@@ -15,7 +15,7 @@ CostKind parse_cost_kind(const std::string& text) {
   if (text == "length") return CostKind::length;
   if (text == "time") return CostKind::time;
   if (text == "energy") return CostKind::energy;
-  throw InputError("--cost: expected length, time or energy, got '" + text + "'");
+  throw InputError("`cost`: expected length, time or energy, got '" + text + "'");
 }
 
 std::string to_string(CostKind kind) {
@@ -100,27 +100,27 @@ void validate(const CostModel& m) {
                      " and " + general(m.max_speed_mps) + " m/s");
   }
   if (!m.economical && (!positive(m.speed_mps) || m.speed_mps > m.max_speed_mps)) {
-    throw InputError("--speed: expected a speed > 0 and <= the vehicle's maximum " + general(m.max_speed_mps) +
+    throw InputError("`speed`: expected a speed > 0 and <= the vehicle's maximum " + general(m.max_speed_mps) +
                      " m/s, got " + general(m.speed_mps));
   }
   if (!(m.max_current_mps >= 0.0) || !std::isfinite(m.max_current_mps)) {
     throw InputError("current: expected a finite maximum speed >= 0 m/s");
   }
-  if (!std::isfinite(m.depart_s)) throw InputError("--depart: expected a finite departure time");
+  if (!std::isfinite(m.depart_s)) throw InputError("`depart_s`: expected a finite departure time");
   if (!m.steady && (m.depart_s < m.time_first_s || m.depart_s > m.time_last_s)) {
-    throw InputError("--depart: expected a time within the current field's time axis " + format_utc(m.time_first_s) +
+    throw InputError("`depart_s`: expected a time within the current field's time axis " + format_utc(m.time_first_s) +
                      " .. " + format_utc(m.time_last_s) + ", got " + format_utc(m.depart_s));
   }
   if (m.economical && m.kind == CostKind::time) {
     throw InputError(
-        "--speed optimal: expected --cost energy or length (the least-energy speed per leg; the "
-        "fastest route is flown at the maximum speed: give --speed " +
+        "`speed` optimal: expected `cost` energy or length (the least-energy speed per leg; the "
+        "fastest route is flown at the maximum speed: give `speed` " +
         general(m.max_speed_mps) + ")");
   }
   if (m.economical && !m.steady) {
     throw InputError(
-        "--speed optimal: expected a steady current (choosing the speed per leg in a current that changes in time "
-        "is not supported; give a fixed --speed)");
+        "`speed` optimal: expected a steady current (choosing the speed per leg in a current that changes in time "
+        "is not supported; give a fixed `speed`)");
   }
 }
 

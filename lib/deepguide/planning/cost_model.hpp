@@ -82,7 +82,7 @@ void attach_current(CostModel& model, std::shared_ptr<const CurrentField> field,
 
 /// Checks the model (speeds, energy coefficients, departure within the time
 /// axis, economical only in steady currents); throws InputError naming the
-/// option (e.g. "--speed", "hotel_power_w", "--depart").
+/// parameter (e.g. "`speed`", "hotel_power_w", "`depart_s`").
 void validate(const CostModel& model);
 
 /// The edge a -> b leaving at `depart_s`.

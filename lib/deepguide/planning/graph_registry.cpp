@@ -66,7 +66,7 @@ const GraphEntry& graph_entry(const GraphKind& kind) {
   for (const GraphEntry& e : r.entries) {
     if (e.name == kind.name) return e;
   }
-  throw InputError("--graph: expected " + names_of(r.entries) + ", got '" + printable(kind.name) + "'");
+  throw InputError("`graph`: expected " + names_of(r.entries) + ", got '" + printable(kind.name) + "'");
 }
 
 std::vector<GraphEntry> graph_entries() {

@@ -72,7 +72,7 @@ struct GraphEntry {
 /// Adds a graph kind. Throws InputError for an empty name, one with a comma
 /// or colon (evaluate's method syntax), one already taken, or no build function.
 void register_graph(GraphEntry entry);
-/// The entry of `kind`; InputError "--graph: expected visibility, ..., got 'X'" otherwise.
+/// The entry of `kind`; InputError "`graph`: expected visibility, ..., got 'X'" otherwise.
 const GraphEntry& graph_entry(const GraphKind& kind);
 /// Every entry, the built-in ones first, then in the order they were registered.
 std::vector<GraphEntry> graph_entries();

@@ -155,4 +155,17 @@ std::string search_stop_message(SearchStop stop, std::size_t expanded) {
   return "";
 }
 
+PlanResult search_outcome(const SearchResult& found, const std::string& unreachable) {
+  PlanResult result;
+  result.found = found.found;
+  result.cost = found.cost;
+  result.stats.expanded = found.expanded;
+  result.stats.stopped = found.stopped;
+  if (!found.found) {
+    result.message =
+        found.stopped != SearchStop::none ? search_stop_message(found.stopped, found.expanded) : unreachable;
+  }
+  return result;
+}
+
 }  // namespace deepguide

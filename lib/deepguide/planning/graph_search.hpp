@@ -57,4 +57,9 @@ SearchResult shortest_path(const ImplicitGraph& graph, GraphVertex source, Graph
 /// N vertices"): why a graph without a route proves nothing; "" for none.
 std::string search_stop_message(SearchStop stop, std::size_t expanded);
 
+/// A graph's answer from its search: found, cost, the vertices expanded and,
+/// without a route, why (the stop's message, else `unreachable`). The route's
+/// points and the graph's own counts are the caller's to fill in.
+PlanResult search_outcome(const SearchResult& found, const std::string& unreachable);
+
 }  // namespace deepguide

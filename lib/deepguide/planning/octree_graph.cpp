@@ -58,10 +58,11 @@ CellState classify(const WaterVolume& volume, const Vec3& lo, const Vec3& hi, co
 
 void validate(const OctreeOptions& options) {
   if (!(options.min_cell_m > 0.0) || !std::isfinite(options.min_cell_m)) {
-    throw InputError("--min-cell: expected a cell size > 0 m, got " + general(options.min_cell_m));
+    throw InputError("`min_cell_m`: expected a cell size > 0 m, got " + general(options.min_cell_m));
   }
   if (!(options.max_dive_deg > 0.0 && options.max_dive_deg < 90.0)) {
-    throw InputError("--max-dive: expected an angle between 0 and 90 degrees, got " + general(options.max_dive_deg));
+    throw InputError("`max_dive_deg`: expected an angle between 0 and 90 degrees, got " +
+                     general(options.max_dive_deg));
   }
 }
 
@@ -87,7 +88,7 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
   const double height = options.min_cell_m, width = height / std::min(1.0, slope_);
   const double need = std::max(extent.maxCoeff() / width, (bottom - band.min_depth_m) / height);
   if (!(need < std::ldexp(1.0, CellTree<3>::kMaxLevels))) {
-    throw InputError("--min-cell: " + general(options.min_cell_m) + " m cells over this volume need more than " +
+    throw InputError("`min_cell_m`: " + general(options.min_cell_m) + " m cells over this volume need more than " +
                      std::to_string(CellTree<3>::kMaxLevels) + " levels; give a larger cell");
   }
   // Strictly more than the extent: cells are half-open, and a point on the
@@ -98,7 +99,7 @@ OctreeGraph::OctreeGraph(const WaterVolume& volume, const OctreeOptions& options
   std::size_t cells = 0;
   tree_ = std::make_unique<CellTree<3>>(origin, root, depth, [&](const CellTree<3>::Box& box) {
     if (++cells > options.max_cells) {
-      throw InputError("--min-cell: " + general(options.min_cell_m) + " m cells over this volume make more than " +
+      throw InputError("`min_cell_m`: " + general(options.min_cell_m) + " m cells over this volume make more than " +
                        std::to_string(options.max_cells) + " cells; give a larger cell or a smaller volume");
     }
     return classify(volume, box.min, box.max, options.area_max, bottom);

@@ -24,7 +24,7 @@ GraphKind parse_graph_kind(const std::string& text) { return GraphKind{graph_ent
 SearchAlgorithm parse_search(const std::string& text) {
   if (text == "astar") return SearchAlgorithm::astar;
   if (text == "dijkstra") return SearchAlgorithm::dijkstra;
-  throw InputError("--search: expected astar or dijkstra, got '" + text + "'");
+  throw InputError("`search`: expected astar or dijkstra, got '" + text + "'");
 }
 
 std::string to_string(const GraphKind& kind) { return kind.name; }
@@ -69,25 +69,25 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   // 100 km is far beyond any safety margin, and keeps the zones' polygons
   // (corners ~ sqrt(margin / tolerance)) within what can be built.
   if (!std::isfinite(options.margin) || options.margin < 0.0 || options.margin > 1e5) {
-    throw InputError("--margin: expected a safety margin from 0 m to 100 km, got " + general(options.margin));
+    throw InputError("`margin`: expected a safety margin from 0 m to 100 km, got " + general(options.margin));
   }
   if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
-    throw InputError("--tolerance: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
+    throw InputError("`tolerance`: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
   }
   const GraphEntry& entry = graph_entry(options.graph);
   if (entry.can.in_depth) {
-    throw InputError("--graph " + entry.name +
+    throw InputError("`graph` " + entry.name +
                      ": plans in depth (depth_planning.hpp), not among obstacles in the plane");
   }
   const bool weighed = options.cost != nullptr && options.cost->kind != CostKind::length;
   if (weighed) validate(*options.cost);
   if (weighed && !entry.can.weighs_cost) {
-    throw InputError("--cost " + to_string(options.cost->kind) + ": expected --graph " +
+    throw InputError("`cost` " + to_string(options.cost->kind) + ": expected `graph` " +
                      graph_names_text([](const GraphEntry& e) { return e.can.weighs_cost; }) + " (the " + entry.name +
                      " graph prices by length only)");
   }
   if (options.grid.active() && !entry.can.open_water_grid) {
-    throw InputError("--waypoint-grid: expected --graph " +
+    throw InputError("`waypoint_grid`: expected `graph` " +
                      graph_names_text([](const GraphEntry& e) { return e.can.open_water_grid; }) + " (the " +
                      entry.name + " graph has no open-water vertices)");
   }
@@ -96,11 +96,11 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   }
   if (options.turn_radius_m > 0.0 && options.graph == GraphKind::quadtree && !options.quadtree.smooth) {
     throw InputError(
-        "turn radius: expected --graph tangent, visibility or visibility-full, or quadtree with "
-        "--smooth (the quadtree's cell-to-cell steps cannot be rounded)");
+        "turn radius: expected `graph` tangent, visibility or visibility-full, or quadtree with "
+        "`smooth` (the quadtree's cell-to-cell steps cannot be rounded)");
   }
   if (options.turn_radius_m > 0.0 && !entry.can.turn_radius) {
-    throw InputError("turn radius: expected --graph " +
+    throw InputError("turn radius: expected `graph` " +
                      graph_names_text([](const GraphEntry& e) { return e.can.turn_radius; }) + " (the " + entry.name +
                      " graph keeps no turning radius)");
   }
@@ -248,7 +248,7 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
 // The message for a route whose corners cannot be rounded on the radius.
 std::string Planner::unrounded_message(const Vec2& at, const std::string& why) const {
   return "the " + to_string(options_.graph) + " route cannot turn at " + general(options_.turn_radius_m) + " m at " +
-         point_text(at, 1) + ": " + why + " (try --graph tangent)";
+         point_text(at, 1) + ": " + why + " (try `graph` tangent)";
 }
 
 // A polygon graph's route with its corners rounded on the turning radius.

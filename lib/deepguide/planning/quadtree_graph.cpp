@@ -31,7 +31,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
     : field_(&field), options_(options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!(options.min_cell_m > 0.0) || !std::isfinite(options.min_cell_m)) {
-    throw InputError("--min-cell: expected a cell size > 0 m, got " + general(options.min_cell_m));
+    throw InputError("`min_cell_m`: expected a cell size > 0 m, got " + general(options.min_cell_m));
   }
   const Vec2 extent = options.area_max - options.area_min;
   if (!options.area_min.allFinite() || !options.area_max.allFinite() || !(extent.minCoeff() > 0.0)) {
@@ -41,7 +41,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   // doubles first: a tiny cell over a wide area overflows an int).
   const double need = extent.maxCoeff() / options.min_cell_m;
   if (!(need < std::ldexp(1.0, kMaxDepth))) {
-    throw InputError("--min-cell: " + general(options.min_cell_m) + " m over a " + general(extent.maxCoeff()) +
+    throw InputError("`min_cell_m`: " + general(options.min_cell_m) + " m over a " + general(extent.maxCoeff()) +
                      " m area needs more than " + std::to_string(kMaxDepth) + " levels; give a larger cell");
   }
   // Strictly more than the extent: cells are half-open, and a point on the
@@ -52,7 +52,7 @@ QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& 
   const double margin = field.margin();
   const auto classify = [&](const CellTree<2>::Box& box) {
     if (++cells > options.max_cells) {
-      throw InputError("--min-cell: " + general(options.min_cell_m) + " m cells over this area make more than " +
+      throw InputError("`min_cell_m`: " + general(options.min_cell_m) + " m cells over this area make more than " +
                        std::to_string(options.max_cells) + " cells; give a larger cell or a smaller area");
     }
     // The root square reaches past the area on its far sides: cells wholly
@@ -182,18 +182,12 @@ PlanResult QuadtreeGraph::solve(const PlanningProblem& problem, SearchAlgorithm 
   const SearchResult found = shortest_path(graph_, sv, gv, algorithm, h, priced, budget);
   detach();
 
-  PlanResult result;
+  PlanResult result =
+      search_outcome(found, "the goal cannot be reached from the start through the quadtree's free cells");
   result.stats.graph_vertices = n + 2;
   result.stats.graph_edges = edges_ + attached;
-  result.stats.expanded = found.expanded;
-  result.stats.stopped = found.stopped;
   result.stats.build_ms = build_ms_;
-  result.found = found.found;
-  result.cost = found.cost;
   if (!found.found) {
-    result.message = found.stopped != SearchStop::none
-                         ? search_stop_message(found.stopped, found.expanded)
-                         : "the goal cannot be reached from the start through the quadtree's free cells";
     result.stats.query_ms = elapsed_ms(t0);
     return result;
   }

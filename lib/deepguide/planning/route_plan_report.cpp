@@ -38,7 +38,7 @@ CostModel cost_model_of(const RoutePlanRequest& r, const VehicleParams& vehicle,
       m.speed_mps = std::stod(r.speed, &used);
       if (used != r.speed.size()) throw std::invalid_argument("trailing text");
     } catch (const std::exception&) {
-      throw InputError("--speed: expected cruise, optimal or a speed in m/s, got '" + r.speed + "'");
+      throw InputError("`speed`: expected cruise, optimal or a speed in m/s, got '" + r.speed + "'");
     }
   }
   std::shared_ptr<const CurrentField> current = r.current;
@@ -64,30 +64,31 @@ CostModel cost_model_of(const RoutePlanRequest& r, const VehicleParams& vehicle,
 void check_request(const RoutePlanRequest& r) {
   // Headings ask for Dubins ends, which the tangent graph alone plans (planner.hpp).
   const PlanningProblem& p = r.problem;
-  for (const auto& [flag, heading] : {std::pair{"--from-heading", p.start_heading}, {"--to-heading", p.goal_heading}}) {
+  for (const auto& [flag, heading] :
+       {std::pair{"`start_heading`", p.start_heading}, {"`goal_heading`", p.goal_heading}}) {
     if (heading && !std::isfinite(*heading)) throw InputError(std::string(flag) + ": expected a heading in degrees");
   }
   if (p.start_heading || p.goal_heading) {
-    const std::string which = p.start_heading ? "--from-heading" : "--to-heading";
+    const std::string which = p.start_heading ? "`start_heading`" : "`goal_heading`";
     if (r.graph != GraphKind::tangent) {
-      throw InputError(which + ": expected --graph tangent (the graph that plans Dubins ends), got " +
+      throw InputError(which + ": expected `graph` tangent (the graph that plans Dubins ends), got " +
                        to_string(r.graph));
     }
     if (!r.turn_radius_m && r.vehicle.empty()) {
-      throw InputError(which + ": expected --turn-radius or --vehicle (the radius the route turns on)");
+      throw InputError(which + ": expected `turn_radius_m` or `vehicle` (the radius the route turns on)");
     }
   }
   if (r.turn_radius_m && (!std::isfinite(*r.turn_radius_m) || *r.turn_radius_m <= 0.0)) {
-    throw InputError("--turn-radius: expected a radius > 0 m, got " + general(*r.turn_radius_m));
+    throw InputError("`turn_radius_m`: expected a radius > 0 m, got " + general(*r.turn_radius_m));
   }
   if (!r.replan_events.empty() &&
       (r.graph != GraphKind::quadtree || r.cost != CostKind::length || r.smooth || r.problem.escape)) {
     throw InputError(
-        "--replan-events: expected --graph quadtree with --cost length, and neither --smooth nor "
-        "--escape (D* Lite repairs the cell route by length from a start outside every zone)");
+        "`replan_events`: expected `graph` quadtree with `cost` length, and neither `smooth` nor "
+        "`escape` (D* Lite repairs the cell route by length from a start outside every zone)");
   }
   if (r.smooth && r.graph != GraphKind::quadtree) {
-    throw InputError("--smooth: expected --graph quadtree (the other graphs' routes are taut already)");
+    throw InputError("`smooth`: expected `graph` quadtree (the other graphs' routes are taut already)");
   }
 }
 
@@ -98,7 +99,7 @@ void refuse_ends_in_enc_no_go(const EncNoGo& enc, const RoutePlanRequest& r) {
     if (const EncNoGoFeature* f = no_go_feature_at(enc, p, r.margin_m)) {
       throw NoRouteError(std::string("the ") + which + " lies within " + fixed(r.margin_m, 2) + " m of " + f->id +
                          (f->cell.empty() ? "" : " of " + f->cell) + " (" + f->reason + ")" +
-                         (which[0] == 's' ? "; --escape leaves it by the shortest way" : ""));
+                         (which[0] == 's' ? "; `escape` leaves it by the shortest way" : ""));
     }
   };
   if (!r.problem.escape) refuse_inside(r.problem.start, "start");
@@ -323,7 +324,7 @@ std::vector<nlohmann::json> RoutePlanReport::waypoint_properties() const {
 std::vector<std::string> RoutePlanReport::warnings() const {
   if (priced.feasible) return {};
   return {"the current beats the vehicle on part of this " + to_string(request.cost) +
-          " route; plan with --cost time or energy to avoid it"};
+          " route; plan by time or energy to avoid it"};
 }
 
 std::optional<std::string> RoutePlanReport::stop_reason() const {

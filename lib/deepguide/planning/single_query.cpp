@@ -81,7 +81,7 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
     // --min-cell 1e5 became 314 km, every leg safe, the route absurd).
     const double widest = 0.5 * (g - s).norm();
     if (q.min_cell_m > widest && widest > 0.0) {
-      throw InputError("--min-cell: expected at most half the distance from start to goal (" + fixed(widest, 1) +
+      throw InputError("`min_cell_m`: expected at most half the distance from start to goal (" + fixed(widest, 1) +
                        " m), got " + general(q.min_cell_m) + " m: larger cells cannot resolve the water between them");
     }
     if (!((q.area_max - q.area_min).minCoeff() > 0.0)) {

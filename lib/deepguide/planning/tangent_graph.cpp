@@ -225,7 +225,7 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   if (m.pieces.size() > kMaxPieces) {
     throw InputError("the tangent graph would pair " + std::to_string(m.pieces.size()) +
                      " zone pieces (obstacles plus polygon edges), more than it handles (" +
-                     std::to_string(kMaxPieces) + "); use --graph visibility or plan a smaller area");
+                     std::to_string(kMaxPieces) + "); use `graph` visibility or plan a smaller area");
   }
   m.field = std::make_unique<ObstacleField>(local, m.margin, kTouchEps);
   BgMultiPolygon inner;
@@ -733,18 +733,11 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
     return shortest_path(graph, 0, 1, algorithm, h, {}, budget);
   });
 
-  PlanResult result;
+  PlanResult result = search_outcome(found, "the goal cannot be reached from the start without entering a safety zone");
   result.stats.graph_vertices = nodes.size();  // the spare vertices the query did not take do not count
   result.stats.graph_edges = boost::num_edges(graph) / 2;
-  result.stats.expanded = found.expanded;
-  result.stats.stopped = found.stopped;
   result.stats.build_ms = m.build_ms;
-  result.found = found.found;
-  result.cost = found.cost;
   if (!found.found) {
-    result.message = found.stopped != SearchStop::none
-                         ? search_stop_message(found.stopped, found.expanded)
-                         : "the goal cannot be reached from the start without entering a safety zone";
     result.stats.query_ms = elapsed_ms(t0);
     return result;
   }

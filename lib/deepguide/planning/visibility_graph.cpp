@@ -109,7 +109,7 @@ std::vector<Link> pairs_within_horizons(const std::vector<Vec2>& points, const s
   if (open_pairs > kMaxOpenPairs) {
     throw InputError("the safety zones have " + std::to_string(m) +
                      " polygon corners in the focus, too many in open view of each other for the reduced "
-                     "visibility graph; raise --tolerance or plan a smaller area");
+                     "visibility graph; raise `tolerance` or plan a smaller area");
   }
   using Item = std::pair<BgPoint, std::size_t>;
   std::vector<Item> items;
@@ -231,8 +231,8 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
     const bool full = variant_ == VisibilityVariant::full;
     throw InputError("the safety zones have " + std::to_string(n) + " polygon corners, more than the " +
                      (full ? std::string("full") : std::string("reduced")) + " visibility graph handles (" +
-                     std::to_string(max_corners(variant_)) + "); raise --tolerance or plan a smaller area" +
-                     (full ? ", or use the reduced graph (--graph visibility)" : ""));
+                     std::to_string(max_corners(variant_)) + "); raise `tolerance` or plan a smaller area" +
+                     (full ? ", or use the reduced graph (`graph` visibility)" : ""));
   }
   // Lattice points follow the polygon corners in corners_; start and goal take the two slots after all.
   std::vector<std::size_t> lattice_cells;
@@ -448,24 +448,17 @@ PlanResult VisibilityGraph::solve(const PlanningProblem& problem, SearchAlgorith
                          .found;
   }
 
-  PlanResult result;
+  PlanResult result = search_outcome(
+      found, current_blocks ? "on every way to the goal the current is stronger than the vehicle: no feasible route"
+                            : "the goal cannot be reached from the start without entering a safety zone");
   result.stats.graph_vertices = n + 2;
   result.stats.open_water_vertices = lattice_points_;
   result.stats.graph_edges = base_edges_ + attached;
-  result.stats.expanded = found.expanded;
-  result.stats.stopped = found.stopped;
   result.stats.build_ms = build_ms_;
   boost::clear_vertex(sv, graph_);
   boost::clear_vertex(gv, graph_);
-  result.found = found.found;
-  result.cost = found.cost;
   if (found.found) {
     for (GraphVertex v : found.path) result.route.points.push_back(position(v) + origin_);
-  } else {
-    result.message = found.stopped != SearchStop::none ? search_stop_message(found.stopped, found.expanded)
-                     : current_blocks
-                         ? "on every way to the goal the current is stronger than the vehicle: no feasible route"
-                         : "the goal cannot be reached from the start without entering a safety zone";
   }
   result.stats.query_ms = elapsed_ms(t0);
   return result;

@@ -25,18 +25,18 @@ void validate(const WaypointGrid& grid) {
   if (grid.spacing_m == 0.0) return;
   char buf[160];
   if (!(grid.spacing_m > 0.0) || !std::isfinite(grid.spacing_m)) {
-    std::snprintf(buf, sizeof buf, "--waypoint-grid: expected a spacing > 0 m, got %g", grid.spacing_m);
+    std::snprintf(buf, sizeof buf, "`spacing_m`: expected a spacing > 0 m, got %g", grid.spacing_m);
     throw InputError(buf);
   }
   if (!grid.min.allFinite() || !grid.max.allFinite() || grid.max.x() < grid.min.x() || grid.max.y() < grid.min.y()) {
-    throw InputError("--waypoint-grid: expected a finite box with min <= max");
+    throw InputError("`spacing_m`: expected a finite box with min <= max");
   }
   // In doubles first: a tiny spacing over a large box overflows size_t.
   const double points = (std::floor((grid.max.x() - grid.min.x()) / grid.spacing_m) + 1.0) *
                         (std::floor((grid.max.y() - grid.min.y()) / grid.spacing_m) + 1.0);
   if (points > static_cast<double>(WaypointGrid::kMaxPoints)) {
     std::snprintf(buf, sizeof buf,
-                  "--waypoint-grid: a %g m spacing puts %.0f points over the %.0f m x %.0f m search box; expected at "
+                  "`spacing_m`: a %g m spacing puts %.0f points over the %.0f m x %.0f m search box; expected at "
                   "most %zu: give a spacing of at least %.0f m",
                   grid.spacing_m, points, grid.max.x() - grid.min.x(), grid.max.y() - grid.min.y(),
                   WaypointGrid::kMaxPoints,
@@ -52,7 +52,7 @@ WaypointGrid waypoint_grid_for(const Vec2& start, const Vec2& goal, double spaci
   grid.spacing_m = spacing_m;
   if (!std::isfinite(spacing_m) || spacing_m <= 0.0) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "--waypoint-grid: expected a spacing > 0 m, got %g", spacing_m);
+    std::snprintf(buf, sizeof buf, "`spacing_m`: expected a spacing > 0 m, got %g", spacing_m);
     throw InputError(buf);
   }
   const double pad = std::max((goal - start).norm() / 3.0, 2.0 * spacing_m);

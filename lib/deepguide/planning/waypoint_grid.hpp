@@ -32,7 +32,7 @@ struct WaypointGrid {
   Vec2 min{0.0, 0.0};      ///< the box the lattice covers (local frame)
   Vec2 max{0.0, 0.0};
 
-  /// Refused above this many lattice points (InputError naming --waypoint-grid).
+  /// Refused above this many lattice points (InputError naming `spacing_m`).
   static constexpr std::size_t kMaxPoints = 40000;
 
   bool active() const { return spacing_m > 0.0; }

@@ -14,7 +14,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/render/enc_layer.hpp"
 #include "deepguide/render/map_furniture.hpp"
-#include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
+#include "deepguide/render/plot_furniture.hpp"  // draw_figure_title
+#include "deepguide/render/route_scene.hpp"     // kMinImageWidth, kMaxImageWidth
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/chart_info.hpp"
@@ -338,13 +339,7 @@ struct Painter {
     }
   }
 
-  void title(const std::string& text) {
-    const double room = layout.width - 2.0 * kSide * u;
-    double size = 22.0 * u;
-    const double w = canvas.text_width(text, size, true);
-    if (w > room) size *= room / w;
-    canvas.text({kSide * u, 35.0 * u}, text, size, style.text, TextAlign::left, true);
-  }
+  void title(const std::string& text) { draw_figure_title(canvas, text, layout.width, u, style.text, 22.0, 35.0); }
 
   FurnitureColors furniture() const { return {style.text, style.background, style.frame}; }
 
@@ -450,14 +445,14 @@ Rgba depth_band_color(const ChartStyle& style, std::size_t i, std::size_t n) {
 ChartLayout render_chart(const ChartRenderOptions& options, const std::string& path) {
   image_format_for(path);  // the cheapest mistake first
   if (options.width_px < kMinImageWidth || options.width_px > kMaxImageWidth) {
-    throw InputError("--width: expected " + std::to_string(kMinImageWidth) + " to " + std::to_string(kMaxImageWidth) +
-                     " pixels, got " + std::to_string(options.width_px));
+    throw InputError("`width_px`: expected " + std::to_string(kMinImageWidth) + " to " +
+                     std::to_string(kMaxImageWidth) + " pixels, got " + std::to_string(options.width_px));
   }
   if (!std::isnan(options.depth_m) && (!std::isfinite(options.depth_m) || options.depth_m < 0.0)) {
-    throw InputError("--depth: expected an operating depth >= 0 m, got " + format_number(options.depth_m));
+    throw InputError("`depth_m`: expected an operating depth >= 0 m, got " + format_number(options.depth_m));
   }
   if (!std::isfinite(options.clearance_m) || options.clearance_m < 0.0) {
-    throw InputError("--clearance: expected a vertical clearance >= 0 m, got " + format_number(options.clearance_m));
+    throw InputError("`clearance_m`: expected a vertical clearance >= 0 m, got " + format_number(options.clearance_m));
   }
   if (options.charts.empty()) throw InputError("render chart: expected at least one chart file");
 

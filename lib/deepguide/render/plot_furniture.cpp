@@ -28,12 +28,13 @@ void check_figure_width(int width_px) {
   }
 }
 
-void draw_figure_title(Canvas& canvas, const std::string& title, int width_px, double u, const Rgba& color) {
+void draw_figure_title(Canvas& canvas, const std::string& title, int width_px, double u, const Rgba& color,
+                       double size_units, double baseline) {
   constexpr double kSide = 24.0;  // design units
   const double room = width_px - 2.0 * kSide * u;
-  double size = 21.0 * u;
+  double size = size_units * u;
   if (const double w = canvas.text_width(title, size, true); w > room) size *= room / w;
-  canvas.text({kSide * u, 34.0 * u}, title, size, color, TextAlign::left, true);
+  canvas.text({kSide * u, baseline * u}, title, size, color, TextAlign::left, true);
 }
 
 double nice_tick_step(double span, int max_ticks) {

@@ -27,9 +27,11 @@ void check_figure_width(int width_px);
 /// `c`, along the WORLD direction d (unit; y north, so rows flip).
 void add_arrow(std::vector<std::pair<Vec2, Vec2>>& segments, const Vec2& c, const Vec2& d, double length);
 
-/// The figure's title, bold, at the top left of an image width_px wide;
-/// shrunk to fit when long.
-void draw_figure_title(Canvas& canvas, const std::string& title, int width_px, double unit, const Rgba& color);
+/// The figure's title, bold, at the top left of an image width_px wide, its
+/// baseline `baseline` design units down; `size` design units high, shrunk to
+/// fit when long. Maps use a size and baseline one unit larger than plots.
+void draw_figure_title(Canvas& canvas, const std::string& title, int width_px, double unit, const Rgba& color,
+                       double size = 21.0, double baseline = 34.0);
 
 /// A linear axis: the data range [lo, hi] drawn from pixel px_lo to px_hi
 /// (px_hi < px_lo for a y axis, rows grow downwards).

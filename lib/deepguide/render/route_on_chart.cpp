@@ -8,13 +8,7 @@ namespace deepguide {
 
 ChartLayout render_route_on_chart(const RouteOnChart& r, const std::string& path) {
   if (r.route.size() < 2) throw InputError("render: expected a route of at least two waypoints");
-  ChartRenderOptions o;
-  o.charts = r.charts;
-  o.depth_m = r.depth_m;
-  o.clearance_m = r.clearance_m;
-  o.local_crs = r.local_crs;
-  o.title = r.title;
-  o.width_px = r.width_px;
+  ChartRenderOptions o = r.chart;
   WorldBox box;
   for (const Vec2& p : r.route) box.extend(p);
   o.extent = box.padded(std::max(1000.0, 0.2 * std::max(box.width(), box.height())));

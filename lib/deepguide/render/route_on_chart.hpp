@@ -15,13 +15,10 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct RouteOnChart {
-  std::vector<std::string> charts;
-  double depth_m = 0;
-  double clearance_m = 2.0;
-  std::string local_crs;  ///< the planning frame's id: the route's coordinates are in it
+  /// The charts, depth, clearance, frame (local_crs: the route's coordinates
+  /// are in it), title and width; the extent and overlay are the route's.
+  ChartRenderOptions chart;
   std::vector<Vec2> route;
-  std::string title;
-  int width_px = 1200;
 };
 
 /// Writes the figure (.png or .svg). Throws what render_chart throws.

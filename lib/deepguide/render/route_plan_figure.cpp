@@ -41,12 +41,12 @@ void render_route_plan(const RoutePlanReport& report, const std::string& path, b
   const std::string title = route_title(kTitle, report.route, r.margin_m, report.frame);
   if (report.enc_charts) {
     RouteOnChart figure;
-    figure.charts = r.charts;
-    figure.depth_m = r.depth_m;
-    figure.clearance_m = r.vertical_clearance_m;
-    figure.local_crs = report.frame.id();
+    figure.chart.charts = r.charts;
+    figure.chart.depth_m = r.depth_m;
+    figure.chart.clearance_m = r.vertical_clearance_m;
+    figure.chart.local_crs = report.frame.id();
+    figure.chart.title = title;
     figure.route = report.route.points;
-    figure.title = title;
     render_route_on_chart(figure, path);
     return;
   }

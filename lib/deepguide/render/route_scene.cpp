@@ -7,7 +7,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
-#include "deepguide/render/plot_furniture.hpp"  // add_arrow
+#include "deepguide/render/plot_furniture.hpp"  // add_arrow, draw_figure_title
 
 namespace deepguide {
 namespace {
@@ -353,11 +353,7 @@ struct Painter {
 
   void title() {
     const std::string text = scene.title.empty() ? std::string("deepguide route") : scene.title;
-    const double room = layout.width - 2.0 * kSide * u;
-    double size = 22.0 * u;
-    const double w = canvas.text_width(text, size, true);
-    if (w > room) size *= room / w;
-    canvas.text({kSide * u, 35.0 * u}, text, size, style.text, TextAlign::left, true);
+    draw_figure_title(canvas, text, layout.width, u, style.text, 22.0, 35.0);
   }
 
   FurnitureColors furniture() const { return {style.text, style.background, style.frame}; }
@@ -385,14 +381,13 @@ struct Painter {
   void swatch(Swatch kind, double x, double y) {
     const double sw = 30.0 * u;
     const Vec2 mid(x + sw / 2.0, y);
+    const auto small_box = [&](const Rgba& fill) {
+      canvas.fill_rings(
+          {{{x + 4 * u, y - 6 * u}, {x + sw - 4 * u, y - 6 * u}, {x + sw - 4 * u, y + 6 * u}, {x + 4 * u, y + 6 * u}}},
+          fill);
+    };
     switch (kind) {
-      case Swatch::obstacle:
-        canvas.fill_rings({{{x + 4 * u, y - 6 * u},
-                            {x + sw - 4 * u, y - 6 * u},
-                            {x + sw - 4 * u, y + 6 * u},
-                            {x + 4 * u, y + 6 * u}}},
-                          style.obstacle);
-        break;
+      case Swatch::obstacle: small_box(style.obstacle); break;
       case Swatch::zone: {
         const std::vector<Vec2> box{{x, y - 8 * u}, {x + sw, y - 8 * u}, {x + sw, y + 8 * u}, {x, y + 8 * u}};
         canvas.fill_rings({box}, zone_fill());
@@ -409,13 +404,7 @@ struct Painter {
         break;
       case Swatch::start: start_marker(mid); break;
       case Swatch::goal: goal_marker(mid); break;
-      case Swatch::detected:
-        canvas.fill_rings({{{x + 4 * u, y - 6 * u},
-                            {x + sw - 4 * u, y - 6 * u},
-                            {x + sw - 4 * u, y + 6 * u},
-                            {x + 4 * u, y + 6 * u}}},
-                          style.detected);
-        break;
+      case Swatch::detected: small_box(style.detected); break;
       case Swatch::repaired:
         canvas.stroke_polyline({{x, y}, {x + sw, y}}, Stroke{style.repaired, 2.2 * u, {6.0 * u, 4.0 * u}});
         break;

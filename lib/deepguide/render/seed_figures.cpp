@@ -292,7 +292,7 @@ std::string locate_seed_data(const std::vector<std::string>& candidates) {
     if (missing.empty()) return c;
     why += (why.empty() ? "" : "; ") + printable(c, 200) + " lacks " + missing;
   }
-  throw InputError("the bundled data: expected a folder holding data/scenarios and data/missions (--data DIR), got " +
+  throw InputError("the bundled data: expected a folder holding data/scenarios and data/missions (`data_root`), got " +
                    (why.empty() ? std::string("no candidate") : why));
 }
 

@@ -240,9 +240,8 @@ OpenedBathymetry open_bathymetry(const std::string& path, const BathymetryOption
       throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
     info.crs_source = "assumed (option)";
   } else {
-    throw InputError(
-        path +
-        ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
+    throw InputError(path +
+                     ": expected a raster with a CRS, got none; give the CRS it uses (`src_crs`, e.g. EPSG:4326)");
   }
   info.crs = gdal::srs_id(*srs);
   {

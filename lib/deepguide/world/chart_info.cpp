@@ -29,10 +29,10 @@ namespace {
 
 void check_options(const ChartInfoOptions& o) {
   if (!std::isnan(o.depth_m) && (!std::isfinite(o.depth_m) || o.depth_m < 0.0)) {
-    throw InputError("--depth: expected an operating depth >= 0 m, got " + std::to_string(o.depth_m));
+    throw InputError("`depth_m`: expected an operating depth >= 0 m, got " + std::to_string(o.depth_m));
   }
   if (!std::isfinite(o.clearance_m) || o.clearance_m < 0.0) {
-    throw InputError("--clearance: expected a vertical clearance >= 0 m, got " + std::to_string(o.clearance_m));
+    throw InputError("`clearance_m`: expected a vertical clearance >= 0 m, got " + std::to_string(o.clearance_m));
   }
 }
 

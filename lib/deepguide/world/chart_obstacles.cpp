@@ -39,8 +39,8 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
     ObstacleSet set;
     if (kind == ChartKind::raster) {
       if (!has_depth) {
-        throw input_error({path, "", "--depth"},
-                          "the operating depth (m) to tell too-shallow water in a bathymetry raster");
+        throw input_error({path, "", ""},
+                          "`depth_m`, the operating depth (m) to tell too-shallow water in a bathymetry raster");
       }
       NoGoOptions no_go;
       no_go.operating_depth_m = options.depth_m;
@@ -62,9 +62,10 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
   }
   if (!enc.empty()) {
     if (!has_depth) {
-      throw input_error({enc.front(), "", "--depth"},
-                        "an operating depth to judge an S-57 chart's depth areas by (what plans in depth reads "
-                        "cells as a sea floor: enc_sea_floor.hpp)");
+      throw input_error(
+          {enc.front(), "", ""},
+          "`depth_m`, an operating depth to judge an S-57 chart's depth areas by (what plans in depth reads "
+          "cells as a sea floor: enc_sea_floor.hpp)");
     }
     EncNoGoOptions o = options.enc;
     o.operating_depth_m = options.depth_m;

@@ -325,7 +325,7 @@ CurrentField load_multidim(GDALDataset& ds, const std::string& path, const Curre
     srs_source = "assumed (option)";
   } else {
     throw InputError(path + ": expected lon/lat axes (units degrees_east/degrees_north) or a CRS (grid_mapping), got " +
-                     "neither; give the CRS it uses (--src-crs EPSG:32632 on the command line)");
+                     "neither; give the CRS it uses (`src_crs`, e.g. EPSG:32632)");
   }
   if (!xvar || !yvar) {
     throw InputError(path + ": variable '" + printable(f.u_name) +
@@ -498,9 +498,8 @@ CurrentField load_two_band(GDALDataset& ds, const std::string& path, const Curre
       throw InputError(path + ": assumed CRS: expected a CRS OSR knows, got '" + printable(options.assumed_crs) + "'");
     set_crs(f, *srs, "assumed (option)");
   } else {
-    throw InputError(
-        path +
-        ": expected a raster with a CRS, got none; give the CRS it uses (--src-crs EPSG:4326 on the command line)");
+    throw InputError(path +
+                     ": expected a raster with a CRS, got none; give the CRS it uses (`src_crs`, e.g. EPSG:4326)");
   }
   double gt[6];
   if (ds.GetGeoTransform(gt) != CE_None)

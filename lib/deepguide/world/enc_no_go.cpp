@@ -43,9 +43,9 @@ void check_options(const EncNoGoOptions& o) {
   auto need = [](bool ok, const char* field, const char* expected, double got) {
     if (!ok) throw InputError(std::string(field) + ": expected " + expected + ", got " + general(got, 4));
   };
-  need(std::isfinite(o.operating_depth_m) && o.operating_depth_m >= 0.0, "--depth",
+  need(std::isfinite(o.operating_depth_m) && o.operating_depth_m >= 0.0, "`operating_depth_m`",
        "the operating depth (m, >= 0) to tell too-shallow water in an S-57 chart", o.operating_depth_m);
-  need(std::isfinite(o.vertical_clearance_m) && o.vertical_clearance_m >= 0.0, "--vertical-clearance",
+  need(std::isfinite(o.vertical_clearance_m) && o.vertical_clearance_m >= 0.0, "`vertical_clearance_m`",
        "a clearance >= 0 m", o.vertical_clearance_m);
   need(std::isfinite(o.point_radius_m) && o.point_radius_m > 0.0, "point radius", "a radius > 0 m", o.point_radius_m);
   need(std::isfinite(o.line_half_width_m) && o.line_half_width_m > 0.0, "line half width", "a width > 0 m",

@@ -331,7 +331,7 @@ EncCells read_enc_cells(const std::vector<EncCellFiles>& files, const std::optio
       if (!coverage.IsInit()) {
         throw InputError(shown(f.base) +
                          ": expected a coverage area (M_COVR with CATCOV 1) to choose the local frame "
-                         "by, found none; name one with --crs");
+                         "by, found none; name one with `local_crs`");
       }
       use = LocalFrame::utm_for(0.5 * (coverage.MinX + coverage.MaxX), 0.5 * (coverage.MinY + coverage.MaxY));
     }

@@ -128,7 +128,7 @@ ChartRouteCheck check_route_on_chart(const std::vector<Vec2>& route, const EncNo
     throw std::invalid_argument("check_route_on_chart: tolerance must be finite and >= 0");
   }
   if (!std::isfinite(margin_m) || margin_m < 0.0) {
-    throw InputError("--margin: expected a safety margin >= 0 m, got " + std::to_string(margin_m));
+    throw InputError("`margin_m`: expected a safety margin >= 0 m, got " + std::to_string(margin_m));
   }
   if (route.size() < 2) throw InputError("route: expected at least two waypoints, got " + std::to_string(route.size()));
   const Index index(no_go);

@@ -40,7 +40,7 @@ namespace {
 void require_utm_latitude(double lat_deg, const std::string& what) {
   if (lat_deg >= -80.0 && lat_deg <= 84.0) return;
   throw InputError(what + ": latitude " + fixed(lat_deg, 4) +
-                   " lies beyond UTM's 80 S to 84 N; give --crs with a polar projection (EPSG:3413 north, "
+                   " lies beyond UTM's 80 S to 84 N; give `local_crs` with a polar projection (EPSG:3413 north, "
                    "EPSG:3031 south; positions are then x,y in it)");
 }
 
@@ -151,7 +151,7 @@ Eigen::Vector2d parse_lonlat(const std::string& text, const std::string& what) {
   if (!v) throw InputError(what + ": expected lon,lat in degrees, got '" + text + "'");
   if (std::abs(v->y()) > 90.0 || std::abs(v->x()) > 180.0) {
     throw InputError(what + ": expected lon,lat in degrees within +-180,+-90, got '" + text +
-                     "' (give --crs to use projected coordinates)");
+                     "' (give `local_crs` to use projected coordinates)");
   }
   return *v;
 }
@@ -177,8 +177,8 @@ Eigen::Vector2d parse_position(const std::string& text, const std::string& what,
                        fixed(*cm, 0) + ") of the local frame " + frame.id() +
                        ", more than a UTM zone's width (6 degrees), where its distances are off by " +
                        (scale < 1.0 ? fixed(100.0 * scale, 1) + " %" : std::string("more than 100 %")) +
-                       "; plan in shorter parts, or give --crs with a projection that covers the whole route "
-                       "(--from and --to are then x,y in it)");
+                       "; plan in shorter parts, or give `local_crs` with a projection that covers the whole route "
+                       "(`start` and `goal` are then x,y in it)");
     }
   }
   const Eigen::Vector2d xy = frame.from_lonlat(v[0], v[1]);

@@ -23,8 +23,8 @@ class LocalFrame {
   static LocalFrame utm_for(double lon_deg, double lat_deg);
   /// A user-named CRS, e.g. "EPSG:32632", or anything OSR's SetFromUserInput
   /// accepts. It must be projected (metric). Throws InputError naming `what`
-  /// (e.g. "--crs") otherwise.
-  static LocalFrame from_user_crs(const std::string& crs, const std::string& what = "--crs");
+  /// (e.g. "`local_crs`") otherwise.
+  static LocalFrame from_user_crs(const std::string& crs, const std::string& what = "`local_crs`");
 
   /// Geographic WGS 84 longitude/latitude (degrees) -> local (x, y) in metres.
   Eigen::Vector2d from_lonlat(double lon_deg, double lat_deg) const;

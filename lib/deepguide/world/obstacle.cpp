@@ -11,10 +11,11 @@ namespace deepguide {
 
 std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double vertical_clearance_m) {
   if (!std::isfinite(depth_m) || depth_m < 0.0) {
-    throw InputError("--depth: expected an operating depth >= 0 m, got " + std::to_string(depth_m));
+    throw InputError("`depth_m`: expected an operating depth >= 0 m, got " + std::to_string(depth_m));
   }
   if (!std::isfinite(vertical_clearance_m) || vertical_clearance_m < 0.0) {
-    throw InputError("--vertical-clearance: expected a clearance >= 0 m, got " + std::to_string(vertical_clearance_m));
+    throw InputError("`vertical_clearance_m`: expected a clearance >= 0 m, got " +
+                     std::to_string(vertical_clearance_m));
   }
   auto passable = [&](const auto& o) { return o.top_depth_m && *o.top_depth_m > depth_m + vertical_clearance_m; };
   const std::size_t before = obstacles.size();

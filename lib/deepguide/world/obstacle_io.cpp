@@ -126,7 +126,7 @@ Eigen::Vector2d to_geo(OGRCoordinateTransformation& ct, double x, double y, cons
     throw input_error(w, "a position on the Earth (lon/lat within +-180/+-90 after transformation)",
                       "(" + general(x) + ", " + general(y) +
                           "); a file without a CRS is read as lon/lat: "
-                          "give its CRS with --src-crs");
+                          "give its CRS with `src_crs`");
   }
   return {x, y};
 }
@@ -336,7 +336,7 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
   if (!options.source_crs.empty()) {
     assumed = gdal::srs_from_user_input(options.source_crs);
     if (!assumed) {
-      throw InputError("--src-crs: expected a known coordinate reference system such as EPSG:4326, got '" +
+      throw InputError("`src_crs`: expected a known coordinate reference system such as EPSG:4326, got '" +
                        options.source_crs + "'");
     }
   }
@@ -359,7 +359,7 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
       crs_name = gdal::srs_id(*srs);
     } else if (assumed) {
       srs.reset(assumed->Clone());
-      crs_name = gdal::srs_id(*srs) + " (from --src-crs)";
+      crs_name = gdal::srs_id(*srs) + " (from `src_crs`)";
     } else {
       srs = gdal::wgs84();
       crs_name = "none in file, read as EPSG:4326";
@@ -436,7 +436,7 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
   gdal::ensure_registered();
   // Fail on a bad --crs before reading anything.
   std::optional<LocalFrame> frame;
-  if (!options.local_crs.empty()) frame = LocalFrame::from_user_crs(options.local_crs, "--crs");
+  if (!options.local_crs.empty()) frame = LocalFrame::from_user_crs(options.local_crs, "`local_crs`");
 
   std::vector<SourceRead> sources;
   double west = std::numeric_limits<double>::infinity(), east = -west, south = west, north = -west;

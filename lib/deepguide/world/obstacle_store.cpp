@@ -437,7 +437,7 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
                                 const ObstacleStoreOptions& options) {
   gdal::ensure_registered();
   if (!std::isfinite(options.merge_distance_m) || options.merge_distance_m < 0.0) {
-    throw InputError("--merge-distance: expected a distance >= 0 m, got " + std::to_string(options.merge_distance_m));
+    throw InputError("`merge_distance_m`: expected a distance >= 0 m, got " + std::to_string(options.merge_distance_m));
   }
   if (detection_paths.empty()) throw InputError(store_path + ": expected at least one detection file to import");
   Millis import_ms = 0;
@@ -445,7 +445,7 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
     using namespace std::chrono;
     import_ms = duration_cast<seconds>(system_clock::now().time_since_epoch()).count() * 1000;
   } else {
-    import_ms = checked_time(options.import_time, {"--import-time", "", ""});
+    import_ms = checked_time(options.import_time, {"`import_time`", "", ""});
   }
   std::error_code ec;
   for (const std::string& p : detection_paths) {

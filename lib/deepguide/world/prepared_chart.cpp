@@ -135,7 +135,7 @@ void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const E
   }
   std::error_code ec;
   if (!replace && fs::exists(path, ec)) {
-    throw InputError(shown(path) + ": exists; give --overwrite to replace it");
+    throw InputError(shown(path) + ": exists; `overwrite` replaces it");
   }
   AtomicOutput out(path);
   write_obstacles(out.temp_path().string(), no_go.obstacles, no_go.frame);
@@ -232,18 +232,19 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
   for (const std::string& c : charts) prepared += is_prepared_chart(c);
   if (prepared == 0) return enc_no_go(charts, frame, options);
   if (charts.size() > 1) {
-    throw InputError("--chart: expected S-57 cells or one prepared chart, got " + std::to_string(prepared) +
+    throw InputError("`charts`: expected S-57 cells or one prepared chart, got " + std::to_string(prepared) +
                      " prepared chart(s) among " + std::to_string(charts.size()) + " charts");
   }
   if (!std::isfinite(options.operating_depth_m)) {
-    throw InputError("--depth: expected the operating depth (m) the chart was prepared for");
+    throw InputError("`operating_depth_m`: expected the operating depth (m) the chart was prepared for");
   }
   PreparedChartInfo info;
   EncNoGo out =
       read_prepared_chart(charts.front(), frame, options.operating_depth_m, options.vertical_clearance_m, &info);
   if (info.zone_of_confidence != options.zone_of_confidence || info.restricted_areas != options.restricted_areas) {
     auto flags = [](bool zoc, bool restricted) {
-      return std::string(zoc ? "zones of confidence" : "--no-zoc") + (restricted ? " and --restricted" : "");
+      return std::string(zoc ? "zones of confidence" : "no zones of confidence") +
+             (restricted ? " and restricted areas" : "");
     };
     throw InputError(shown(charts.front()) + ": prepared with " +
                      flags(info.zone_of_confidence, info.restricted_areas) + ", expected " +

@@ -137,7 +137,7 @@ S57Summary summarize_s57(const std::string& path, bool apply_updates) {
 }
 
 LocalFrame s57_local_frame(const S57Summary& summary, const S57Options& options) {
-  if (!options.local_crs.empty()) return LocalFrame::from_user_crs(options.local_crs, "--crs");
+  if (!options.local_crs.empty()) return LocalFrame::from_user_crs(options.local_crs, "`local_crs`");
   const LonLatExtent& e = summary.extent;
   return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
 }

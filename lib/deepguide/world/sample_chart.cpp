@@ -293,7 +293,7 @@ void write_hazards(const std::string& path, const fs::path& temp, const SampleCh
 
 SampleChartFiles write_sample_chart(const std::string& dir, const SampleChartOptions& options) {
   if (options.name.empty() || options.name.find_first_of("/\\") != std::string::npos || options.name[0] == '.') {
-    throw InputError("--name: expected a file name without folders, got '" + printable(options.name) + "'");
+    throw InputError("`name`: expected a file name without folders, got '" + printable(options.name) + "'");
   }
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError(dir + ": expected an existing folder to write the chart into");
