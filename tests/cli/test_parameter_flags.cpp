@@ -4,13 +4,14 @@
 // command that reports it accepts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
-#include <sstream>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "test_support.hpp"
@@ -19,10 +20,37 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The string literals of one line of C++, in order ("a \" b" as one; no raw
+// strings in lib/). A line that is a comment has none.
+std::vector<std::string> string_literals(const std::string& line) {
+  std::vector<std::string> out;
+  const std::size_t first = line.find_first_not_of(' ');
+  if (first == std::string::npos || line.compare(first, 2, "//") == 0) return out;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '\'') {  // a character literal: '"' is not a string
+      i = line.find('\'', i + (line[i + 1] == '\\' ? 3 : 2));
+      if (i == std::string::npos) break;
+      continue;
+    }
+    if (line[i] != '"') continue;
+    std::string text;
+    for (++i; i < line.size() && line[i] != '"'; ++i) {
+      if (line[i] == '\\' && i + 1 < line.size()) text += line[i++];
+      text += line[i];
+    }
+    out.push_back(text);
+  }
+  return out;
+}
+
+bool is_name(const std::string& s) {
+  if (s.empty() || !std::isalpha(static_cast<unsigned char>(s.front()))) return false;
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 // Names in backquotes inside the string literals of the library's sources.
 std::map<std::string, std::string> parameters_in_library_messages() {
-  const std::regex literal(R"re("((?:[^"\\]|\\.)*)")re");
-  const std::regex name("`([A-Za-z][A-Za-z0-9_]*)`");
   std::map<std::string, std::string> found;  // name -> where first seen
   for (const auto& entry : fs::recursive_directory_iterator(fs::path(DEEPGUIDE_SOURCE_DIR) / "lib")) {
     const std::string ext = entry.path().extension().string();
@@ -30,13 +58,17 @@ std::map<std::string, std::string> parameters_in_library_messages() {
     std::ifstream in(entry.path());
     std::string line;
     for (int n = 1; std::getline(in, line); ++n) {
-      if (line.find_first_not_of(' ') != std::string::npos && line.substr(line.find_first_not_of(' '), 2) == "//") {
-        continue;
-      }
-      for (std::sregex_iterator l(line.begin(), line.end(), literal), end; l != end; ++l) {
-        const std::string text = (*l)[1];
-        for (std::sregex_iterator m(text.begin(), text.end(), name); m != end; ++m) {
-          found.emplace((*m)[1], entry.path().filename().string() + ":" + std::to_string(n));
+      for (const std::string& text : string_literals(line)) {
+        for (std::size_t open = text.find('`'); open != std::string::npos;) {
+          const std::size_t close = text.find('`', open + 1);
+          if (close == std::string::npos) break;
+          const std::string name = text.substr(open + 1, close - open - 1);
+          if (!is_name(name)) {
+            open = close;
+            continue;
+          }
+          found.emplace(name, entry.path().filename().string() + ":" + std::to_string(n));
+          open = text.find('`', close + 1);
         }
       }
     }
