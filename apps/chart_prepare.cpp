@@ -1,12 +1,8 @@
 // deepguide chart prepare CELL|FOLDER... --depth M [--vertical-clearance M] [--tolerance M] [--restricted]
 //                        [--no-zoc] [--crs EPSG:n] -o AREA.gpkg [--overwrite] [--json]
 
-#include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <optional>
 
 #include "commands.hpp"
 #include "deepguide/world/prepared_chart.hpp"
@@ -44,36 +40,8 @@ void register_chart_prepare(CLI::App& chart) {
   cmd->callback([o] {
     EncNoGoOptions opts = o->enc;
     opts.zone_of_confidence = !o->no_zoc;
-    const auto t0 = std::chrono::steady_clock::now();
-    const EncNoGo no_go = enc_no_go(
-        o->charts, o->crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(o->crs)), opts);
-    write_prepared_chart(o->output, no_go, opts, o->overwrite);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (o->json) {
-      std::cout << nlohmann::json{{"output", o->output},
-                                  {"cells", no_go.cells.size()},
-                                  {"local_crs", no_go.frame.id()},
-                                  {"required_depth_m", no_go.required_depth_m},
-                                  {"no_go_features", no_go.features.size()},
-                                  {"polygons", no_go.obstacles.polygons.size()},
-                                  {"discs", no_go.obstacles.ellipses.size()},
-                                  {"vertices", no_go.vertices},
-                                  {"seconds", seconds}}
-                       .dump(2)
-                << "\n";
-      return;
-    }
-    for (const EncCellSummary& c : no_go.cells) {
-      std::printf("cell             %s  1:%ld, edition %s, update %d\n", c.name.c_str(), c.compilation_scale,
-                  c.edition.c_str(), c.update_number);
-    }
-    std::printf("required depth   %.2f m (%.2f + %.2f clearance)%s\n", no_go.required_depth_m, opts.operating_depth_m,
-                opts.vertical_clearance_m, opts.zone_of_confidence ? ", less each zone of confidence" : "");
-    std::printf("no-go            %zu features; for the planners %zu polygon(s), %zu corners, %zu disc(s)\n",
-                no_go.features.size(), no_go.obstacles.polygons.size(), no_go.vertices,
-                no_go.obstacles.ellipses.size());
-    std::printf("time             %.2f s\n", seconds);
-    std::printf("wrote            %s\n", o->output.c_str());
+    const ChartPreparation done = prepare_chart(o->charts, o->crs, opts, o->output, o->overwrite);
+    std::cout << (o->json ? done.to_json().dump(2) + "\n" : done.to_text());
   });
 }
 

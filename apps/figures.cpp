@@ -7,12 +7,10 @@
 // -> the project's root), and the installed share/deepguide: the first that
 // holds every figure's inputs.
 
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
@@ -64,20 +62,14 @@ void register_figures(CLI::App& app) {
     options.extension = o->format;
     options.width_px = o->width;
     options.only = o->only;
-    nlohmann::json list = nlohmann::json::array();
-    write_seed_figures(options, [&](const WrittenSeedFigure& w) {
-      if (o->json) {
-        list.push_back({{"figure", w.number}, {"file", w.path}, {"summary", w.summary}, {"facts", w.facts}});
-      } else {
-        std::printf("Fig. %-3d %s\n         %s\n", w.number, w.path.c_str(), w.summary.c_str());
-        std::fflush(stdout);
-      }
+    const std::vector<WrittenSeedFigure> written = write_seed_figures(options, [&](const WrittenSeedFigure& w) {
+      if (!o->json) std::cout << to_text(w) << std::flush;
     });
     if (o->json) {
       // Paths need not be UTF-8; JSON must be.
-      std::cout << nlohmann::json{{"data", options.data_root}, {"figures", list}}.dump(
-                       2, ' ', false, nlohmann::json::error_handler_t::replace)
-                << "\n";
+      std::cout
+          << seed_figures_json(options.data_root, written).dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
+          << "\n";
     }
   });
 }

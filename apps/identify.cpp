@@ -50,42 +50,6 @@ Scenario identify_scenario(const IdentifyOptions& o) {
   return scenario;
 }
 
-void print_error(const char* what, const ErrorStats& e) {
-  std::printf("  %-24s RMS %.3f m, max %.3f m\n", what, e.rms, e.max_abs);
-}
-
-void print_summary(const Scenario& sc, const IdentifyResult& r) {
-  const IdentifyStats& s = r.stats;
-  const bool aligning = r.mode == IdentifyMode::align;
-  std::printf("scenario %s, object %s, mode %s\n", printable(sc.name).c_str(),
-              printable(sc.identify->object_id).c_str(), std::string(to_string(r.mode)).c_str());
-  std::printf("  %-24s %s\n", "end", std::string(to_string(r.end)).c_str());
-  if (!s.in_position) {
-    std::printf("  %-24s never\n", "in position");
-  } else {
-    std::printf("  %-24s %.1f s\n", "time to position", s.time_to_position_s);
-    std::printf("  %-24s %.1f s\n", aligning ? "held" : "tracked", s.hold_s);
-    if (s.position_lost > 0) std::printf("  %-24s %d times\n", "left position", s.position_lost);
-    std::printf("  %-24s %.3f m from the object\n", "requested distance", s.requested_distance_m);
-    print_error("distance error", s.distance_error_m);
-    if (aligning) print_error("station-keeping error", s.station_keeping_m);
-    print_error("cross-track error", s.cross_track_m);
-  }
-  if (!aligning) std::printf("  %-24s %.3f\n", "laps", s.laps);
-  std::printf("  %-24s %.3f m%s\n", "min clearance", s.vehicle.min_clearance_m,
-              s.vehicle.collided ? " (COLLIDED)" : "");
-  std::printf("  %-24s %.1f s, %.1f m, %.0f kJ\n", "time, path, energy", s.vehicle.time_s, s.vehicle.path_length_m,
-              s.vehicle.energy_j / 1e3);
-  std::printf("  %-24s %.3f deg/s max, %.3f RMS\n", "turning rate", rad_to_deg(s.vehicle.max_abs_rate),
-              rad_to_deg(s.vehicle.rms_rate));
-  std::printf("  mode switches (%zu; %s at the start)\n", r.switches.size(),
-              std::string(to_string(r.start_phase)).c_str());
-  for (const ModeSwitch& m : r.switches) {
-    std::printf("    %9.1f s  x %10.1f, y %10.1f m  %s -> %s\n", m.time_s, m.position.x(), m.position.y(),
-                std::string(to_string(m.from)).c_str(), std::string(to_string(m.to)).c_str());
-  }
-}
-
 }  // namespace
 
 void register_identify(CLI::App& app) {
@@ -103,8 +67,7 @@ void register_identify(CLI::App& app) {
     if (o->json) {
       std::cout << identification_json(scenario, result).dump(2) << "\n";
     } else {
-      print_summary(scenario, result);
-      std::fflush(stdout);
+      std::cout << identification_text(scenario, result) << std::flush;
     }
     if (!result.failure.empty()) throw ManoeuvreError(o->scenario + ": " + result.failure);
   });

@@ -1,9 +1,7 @@
 // deepguide obstacles import DETECTIONS... --store STORE.gpkg [--merge-distance M] [--json]
 
-#include <cstdio>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "deepguide/world/obstacle_store.hpp"
@@ -38,25 +36,7 @@ void register_obstacles_import(CLI::App& obstacles) {
     options.local_crs = opts->frame.crs;
     options.source_crs = opts->frame.src_crs;
     const ImportSummary s = import_detections(opts->store, opts->detections, options);
-    if (opts->json) {
-      const nlohmann::json j = {{"store", opts->store},
-                                {"created", s.created},
-                                {"detections", s.detections},
-                                {"new_obstacles", s.new_obstacles},
-                                {"merged", s.merged},
-                                {"already_imported", s.already_imported},
-                                {"obstacles_in_store", s.obstacles_in_store},
-                                {"merge_distance_m", opts->merge_distance_m}};
-      std::cout << j.dump(2) << "\n";
-      return;
-    }
-    std::printf("store              %s%s\n", opts->store.c_str(), s.created ? " (created)" : "");
-    std::printf("detections read    %zu\n", s.detections);
-    std::printf("new obstacles      %zu\n", s.new_obstacles);
-    std::printf("merged             %zu (merge distance %g m, or overlapping footprints)\n", s.merged,
-                opts->merge_distance_m);
-    std::printf("already imported   %zu (skipped)\n", s.already_imported);
-    std::printf("obstacles in store %zu\n", s.obstacles_in_store);
+    std::cout << (opts->json ? to_json(s).dump(2) + "\n" : to_text(s));
   });
 }
 

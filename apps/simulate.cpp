@@ -43,21 +43,7 @@ void register_simulate(CLI::App& app) {
     if (o->seed) scenario.sonar.seed = *o->seed;
     const SimulationResult result = simulate(scenario, method, {!o->output.empty()});
     if (!o->output.empty()) write_trajectory_csv(o->output, result.trajectory);
-    const nlohmann::ordered_json j = simulation_json(scenario, result);
-    if (o->json) {
-      std::cout << j.dump(2) << "\n";
-      return;
-    }
-    std::cout << "scenario " << scenario.name << ", method " << o->method << ", seed " << scenario.sonar.seed << "\n";
-    for (const auto& [key, value] : j.items()) {
-      if (key == "scenario" || key == "method" || key == "seed") continue;
-      std::cout << "  " << std::left << std::setw(24) << key << " ";
-      if (value.is_number_float()) {
-        std::cout << std::fixed << std::setprecision(3) << value.get<double>() << std::defaultfloat << "\n";
-      } else {
-        std::cout << (value.is_string() ? value.get<std::string>() : value.dump()) << "\n";
-      }
-    }
+    std::cout << (o->json ? simulation_json(scenario, result).dump(2) + "\n" : simulation_text(scenario, result));
   });
 }
 

@@ -662,6 +662,29 @@ TEST(EncNoGo, SeveralCellsLetTheBetterScaleWin) {
 
 // ------------------------------------------------------------------ prepared charts
 
+// `chart prepare` as a library call: the file it writes is a prepared chart,
+// and its JSON and text say what it holds.
+TEST(PreparedChart, PrepareChartReportsWhatItWrote) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
+  ScratchDir tmp;
+  const std::string gpkg = tmp.file("area.gpkg");
+  const ChartPreparation done = prepare_chart({path}, "", at_depth(3.0), gpkg, false);
+  ASSERT_TRUE(is_prepared_chart(gpkg));
+  const nlohmann::json j = done.to_json();
+  EXPECT_EQ(j["output"], gpkg);
+  EXPECT_EQ(j["cells"], 1);
+  EXPECT_EQ(j["local_crs"], "EPSG:32617");
+  EXPECT_DOUBLE_EQ(j["required_depth_m"].get<double>(), 5.0);
+  EXPECT_EQ(j["polygons"], done.no_go.obstacles.polygons.size());
+  const std::string text = done.to_text();
+  EXPECT_EQ(text.rfind("cell             US5FL4DQ  1:", 0), 0u) << text;
+  EXPECT_NE(text.find("required depth   5.00 m (3.00 + 2.00 clearance)"), std::string::npos) << text;
+  EXPECT_NE(text.find("wrote            " + gpkg + "\n"), std::string::npos) << text;
+  // The output exists now: a second call is refused and leaves it.
+  EXPECT_THROW(prepare_chart({path}, "", at_depth(3.0), gpkg, false), InputError);
+  EXPECT_TRUE(is_prepared_chart(gpkg));
+}
+
 TEST(PreparedChart, RoundTripKeepsTheNoGoAndRefusesAnotherDepth) {
   DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
   ScratchDir tmp;

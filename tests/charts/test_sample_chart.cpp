@@ -16,6 +16,7 @@
 #include <map>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/obstacle_io.hpp"
@@ -240,6 +241,12 @@ TEST(ChartInfo, SampleRaster) {
   // Kiel Bight, lon 10.23-10.27, lat 54.44-54.46.
   EXPECT_NEAR(c.extent.west, 10.232, 0.002);
   EXPECT_NEAR(c.extent.north, 54.4627, 0.002);
+  // What `chart info` prints says the same.
+  const std::string text = to_text(c);
+  EXPECT_EQ(text.rfind(c.path + "  [bathymetry raster, GTiff, EPSG:32632]\n", 0), 0u) << text;
+  EXPECT_NE(text.find("raster           480 x 520 cells of 5 x 5, "), std::string::npos) << text;
+  EXPECT_NE(text.find("depth range      " + printf_text("%.2f .. %.2f m", lo, hi) + "\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("no-go at"), std::string::npos) << "no depth was given: " << text;
 }
 
 TEST(ChartInfo, SampleRasterNoGoAtTenMetres) {

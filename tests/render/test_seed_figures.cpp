@@ -135,6 +135,21 @@ TEST(SeedFigures, EveryFigureIsWrittenWithTheNumbersBehindIt) {
 
 // Fig. 4's track: where the reactive level steered it carries the reactive
 // colour, elsewhere the plan level's; the mark A is where it took over.
+// What `figures` prints of each figure, and its JSON, with a path that is not
+// UTF-8 (JSON must be: the caller dumps with replacement).
+TEST(SeedFigures, TextAndJsonOfWrittenFigures) {
+  const WrittenSeedFigure a{4, "out/fig04.png", "route 1824.2 m", {{"route_m", 1824.18}}};
+  const WrittenSeedFigure b{6, "out/fig\xff.png", "laps 3", {}};
+  EXPECT_EQ(to_text(a), "Fig. 4   out/fig04.png\n         route 1824.2 m\n");
+  const nlohmann::json j = seed_figures_json("/data", {a, b});
+  EXPECT_EQ(j["data"], "/data");
+  ASSERT_EQ(j["figures"].size(), 2u);
+  EXPECT_EQ(j["figures"][0]["figure"], 4);
+  EXPECT_EQ(j["figures"][0]["facts"]["route_m"], 1824.18);
+  EXPECT_EQ(j["figures"][1]["summary"], "laps 3");
+  EXPECT_NO_THROW((void)j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
 TEST(SeedFigures, TheReactivePartOfTheTrackHasItsOwnColour) {
   const LoadedMission l = load_mission(source_file("data/missions/encounter.yaml"));
   const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);

@@ -93,6 +93,24 @@ TEST(IdentificationRun, AligningHoldsTheShadeInCurrentsUpTo1MetrePerSecond) {
   }
 }
 
+// What `identify` prints: the run's end and figures, and every mode switch
+// the JSON lists, one a line.
+TEST(IdentificationRun, TextSaysWhatTheJsonSays) {
+  const Scenario sc = identify_scenario(IdentifyMode::align, kWreck, {-250.0, 40.0}, current_towards(0.5, 10.0));
+  const IdentifyResult r = simulate_identification(sc);
+  const std::string text = identification_text(sc, r);
+  const auto j = identification_json(sc, r);
+  EXPECT_EQ(text.rfind("scenario " + sc.name + ", object " + sc.identify->object_id + ", mode align\n", 0), 0u) << text;
+  EXPECT_NE(text.find("  end                      held\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  mode switches (" + std::to_string(r.switches.size()) + "; "), std::string::npos) << text;
+  ASSERT_FALSE(r.switches.empty());
+  EXPECT_EQ(j["mode_switches"].size(), r.switches.size());
+  const std::size_t after = text.find("  mode switches");
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.begin() + static_cast<std::ptrdiff_t>(after), text.end(), '\n')),
+            r.switches.size() + 1)
+      << text;
+}
+
 TEST(IdentificationRun, AligningKeepsClearOfOtherObstaclesOnTheWayRound) {
   // A rock on the way from the start to the shade (the current sets north).
   Scenario sc = identify_scenario(IdentifyMode::align, kWreck, {-250.0, 40.0}, current_towards(0.5, 10.0));

@@ -220,6 +220,22 @@ TEST(Simulation, OpenWaterGoesStraightToTheTarget) {
   }
 }
 
+// What `simulate` prints is the JSON's values, one a line: the text and the
+// JSON come from one run and say the same.
+TEST(Simulation, TextSaysWhatTheJsonSays) {
+  const Scenario sc = exact_scenario({10, 10}, {12, 10}, {});
+  const SimulationResult r = simulate(sc, ReactiveMethod::geometric);
+  const std::string text = simulation_text(sc, r);
+  const auto j = simulation_json(sc, r);
+  EXPECT_EQ(text.rfind("scenario " + sc.name + ", method geometric, seed " + std::to_string(sc.sonar.seed) + "\n", 0),
+            0u)
+      << text;
+  EXPECT_NE(text.find("  end                      reached\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  time_s                   0.000\n"), std::string::npos) << text;
+  // One line per value but the three in the first line.
+  EXPECT_EQ(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')), j.size() - 3 + 1) << text;
+}
+
 TEST(Simulation, StartOnTheTargetEndsAtOnce) {
   const SimulationResult r = simulate(exact_scenario({10, 10}, {12, 10}, {}), ReactiveMethod::geometric);
   EXPECT_EQ(r.end, SimulationEnd::reached);

@@ -5,11 +5,14 @@
 
 #include <boost/geometry/algorithms/area.hpp>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/obstacle_summary.hpp"
 #include "test_support.hpp"
 
 using namespace deepguide;
@@ -294,6 +297,15 @@ TEST(ObstacleRead, BundledSampleHasSixEllipsesAndOneArea) {
   EXPECT_EQ(c3.footprint.b, 8.0);
   EXPECT_EQ(*c3.top_depth_m, 12.0);
   EXPECT_NEAR(l.frame.local_to_heading(c3.footprint.theta, c3.footprint.centre), 115.0, 1e-9);
+  // What `obstacles info` prints, from the same summary as its JSON.
+  const ObstacleSummary s = summarize(l);
+  const nlohmann::json j = to_json(s);
+  EXPECT_EQ(j["count"], 7);
+  const std::string text = to_text(s);
+  EXPECT_NE(text.find("count            7 (6 elliptical cylinder(s), 1 polygon(s))\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("local frame      " + s.local_crs_id + " ("), std::string::npos) << text;
+  EXPECT_NE(text.find(printf_text("semi-major axis  min %.2f m, ", s.semi_major_m.min)), std::string::npos) << text;
+  EXPECT_NE(text.find("elliptical cylinder(s), 1 polygon(s)\n"), std::string::npos) << text;
 }
 
 TEST(ObstacleWrite, EmptySetWritesAValidEmptyFile) {

@@ -138,6 +138,16 @@ TEST(ObstacleStore, NewStoreFromOneMission) {
   EXPECT_EQ(s.merged, 0u);
   EXPECT_EQ(s.already_imported, 0u);
   EXPECT_EQ(s.obstacles_in_store, 4u);
+  // What `obstacles import` prints, as JSON and as text.
+  const nlohmann::json j = to_json(s);
+  EXPECT_EQ(j["store"], store);
+  EXPECT_EQ(j["created"], true);
+  EXPECT_EQ(j["new_obstacles"], 4);
+  EXPECT_EQ(j["merge_distance_m"], utm_options().merge_distance_m);
+  const std::string text = to_text(s);
+  EXPECT_EQ(text.rfind("store              " + store + " (created)\n", 0), 0u) << text;
+  EXPECT_NE(text.find("new obstacles      4\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("obstacles in store 4\n"), std::string::npos) << text;
 
   const ObstacleStore st = read_obstacle_store(store, "EPSG:32632");
   ASSERT_EQ(st.obstacles.size(), 4u);

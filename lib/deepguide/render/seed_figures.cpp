@@ -371,4 +371,16 @@ std::vector<WrittenSeedFigure> write_seed_figures(const SeedFigureOptions& optio
   return written;
 }
 
+std::string to_text(const WrittenSeedFigure& w) {
+  return printf_text("Fig. %-3d %s\n         %s\n", w.number, w.path.c_str(), w.summary.c_str());
+}
+
+nlohmann::json seed_figures_json(const std::string& data_root, const std::vector<WrittenSeedFigure>& figures) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const WrittenSeedFigure& w : figures) {
+    list.push_back({{"figure", w.number}, {"file", w.path}, {"summary", w.summary}, {"facts", w.facts}});
+  }
+  return {{"data", data_root}, {"figures", list}};
+}
+
 }  // namespace deepguide

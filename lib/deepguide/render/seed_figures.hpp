@@ -35,6 +35,7 @@
 
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -81,5 +82,10 @@ std::string locate_seed_data(const std::vector<std::string>& candidates);
 /// figure of this call is left, nor the output folder if the call made it.
 std::vector<WrittenSeedFigure> write_seed_figures(const SeedFigureOptions& options,
                                                   const std::function<void(const WrittenSeedFigure&)>& on_written = {});
+
+/// What `figures` prints of each figure: "Fig. N  PATH" and its summary below.
+std::string to_text(const WrittenSeedFigure& figure);
+/// {"data": data_root, "figures": [{figure, file, summary, facts}, ...]}.
+nlohmann::json seed_figures_json(const std::string& data_root, const std::vector<WrittenSeedFigure>& figures);
 
 }  // namespace deepguide

@@ -7,6 +7,7 @@
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 
 namespace deepguide {
 namespace {
@@ -152,6 +153,62 @@ nlohmann::ordered_json identification_json(const Scenario& scenario, const Ident
       {"mode_switches", switches},
   };
   return j;
+}
+
+namespace {
+
+std::string error_text(const char* what, const ErrorStats& e) {
+  return printf_text("  %-24s RMS %.3f m, max %.3f m\n", what, e.rms, e.max_abs);
+}
+
+}  // namespace
+
+std::string simulation_text(const Scenario& scenario, const SimulationResult& result) {
+  const nlohmann::ordered_json j = simulation_json(scenario, result);
+  std::string t = "scenario " + scenario.name + ", method " + j.value("method", std::string()) + ", seed " +
+                  std::to_string(scenario.sonar.seed) + "\n";
+  for (const auto& [key, value] : j.items()) {
+    if (key == "scenario" || key == "method" || key == "seed") continue;
+    const std::string shown = value.is_number_float() ? printf_text("%.3f", value.get<double>())
+                              : value.is_string()     ? value.get<std::string>()
+                                                      : value.dump();
+    t += printf_text("  %-24s %s\n", key.c_str(), shown.c_str());
+  }
+  return t;
+}
+
+std::string identification_text(const Scenario& sc, const IdentifyResult& r) {
+  std::string t;
+  const IdentifyStats& s = r.stats;
+  const bool aligning = r.mode == IdentifyMode::align;
+  t += printf_text("scenario %s, object %s, mode %s\n", printable(sc.name).c_str(),
+                   printable(sc.identify->object_id).c_str(), std::string(to_string(r.mode)).c_str());
+  t += printf_text("  %-24s %s\n", "end", std::string(to_string(r.end)).c_str());
+  if (!s.in_position) {
+    t += printf_text("  %-24s never\n", "in position");
+  } else {
+    t += printf_text("  %-24s %.1f s\n", "time to position", s.time_to_position_s);
+    t += printf_text("  %-24s %.1f s\n", aligning ? "held" : "tracked", s.hold_s);
+    if (s.position_lost > 0) t += printf_text("  %-24s %d times\n", "left position", s.position_lost);
+    t += printf_text("  %-24s %.3f m from the object\n", "requested distance", s.requested_distance_m);
+    t += error_text("distance error", s.distance_error_m);
+    if (aligning) t += error_text("station-keeping error", s.station_keeping_m);
+    t += error_text("cross-track error", s.cross_track_m);
+  }
+  if (!aligning) t += printf_text("  %-24s %.3f\n", "laps", s.laps);
+  t += printf_text("  %-24s %.3f m%s\n", "min clearance", s.vehicle.min_clearance_m,
+                   s.vehicle.collided ? " (COLLIDED)" : "");
+  t += printf_text("  %-24s %.1f s, %.1f m, %.0f kJ\n", "time, path, energy", s.vehicle.time_s, s.vehicle.path_length_m,
+                   s.vehicle.energy_j / 1e3);
+  t += printf_text("  %-24s %.3f deg/s max, %.3f RMS\n", "turning rate", rad_to_deg(s.vehicle.max_abs_rate),
+                   rad_to_deg(s.vehicle.rms_rate));
+  t += printf_text("  mode switches (%zu; %s at the start)\n", r.switches.size(),
+                   std::string(to_string(r.start_phase)).c_str());
+  for (const ModeSwitch& m : r.switches) {
+    t += printf_text("    %9.1f s  x %10.1f, y %10.1f m  %s -> %s\n", m.time_s, m.position.x(), m.position.y(),
+                     std::string(to_string(m.from)).c_str(), std::string(to_string(m.to)).c_str());
+  }
+  return t;
 }
 
 }  // namespace deepguide

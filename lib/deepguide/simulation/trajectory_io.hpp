@@ -41,6 +41,9 @@ void write_trajectory_csv(const std::string& path, std::span<const TrajectorySam
 
 /// The run's statistics as JSON (header above), keys in a fixed order.
 nlohmann::ordered_json simulation_json(const Scenario& scenario, const SimulationResult& result);
+/// What `simulate` prints: the scenario, method and seed, then each of the
+/// JSON's values on a line (numbers to 3 decimals).
+std::string simulation_text(const Scenario& scenario, const SimulationResult& result);
 
 /// The identification run's CSV text (header above), and the same written atomically.
 std::string identification_csv(std::span<const IdentifySample> trajectory);
@@ -49,5 +52,8 @@ void write_identification_csv(const std::string& path, std::span<const IdentifyS
 /// The identification run's statistics and mode switches as JSON: errors as
 /// {rms, max} in metres, null where the mode has no such measure.
 nlohmann::ordered_json identification_json(const Scenario& scenario, const IdentifyResult& result);
+/// What `identify` prints: the end, time to position, hold, the errors, the
+/// vehicle's clearance, time, path and energy, and each mode switch.
+std::string identification_text(const Scenario& scenario, const IdentifyResult& result);
 
 }  // namespace deepguide

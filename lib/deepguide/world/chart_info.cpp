@@ -340,4 +340,74 @@ nlohmann::json to_json(const ChartInfo& info) {
   return j;
 }
 
+namespace {
+
+std::string range(double lo, double hi) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return "-";
+  return printf_text("%.2f .. %.2f m", lo, hi);
+}
+
+}  // namespace
+
+std::string to_text(const ChartInfo& c) {
+  std::string t;
+  t += printf_text("%s  [%s, %s, %s]\n", c.path.c_str(), to_string(c.kind), c.driver.c_str(), c.crs.c_str());
+  for (const ChartLayer& l : c.layers) {
+    t += printf_text("  layer          %-14s %zu %s%s%s\n", l.name.c_str(), l.features,
+                     c.kind == ChartKind::raster ? "cells" : "feature(s)", l.detail.empty() ? "" : ", ",
+                     l.detail.c_str());
+  }
+  if (std::isfinite(c.extent.west)) {
+    t += printf_text("extent           lon %.6f .. %.6f, lat %.6f .. %.6f\n", c.extent.west, c.extent.east,
+                     c.extent.south, c.extent.north);
+    t += printf_text("                 %.1f m x %.1f m (east x north, %s)\n", c.width_m, c.height_m,
+                     c.local_crs.c_str());
+  }
+  if (c.kind == ChartKind::raster) {
+    t += printf_text("raster           %d x %d cells of %g x %g, %.1f %% valid", c.raster_width, c.raster_height,
+                     c.cell_x_m, std::abs(c.cell_y_m), 100.0 * c.valid_fraction);
+    if (c.has_nodata) t += printf_text(", NoData %g", c.nodata);
+    t += printf_text("\nvertical         %s\n", c.vertical_sense.c_str());
+  }
+  t += printf_text("depth range      %s%s\n", range(c.min_depth_m, c.max_depth_m).c_str(),
+                   c.kind == ChartKind::vector ? " (hazard tops)" : "");
+  t += printf_text("hazards          %zu", c.hazards);
+  if (c.kind == ChartKind::s57) t += printf_text(" (+ %zu land area feature(s))", c.land_features);
+  t += "\n";
+  if (c.kind == ChartKind::s57) {
+    t += printf_text("zones of conf.   ");
+    if (c.zoc_areas.empty()) t += printf_text("none (M_QUAL absent: depths and positions taken as unassessed)");
+    const char* sep = "";
+    for (const auto& [zoc, n] : c.zoc_areas) {
+      t += printf_text("%sCATZOC %s: %zu area(s)", sep, zoc.c_str(), n);
+      sep = ", ";
+    }
+    t += "\n";
+  }
+  if (c.no_go) {
+    const NoGoSummary& n = *c.no_go;
+    t += printf_text("no-go at %g m    %.0f m2 (clearance %g m), %zu polygon(s)", n.depth_m, n.area_m2, n.clearance_m,
+                     n.polygons);
+    if (c.kind == ChartKind::raster) {
+      t += printf_text(
+          ", %zu of %zu cells (%.1f %%)", n.no_go_cells, n.total_cells,
+          n.total_cells > 0 ? 100.0 * static_cast<double>(n.no_go_cells) / static_cast<double>(n.total_cells) : 0.0);
+    } else {
+      t += printf_text(", %zu %s passed over", n.hazards_passable,
+                       c.kind == ChartKind::s57 ? "feature(s)" : "hazard(s)");
+    }
+    t += "\n";
+    if (!n.no_go_by_class.empty()) {
+      t += printf_text("no-go by class   ");
+      const char* sep = "";
+      for (const auto& [cls, k] : n.no_go_by_class) {
+        t += printf_text("%s%s %zu", sep, cls.c_str(), k);
+        sep = ", ";
+      }
+      t += printf_text(" (%zu polygon corners for the planners)\n", n.vertices);
+    }
+  }
+  return t;
+}
+
 }  // namespace deepguide

@@ -102,5 +102,8 @@ ChartKind chart_kind(const std::string& path);
 ChartInfo chart_info(const std::string& path, const ChartInfoOptions& options = {});
 
 nlohmann::json to_json(const ChartInfo& info);
+/// What `chart info` prints for one file: a line per layer, extent, depths,
+/// hazards, zones of confidence and the no-go area.
+std::string to_text(const ChartInfo& info);
 
 }  // namespace deepguide

@@ -459,6 +459,8 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
   read.extra_fields = kExtraFields;
 
   ImportSummary summary;
+  summary.store = store_path;
+  summary.merge_distance_m = options.merge_distance_m;
   if (!fs::exists(store_path, ec)) {
     // The store is a GeoPackage: a new one named .geojson (or anything but
     // .gpkg) would be a GeoPackage that every other tool misreads.
@@ -611,6 +613,28 @@ ImportSummary import_detections(const std::string& store_path, const std::vector
   }
   summary.obstacles_in_store = static_cast<std::size_t>(obstacle_layer->GetFeatureCount());
   return summary;
+}
+
+nlohmann::json to_json(const ImportSummary& s) {
+  return {{"store", s.store},
+          {"created", s.created},
+          {"detections", s.detections},
+          {"new_obstacles", s.new_obstacles},
+          {"merged", s.merged},
+          {"already_imported", s.already_imported},
+          {"obstacles_in_store", s.obstacles_in_store},
+          {"merge_distance_m", s.merge_distance_m}};
+}
+
+std::string to_text(const ImportSummary& s) {
+  std::string t = printf_text("store              %s%s\n", s.store.c_str(), s.created ? " (created)" : "");
+  t += printf_text("detections read    %zu\n", s.detections);
+  t += printf_text("new obstacles      %zu\n", s.new_obstacles);
+  t += printf_text("merged             %zu (merge distance %g m, or overlapping footprints)\n", s.merged,
+                   s.merge_distance_m);
+  t += printf_text("already imported   %zu (skipped)\n", s.already_imported);
+  t += printf_text("obstacles in store %zu\n", s.obstacles_in_store);
+  return t;
 }
 
 }  // namespace deepguide

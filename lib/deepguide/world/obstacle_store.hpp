@@ -46,6 +46,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,8 @@ struct ObstacleStore {
 ObstacleStore read_obstacle_store(const std::string& path, const std::string& local_crs = {});
 
 struct ImportSummary {
+  std::string store;                 ///< the store's path
+  double merge_distance_m = 0.0;     ///< as imported
   bool created = false;              ///< the store did not exist before
   std::size_t detections = 0;        ///< Point detections read from the files
   std::size_t new_obstacles = 0;     ///< detections that started a new stored obstacle
@@ -114,6 +117,10 @@ struct ImportSummary {
 /// as it was before.
 ImportSummary import_detections(const std::string& store_path, const std::vector<std::string>& detection_paths,
                                 const ObstacleStoreOptions& options = {});
+
+/// What `obstacles import` prints: the counts above, as JSON or as text.
+nlohmann::json to_json(const ImportSummary& s);
+std::string to_text(const ImportSummary& s);
 
 /// An ISO 8601 date and time with a zone (Z or +-HH:MM) -> UTC text
 /// "YYYY-MM-DDTHH:MM:SS[.mmm]Z". Throws InputError at `where` otherwise.

@@ -5,6 +5,8 @@
 #include <boost/geometry/algorithms/envelope.hpp>
 #include <cmath>
 
+#include "deepguide/core/format.hpp"
+
 namespace deepguide {
 
 void RangeStats::add(double v) {
@@ -106,6 +108,36 @@ nlohmann::json to_json(const ObstacleSummary& s) {
                    {"polygons", info.polygons}});
   }
   return j;
+}
+
+namespace {
+
+std::string stats_line(const RangeStats& r, const char* unit) {
+  if (r.n == 0) return "-";
+  return printf_text("min %.2f %s, mean %.2f %s, max %.2f %s", r.min, unit, r.mean, unit, r.max, unit);
+}
+
+}  // namespace
+
+std::string to_text(const ObstacleSummary& s) {
+  std::string t;
+  for (const auto& src : s.sources) {
+    t += src.path + "  [" + src.driver + ", " + src.crs + "]  " + std::to_string(src.ellipses) +
+         " elliptical cylinder(s), " + std::to_string(src.polygons) + " polygon(s)\n";
+  }
+  t += printf_text("count            %zu (%zu elliptical cylinder(s), %zu polygon(s))\n", s.count, s.ellipses,
+                   s.polygons);
+  t += printf_text("local frame      %s (%s)\n", s.local_crs_id.c_str(), s.local_crs_name.c_str());
+  if (s.has_extent) {
+    t += printf_text("extent           lon %.6f .. %.6f, lat %.6f .. %.6f\n", s.west, s.east, s.south, s.north);
+    t += printf_text("                 %.1f m x %.1f m (east x north)\n", s.max_x - s.min_x, s.max_y - s.min_y);
+  }
+  t += "semi-major axis  " + stats_line(s.semi_major_m, "m") + "\n";
+  t += "semi-minor axis  " + stats_line(s.semi_minor_m, "m") + "\n";
+  t += "footprint area   " + stats_line(s.footprint_area_m2, "m2") + "\n";
+  t += printf_text("vertical         %zu height above sea floor, %zu top depth, %zu whole water column\n",
+                   s.with_height, s.with_top_depth, s.full_column);
+  return t;
 }
 
 }  // namespace deepguide

@@ -32,5 +32,8 @@ struct ObstacleSummary {
 
 ObstacleSummary summarize(const LoadedObstacles& loaded);
 nlohmann::json to_json(const ObstacleSummary& s);
+/// What `obstacles info` prints: each source, the count, frame, extent, sizes
+/// and how the obstacles stand in the water column.
+std::string to_text(const ObstacleSummary& s);
 
 }  // namespace deepguide

@@ -3,6 +3,7 @@
 #include <ogrsf_frmts.h>
 
 #include <boost/geometry/algorithms/correct.hpp>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 
@@ -252,6 +253,48 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
                      ": prepare it again with these options");
   }
   return out;
+}
+
+ChartPreparation prepare_chart(const std::vector<std::string>& charts, const std::string& local_crs,
+                               const EncNoGoOptions& options, const std::string& output, bool overwrite) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ChartPreparation p{
+      output,
+      enc_no_go(charts, local_crs.empty() ? std::nullopt : std::optional(LocalFrame::from_user_crs(local_crs)),
+                options),
+      options};
+  write_prepared_chart(output, p.no_go, options, overwrite);
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return p;
+}
+
+nlohmann::json ChartPreparation::to_json() const {
+  return {{"output", output},
+          {"cells", no_go.cells.size()},
+          {"local_crs", no_go.frame.id()},
+          {"required_depth_m", no_go.required_depth_m},
+          {"no_go_features", no_go.features.size()},
+          {"polygons", no_go.obstacles.polygons.size()},
+          {"discs", no_go.obstacles.ellipses.size()},
+          {"vertices", no_go.vertices},
+          {"seconds", seconds}};
+}
+
+std::string ChartPreparation::to_text() const {
+  std::string t;
+  for (const EncCellSummary& c : no_go.cells) {
+    t += printf_text("cell             %s  1:%ld, edition %s, update %d\n", c.name.c_str(), c.compilation_scale,
+                     c.edition.c_str(), c.update_number);
+  }
+  t += printf_text("required depth   %.2f m (%.2f + %.2f clearance)%s\n", no_go.required_depth_m,
+                   options.operating_depth_m, options.vertical_clearance_m,
+                   options.zone_of_confidence ? ", less each zone of confidence" : "");
+  t += printf_text("no-go            %zu features; for the planners %zu polygon(s), %zu corners, %zu disc(s)\n",
+                   no_go.features.size(), no_go.obstacles.polygons.size(), no_go.vertices,
+                   no_go.obstacles.ellipses.size());
+  t += printf_text("time             %.2f s\n", seconds);
+  t += printf_text("wrote            %s\n", output.c_str());
+  return t;
 }
 
 }  // namespace deepguide

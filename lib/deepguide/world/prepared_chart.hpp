@@ -15,6 +15,7 @@
 //    version. A chart is used only at the depth and clearance it was
 //    prepared for: anything else is an error naming both.
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,24 @@ bool is_prepared_chart(const std::string& path);
 /// Writes the no-go atomically (a failed write leaves no file; an existing
 /// file is replaced only with `replace`). Throws InputError naming the file.
 void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace);
+
+/// What `chart prepare` did: the cells judged, the no-go written and how
+/// long both took.
+struct ChartPreparation {
+  std::string output;
+  EncNoGo no_go;
+  EncNoGoOptions options;
+  double seconds = 0.0;
+
+  nlohmann::json to_json() const;
+  std::string to_text() const;
+};
+
+/// Judges `charts` (cells and folders of cells) at the options' depth, in
+/// `local_crs` (empty: the first cell's UTM zone), and writes the prepared
+/// chart to `output` (write_prepared_chart).
+ChartPreparation prepare_chart(const std::vector<std::string>& charts, const std::string& local_crs,
+                               const EncNoGoOptions& options, const std::string& output, bool overwrite);
 
 /// Reads a prepared chart into `frame` (or the frame it was prepared in) for
 /// `depth_m` and `vertical_clearance_m`; throws InputError naming the file
