@@ -1,7 +1,6 @@
 // deepguide chart info FILE... [--depth M] [--clearance M] [--crs EPSG:n] [--src-crs CRS] [--json]
 
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 

@@ -56,7 +56,7 @@ struct ProgressBar {
   // A warning on its own line, the bar redrawn after it.
   void warn(const std::string& line) {
     if (active) std::fprintf(stderr, "\r\033[K");
-    std::fprintf(stderr, "deepguide: warning: %s\n", line.c_str());
+    std::fprintf(stderr, "deepguide: warning: %s\n", rename_parameters(line, flag_of_parameter).c_str());
   }
 };
 
@@ -66,7 +66,8 @@ void report(const EvaluationRun& run, const std::string& out_dir, const Evaluate
   const std::string skipped = skipped_line(run);
   if (skipped.empty()) return;
   if (!o.allow_skips) throw PartialError(skipped);
-  std::cerr << "deepguide: warning: " << skipped << " (listed in summary.md; exit 0 with --allow-skips)\n";
+  std::cerr << "deepguide: warning: " << rename_parameters(skipped, flag_of_parameter)
+            << " (listed in summary.md; exit 0 with --allow-skips)\n";
 }
 
 }  // namespace

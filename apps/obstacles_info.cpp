@@ -1,6 +1,5 @@
 // deepguide obstacles info FILE... [--json]
 
-#include <cstdio>
 #include <iostream>
 #include <memory>
 

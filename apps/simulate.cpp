@@ -3,9 +3,7 @@
 // results); 1 for a bad scenario, an unknown method or an unwritable output;
 // 2 for usage.
 
-#include <cmath>
 #include <cstdint>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>

@@ -1,7 +1,8 @@
 // The library names its parameters in messages (`min_cell_m`); the command
 // line shows each as the flag that sets it (--min-cell). Every name a library
-// message uses has a flag, but for the few no flag sets, and a flag the
-// command that reports it accepts.
+// message uses has a flag in the table, but for the few no flag sets. (Which
+// command accepts that flag is not checked here: a name raised from a file,
+// such as a mission's, shows the flag of the command that plans alone.)
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -34,6 +34,9 @@ TEST(RenameParameters, EverythingElseStaysAsItIs) {
   EXPECT_EQ(rename_parameters("run `deepguide evaluate` on it", as_flag), "run `deepguide evaluate` on it");
   EXPECT_EQ(rename_parameters("`1graph` and `` and `graph", as_flag), "`1graph` and `` and `graph");
   EXPECT_EQ(rename_parameters("a `b c` `graph` d", as_flag), "a `b c` --graph d");
+  // An unknown name's closing backquote does not open the next one.
+  EXPECT_EQ(rename_parameters("`foo`graph`x`", as_flag), "`foo`graph`x`");
+  EXPECT_EQ(rename_parameters("`foo``graph`", as_flag), "`foo`--graph");
   EXPECT_EQ(rename_parameters("", as_flag), "");
   EXPECT_EQ(rename_parameters("no names here", as_flag), "no names here");
   // A file's name that holds backquotes is text, not a parameter, unless it

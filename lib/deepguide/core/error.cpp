@@ -110,16 +110,16 @@ std::string rename_parameters(std::string_view message,
     const std::size_t close = open == std::string_view::npos ? open : message.find('`', open + 1);
     if (close == std::string_view::npos) break;
     const std::string_view name = message.substr(open + 1, close - open - 1);
-    const std::optional<std::string> renamed = is_name(name) ? rename(name) : std::nullopt;
     out.append(message.substr(at, open - at));
-    if (renamed) {
-      out += *renamed;
-      at = close + 1;
-    } else {
-      // The closing backquote may open the next name: "`a b` `c`".
+    if (!is_name(name)) {
+      // Not a name, so its closing backquote may open one: "`a b` `c`".
       out.append(message.substr(open, close - open));
       at = close;
+      continue;
     }
+    const std::optional<std::string> renamed = rename(name);
+    out += renamed ? *renamed : std::string(message.substr(open, close - open + 1));
+    at = close + 1;
   }
   out.append(message.substr(at));
   return out;

@@ -7,14 +7,11 @@
 #include <filesystem>
 #include <sstream>
 
+#include "deepguide/core/format.hpp"
+
 namespace deepguide {
 
-std::string yaml_number(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
+std::string yaml_number(double v) { return general(v, 10); }
 
 std::string yaml_exact_number(double v) {
   if (std::isinf(v)) return v > 0 ? ".inf" : "-.inf";

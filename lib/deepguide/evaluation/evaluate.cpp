@@ -239,13 +239,14 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
         before.methods != manifest.methods || before.shard != manifest.shard || before.timing != manifest.timing) {
       throw InputError(out_dir + ": holds another run (suite " + before.suite + ", " +
                        std::to_string(before.scenarios) + " scenarios, shard " + std::to_string(before.shard.index) +
-                       "/" + std::to_string(before.shard.count) + "): `fresh` discards it; or run into another folder");
+                       "/" + std::to_string(before.shard.count) +
+                       "): set `fresh` to discard it, or write into another folder");
     }
     if (!before.suite_fingerprint.empty() && before.suite_fingerprint != manifest.suite_fingerprint) {
       throw InputError(out_dir + ": holds a run of suite " + before.suite + " with other scenarios (fingerprint " +
                        before.suite_fingerprint + ", now " + manifest.suite_fingerprint +
-                       ": regenerated, edited, or files instead of on demand): `fresh` discards the old "
-                       "rows; or run into another folder");
+                       ": regenerated, edited, or files instead of on demand): set `fresh` to discard the old "
+                       "rows, or write into another folder");
     }
     std::size_t dropped = 0;
     // run.json is written first: a kill before rows.csv leaves an empty journal.

@@ -52,9 +52,7 @@ std::string knots(double mps) { return fixed(mps / kMetresPerSecondPerKnot, 3); 
 // xsd:time, as RTZ 1.0 types a stay.
 std::string clock_time(double seconds) {
   const int s = static_cast<int>(std::lround(std::clamp(seconds, 0.0, 86399.0)));
-  char text[32];
-  std::snprintf(text, sizeof text, "%02d:%02d:%02d", s / 3600, (s / 60) % 60, s % 60);
-  return text;
+  return printf_text("%02d:%02d:%02d", s / 3600, (s / 60) % 60, s % 60);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/render/enc_layer.hpp"
 #include "deepguide/render/map_furniture.hpp"
 #include "deepguide/render/plot_furniture.hpp"  // draw_figure_title
@@ -356,7 +357,7 @@ struct Painter {
       }
       canvas.stroke_rect({x, y, bw * layout.band_colors.size(), 16.0 * u}, Stroke{style.frame, 1.0 * u, {}});
       for (std::size_t i = 0; i < sh.edges.size(); ++i) {
-        canvas.text({x + bw * i, y + 30.0 * u}, format_number(sh.edges[i]), 11.5 * u, style.text, TextAlign::centre);
+        canvas.text({x + bw * i, y + 30.0 * u}, general(sh.edges[i]), 11.5 * u, style.text, TextAlign::centre);
       }
     }
     struct Entry {
@@ -427,7 +428,7 @@ std::string default_title(const ChartRenderOptions& o, const std::string& frame_
   for (const std::string& f : o.charts)
     names += (names.empty() ? "" : ", ") + std::filesystem::path(f).filename().string();
   std::string t = names + "  (" + frame_id + ")";
-  if (!std::isnan(o.depth_m)) t += ", no-go at " + format_number(o.depth_m) + " m";
+  if (!std::isnan(o.depth_m)) t += ", no-go at " + general(o.depth_m) + " m";
   return t;
 }
 
@@ -449,10 +450,10 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
                      std::to_string(kMaxImageWidth) + " pixels, got " + std::to_string(options.width_px));
   }
   if (!std::isnan(options.depth_m) && (!std::isfinite(options.depth_m) || options.depth_m < 0.0)) {
-    throw InputError("`depth_m`: expected an operating depth >= 0 m, got " + format_number(options.depth_m));
+    throw InputError("`depth_m`: expected an operating depth >= 0 m, got " + general(options.depth_m));
   }
   if (!std::isfinite(options.clearance_m) || options.clearance_m < 0.0) {
-    throw InputError("`clearance_m`: expected a vertical clearance >= 0 m, got " + format_number(options.clearance_m));
+    throw InputError("`clearance_m`: expected a vertical clearance >= 0 m, got " + general(options.clearance_m));
   }
   if (options.charts.empty()) throw InputError("render chart: expected at least one chart file");
 

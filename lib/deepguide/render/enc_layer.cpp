@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
+#include "deepguide/core/format.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_reader.hpp"
 #include "deepguide/world/no_go_union.hpp"
@@ -47,11 +47,7 @@ std::vector<BgPolygon> disc_union(const ObstacleSet& set) {
   return union_no_go({}, ptrs);
 }
 
-std::string depth_text(double d) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, d < 10.0 ? "%.1f" : "%.0f", d);
-  return buf;
-}
+std::string depth_text(double d) { return fixed(d, d < 10.0 ? 1 : 0); }
 
 }  // namespace
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "deepguide/core/error.hpp"
-#include "deepguide/render/map_furniture.hpp"  // format_number
+#include "deepguide/core/format.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
 namespace deepguide {
@@ -40,8 +40,8 @@ FieldFigure field_figure_for(const Scenario& scenario, ReactiveMethod method) {
 FieldFigureGeometry field_figure_geometry(const FieldFigure& figure) {
   validate(figure.params);
   if (figure.map.margin_m != figure.params.margin_m) {
-    throw InputError("field figure: expected the map's margin to be the method's (" +
-                     format_number(figure.params.margin_m) + " m), got " + format_number(figure.map.margin_m) + " m");
+    throw InputError("field figure: expected the map's margin to be the method's (" + general(figure.params.margin_m) +
+                     " m), got " + general(figure.map.margin_m) + " m");
   }
   FieldFigureGeometry g;
   g.layout = reactive_map_layout(figure.map, WorldBox{}, figure.width_px, kLegendColumns, kLegendColumns);

@@ -9,7 +9,6 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/identification/lee_goal.hpp"
 #include "deepguide/identification/offset_path.hpp"
-#include "deepguide/render/map_furniture.hpp"  // format_number
 #include "deepguide/render/plot_furniture.hpp"
 #include "deepguide/world/current_field.hpp"
 
@@ -83,8 +82,8 @@ IdentificationFigure identification_figure_for(const Scenario& scenario) {
                    : join != f.run.switches.end()    ? join->position
                                                      : scenario.start;
     f.map.target_label = on_path != f.run.trajectory.end() ? "on the path" : "tracking from";
-    f.map.title = "Going around '" + id.object_id + "' at " + format_number(id.around.distance_m) + " m, " +
-                  format_number(id.around.laps) + (id.around.laps == 1.0 ? " lap" : " laps") + ", object to " +
+    f.map.title = "Going around '" + id.object_id + "' at " + general(id.around.distance_m) + " m, " +
+                  general(id.around.laps) + (id.around.laps == 1.0 ? " lap" : " laps") + ", object to " +
                   (id.around.direction > 0 ? "port" : "starboard") + ": " + scenario.name;
   }
   return f;
@@ -233,10 +232,9 @@ ReactiveMapLayout render_identification_figure(const IdentificationFigure& figur
                         c.shape(box, with_alpha(area_color, 0.18), Stroke{area_color, 1.4 * u, {}});
                       }});
   } else {
-    legend.push_back(
-        {"path " + format_number(id.around.distance_m) + " m off the object", [guide](Canvas& c, const Vec2& m) {
-           c.stroke_polyline({m - Vec2(18, 0), m + Vec2(18, 0)}, guide);
-         }});
+    legend.push_back({"path " + general(id.around.distance_m) + " m off the object", [guide](Canvas& c, const Vec2& m) {
+                        c.stroke_polyline({m - Vec2(18, 0), m + Vec2(18, 0)}, guide);
+                      }});
   }
   legend.push_back(
       {identification_summary(run), [u](Canvas& c, const Vec2& m) { switch_dot(c, m, rgb_hex(0x495057), u); }});

@@ -1,27 +1,21 @@
 #include "deepguide/render/map_furniture.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 
 namespace deepguide {
 
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 std::string format_length(double metres) {
-  return metres >= 1000.0 ? format_number(metres / 1000.0) + " km" : format_number(metres) + " m";
+  return metres >= 1000.0 ? general(metres / 1000.0) + " km" : general(metres) + " m";
 }
 
 double nice_scale_length(double max_length_m) {
   if (!(max_length_m > 0.0) || !std::isfinite(max_length_m)) {
-    throw InputError("scale bar: expected a positive finite length, got " + format_number(max_length_m));
+    throw InputError("scale bar: expected a positive finite length, got " + general(max_length_m));
   }
   const double decade = std::pow(10.0, std::floor(std::log10(max_length_m)));
   // The relative tolerance keeps 100 from becoming 50 through log10 rounding.
@@ -46,8 +40,8 @@ void draw_scale_bar(Canvas& canvas, double scale, double x0, double y, double ma
   canvas.text({x0, y - 6.0 * u}, "0", size, c.text, TextAlign::centre);
   canvas.text({x0 + length_px / 2.0, y - 6.0 * u}, format_length(length_m / 2.0), size, c.text, TextAlign::centre);
   canvas.text({x0 + length_px, y - 6.0 * u}, format_length(length_m), size, c.text, TextAlign::centre);
-  canvas.text({x0, y + h + 18.0 * u}, "scale  1 px = " + format_number(std::round(1000.0 / scale) / 1000.0) + " m",
-              11.5 * u, c.muted, TextAlign::left);
+  canvas.text({x0, y + h + 18.0 * u}, "scale  1 px = " + general(std::round(1000.0 / scale) / 1000.0) + " m", 11.5 * u,
+              c.muted, TextAlign::left);
 }
 
 void draw_north_arrow(Canvas& canvas, double cx, double top, double u, double rotate_deg, const std::string& note,

@@ -17,8 +17,6 @@ struct FurnitureColors {
   Rgba muted;       ///< the notes under them
 };
 
-/// "%g" of a number.
-std::string format_number(double v);
 /// "500 m", "1.5 km".
 std::string format_length(double metres);
 

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "deepguide/core/error.hpp"
-#include "deepguide/render/map_furniture.hpp"  // format_number
-#include "deepguide/render/route_scene.hpp"    // kMinImageWidth, kMaxImageWidth
+#include "deepguide/core/format.hpp"
+#include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 
 namespace deepguide {
 
@@ -39,8 +39,8 @@ void draw_figure_title(Canvas& canvas, const std::string& title, int width_px, d
 
 double nice_tick_step(double span, int max_ticks) {
   if (!(span > 0.0) || !std::isfinite(span) || max_ticks < 2) {
-    throw InputError("plot axis: expected a positive finite range and at least 2 ticks, got range " +
-                     format_number(span) + " and " + std::to_string(max_ticks) + " ticks");
+    throw InputError("plot axis: expected a positive finite range and at least 2 ticks, got range " + general(span) +
+                     " and " + std::to_string(max_ticks) + " ticks");
   }
   // k ticks cover (k - 1) steps: the step must be at least span / (max_ticks - 1).
   const double raw = span / (max_ticks - 1);

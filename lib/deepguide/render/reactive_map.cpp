@@ -5,7 +5,7 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/render/map_furniture.hpp"  // format_number
+#include "deepguide/core/format.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
 namespace deepguide {
@@ -175,7 +175,7 @@ void end_reactive_map(Canvas& canvas, const ReactiveMap& map, const ReactiveMapL
                    c.fill_rect({m.x() - 11.0 * u, m.y() - 6.0 * u, 22.0 * u, 12.0 * u}, s.obstacle);
                  }});
   if (map.margin_m > 0.0) {
-    own.push_back({"security zone (" + format_number(map.margin_m) + " m)", [&s, u](Canvas& c, const Vec2& m) {
+    own.push_back({"security zone (" + general(map.margin_m) + " m)", [&s, u](Canvas& c, const Vec2& m) {
                      const std::vector<Vec2> box{m + Vec2(-15 * u, -8 * u), m + Vec2(15 * u, -8 * u),
                                                  m + Vec2(15 * u, 8 * u), m + Vec2(-15 * u, 8 * u)};
                      c.fill_rings({box}, with_alpha(s.zone, 0.16));

@@ -15,8 +15,10 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct RouteOnChart {
-  /// The charts, depth, clearance, frame (local_crs: the route's coordinates
-  /// are in it), title and width; the extent and overlay are the route's.
+  /// The charts, depth (NaN, the default: no no-go layer), clearance, frame
+  /// (local_crs: the route's coordinates are in it), title and width. The
+  /// extent and overlay are set from the route; its legend line is added to
+  /// overlay_legend.
   ChartRenderOptions chart;
   std::vector<Vec2> route;
 };

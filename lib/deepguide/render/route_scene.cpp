@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 #include "deepguide/render/plot_furniture.hpp"  // add_arrow, draw_figure_title
 
@@ -436,7 +437,7 @@ struct Painter {
     const bool has_obstacles = scene.obstacles != nullptr && !scene.obstacles->empty();
     if (has_obstacles) columns[0].push_back({Swatch::obstacle, "obstacle"});
     if (has_obstacles && scene.margin > 0.0) {
-      columns[0].push_back({Swatch::zone, "safety zone (" + format_number(scene.margin) + " m)"});
+      columns[0].push_back({Swatch::zone, "safety zone (" + general(scene.margin) + " m)"});
     }
     if (scene.zone_polygons != nullptr) columns[1].push_back({Swatch::zone_polygon, "zone polygon"});
     if (!scene.graph_edges.empty()) columns[1].push_back({Swatch::graph, "graph edge"});

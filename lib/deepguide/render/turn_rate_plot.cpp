@@ -6,8 +6,8 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/render/map_furniture.hpp"  // format_number
-#include "deepguide/render/reactive_map.hpp"   // method_color
+#include "deepguide/core/format.hpp"
+#include "deepguide/render/reactive_map.hpp"  // method_color
 #include "deepguide/simulation/scenario.hpp"
 
 namespace deepguide {
@@ -162,7 +162,7 @@ TurnRateLayout render_turn_rate_plot(const TurnRatePlot& plot, const std::string
        [u](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, reference_stroke(u));
        }},
-      {"\u00b1r_max = " + format_number(std::round(limit * 100.0) / 100.0) + " \u00b0/s, the vehicle's limit",
+      {"\u00b1r_max = " + general(std::round(limit * 100.0) / 100.0) + " \u00b0/s, the vehicle's limit",
        [u](Canvas& c, const Vec2& m) {
          c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, limit_stroke(u));
        }},

@@ -250,7 +250,7 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
     throw InputError(shown(charts.front()) + ": prepared with " +
                      flags(info.zone_of_confidence, info.restricted_areas) + ", expected " +
                      flags(options.zone_of_confidence, options.restricted_areas) +
-                     ": prepare it again with these options");
+                     ": prepare it again with the settings of this run");
   }
   return out;
 }

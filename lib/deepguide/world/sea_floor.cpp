@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "deepguide/core/error.hpp"
@@ -16,11 +15,7 @@ namespace deepguide {
 namespace {
 
 // Coordinates for GDAL's argument list, to the last bit.
-std::string exact(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string exact(double v) { return general(v, 17); }
 
 }  // namespace
 
