@@ -77,6 +77,22 @@ inline std::string real_file(const std::string& rel) {
                << " is absent: skipping the "                \
                   "test on real data"
 
+/// Path of a real folder under ../shared/data/real (an exchange set), or empty when absent.
+inline std::string real_folder(const std::string& rel) {
+  const std::string dir = shared_real_data();
+  if (dir.empty()) return {};
+  const auto p = std::filesystem::path(dir) / rel;
+  return std::filesystem::is_directory(p) ? p.string() : std::string();
+}
+
+/// Declares `var` as the real folder `rel`, or skips the test with a message when it is absent.
+#define DEEPGUIDE_REAL_FOLDER_OR_SKIP(var, rel)                \
+  const std::string var = ::deepguide::test::real_folder(rel); \
+  if (var.empty())                                             \
+  GTEST_SKIP() << "../shared/data/real/" << (rel)              \
+               << " is absent: skipping the "                  \
+                  "test on real data"
+
 inline std::string source_file(const std::string& rel) {
   return (std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / rel).string();
 }

@@ -1,5 +1,6 @@
 #include "deepguide/planning/zone_polygons.hpp"
 
+#include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
@@ -87,11 +88,15 @@ BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOpti
   BgMultiPolygon merged;
   for (const auto& group : groups) {
     if (group.empty()) continue;
-    if (group.size() == 1) {
+    // Boost's buffer of a long coast can cross itself (a 15,000-vertex Kachemak zone did): such a
+    // zone, and any group holding one, is repaired and joined by GEOS (world/no_go_union.hpp).
+    const bool any_invalid =
+        std::any_of(group.begin(), group.end(), [&](std::size_t k) { return !bg::is_valid(zones[k]); });
+    if (group.size() == 1 && !any_invalid) {
       merged.push_back(std::move(zones[group[0]]));
       continue;
     }
-    if (group.size() > kLargestBoostGroup) {
+    if (group.size() > kLargestBoostGroup || any_invalid) {
       // A chart's coast with its hazards: thousands of zones in one group.
       // Adding them one by one costs O(group x vertices), and Boost 1.74's
       // union is not robust at that scale (world/no_go_union.hpp).

@@ -16,6 +16,10 @@
 //   DSID_UPDN reached N (a damaged update stops GDAL's sequence silently).
 // - Cells are returned sorted by path, each once (a cell named twice, or
 //   found in a folder and named too, is read once).
+// - Exchange sets: a folder holding a CATALOG.031 (an ENC_ROOT) gives the
+//   cells and updates its catalogue lists, each checked against the
+//   catalogue's CRC (enc_catalogue.hpp), instead of those a search finds
+//   there. A catalogue may also be named itself.
 
 #include <string>
 #include <vector>
@@ -27,6 +31,7 @@ namespace DEEPGUIDE_API deepguide {
 struct EncCellFiles {
   std::string base;                  ///< the base cell, *.000
   std::vector<std::string> updates;  ///< BASE.001 .. BASE.N in order
+  std::string catalogue;             ///< the CATALOG.031 that listed them, "" when found by a search
 };
 
 /// True for a folder or a file whose extension is .000 (any case) or an
@@ -36,7 +41,10 @@ bool names_enc(const std::string& path);
 
 /// Expands files and folders into base cells with their updates. Throws
 /// InputError (one line naming the path) for a missing path, a folder
-/// without cells, a file that is not named *.000, or a gap in the updates.
+/// without cells, a file that is not named *.000, or a gap in the updates;
+/// in an exchange set, for a damaged catalogue, a catalogue without cells, a
+/// listed file that is missing or whose CRC differs, or an update beside a
+/// listed cell that the catalogue does not list.
 std::vector<EncCellFiles> find_enc_cells(const std::vector<std::string>& paths);
 
 }  // namespace deepguide

@@ -26,14 +26,23 @@ constexpr char kUnitTerminator = 0x1f;
 // NOAA writes "(b11,2b12)").
 const std::map<std::string_view, std::string_view>& standard_labels() {
   static const std::map<std::string_view, std::string_view> labels = {
-      {"VRID", "RCNM!RCID!RVER!RUIN"},  {"ATTV", "*ATTL!ATVL"},
-      {"VRPC", "VPUI!VPIX!NVPT"},       {"VRPT", "*NAME!ORNT!USAG!TOPI!MASK"},
-      {"SGCC", "CCUI!CCIX!CCNC"},       {"SG2D", "*YCOO!XCOO"},
-      {"SG3D", "*YCOO!XCOO!VE3D"},      {"FRID", "RCNM!RCID!PRIM!GRUP!OBJL!RVER!RUIN"},
-      {"FOID", "AGEN!FIDN!FIDS"},       {"ATTF", "*ATTL!ATVL"},
-      {"NATF", "*ATTL!ATVL"},           {"FFPC", "FFUI!FFIX!NFPT"},
-      {"FFPT", "*LNAM!RIND!COMT"},      {"FSPC", "FSUI!FSIX!NSPT"},
+      {"VRID", "RCNM!RCID!RVER!RUIN"},
+      {"ATTV", "*ATTL!ATVL"},
+      {"VRPC", "VPUI!VPIX!NVPT"},
+      {"VRPT", "*NAME!ORNT!USAG!TOPI!MASK"},
+      {"SGCC", "CCUI!CCIX!CCNC"},
+      {"SG2D", "*YCOO!XCOO"},
+      {"SG3D", "*YCOO!XCOO!VE3D"},
+      {"FRID", "RCNM!RCID!PRIM!GRUP!OBJL!RVER!RUIN"},
+      {"FOID", "AGEN!FIDN!FIDS"},
+      {"ATTF", "*ATTL!ATVL"},
+      {"NATF", "*ATTL!ATVL"},
+      {"FFPC", "FFUI!FFIX!NFPT"},
+      {"FFPT", "*LNAM!RIND!COMT"},
+      {"FSPC", "FSUI!FSIX!NSPT"},
       {"FSPT", "*NAME!ORNT!USAG!MASK"},
+      // The exchange set's catalogue (CATALOG.031; S-57 Part 3, 7.4.1).
+      {"CATD", "RCNM!RCID!FILE!LFIL!VOLM!IMPL!SLAT!WLON!NLAT!ELON!CRCS!COMT"},
   };
   return labels;
 }
@@ -147,9 +156,8 @@ std::uint64_t long_record_length(std::string_view rest) {
   return end;
 }
 
-}  // namespace
-
-std::string s57_structure_problem(const std::string& path, bool update) {
+// The structure check of s57_structure_problem, keeping the data records when `records` is given.
+std::string check_file(const std::string& path, bool update, std::vector<Iso8211Record>* records) {
   refuse_special_file(path);  // before opening it: a FIFO would block the open, a device never end
   std::ifstream in(path, std::ios::binary);
   if (!in) return "that could not be opened";
@@ -182,9 +190,22 @@ std::string s57_structure_problem(const std::string& path, bool update) {
       }
     }
     if (!why.empty()) return "with " + why + at;
+    if (records != nullptr && !first) {
+      Iso8211Record& r = records->emplace_back();
+      for (const Field& f : fields) r.push_back({std::string(f.tag), std::string(f.data.substr(0, f.data.size() - 1))});
+    }
     pos += n;
   }
   return "";
+}
+
+}  // namespace
+
+std::string s57_structure_problem(const std::string& path, bool update) { return check_file(path, update, nullptr); }
+
+std::string read_iso8211_records(const std::string& path, std::vector<Iso8211Record>& records) {
+  records.clear();
+  return check_file(path, false, &records);
 }
 
 }  // namespace deepguide

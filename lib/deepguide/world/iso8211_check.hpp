@@ -21,6 +21,7 @@
 // a base cell; insert, delete or modify in an update).
 
 #include <string>
+#include <vector>
 
 #include "deepguide/core/api.hpp"
 
@@ -29,5 +30,17 @@ namespace DEEPGUIDE_API deepguide {
 /// Why the S-57 file at `path` cannot be read as one, or "" when its
 /// structure is sound. `update`: the file is an update (*.001 ..), not a base cell.
 std::string s57_structure_problem(const std::string& path, bool update);
+
+/// One field of a data record: its tag and its bytes, without the field terminator.
+struct Iso8211Field {
+  std::string tag;
+  std::string data;
+};
+using Iso8211Record = std::vector<Iso8211Field>;
+
+/// Checks the file as s57_structure_problem does (as a base file) and hands
+/// back its data records (every record after the data descriptive record).
+/// Returns "" or why the file is not sound; `records` is then incomplete.
+std::string read_iso8211_records(const std::string& path, std::vector<Iso8211Record>& records);
 
 }  // namespace deepguide

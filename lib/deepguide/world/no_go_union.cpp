@@ -1,5 +1,6 @@
 #include "deepguide/world/no_go_union.hpp"
 
+#include <geos_c.h>
 #include <ogr_geometry.h>
 
 #include <algorithm>
@@ -43,6 +44,19 @@ OGRLinearRing to_ogr_ring(const BgPolygon::ring_type& ring) {
   return r;
 }
 
+// The polygonal parts of `g` into `mp` (a repair may return lines and points beside them).
+void add_polygonal(OGRMultiPolygon& mp, const OGRGeometry& g) {
+  switch (wkbFlatten(g.getGeometryType())) {
+    case wkbPolygon: mp.addGeometry(&g); break;
+    case wkbMultiPolygon:
+    case wkbGeometryCollection:
+      for (const OGRGeometry* part : *g.toGeometryCollection()) add_polygonal(mp, *part);
+      break;
+    default: break;
+  }
+}
+
+// `p` as GEOS can join it: itself when valid, else what GEOS's MakeValid makes of it.
 void add_to(OGRMultiPolygon& mp, const BgPolygon& p) {
   OGRPolygon poly;
   OGRLinearRing outer = to_ogr_ring(p.outer());
@@ -51,7 +65,16 @@ void add_to(OGRMultiPolygon& mp, const BgPolygon& p) {
     OGRLinearRing r = to_ogr_ring(in);
     poly.addRing(&r);
   }
-  mp.addGeometry(&poly);
+  if (poly.IsValid()) {
+    mp.addGeometry(&poly);
+    return;
+  }
+  const OgrPtr fixed = owned(poly.MakeValid());
+  if (fixed) {
+    add_polygonal(mp, *fixed);
+  } else {
+    mp.addGeometry(&poly);  // left to the snap-rounded union
+  }
 }
 
 void from_ogr(const OGRGeometry& g, std::vector<BgPolygon>& out) {
@@ -152,31 +175,67 @@ bool covers_every_tile(const std::vector<BgPolygon>& result, const std::vector<c
   return true;
 }
 
-OgrPtr cascaded(const OGRMultiPolygon& all) {
-  OgrPtr merged = owned(all.UnionCascaded());
+// GEOS's union of `all` snap-rounded to `grid` (OverlayNG at a fixed precision), or null.
+OgrPtr snap_rounded(const OGRGeometry& all, double grid) {
+  struct Context {
+    GEOSContextHandle_t h = OGRGeometry::createGEOSContext();
+    ~Context() { OGRGeometry::freeGEOSContext(h); }
+  } ctx;
+  GEOSGeometry* in = all.exportToGEOS(ctx.h);
+  if (in == nullptr) return owned(nullptr);
+  GEOSGeometry* out = GEOSUnaryUnionPrec_r(ctx.h, in, grid);
+  GEOSGeom_destroy_r(ctx.h, in);
+  if (out == nullptr) return owned(nullptr);
+  OGRGeometry* g = OGRGeometryFactory::createFromGEOS(ctx.h, out);
+  GEOSGeom_destroy_r(ctx.h, out);
+  return owned(g);
+}
+
+// The union of `all`: GEOS's cascaded union (grid 0), else snap-rounded.
+OgrPtr joined(const OGRMultiPolygon& all, double grid) {
+  if (grid <= 0.0) {
+    if (OgrPtr merged = owned(all.UnionCascaded())) return merged;
+  }
+  OgrPtr merged = snap_rounded(all, grid > 0.0 ? grid : kRepairGridM);
   if (!merged) throw std::runtime_error("GEOS could not join the no-go areas: " + gdal::QuietErrors::last_message());
   return merged;
+}
+
+bool all_valid(const std::vector<BgPolygon>& polys) {
+  return std::all_of(polys.begin(), polys.end(), [](const BgPolygon& p) { return bg::is_valid(p); });
+}
+
+// Polygons Boost.Geometry finds invalid where GEOS did not: the whole set snap-rounded (so it stays disjoint).
+void make_valid_for_boost(std::vector<BgPolygon>& out) {
+  if (all_valid(out)) return;
+  OGRMultiPolygon all;
+  for (const BgPolygon& p : out) add_to(all, p);
+  std::vector<BgPolygon> again;
+  from_ogr(*joined(all, kRepairGridM), again);
+  out = std::move(again);
 }
 
 }  // namespace
 
 std::vector<BgPolygon> union_no_go(const std::vector<const BgPolygon*>& tiles,
-                                   const std::vector<const BgPolygon*>& others) {
+                                   const std::vector<const BgPolygon*>& others, double grid_m) {
   if (!OGRGeometryFactory::haveGEOS()) throw std::runtime_error("GDAL was built without GEOS: no polygon union");
   gdal::QuietErrors quiet;
   std::vector<BgPolygon> out;
   OGRMultiPolygon all;
   const bool faces_ok = tile_faces(tiles, all);
   for (const BgPolygon* p : others) add_to(all, *p);
-  if (faces_ok && !all.IsEmpty()) from_ogr(*cascaded(all), out);
-  if (faces_ok && covers_every_tile(out, tiles)) return out;
-  // The edges did not tile cleanly (overlapping or duplicated tiles, a face of
-  // doubtful side): every area through GEOS, slower and sure.
-  OGRMultiPolygon plain;
-  for (const BgPolygon* p : tiles) add_to(plain, *p);
-  for (const BgPolygon* p : others) add_to(plain, *p);
-  out.clear();
-  if (!plain.IsEmpty()) from_ogr(*cascaded(plain), out);
+  if (faces_ok && !all.IsEmpty()) from_ogr(*joined(all, grid_m), out);
+  if (!faces_ok || !covers_every_tile(out, tiles)) {
+    // The edges did not tile cleanly (overlapping or duplicated tiles, a face of
+    // doubtful side): every area through GEOS, slower and sure.
+    OGRMultiPolygon plain;
+    for (const BgPolygon* p : tiles) add_to(plain, *p);
+    for (const BgPolygon* p : others) add_to(plain, *p);
+    out.clear();
+    if (!plain.IsEmpty()) from_ogr(*joined(plain, grid_m), out);
+  }
+  make_valid_for_boost(out);
   return out;
 }
 
