@@ -1,4 +1,4 @@
-// deepguide chart info FILE... [--depth M] [--clearance M] [--crs EPSG:n] [--src-crs CRS] [--json]
+// deepguide chart info FILE|FOLDER... [--depth M] [chart options] [--crs EPSG:n] [--src-crs CRS] [--json]
 
 #include <cmath>
 #include <iostream>
@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/chart_options.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -16,6 +17,7 @@ struct ChartInfoCliOptions {
   std::string crs, src_crs;
   double depth = 0.0;
   double clearance = 2.0;
+  ChartOptions chart;
   bool json = false;
 };
 
@@ -25,11 +27,13 @@ void register_chart_info(CLI::App& chart) {
   auto o = std::make_shared<ChartInfoCliOptions>();
   CLI::App* cmd = chart.add_subcommand(
       "info", "Layers, extent, CRS, depth range, hazards and the no-go area at a depth of chart files");
-  cmd->add_option("FILE", o->files, "Charts: bathymetry rasters, S-57 cells (.000), hazard files")->required();
+  cmd->add_option("FILE", o->files,
+                  "Charts: bathymetry rasters, S-57 cells (.000), folders of cells and exchange sets (ENC_ROOT), "
+                  "hazard files")
+      ->required();
   CLI::Option* depth =
       cmd->add_option("--depth", o->depth, "Operating depth (m, positive down): also report the no-go area");
-  cmd->add_option("--clearance", o->clearance, "Vertical clearance above the sea floor and hazards (m)")
-      ->capture_default_str();
+  add_chart_options(*cmd, o->chart, &o->clearance);
   cmd->add_option("--crs", o->crs, "Local frame for areas, a projected CRS (default: UTM zone of the chart)");
   cmd->add_option("--src-crs", o->src_crs,
                   "CRS of a chart that carries none, e.g. EPSG:4326 for an ESRI ASCII or GMT grid in lon/lat");
@@ -38,6 +42,7 @@ void register_chart_info(CLI::App& chart) {
     ChartInfoOptions options;
     options.source_crs = o->src_crs;
     options.clearance_m = o->clearance;
+    options.chart = o->chart;
     options.local_crs = o->crs;
     if (depth->count() > 0) {
       if (!std::isfinite(o->depth)) throw InputError("--depth: expected an operating depth >= 0 m, got a non-number");

@@ -11,7 +11,6 @@ namespace deepguide::app {
 void register_chart_nogo(CLI::App& chart) {
   struct Flags {
     NoGoExportRequest request;
-    bool no_zoc = false;
     bool nodata_is_water = false;
     std::string sense = "auto";
     bool json = false;
@@ -24,14 +23,8 @@ void register_chart_nogo(CLI::App& chart) {
                   "A bathymetry raster (GeoTIFF, BAG, NetCDF/GMT, ESRI ASCII grid, ...), or S-57 cells (*.000, with "
                   "their updates) and folders of cells")
       ->required();
-  cmd->add_flag("--restricted", r.restricted_areas,
-                "S-57: areas whose RESTRN is entry prohibited, entry restricted or area to be avoided are no-go too");
-  cmd->add_flag(
-      "--no-zoc", f->no_zoc,
-      "S-57: take charted depths and positions as exact (default: less the zone of confidence's uncertainty)");
   cmd->add_option("--depth", r.nogo.operating_depth_m, "Operating depth of the vehicle (m, positive down)")->required();
-  cmd->add_option("--clearance,--vertical-clearance", r.nogo.vertical_clearance_m, "Water kept above the sea floor (m)")
-      ->capture_default_str();
+  add_chart_options(*cmd, r.chart, &r.nogo.vertical_clearance_m);
   cmd->add_option("--tolerance", r.nogo.simplify_tolerance_m,
                   "Simplification tolerance (m): polygons grow by at most this much, never shrink; 0 = exact cells")
       ->capture_default_str();
@@ -49,7 +42,6 @@ void register_chart_nogo(CLI::App& chart) {
   cmd->add_flag("--json", f->json, "Print a JSON object instead of text");
   cmd->callback([f] {
     NoGoExportRequest& r = f->request;
-    r.zone_of_confidence = !f->no_zoc;
     r.nodata_is_no_go = !f->nodata_is_water;
     r.sense = f->sense == "elevation" ? VerticalSense::elevation
               : f->sense == "depth"   ? VerticalSense::depth

@@ -1,5 +1,5 @@
-// deepguide chart prepare CELL|FOLDER... --depth M [--vertical-clearance M] [--tolerance M] [--restricted]
-//                        [--no-zoc] [--crs EPSG:n] -o AREA.gpkg [--overwrite] [--json]
+// deepguide chart prepare CELL|FOLDER... --depth M [chart options] [--tolerance M] [--crs EPSG:n] -o AREA.gpkg
+//                        [--overwrite] [--json]
 
 #include <iostream>
 #include <memory>
@@ -13,7 +13,7 @@ struct PrepareOptions {
   std::vector<std::string> charts;
   std::string output, crs;
   EncNoGoOptions enc;
-  bool no_zoc = false, overwrite = false, json = false;
+  bool overwrite = false, json = false;
 };
 }  // namespace
 
@@ -25,22 +25,16 @@ void register_chart_prepare(CLI::App& chart) {
       "check route --chart read");
   cmd->add_option("CHART", o->charts, "S-57 cells (*.000, with their updates) and folders of cells")->required();
   cmd->add_option("--depth", o->enc.operating_depth_m, "Operating depth of the vehicle (m, positive down)")->required();
-  cmd->add_option("--vertical-clearance", o->enc.vertical_clearance_m, "Water kept under the vehicle (m)")
-      ->capture_default_str();
   cmd->add_option("--tolerance", o->enc.simplify_tolerance_m,
                   "How far the planners' polygons may grow outward when simplified (m); 0 = exact")
       ->capture_default_str();
-  cmd->add_flag("--restricted", o->enc.restricted_areas,
-                "Areas whose RESTRN is entry prohibited, entry restricted or area to be avoided are no-go too");
-  cmd->add_flag("--no-zoc", o->no_zoc, "Charted depths and positions as exact (no zone of confidence)");
+  add_chart_options(*cmd, o->enc, &o->enc.vertical_clearance_m);
   cmd->add_option("--crs", o->crs, "Local planning frame, a projected CRS (default: UTM zone of the first cell)");
   cmd->add_option("-o,--output", o->output, "The prepared chart to write (.gpkg)")->required();
   cmd->add_flag("--overwrite", o->overwrite, "Replace an existing output file");
   cmd->add_flag("--json", o->json, "Print a JSON object instead of text");
   cmd->callback([o] {
-    EncNoGoOptions opts = o->enc;
-    opts.zone_of_confidence = !o->no_zoc;
-    const ChartPreparation done = prepare_chart(o->charts, o->crs, opts, o->output, o->overwrite);
+    const ChartPreparation done = prepare_chart(o->charts, o->crs, o->enc, o->output, o->overwrite);
     std::cout << (o->json ? done.to_json().dump(2) + "\n" : done.to_text());
   });
 }

@@ -14,7 +14,6 @@ void register_check_route(CLI::App& check) {
   auto o = std::make_shared<RouteFileCheckOptions>();
   auto frame = std::make_shared<FrameOptions>();
   auto json = std::make_shared<bool>(false);
-  auto no_zoc = std::make_shared<bool>(false);
   CLI::App* cmd = check.add_subcommand(
       "route",
       "Check a route against obstacles (exact clearance) or S-57 charts at a depth (the first crossing "
@@ -26,14 +25,11 @@ void register_check_route(CLI::App& check) {
                   "S-57 cells (*.000, updates beside them), folders of cells, or a prepared chart (.gpkg)")
       ->expected(1, -1);
   cmd->add_option("--depth", o->operating_depth_m, "Operating depth (m, positive down), for --chart");
-  cmd->add_option("--vertical-clearance", o->vertical_clearance_m, "Water kept under the vehicle (m), for --chart")
-      ->capture_default_str();
-  cmd->add_flag("--restricted", o->restricted_areas, "--chart: restricted areas (RESTRN 7, 8, 14) are no-go too");
-  cmd->add_flag("--no-zoc", *no_zoc, "--chart: charted depths and positions as exact (no zone of confidence)");
+  add_chart_options(*cmd, o->chart, &o->vertical_clearance_m);
   add_frame_options(*cmd, *frame);
   cmd->add_option("--margin", o->margin_m, "Safety margin the route must keep (m)")->capture_default_str();
   cmd->add_flag("--json", *json, "Print the verdict as JSON");
-  cmd->callback([o, frame, json, no_zoc] {
+  cmd->callback([o, frame, json] {
     if (o->obstacles.empty() && o->charts.empty()) {
       throw CLI::ValidationError("check route", "give --obstacles FILE... or --chart CELL... (or both)");
     }
@@ -45,7 +41,6 @@ void register_check_route(CLI::App& check) {
     }
     o->crs = frame->crs;
     o->src_crs = frame->src_crs;
-    o->zone_of_confidence = !*no_zoc;
     const RouteFileCheckReport report = check_route_file(*o);
     if (*json) {
       std::cout << report.to_json().dump(2) << "\n";

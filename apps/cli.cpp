@@ -4,13 +4,17 @@
 // (tests/planning/test_toy_graph.cpp).
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <new>
+#include <optional>
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/version.hpp"
+#include "deepguide/world/chart_options.hpp"
 
 namespace deepguide::app {
 
@@ -19,6 +23,50 @@ void add_frame_options(CLI::App& cmd, FrameOptions& options) {
                  "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the data)");
   cmd.add_option("--src-crs", options.src_crs,
                  "CRS of input files that carry none, e.g. a CSV in UTM (default: EPSG:4326 lon/lat)");
+}
+
+void add_chart_options(CLI::App& cmd, ChartOptions& chart, double* vertical_clearance_m) {
+  CLI::Option* zoc = cmd.add_option_function<std::string>(
+      "--zoc",
+      [&chart](const std::string& name) {
+        const std::optional<ZocPolicy> p = parse_zoc_policy(name);
+        if (!p) throw InputError("--zoc: expected clipped, strict or none, got '" + printable(name) + "'");
+        chart.zoc = *p;
+      },
+      "Zones of confidence (M_QUAL CATZOC): clipped (default: depths less their uncertainty, a point hazard a disc "
+      "of its zone's position accuracy clipped to water not surveyed better), strict (the discs unclipped), none "
+      "(charted depths and positions as exact); docs/CHARTS.md");
+  cmd.add_flag_callback(
+         "--no-zoc", [&chart] { chart.zoc = ZocPolicy::none; }, "The same as --zoc none")
+      ->excludes(zoc);
+  cmd.add_flag("--restricted", chart.restricted_areas,
+               "Restricted areas (RESTRN entry prohibited, entry restricted, area to be avoided) are no-go too");
+  cmd.add_option_function<std::string>(
+      "--unassessed-zoc",
+      [&chart](const std::string& text) {
+        double v[3];
+        std::size_t at = 0;
+        for (int k = 0; k < 3; ++k) {
+          const std::size_t end = k < 2 ? text.find(',', at) : text.size();
+          const std::string part = end == std::string::npos ? std::string() : text.substr(at, end - at);
+          char* stop = nullptr;
+          v[k] = part.empty() ? std::nan("") : std::strtod(part.c_str(), &stop);
+          if (part.empty() || stop == nullptr || *stop != '\0' || (k == 2 && end != text.size())) {
+            throw InputError("--unassessed-zoc: expected DEPTH_M,FRACTION,POSITION_M (e.g. 2,0.05,500), got '" +
+                             printable(text) + "'");
+          }
+          at = end + 1;
+        }
+        chart.unassessed = {v[0], v[1], v[2]};
+        check_chart_options(chart);
+      },
+      "Zones of confidence D, U and water without M_QUAL: depth uncertainty DEPTH_M + FRACTION x depth, position "
+      "accuracy POSITION_M (default 2,0.05,500: CATZOC C's)");
+  if (vertical_clearance_m != nullptr) {
+    cmd.add_option("--vertical-clearance,--clearance", *vertical_clearance_m,
+                   "Water kept between the vehicle and the charted depth, hazards and obstacle tops (m)")
+        ->capture_default_str();
+  }
 }
 
 namespace {
@@ -59,6 +107,7 @@ const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter
     {"start_heading", "--from-heading"},
     {"tolerance", "--tolerance"},
     {"turn_radius_m", "--turn-radius"},
+    {"unassessed", "--unassessed-zoc"},
     {"vehicle", "--vehicle"},
     {"vertical_clearance_m", "--vertical-clearance"},
     {"waypoint_grid", "--waypoint-grid"},

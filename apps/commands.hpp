@@ -8,6 +8,7 @@
 #include <string_view>
 
 namespace deepguide {
+struct ChartOptions;
 class LocalFrame;
 struct Route;
 enum class ReactiveMethod;
@@ -29,6 +30,13 @@ struct FrameOptions {
   std::string src_crs;  ///< --src-crs: CRS of inputs that carry none
 };
 void add_frame_options(CLI::App& cmd, FrameOptions& options);
+
+/// The chart options of every command that reads S-57 charts, with the same
+/// names and meaning everywhere (world/chart_options.hpp): --zoc
+/// clipped|strict|none (--no-zoc for none), --restricted, --unassessed-zoc
+/// A,B,R, and --vertical-clearance (also --clearance) where the command
+/// keeps one (`vertical_clearance_m` not null).
+void add_chart_options(CLI::App& cmd, ChartOptions& chart, double* vertical_clearance_m);
 
 void register_obstacles_info(CLI::App& obstacles);
 void register_obstacles_convert(CLI::App& obstacles);

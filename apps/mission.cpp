@@ -13,6 +13,7 @@
 #include "deepguide/render/mission_figure.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 #include "deepguide/simulation/mission_run_report.hpp"
+#include "deepguide/world/chart_options.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -20,6 +21,7 @@ namespace {
 struct MissionOptions {
   std::string mission;
   bool json = false;
+  ChartOptions chart;
 };
 
 // Printed first, then said loudly: exit 3 with the report's one-line reason.
@@ -44,13 +46,15 @@ void register_mission(CLI::App& app) {
       "check", "Read a mission, expand it into basic manoeuvres and list the obstacles and shoals that endanger them");
   check->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   check->add_flag("--json", o->json, "Print the result as JSON");
-  check->callback([o] { print_then_fail(check_mission_file(o->mission), o->json); });
+  add_chart_options(*check, o->chart, nullptr);
+  check->callback([o] { print_then_fail(check_mission_file(o->mission, o->chart), o->json); });
 
   CLI::App* plan = mission->add_subcommand(
       "plan", "Read a mission and resolve every conflict by its rules (evade, or identify), then check the whole plan");
   plan->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   plan->add_flag("--json", o->json, "Print the result as JSON");
-  plan->callback([o] { print_then_fail(plan_mission_file(o->mission), o->json); });
+  add_chart_options(*plan, o->chart, nullptr);
+  plan->callback([o] { print_then_fail(plan_mission_file(o->mission, o->chart), o->json); });
 
   struct ExportCli {
     std::string output, format, route_name;
@@ -72,9 +76,10 @@ void register_mission(CLI::App& app) {
   exp->add_option("--arc-tolerance", e->tolerance, "How far waypoints along arcs may cut inside them (m)")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 100.0));
+  add_chart_options(*exp, o->chart, nullptr);
   exp->callback([o, e] {
-    MissionExportRequest request{
-        o->mission, e->output, std::nullopt, {e->tolerance, e->overwrite, e->route_name}, e->as_written};
+    MissionExportRequest request{o->mission,    e->output, std::nullopt, {e->tolerance, e->overwrite, e->route_name},
+                                 e->as_written, o->chart};
     if (!e->format.empty()) request.format = parse_export_format(e->format);
     const MissionExportReport report = export_mission_file(request);
     for (const std::string& w : report.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -91,6 +96,7 @@ void register_mission_simulate(CLI::App& mission) {
     double delay = 5.0;
     double zoom = 0.0;
     bool json = false;
+    ChartOptions chart;
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = mission.add_subcommand(
@@ -107,8 +113,9 @@ void register_mission_simulate(CLI::App& mission) {
   cmd->add_option("--zoom", o->zoom, "With --render: show only this many metres around the first object found")
       ->check(CLI::Range(10.0, 1e5));
   cmd->add_flag("--json", o->json, "Print the result as JSON");
+  add_chart_options(*cmd, o->chart, nullptr);
   cmd->callback([o] {
-    MissionRunRequest request{o->mission, o->unknown, {}, {{"--render", o->render}}, !o->render.empty()};
+    MissionRunRequest request{o->mission, o->unknown, {}, {{"--render", o->render}}, !o->render.empty(), o->chart};
     request.options.seed = o->seed;
     request.options.planning_delay_s = o->delay;
     const MissionRunReport report = simulate_mission_file(request);

@@ -38,8 +38,7 @@ void register_plan(CLI::App& app) {
   cmd->add_option(
       "--depth", r.depth_m,
       "Operating depth (m); obstacles whose top_depth_m lies deeper than depth + --vertical-clearance are passed over");
-  cmd->add_option("--vertical-clearance", r.vertical_clearance_m, "Vertical clearance above obstacle tops (m)")
-      ->capture_default_str();
+  add_chart_options(*cmd, r.chart, &r.vertical_clearance_m);
   CLI::Option* graph = cmd->add_option("--graph", c->graph, graph_help_text())->capture_default_str();
   cmd->add_option("--search", c->search, "astar or dijkstra")->capture_default_str();
   cmd->add_option("--max-expansions", r.max_expansions,

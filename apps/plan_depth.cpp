@@ -67,6 +67,7 @@ void run_plan_in_depth(const LocalFrame& frame, const RoutePlanRequest& shared, 
   r.obstacles = shared.obstacles;
   r.charts = shared.charts;
   r.src_crs = shared.src_crs;
+  r.chart = shared.chart;
   r.start = shared.problem.start;
   r.goal = shared.problem.goal;
   r.start_depth_m = std::isnan(f.from_depth) ? shared.depth_m : f.from_depth;

@@ -1,4 +1,4 @@
-// deepguide render chart FILE... [--depth M] [--clearance M] [--obstacles FILE...] -o OUT.png|svg [--width PX]
+// deepguide render chart FILE... [--depth M] [chart options] [--obstacles FILE...] -o OUT.png|svg [--width PX]
 
 #include <cmath>
 #include <cstdio>
@@ -27,8 +27,7 @@ void register_render_chart(CLI::App& render) {
   cmd->add_option("FILE", o->chart.charts, "Charts: bathymetry rasters, S-57 cells (.000), hazard files")->required();
   cmd->add_option("-o,--output", o->output, "Image to write: .png or .svg")->required();
   CLI::Option* depth = cmd->add_option("--depth", o->depth, "Operating depth (m, positive down): draw the no-go area");
-  cmd->add_option("--clearance", o->chart.clearance_m, "Vertical clearance above the sea floor and hazards (m)")
-      ->capture_default_str();
+  add_chart_options(*cmd, o->chart.chart_options, &o->chart.clearance_m);
   cmd->add_option("--obstacles", o->chart.obstacles, "Further obstacle files to draw (GeoJSON, GeoPackage, ...)")
       ->expected(1, -1);
   cmd->add_option("--crs", o->chart.local_crs, "Local frame, a projected CRS (default: UTM zone of the first chart)");

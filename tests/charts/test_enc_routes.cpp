@@ -6,7 +6,7 @@
 // feature, and none is refused while the raster connects start and goal.
 //
 // The charted rules checked are the ECDIS ones without zones of confidence
-// (the library runs with zone_of_confidence off here; the zones only add
+// (the library runs with zones of confidence off here, ZocPolicy::none; the zones only add
 // no-go): depth and dredged areas with DRVAL1 < D, land, unsurveyed areas,
 // structures, dangers and soundings shallower than D (dangers of unknown
 // depth as no-go), and water outside the coverage.
@@ -253,7 +253,7 @@ void run_case(const Case& c, unsigned seed) {
   EncNoGoOptions options;
   options.operating_depth_m = c.depth;
   options.vertical_clearance_m = 2.0;
-  options.zone_of_confidence = false;
+  options.zoc = ZocPolicy::none;
   const EncNoGo no_go = enc_no_go({path}, std::nullopt, options);
   const std::string epsg = no_go.frame.id();
   ASSERT_EQ(epsg.rfind("EPSG:", 0), 0u);

@@ -28,7 +28,17 @@ Vec2 constant_current(const Mission& mission) {
   return speed * Vec2(std::cos(a), std::sin(a));
 }
 
-MissionEnvironment load_environment(const Mission& mission) {
+namespace {
+
+EncNoGoOptions sea_floor_options(const ChartOptions& chart) {
+  EncNoGoOptions o;
+  static_cast<ChartOptions&>(o) = chart;
+  return o;
+}
+
+}  // namespace
+
+MissionEnvironment load_environment(const Mission& mission, const ChartOptions& chart) {
   MissionEnvironment env;
   env.current = constant_current(mission);
   if (!mission.obstacles.empty()) {
@@ -73,7 +83,7 @@ MissionEnvironment load_environment(const Mission& mission) {
     const Vec2 pad = Vec2::Constant(200.0);
     env.floor = std::make_shared<const SeaFloor>(
         enc.empty() ? SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0)
-                    : enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0));
+                    : enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0, sea_floor_options(chart)));
   }
   return env;
 }
@@ -110,9 +120,9 @@ void check_positions(const Mission& mission, const MissionEnvironment& env) {
   }
 }
 
-LoadedMission load_mission(const std::string& path) {
+LoadedMission load_mission(const std::string& path, const ChartOptions& chart) {
   LoadedMission l{read_mission(path), {}, {}};
-  l.env = load_environment(l.mission);
+  l.env = load_environment(l.mission, chart);
   check_positions(l.mission, l.env);
   l.plan = expand_mission(l.mission, l.env.obstacles);
   return l;

@@ -12,6 +12,7 @@
 #include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"
 
@@ -30,8 +31,9 @@ struct MissionEnvironment {
 /// zero here: what reads it says so.
 Vec2 constant_current(const Mission& mission);
 
-/// Throws InputError (naming the file) for an unreadable file or more than one raster.
-MissionEnvironment load_environment(const Mission& mission);
+/// Throws InputError (naming the file) for an unreadable file or more than
+/// one raster. S-57 cells are read by `chart` (chart_options.hpp).
+MissionEnvironment load_environment(const Mission& mission, const ChartOptions& chart = {});
 
 /// Refuses positions nobody can sail to: a track waypoint or goto position
 /// on land (the floor at or above the surface) or inside an obstacle's
@@ -49,6 +51,6 @@ struct LoadedMission {
 
 /// read_mission, load_environment, check_positions, expand_mission; throws
 /// what they throw.
-LoadedMission load_mission(const std::string& path);
+LoadedMission load_mission(const std::string& path, const ChartOptions& chart = {});
 
 }  // namespace deepguide

@@ -96,10 +96,10 @@ std::optional<std::string> legs_beaten(const std::string& file, const LoadedMiss
 
 // ---- mission check
 
-MissionCheckReport check_mission_file(const std::string& path) {
+MissionCheckReport check_mission_file(const std::string& path, const ChartOptions& chart) {
   MissionCheckReport r;
   r.file = path;
-  r.loaded = load_mission(path);
+  r.loaded = load_mission(path, chart);
   const LoadedMission& l = r.loaded;
   r.observe = observation_options(l.mission);
   r.conflicts = observe_collisions(l.plan, l.env.obstacles, l.env.floor.get(), r.observe);
@@ -239,10 +239,10 @@ std::string MissionCheckReport::to_text() const {
 
 // ---- mission plan
 
-MissionPlanReport plan_mission_file(const std::string& path) {
+MissionPlanReport plan_mission_file(const std::string& path, const ChartOptions& chart) {
   MissionPlanReport r;
   r.file = path;
-  r.loaded = load_mission(path);
+  r.loaded = load_mission(path, chart);
   r.planned = plan_mission(r.loaded.mission, r.loaded.env, r.loaded.plan);
   r.verdict = check_mission_plan(r.planned.plan, r.loaded.env, observation_options(r.loaded.mission));
   return r;
@@ -318,7 +318,7 @@ std::string MissionPlanReport::to_text() const {
 MissionExportReport export_mission_file(const MissionExportRequest& request) {
   MissionExportReport report;
   report.format = request.format ? *request.format : export_format_for(request.output);
-  const LoadedMission l = load_mission(request.mission);
+  const LoadedMission l = load_mission(request.mission, request.chart);
   check_outputs_apart(mission_input_files(request.mission, l.mission), {{"-o", request.output}});
   const PlannedMission planned = plan_mission(l.mission, l.env, l.plan);
   if (!request.as_written) {

@@ -37,7 +37,7 @@ struct MissionCheckReport {
   /// Why the mission cannot be sailed (NoRouteError's text), or none.
   std::optional<std::string> failure() const;
 };
-MissionCheckReport check_mission_file(const std::string& path);
+MissionCheckReport check_mission_file(const std::string& path, const ChartOptions& chart = {});
 
 /// What `mission plan` reports: the plan with every conflict evaded or
 /// identified, and the plan checker's verdict on it.
@@ -51,7 +51,7 @@ struct MissionPlanReport {
   std::string to_text() const;
   std::optional<std::string> failure() const;
 };
-MissionPlanReport plan_mission_file(const std::string& path);
+MissionPlanReport plan_mission_file(const std::string& path, const ChartOptions& chart = {});
 
 struct MissionExportRequest {
   std::string mission;                 ///< the mission file
@@ -59,6 +59,7 @@ struct MissionExportRequest {
   std::optional<ExportFormat> format;  ///< none: from the output's extension
   ExportOptions options;
   bool as_written = false;  ///< the plan as written, without mission control's changes
+  ChartOptions chart;       ///< how S-57 cells are read
 };
 struct MissionExportReport {
   ExportFormat format = ExportFormat::geojson;

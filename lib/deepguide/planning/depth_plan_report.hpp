@@ -17,6 +17,7 @@
 #include "deepguide/planning/depth_planning.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace DEEPGUIDE_API deepguide {
@@ -28,6 +29,7 @@ struct DepthPlanRequest {
   /// obstacles with their tops.
   std::vector<std::string> charts;
   std::string src_crs;  ///< CRS of a raster or vector chart that carries none
+  ChartOptions chart;   ///< how S-57 cells are read
   Vec2 start{0.0, 0.0}, goal{0.0, 0.0};
   double start_depth_m = std::nan(""), goal_depth_m = std::nan("");  ///< both needed
   /// The depth band; NaN: VolumeOptions' top (2 m), and the floor as the bottom.

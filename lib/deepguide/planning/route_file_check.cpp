@@ -62,10 +62,9 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
     throw InputError("operating depth: expected the depth (m) to check the route against S-57 charts at");
   }
   EncNoGoOptions opts;
+  static_cast<ChartOptions&>(opts) = o.chart;
   opts.operating_depth_m = o.operating_depth_m;
   opts.vertical_clearance_m = o.vertical_clearance_m;
-  opts.restricted_areas = o.restricted_areas;
-  opts.zone_of_confidence = o.zone_of_confidence;
   std::optional<LocalFrame> frame;
   if (!o.crs.empty()) frame = LocalFrame::from_user_crs(o.crs);
   const EncNoGo no_go = chart_no_go(o.charts, frame, opts);

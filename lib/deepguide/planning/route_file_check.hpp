@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/world/chart_options.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -24,8 +25,7 @@ struct RouteFileCheckOptions {
   double margin_m = 5.0;                    ///< clearance the route must keep, >= 0
   double operating_depth_m = std::nan("");  ///< needed with charts (m, positive down)
   double vertical_clearance_m = 2.0;        ///< water kept under the vehicle, with charts
-  bool restricted_areas = false;            ///< charts: RESTRN 7, 8, 14 are no-go too
-  bool zone_of_confidence = true;           ///< charts: widen by each area's zone of confidence
+  ChartOptions chart;                       ///< charts: zones of confidence, restricted areas
 };
 
 struct RouteFileCheckReport {

@@ -158,6 +158,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
     chart_options.depth_m = r.depth_m;
     chart_options.clearance_m = r.vertical_clearance_m;
     chart_options.source_crs = r.src_crs;
+    static_cast<ChartOptions&>(chart_options.enc) = r.chart;
     charted = chart_obstacles(r.charts, frame, chart_options);
     for (const ChartFileObstacles& f : charted.files) report.passed_over += f.passed_over;
     append(report.obstacles, charted.obstacles);
@@ -189,7 +190,17 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
 
   report.plan = plan_single_query(report.obstacles, r.problem, options);
   const PlanOutcome& out = report.plan.outcome;
-  if (!out.result.found) throw NoRouteError(out.result.message);
+  if (!out.result.found) {
+    std::string why = out.result.message;
+    if (charted.enc) {
+      // What an operator looks at first: the no-go feature across the straight line (a shoal, a
+      // hazard's disc across a channel).
+      const ChartRouteCheck straight =
+          check_route_on_chart({r.problem.start, r.problem.goal}, *charted.enc, r.margin_m);
+      if (!straight.safe) why += "; the straight line " + straight.describe(frame);
+    }
+    throw NoRouteError(why);
+  }
   if (!out.check.safe)
     throw std::runtime_error("the planned route failed the independent check: " + out.check.describe());
   if (out.legs_check && !out.legs_check->safe) {

@@ -23,6 +23,7 @@
 #include "deepguide/planning/replanning.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/local_frame.hpp"
 
@@ -34,6 +35,7 @@ struct RoutePlanRequest {
   /// S-57 cells and hazard files; read into the frame.
   std::vector<std::string> charts;
   std::string src_crs;      ///< CRS of charts that carry none
+  ChartOptions chart;       ///< how S-57 charts are read (zones of confidence, restricted areas)
   PlanningProblem problem;  ///< start, goal, their headings (local) and escape
   double margin_m = 5.0;
   double tolerance_m = PlannerOptions{}.tolerance;

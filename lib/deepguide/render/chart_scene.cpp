@@ -495,7 +495,7 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   const ObstacleReadOptions read{frame.wkt(), ""};
   if (!scene.hazard_files.empty()) scene.hazards = load_obstacles(scene.hazard_files, read).obstacles;
   if (!scene.enc_charts.empty()) {
-    scene.enc = read_enc_layer(scene.enc_charts, frame, options.depth_m, options.clearance_m);
+    scene.enc = read_enc_layer(scene.enc_charts, frame, options.depth_m, options.clearance_m, options.chart_options);
   }
   if (!options.obstacles.empty()) scene.obstacles = load_obstacles(options.obstacles, read).obstacles;
   if (scene.has_depth) {

@@ -28,6 +28,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/render/canvas.hpp"
+#include "deepguide/world/chart_options.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -51,10 +52,11 @@ struct ChartRenderOptions {
   std::vector<std::string> obstacles;  ///< further obstacle files (e.g. sonar contacts)
   /// Operating depth (m, positive down) for the no-go area; NaN = none.
   double depth_m = std::numeric_limits<double>::quiet_NaN();
-  double clearance_m = 2.0;  ///< vertical clearance (m, >= 0)
-  std::string local_crs;     ///< empty = UTM zone of the first chart's centre
-  std::string source_crs;    ///< CRS of rasters that carry none (e.g. "EPSG:4326"); empty = they are an error
-  std::string title;         ///< empty = the files' names and the depth
+  double clearance_m = 2.0;    ///< vertical clearance (m, >= 0)
+  ChartOptions chart_options;  ///< how S-57 cells are read (zones of confidence, restricted areas)
+  std::string local_crs;       ///< empty = UTM zone of the first chart's centre
+  std::string source_crs;      ///< CRS of rasters that carry none (e.g. "EPSG:4326"); empty = they are an error
+  std::string title;           ///< empty = the files' names and the depth
   int width_px = 1200;
   ChartStyle style;
   /// The part of the local frame to show; empty = everything the charts hold.

@@ -71,11 +71,12 @@ bool LabelPlacer::place(const PixelRect& box) {
 }
 
 EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame& frame, double depth_m,
-                        double clearance_m) {
+                        double clearance_m, const ChartOptions& chart) {
   EncLayer layer;
   const bool prepared = cells.size() == 1 && is_prepared_chart(cells.front());
   if (std::isfinite(depth_m)) {
     EncNoGoOptions o;
+    static_cast<ChartOptions&>(o) = chart;
     o.operating_depth_m = depth_m;
     o.vertical_clearance_m = clearance_m;
     layer.no_go = chart_no_go(cells, frame, o);

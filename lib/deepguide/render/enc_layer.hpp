@@ -16,6 +16,7 @@
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/render/canvas.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 
 namespace DEEPGUIDE_API deepguide {
@@ -53,7 +54,7 @@ struct EncLayer {
 /// Reads the cells (files or folders) into `frame` for drawing; with a finite
 /// depth_m also their no-go. Throws what enc_no_go throws.
 EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame& frame, double depth_m,
-                        double clearance_m);
+                        double clearance_m, const ChartOptions& chart = {});
 
 struct EncStyle {
   Rgba drying = rgb_hex(0xb8d3a3);

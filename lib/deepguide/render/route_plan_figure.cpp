@@ -44,6 +44,7 @@ void render_route_plan(const RoutePlanReport& report, const std::string& path, b
     figure.chart.charts = r.charts;
     figure.chart.depth_m = r.depth_m;
     figure.chart.clearance_m = r.vertical_clearance_m;
+    figure.chart.chart_options = r.chart;
     figure.chart.local_crs = report.frame.id();
     figure.chart.title = title;
     figure.route = report.route.points;

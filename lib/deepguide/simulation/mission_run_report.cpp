@@ -12,7 +12,7 @@ namespace deepguide {
 MissionRunReport simulate_mission_file(const MissionRunRequest& request) {
   MissionRunReport r;
   r.file = request.mission;
-  r.loaded = load_mission(request.mission);
+  r.loaded = load_mission(request.mission, request.chart);
   const LoadedMission& l = r.loaded;
   check_outputs_apart(mission_input_files(r.file, l.mission), request.outputs);
   if (request.drawn && l.mission.charts.empty() && l.mission.obstacles.empty()) {

@@ -27,6 +27,7 @@ struct MissionRunRequest {
   std::vector<NamedPath> outputs;
   /// The caller draws the run: the mission must have charts or obstacle files to draw it over.
   bool drawn = false;
+  ChartOptions chart;  ///< how S-57 cells are read
 };
 
 struct MissionRunReport {

@@ -1,5 +1,6 @@
 #include "deepguide/world/chart_info.hpp"
 
+#include "deepguide/world/enc_catalogue.hpp"
 #include "deepguide/world/enc_cells.hpp"
 
 #include <ogrsf_frmts.h>
@@ -120,43 +121,85 @@ void raster_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
   }
 }
 
+// One cell, a folder of cells or an exchange set (every cell read together,
+// as the planners read them: the no-go is the set's, the better scale winning).
 void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
   // GDAL applies a cell's updates up to the first one missing and says
   // nothing: a broken sequence is refused here as where the cells are planned on.
-  if (names_enc(info.path)) (void)find_enc_cells({info.path});
-  const S57Summary sum = summarize_s57(info.path);
+  const std::vector<EncCellFiles> files = find_enc_cells({info.path});
+  const bool several = files.size() > 1 || fs::is_directory(info.path) || is_enc_catalogue_name(info.path);
   info.crs = "EPSG:4326";  // S-57 positions are WGS 84 lon/lat by the standard
-  info.extent = sum.extent;
-  for (const auto& [name, n] : sum.layer_counts) info.layers.push_back({name, n, ""});
   auto lo = [](double a, double b) { return std::isnan(a) ? b : std::isnan(b) ? a : std::min(a, b); };
   auto hi = [](double a, double b) { return std::isnan(a) ? b : std::isnan(b) ? a : std::max(a, b); };
-  info.min_depth_m = lo(sum.depare_min_m, sum.sounding_min_m);
-  info.max_depth_m = hi(sum.depare_max_m, sum.sounding_max_m);
+  std::map<std::string, std::size_t> layers;
+  std::vector<S57Summary> sums;
+  for (const EncCellFiles& f : files) {
+    S57Summary sum = summarize_s57(f.base);
+    for (const auto& [name, n] : sum.layer_counts) layers[name] += n;
+    for (const auto& [zoc, n] : sum.zoc_areas) info.zoc_areas[zoc] += n;
+    info.min_depth_m = lo(info.min_depth_m, lo(sum.depare_min_m, sum.sounding_min_m));
+    info.max_depth_m = hi(info.max_depth_m, hi(sum.depare_max_m, sum.sounding_max_m));
+    info.extent = {lo(info.extent.west, sum.extent.west), hi(info.extent.east, sum.extent.east),
+                   lo(info.extent.south, sum.extent.south), hi(info.extent.north, sum.extent.north)};
+    sums.push_back(std::move(sum));
+  }
+  for (const auto& [name, n] : layers) info.layers.push_back({name, n, ""});
   S57Options so;
   so.local_crs = o.local_crs;
-  const LocalFrame frame = s57_local_frame(sum, so);
+  const LocalFrame frame = several ? frame_for(info.extent, o) : s57_local_frame(sums.front(), so);
   info.local_crs = frame.id();
   local_size(info, frame);
-  const S57Hazards all = s57_hazards(info.path, frame, so);
-  for (const auto& [cls, n] : all.features_read) {
-    if (cls == "LNDARE") {
-      info.land_features += n;
-    } else {
-      info.hazards += n;
+  for (const EncCellFiles& f : files) {
+    const S57Hazards all = s57_hazards(f.base, frame, so);
+    for (const auto& [cls, n] : all.features_read) {
+      if (cls == "LNDARE") {
+        info.land_features += n;
+      } else {
+        info.hazards += n;
+      }
     }
   }
-  info.zoc_areas = sum.zoc_areas;
+  std::optional<EncNoGo> no_go;
   if (!std::isnan(o.depth_m)) {
     EncNoGoOptions eo;
+    static_cast<ChartOptions&>(eo) = o.chart;
     eo.operating_depth_m = o.depth_m;
     eo.vertical_clearance_m = o.clearance_m;
-    const EncNoGo no_go = enc_no_go({info.path}, frame, eo);
+    no_go = enc_no_go({info.path}, frame, eo);
+  }
+  if (several) {
+    if (no_go) {
+      for (const EncCellSummary& c : no_go->cells) {
+        info.cells.push_back({c.path, c.name, c.usage_band, c.compilation_scale, c.edition, c.update_number, ""});
+      }
+    } else {
+      for (std::size_t i = 0; i < files.size(); ++i) {
+        const EncCellFiles& f = files[i];
+        info.cells.push_back({f.base, fs::path(f.base).stem().string(), sums[i].usage_band, sums[i].compilation_scale,
+                              sums[i].edition, sums[i].update_number, ""});
+      }
+      // Best scale first, as the no-go decides overlaps (enc_no_go.hpp).
+      std::stable_sort(info.cells.begin(), info.cells.end(), [](const ChartCell& a, const ChartCell& b) {
+        const long sa = a.compilation_scale > 0 ? a.compilation_scale : std::numeric_limits<long>::max();
+        const long sb = b.compilation_scale > 0 ? b.compilation_scale : std::numeric_limits<long>::max();
+        if (sa != sb) return sa < sb;
+        if (a.usage_band != b.usage_band) return a.usage_band > b.usage_band;
+        return a.name < b.name;
+      });
+    }
+    for (ChartCell& c : info.cells) {
+      for (const EncCellFiles& f : files) {
+        if (f.base == c.path) c.catalogue = f.catalogue;
+      }
+    }
+  }
+  if (no_go) {
     NoGoSummary s;
     s.depth_m = o.depth_m;
     s.clearance_m = o.clearance_m;
     // Inside the coverage: the ring of unknown water round it is the planners' fence, not chart.
     BgMultiPolygon areas;
-    for (const EncNoGoFeature& f : no_go.features) {
+    for (const EncNoGoFeature& f : no_go->features) {
       if (f.cls == "M_COVR") continue;
       for (const BgPolygon& p : f.area) areas.push_back(p);
       if (f.point) {
@@ -170,10 +213,10 @@ void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
     std::vector<const BgPolygon*> parts;
     for (const BgPolygon& p : areas) parts.push_back(&p);
     for (const BgPolygon& p : union_no_go({}, parts)) s.area_m2 += boost::geometry::area(p);
-    s.polygons = no_go.obstacles.polygons.size();
-    s.vertices = no_go.vertices;
-    s.no_go_by_class = no_go.no_go_by_class;
-    for (const auto& [cls, n] : no_go.passable_by_class) s.hazards_passable += n;
+    s.polygons = no_go->obstacles.polygons.size();
+    s.vertices = no_go->vertices;
+    s.no_go_by_class = no_go->no_go_by_class;
+    for (const auto& [cls, n] : no_go->passable_by_class) s.hazards_passable += n;
     info.no_go = s;
   }
 }
@@ -274,6 +317,14 @@ ChartInfo chart_info(const std::string& path, const ChartInfoOptions& options) {
   check_options(options);
   ChartInfo info;
   info.path = path;
+  std::error_code ec;
+  if (fs::is_directory(path, ec) || is_enc_catalogue_name(path)) {
+    // A folder of S-57 cells or an exchange set: its cells read together.
+    info.kind = ChartKind::s57;
+    info.driver = "S57";
+    s57_info(info, options);
+    return info;
+  }
   GDALDatasetUniquePtr ds = open_chart(path);
   info.driver = ds->GetDriver() != nullptr ? ds->GetDriver()->GetDescription() : "";
   info.kind = kind_of(*ds, path);
@@ -311,6 +362,19 @@ nlohmann::json to_json(const ChartInfo& info) {
   if (info.kind == ChartKind::s57) {
     j["land_features"] = info.land_features;
     j["zones_of_confidence"] = info.zoc_areas;
+    if (!info.cells.empty()) {
+      nlohmann::json cells = nlohmann::json::array();
+      for (const ChartCell& c : info.cells) {
+        cells.push_back({{"name", c.name},
+                         {"path", c.path},
+                         {"usage_band", c.usage_band},
+                         {"compilation_scale", c.compilation_scale},
+                         {"edition", c.edition},
+                         {"update", c.update_number},
+                         {"catalogue", c.catalogue.empty() ? nlohmann::json() : nlohmann::json(c.catalogue)}});
+      }
+      j["cells"] = cells;
+    }
   }
   if (info.kind == ChartKind::raster) {
     j["raster"] = {{"width", info.raster_width},
@@ -351,7 +415,14 @@ std::string range(double lo, double hi) {
 
 std::string to_text(const ChartInfo& c) {
   std::string t;
-  t += printf_text("%s  [%s, %s, %s]\n", c.path.c_str(), to_string(c.kind), c.driver.c_str(), c.crs.c_str());
+  t += printf_text("%s  [%s, %s, %s]\n", c.path.c_str(), c.cells.empty() ? to_string(c.kind) : "S-57 cells",
+                   c.driver.c_str(), c.crs.c_str());
+  for (const ChartCell& cell : c.cells) {
+    t += printf_text("  cell           %-9s", cell.name.c_str());
+    if (cell.compilation_scale > 0) t += printf_text(" band %d, 1:%ld,", cell.usage_band, cell.compilation_scale);
+    t += printf_text(" edition %s, update %d%s\n", cell.edition.c_str(), cell.update_number,
+                     cell.catalogue.empty() ? "" : " (from its catalogue, CRC checked)");
+  }
   for (const ChartLayer& l : c.layers) {
     t += printf_text("  layer          %-14s %zu %s%s%s\n", l.name.c_str(), l.features,
                      c.kind == ChartKind::raster ? "cells" : "feature(s)", l.detail.empty() ? "" : ", ",

@@ -31,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/s57_chart.hpp"  // LonLatExtent
 
 namespace DEEPGUIDE_API deepguide {
@@ -57,6 +58,16 @@ struct NoGoSummary {
   std::size_t vertices = 0;
 };
 
+/// One cell of a chart argument that names several (a folder, an exchange set).
+struct ChartCell {
+  std::string path, name;
+  int usage_band = 0;
+  long compilation_scale = 0;
+  std::string edition;
+  int update_number = 0;
+  std::string catalogue;  ///< the CATALOG.031 that listed it ("" when found by a search)
+};
+
 struct ChartInfo {
   std::string path;
   ChartKind kind = ChartKind::raster;
@@ -71,6 +82,9 @@ struct ChartInfo {
   std::size_t hazards = 0;
   std::size_t land_features = 0;                 ///< S-57: LNDARE features
   std::map<std::string, std::size_t> zoc_areas;  ///< S-57: M_QUAL areas per CATZOC letter
+  /// S-57 folders and exchange sets: their cells, best scale first (the order
+  /// overlaps are decided in); empty for a single cell.
+  std::vector<ChartCell> cells;
   // Raster facts.
   int raster_width = 0, raster_height = 0;
   double cell_x_m = 0, cell_y_m = 0;  ///< in CRS units
@@ -91,10 +105,14 @@ struct ChartInfoOptions {
   /// CRS of a raster or vector file that carries none (e.g. "EPSG:4326" for
   /// an ESRI ASCII grid without .prj); empty = such a raster is an error.
   std::string source_crs;
+  /// How S-57 cells are read for the no-go summary.
+  ChartOptions chart;
 };
 
 /// The kind of chart at `path` (see the decisions above). Throws InputError
 /// naming the file when it is missing, a folder, or nothing GDAL reads as a chart.
+/// (chart_info itself takes folders of S-57 cells and exchange sets: their
+/// cells are read together, as the planners read them.)
 ChartKind chart_kind(const std::string& path);
 
 /// Throws InputError (one line naming the file, or the option) for a missing

@@ -62,10 +62,8 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
   }
   if (!enc.empty()) {
     if (!has_depth) {
-      throw input_error(
-          {enc.front(), "", ""},
-          "`depth_m`, an operating depth to judge an S-57 chart's depth areas by (what plans in depth reads "
-          "cells as a sea floor: enc_sea_floor.hpp)");
+      throw input_error({enc.front(), "", ""},
+                        "`depth_m`, the operating depth (m) to judge an S-57 chart's depth areas and dangers by");
     }
     EncNoGoOptions o = options.enc;
     o.operating_depth_m = options.depth_m;

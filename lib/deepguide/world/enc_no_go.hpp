@@ -20,7 +20,9 @@
 // radius of a point hazard (points and lines have no area: a point becomes a
 // disc of that radius, a line a strip of line_half_width_m; the planner's
 // margin comes on top). An area lying in several zones is split where the
-// verdict changes.
+// verdict changes. By the default policy (ZocPolicy::clipped) a disc is
+// clipped to the water whose zone is not better than the hazard's own, this
+// cell's zones and those of the better cells read before it.
 // Several cells: where coverages overlap, the cell of the larger compilation
 // scale (smaller DSPM_CSCL; then the higher usage band) wins: every other
 // cell's features are clipped to what no better cell covers.
@@ -34,38 +36,25 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/enc_reader.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-/// What a zone of confidence promises (IHO S-57 CATZOC): depths within
-/// depth_fixed_m + depth_fraction * depth, positions within position_m.
-struct ZocFigures {
-  double depth_fixed_m = 0;
-  double depth_fraction = 0;
-  double position_m = 0;
-};
-
-struct EncNoGoOptions {
+/// How cells are read for a vehicle at an operating depth: the chart options
+/// every command shares (chart_options.hpp: zones of confidence, restricted
+/// areas, the unassessed figures), and what only callers in the library set.
+struct EncNoGoOptions : ChartOptions {
   /// Operating depth (m, positive down). Required: finite, >= 0.
   double operating_depth_m = std::numeric_limits<double>::quiet_NaN();
   /// Water kept between the vehicle and the charted depth (m, >= 0).
   double vertical_clearance_m = 2.0;
-  /// Subtract the zone of confidence's depth uncertainty and widen point
-  /// hazards by its position accuracy. Off: charted depths as they are and
-  /// points as discs of point_radius_m.
-  bool zone_of_confidence = true;
-  /// Figures for CATZOC D ("worse than C"), U (unassessed) and water without
-  /// an M_QUAL area: by default C's, the best such a zone can be.
-  ZocFigures unassessed{2.0, 0.05, 500.0};
   /// Radius of a point hazard without zones of confidence (m, > 0).
   double point_radius_m = 10.0;
   /// Half width of the strip a line feature becomes (m, > 0).
   double line_half_width_m = 0.5;
-  /// Restricted areas (RESTRN 7, 8, 14) as no-go.
-  bool restricted_areas = false;
   bool apply_updates = true;
   /// How far the planners' polygons may lie outside the exact no-go (m, >= 0; 0 = exact).
   double simplify_tolerance_m = 1.0;
@@ -117,7 +106,7 @@ struct EncNoGo {
 /// CATZOC code (1..6) -> "A1", "A2", "B", "C", "D", "U"; other -> "unknown".
 std::string zoc_name(int catzoc);
 /// The figures of a CATZOC code; D, U and anything else give options.unassessed.
-ZocFigures zoc_figures(int catzoc, const EncNoGoOptions& options);
+ZocFigures zoc_figures(int catzoc, const ChartOptions& options);
 
 /// The depth (m, positive down) an ECDIS would give the top of an OBSTRN,
 /// WRECKS or UWTROC feature: VALSOU; else 0 when WATLEV says it dries, is

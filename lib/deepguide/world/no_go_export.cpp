@@ -17,11 +17,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 void from_cells(const NoGoExportRequest& r, NoGoExportReport& out) {
   EncNoGoOptions opts;
+  static_cast<ChartOptions&>(opts) = r.chart;
   opts.operating_depth_m = r.nogo.operating_depth_m;
   opts.vertical_clearance_m = r.nogo.vertical_clearance_m;
   opts.simplify_tolerance_m = r.nogo.simplify_tolerance_m;
-  opts.restricted_areas = r.restricted_areas;
-  opts.zone_of_confidence = r.zone_of_confidence;
   const auto t0 = std::chrono::steady_clock::now();
   const EncNoGo no_go = enc_no_go(
       r.charts, r.crs.empty() ? std::nullopt : std::optional<LocalFrame>(LocalFrame::from_user_crs(r.crs)), opts);
@@ -94,6 +93,8 @@ nlohmann::json NoGoExportReport::to_json() const {
             {"no_go_by_class", no_go_by_class},
             {"passable_by_class", passable_by_class},
             {"zones_of_confidence", zoc_areas},
+            {"zoc", to_string(request.chart.zoc)},
+            {"restricted_areas", request.chart.restricted_areas},
             {"polygons", polygons},
             {"discs", discs},
             {"vertices", vertices},
@@ -129,7 +130,7 @@ std::string NoGoExportReport::to_text() const {
     text += report_line("local frame", local_crs + " (" + local_crs_name + ")");
     text += report_line("rule", "charted depth less its zone of confidence < " + fixed(o.operating_depth_m, 2) +
                                     " m (operating) + " + fixed(o.vertical_clearance_m, 2) + " m (clearance)" +
-                                    (request.zone_of_confidence ? "" : " (zones ignored)"));
+                                    (request.chart.zones_of_confidence() ? "" : " (zones ignored)"));
     std::string classes;
     for (const auto& [cls, n] : no_go_by_class)
       classes += (classes.empty() ? "" : ", ") + cls + " " + std::to_string(n);

@@ -12,6 +12,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/world/bathymetry.hpp"
+#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/no_go.hpp"
 
@@ -26,8 +27,7 @@ struct NoGoExportRequest {
   std::string src_crs;                             ///< raster: the CRS of one that carries none
   VerticalSense sense = VerticalSense::automatic;  ///< raster values
   bool nodata_is_no_go = true;                     ///< raster: cells without data
-  bool restricted_areas = false;                   ///< S-57: RESTRN 7, 8, 14 no-go too
-  bool zone_of_confidence = true;                  ///< S-57: charted values less their uncertainty
+  ChartOptions chart;                              ///< S-57: zones of confidence, restricted areas
   NoGoOptions nogo;                                ///< operating depth, vertical clearance, simplification tolerance
 };
 

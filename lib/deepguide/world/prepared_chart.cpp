@@ -18,7 +18,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kFormat = "deepguide prepared chart 1";
+constexpr const char* kFormat = "deepguide prepared chart 2";
+// Format 1 had one zone_of_confidence flag (discs unclipped): read as strict or none.
+constexpr const char* kFormat1 = "deepguide prepared chart 1";
 constexpr const char* kMetaLayer = "deepguide_chart";
 constexpr const char* kFeatureLayer = "no_go_features";
 
@@ -89,6 +91,10 @@ void write_meta(GDALDataset& ds, const EncNoGo& no_go, const EncNoGoOptions& o, 
                                                                    {"vertical_clearance_m", OFTReal},
                                                                    {"required_depth_m", OFTReal},
                                                                    {"zone_of_confidence", OFTInteger},
+                                                                   {"zoc", OFTString},
+                                                                   {"unassessed_depth_fixed_m", OFTReal},
+                                                                   {"unassessed_depth_fraction", OFTReal},
+                                                                   {"unassessed_position_m", OFTReal},
                                                                    {"restricted_areas", OFTInteger},
                                                                    {"simplify_tolerance_m", OFTReal},
                                                                    {"local_crs", OFTString},
@@ -106,7 +112,11 @@ void write_meta(GDALDataset& ds, const EncNoGo& no_go, const EncNoGoOptions& o, 
   f.SetField("depth_m", o.operating_depth_m);
   f.SetField("vertical_clearance_m", o.vertical_clearance_m);
   f.SetField("required_depth_m", no_go.required_depth_m);
-  f.SetField("zone_of_confidence", o.zone_of_confidence ? 1 : 0);
+  f.SetField("zone_of_confidence", o.zones_of_confidence() ? 1 : 0);
+  f.SetField("zoc", to_string(o.zoc));
+  f.SetField("unassessed_depth_fixed_m", o.unassessed.depth_fixed_m);
+  f.SetField("unassessed_depth_fraction", o.unassessed.depth_fraction);
+  f.SetField("unassessed_position_m", o.unassessed.position_m);
   f.SetField("restricted_areas", o.restricted_areas ? 1 : 0);
   f.SetField("simplify_tolerance_m", o.simplify_tolerance_m);
   f.SetField("local_crs", no_go.frame.id().c_str());
@@ -161,14 +171,28 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
   OGRLayer* meta = ds ? ds->GetLayerByName(kMetaLayer) : nullptr;
   if (meta == nullptr) throw InputError(shown(path) + ": expected a prepared chart (chart prepare), got none");
   std::unique_ptr<OGRFeature> row(meta->GetNextFeature());
-  if (!row || std::string(row->GetFieldAsString("format")) != kFormat) {
+  const std::string format = row ? row->GetFieldAsString("format") : "";
+  if (format != kFormat && format != kFormat1) {
     throw InputError(shown(path) + ": table deepguide_chart: expected format '" + kFormat + "'");
   }
   PreparedChartInfo p;
   p.depth_m = row->GetFieldAsDouble("depth_m");
   p.vertical_clearance_m = row->GetFieldAsDouble("vertical_clearance_m");
-  p.zone_of_confidence = row->GetFieldAsInteger("zone_of_confidence") != 0;
-  p.restricted_areas = row->GetFieldAsInteger("restricted_areas") != 0;
+  const bool zones = row->GetFieldAsInteger("zone_of_confidence") != 0;
+  if (format == kFormat1) {
+    p.chart.zoc = zones ? ZocPolicy::strict : ZocPolicy::none;
+  } else {
+    const std::optional<ZocPolicy> zoc = parse_zoc_policy(row->GetFieldAsString("zoc"));
+    if (!zoc) {
+      throw InputError(shown(path) + ": table deepguide_chart, field 'zoc': expected clipped, strict or none, got '" +
+                       printable(row->GetFieldAsString("zoc")) + "'");
+    }
+    p.chart.zoc = *zoc;
+    p.chart.unassessed = {row->GetFieldAsDouble("unassessed_depth_fixed_m"),
+                          row->GetFieldAsDouble("unassessed_depth_fraction"),
+                          row->GetFieldAsDouble("unassessed_position_m")};
+  }
+  p.chart.restricted_areas = row->GetFieldAsInteger("restricted_areas") != 0;
   p.simplify_tolerance_m = row->GetFieldAsDouble("simplify_tolerance_m");
   p.cells = row->GetFieldAsString("cells");
   if (info != nullptr) *info = p;
@@ -242,15 +266,9 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
   PreparedChartInfo info;
   EncNoGo out =
       read_prepared_chart(charts.front(), frame, options.operating_depth_m, options.vertical_clearance_m, &info);
-  if (info.zone_of_confidence != options.zone_of_confidence || info.restricted_areas != options.restricted_areas) {
-    auto flags = [](bool zoc, bool restricted) {
-      return std::string(zoc ? "zones of confidence" : "no zones of confidence") +
-             (restricted ? " and restricted areas" : "");
-    };
-    throw InputError(shown(charts.front()) + ": prepared with " +
-                     flags(info.zone_of_confidence, info.restricted_areas) + ", expected " +
-                     flags(options.zone_of_confidence, options.restricted_areas) +
-                     ": prepare it again with the settings of this run");
+  if (const std::string differs = chart_options_difference(info.chart, options); !differs.empty()) {
+    throw InputError(shown(charts.front()) + ": prepared with " + differs +
+                     ": prepare it again (chart prepare) with the chart options of this run");
   }
   return out;
 }
@@ -273,6 +291,8 @@ nlohmann::json ChartPreparation::to_json() const {
           {"cells", no_go.cells.size()},
           {"local_crs", no_go.frame.id()},
           {"required_depth_m", no_go.required_depth_m},
+          {"zoc", to_string(options.zoc)},
+          {"restricted_areas", options.restricted_areas},
           {"no_go_features", no_go.features.size()},
           {"polygons", no_go.obstacles.polygons.size()},
           {"discs", no_go.obstacles.ellipses.size()},
@@ -288,7 +308,11 @@ std::string ChartPreparation::to_text() const {
   }
   t += printf_text("required depth   %.2f m (%.2f + %.2f clearance)%s\n", no_go.required_depth_m,
                    options.operating_depth_m, options.vertical_clearance_m,
-                   options.zone_of_confidence ? ", less each zone of confidence" : "");
+                   options.zones_of_confidence() ? ", less each zone of confidence" : "");
+  t += printf_text("zones            %s%s\n", to_string(options.zoc),
+                   options.zoc == ZocPolicy::clipped ? " (point hazards' discs clipped to zones not better than theirs)"
+                   : options.zoc == ZocPolicy::strict ? " (point hazards' discs unclipped)"
+                                                      : " (charted depths and positions as exact)");
   t += printf_text("no-go            %zu features; for the planners %zu polygon(s), %zu corners, %zu disc(s)\n",
                    no_go.features.size(), no_go.obstacles.polygons.size(), no_go.vertices,
                    no_go.obstacles.ellipses.size());

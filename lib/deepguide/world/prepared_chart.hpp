@@ -28,8 +28,9 @@ namespace DEEPGUIDE_API deepguide {
 struct PreparedChartInfo {
   double depth_m = 0;
   double vertical_clearance_m = 0;
-  bool zone_of_confidence = true;
-  bool restricted_areas = false;
+  /// The chart options it was prepared with (a chart of format 1, before the
+  /// policies, reads as strict or none).
+  ChartOptions chart;
   double simplify_tolerance_m = 0;
   std::string cells;  ///< "NAME edition E update U; ..."
 };
@@ -66,7 +67,8 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
                             double vertical_clearance_m, PreparedChartInfo* info = nullptr);
 
 /// The no-go of `charts`: S-57 cells and folders (enc_no_go), or one prepared
-/// chart read at options' depth and clearance (its other options are its own).
+/// chart read at options' depth and clearance; a prepared chart whose chart
+/// options differ from `options` is refused, naming the option.
 EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<LocalFrame>& frame,
                     const EncNoGoOptions& options);
 

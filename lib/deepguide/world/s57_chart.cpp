@@ -97,6 +97,8 @@ S57Summary summarize_s57(const std::string& path, bool apply_updates) {
         s.edition = string_field(*f, "DSID_EDTN");
         s.update_number = std::atoi(string_field(*f, "DSID_UPDN").c_str());
         s.issue_date = string_field(*f, "DSID_ISDT");
+        s.usage_band = std::atoi(string_field(*f, "DSID_INTU").c_str());
+        s.compilation_scale = std::atol(string_field(*f, "DSPM_CSCL").c_str());
       } else if (name == "M_COVR" && g != nullptr && !g->IsEmpty()) {
         grow(s.extent, env);
         has_coverage = true;

@@ -64,9 +64,11 @@ struct S57Summary {
   /// Features per object class (OGR layer), as the cell stores them: SOUNDG
   /// counts multipoint features, not single soundings.
   std::map<std::string, std::size_t> layer_counts;
-  std::string edition;     ///< DSID_EDTN
-  int update_number = 0;   ///< DSID_UPDN after the updates read (0 = base cell only)
-  std::string issue_date;  ///< DSID_ISDT, YYYYMMDD
+  std::string edition;         ///< DSID_EDTN
+  int update_number = 0;       ///< DSID_UPDN after the updates read (0 = base cell only)
+  std::string issue_date;      ///< DSID_ISDT, YYYYMMDD
+  int usage_band = 0;          ///< DSID_INTU (1 overview .. 6 berthing)
+  long compilation_scale = 0;  ///< DSPM_CSCL (the scale denominator)
   /// Depth areas: min DRVAL1 and max DRVAL2 (m; negative = drying). NaN without DEPARE.
   double depare_min_m = std::numeric_limits<double>::quiet_NaN();
   double depare_max_m = std::numeric_limits<double>::quiet_NaN();
