@@ -158,7 +158,7 @@ TEST(EncRules, ZonesOfConfidenceAreTheIhoFigures) {
 // A square of land (0..100 m) in a hand-made no-go: the check's verdict on
 // routes a known distance from it.
 EncNoGo square_land() {
-  EncNoGo no_go{LocalFrame::utm_for(-76.4, 38.8), 0.0, {}, {}, {}, {}, {}, {}, 0};
+  EncNoGo no_go{LocalFrame::utm_for(-76.4, 38.8), 0.0, {}, {}, {}, {}, {}, {}, 0, {}, {}, {}};
   EncNoGoFeature land;
   land.id = "LNDARE/1";
   land.cls = "LNDARE";

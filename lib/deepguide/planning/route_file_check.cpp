@@ -7,6 +7,7 @@
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/world/enc_route_check.hpp"
+#include "deepguide/world/enc_route_quality.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 
@@ -90,6 +91,11 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
       r.waypoints = route.points.size();
       r.length_m = route.length();
       j["waypoints"] = r.waypoints, j["length_m"] = r.length_m;
+      if (route.points.size() >= 2) {
+        const RouteQuality quality = route_quality(route.points, no_go);
+        j["chart_quality"] = quality.to_json(no_go.frame);
+        r.chart_quality = quality.to_text(no_go.frame);
+      }
     }
     const ChartRouteCheck check = check_route_on_chart(route.points, no_go, o.margin_m, kRouteFileTolerance_m);
     crossed += check.crossed_features;
@@ -120,7 +126,9 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
 
 std::string RouteFileCheckReport::to_text() const {
   if (!safe) return "unsafe: " + why;
-  return "safe: " + why + " (" + std::to_string(waypoints) + " waypoints, " + fixed(length_m, 1) + " m)";
+  std::string t = "safe: " + why + " (" + std::to_string(waypoints) + " waypoints, " + fixed(length_m, 1) + " m)";
+  if (!chart_quality.empty()) t += "\n" + chart_quality.substr(0, chart_quality.size() - 1);
+  return t;
 }
 
 RouteFileCheckReport check_route_file(const RouteFileCheckOptions& o) {
@@ -141,6 +149,7 @@ RouteFileCheckReport check_route_file(const RouteFileCheckOptions& o) {
   if (r.safe && !chart.safe) r.why = chart.why;
   if (r.safe && chart.safe) r.why += "; " + chart.why;
   r.safe = r.safe && chart.safe;
+  r.chart_quality = chart.chart_quality;
   return r;
 }
 

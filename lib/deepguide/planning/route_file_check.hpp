@@ -34,12 +34,14 @@ struct RouteFileCheckReport {
   std::string why;
   std::size_t waypoints = 0;  ///< of the file's first line
   double length_m = 0.0;      ///< of the file's first line
+  /// On S-57 charts, the first line's quality (enc_route_quality.hpp) as report lines; "" otherwise.
+  std::string chart_quality;
   /// The verdict's fields (the obstacles' verdict, with the chart's under
   /// "chart" when both were checked).
   nlohmann::json details = nlohmann::json::object();
 
   nlohmann::json to_json() const { return details; }
-  /// "safe: WHY (N waypoints, L m)" or "unsafe: WHY".
+  /// "safe: WHY (N waypoints, L m)", then the chart quality's lines; or "unsafe: WHY".
   std::string to_text() const;
 };
 

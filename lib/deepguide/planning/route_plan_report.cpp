@@ -212,6 +212,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   report.min_clearance_m = out.legs_check ? out.legs_check->min_clearance_m : out.check.min_clearance_m;
   if (!r.replan_events.empty()) replay(report);
   refuse_leaving_coverage(charted, report.route, frame);
+  if (charted.enc) report.chart_quality = route_quality(report.route.points, *charted.enc);
 
   report.priced = price_route(model, report.route.points);
   report.timed = !model.steady || r.depart_s.has_value();
@@ -302,6 +303,7 @@ nlohmann::json RoutePlanReport::to_json() const {
     legs.push_back(row);
   }
   j["legs"] = legs;
+  if (chart_quality) j["chart_quality"] = chart_quality->to_json(frame);
   if (replay) {
     nlohmann::json repairs = nlohmann::json::array();
     for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
@@ -407,6 +409,7 @@ std::string RoutePlanReport::to_text() const {
     t += report_line("current unknown",
                      "over " + fixed(priced.unknown_current_m, 0) + " m of the route (taken as still water)");
   }
+  if (chart_quality) t += chart_quality->to_text(frame);
   if (model->current || model->economical) {
     t += printf_text("%4s %10s %9s %9s %10s%s\n", "leg", "length m", "speed m/s", "time s", "energy kJ",
                      timed ? "  arrive" : "");

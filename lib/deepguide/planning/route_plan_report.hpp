@@ -25,6 +25,7 @@
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/enc_route_quality.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace DEEPGUIDE_API deepguide {
@@ -70,9 +71,11 @@ struct RoutePlanReport {
   explicit RoutePlanReport(LocalFrame frame) : frame(std::move(frame)) {}
 
   LocalFrame frame;
-  RoutePlanRequest request;     ///< as given, but for the obstacles (below)
-  ObstacleSet obstacles;        ///< the request's and the charts' (what the route was planned among)
-  bool enc_charts = false;      ///< the charts held S-57 cells
+  RoutePlanRequest request;  ///< as given, but for the obstacles (below)
+  ObstacleSet obstacles;     ///< the request's and the charts' (what the route was planned among)
+  bool enc_charts = false;   ///< the charts held S-57 cells
+  /// On S-57 charts: the cells, least depth, zones and nearest no-go along the route.
+  std::optional<RouteQuality> chart_quality;
   std::size_t passed_over = 0;  ///< obstacles and hazards deeper than the band
   PlannerOptions options;       ///< as planned (turn radius and cost resolved)
   std::shared_ptr<const CostModel> model;

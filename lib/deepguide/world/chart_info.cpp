@@ -180,11 +180,7 @@ void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
       }
       // Best scale first, as the no-go decides overlaps (enc_no_go.hpp).
       std::stable_sort(info.cells.begin(), info.cells.end(), [](const ChartCell& a, const ChartCell& b) {
-        const long sa = a.compilation_scale > 0 ? a.compilation_scale : std::numeric_limits<long>::max();
-        const long sb = b.compilation_scale > 0 ? b.compilation_scale : std::numeric_limits<long>::max();
-        if (sa != sb) return sa < sb;
-        if (a.usage_band != b.usage_band) return a.usage_band > b.usage_band;
-        return a.name < b.name;
+        return decides_before(a.compilation_scale, a.usage_band, a.name, b.compilation_scale, b.usage_band, b.name);
       });
     }
     for (ChartCell& c : info.cells) {

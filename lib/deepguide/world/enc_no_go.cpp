@@ -468,6 +468,19 @@ struct Builder {
     for (const EncFeature& f : features) {
       if (f.cls == "DEPARE" && !f.areas.empty()) depth_areas.areas.push_back(&f);
     }
+    // What a route's quality is measured on: where this cell decides.
+    const BgMultiPolygon decides = clip_away(c.coverage, better);
+    if (!decides.empty()) out.cell_areas.push_back({c.name, c.name, decides, kNaN, 0});
+    for (const EncFeature& f : features) {
+      if (kDepthAreas.count(f.cls) && !f.areas.empty()) {
+        out.depth_areas.push_back({id_of(c, f), c.name, f.areas, f.drval1, 0});
+      }
+    }
+    for (std::size_t k = 0; k < zones.polys.size(); ++k) {
+      BgMultiPolygon z{zones.polys[k]};
+      z = clip_away(z, better);
+      if (!z.empty()) out.zones.push_back({c.name + " M_QUAL", c.name, std::move(z), kNaN, zones.catzoc[k]});
+    }
     depth_areas.build();
 
     for (std::size_t i = 0; i < features.size(); ++i) {
@@ -563,6 +576,15 @@ void planning_obstacles(EncNoGo& out, const std::vector<std::size_t>& tiles, dou
 
 }  // namespace
 
+bool decides_before(long scale_a, int band_a, const std::string& name_a, long scale_b, int band_b,
+                    const std::string& name_b) {
+  const long sa = scale_a > 0 ? scale_a : std::numeric_limits<long>::max();
+  const long sb = scale_b > 0 ? scale_b : std::numeric_limits<long>::max();
+  if (sa != sb) return sa < sb;
+  if (band_a != band_b) return band_a > band_b;
+  return name_a < name_b;
+}
+
 std::string zoc_name(int catzoc) {
   static const char* const names[] = {"A1", "A2", "B", "C", "D", "U"};
   return catzoc >= 1 && catzoc <= 6 ? names[catzoc - 1] : "unknown";
@@ -628,14 +650,11 @@ EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<Lo
   std::vector<const EncCell*> order;
   for (const EncCell& c : read.cells) order.push_back(&c);
   std::stable_sort(order.begin(), order.end(), [](const EncCell* a, const EncCell* b) {
-    const long sa = a->compilation_scale > 0 ? a->compilation_scale : std::numeric_limits<long>::max();
-    const long sb = b->compilation_scale > 0 ? b->compilation_scale : std::numeric_limits<long>::max();
-    if (sa != sb) return sa < sb;
-    if (a->usage_band != b->usage_band) return a->usage_band > b->usage_band;
-    return a->name < b->name;
+    return decides_before(a->compilation_scale, a->usage_band, a->name, b->compilation_scale, b->usage_band, b->name);
   });
 
-  EncNoGo out{read.frame, options.operating_depth_m + options.vertical_clearance_m, {}, {}, {}, {}, {}, {}, 0};
+  EncNoGo out{read.frame, options.operating_depth_m + options.vertical_clearance_m, {}, {}, {}, {}, {}, {}, 0, {}, {},
+              {}};
   Builder builder{options, out, out.required_depth_m, order.size() > 1, {}, false, nullptr, {}};
   BgMultiPolygon covered;  // by the cells done so far
   for (const EncCell* c : order) {

@@ -79,6 +79,16 @@ struct EncNoGoFeature {
   double radius_m = 0;
 };
 
+/// An area of one cell where that cell decides (what no better cell covers),
+/// kept for what a route's quality is measured on (enc_route_quality.hpp).
+struct EncChartArea {
+  std::string id;  ///< as a feature's ("DEPARE/12", "CELL:" prefixed with several cells); a coverage: the cell's name
+  std::string cell;
+  BgMultiPolygon area;
+  double depth_m = std::numeric_limits<double>::quiet_NaN();  ///< DEPARE, DRGARE: DRVAL1
+  int catzoc = 0;                                             ///< M_QUAL: CATZOC
+};
+
 struct EncCellSummary {
   std::string path, name;
   int usage_band = 0;
@@ -101,7 +111,15 @@ struct EncNoGo {
   std::map<std::string, std::size_t> passable_by_class;  ///< deep enough to pass over
   std::map<std::string, std::size_t> zoc_areas;          ///< M_QUAL areas per CATZOC letter ("A1", ..., "U", "none")
   std::size_t vertices = 0;                              ///< distinct polygon vertices of obstacles.polygons
+  /// Where each cell decides, its depth and dredged areas there, and its
+  /// zones of confidence there (a prepared chart of format 1 has none).
+  std::vector<EncChartArea> cell_areas, depth_areas, zones;
 };
+
+/// The order overlaps are decided in: the larger compilation scale (smaller
+/// DSPM_CSCL; none last), then the higher usage band, then the name.
+bool decides_before(long scale_a, int band_a, const std::string& name_a, long scale_b, int band_b,
+                    const std::string& name_b);
 
 /// CATZOC code (1..6) -> "A1", "A2", "B", "C", "D", "U"; other -> "unknown".
 std::string zoc_name(int catzoc);

@@ -31,6 +31,89 @@ std::string shown(const std::string& path) { return printable(path, 240); }
   throw InputError(shown(path) + ": could not " + what + (why.empty() ? std::string() : ": " + why));
 }
 
+// An area in the frame as a lon/lat multipolygon, and back.
+OGRMultiPolygon to_lonlat(const BgMultiPolygon& area, const LocalFrame& frame) {
+  OGRMultiPolygon mp;
+  for (const BgPolygon& poly : area) {
+    OGRPolygon op;
+    auto ring = [&](const auto& r) {
+      OGRLinearRing lr;
+      for (const BgPoint& q : r) {
+        const Vec2 p = frame.to_lonlat(to_eigen(q));
+        lr.addPoint(p.x(), p.y());
+      }
+      op.addRing(&lr);
+    };
+    ring(poly.outer());
+    for (const auto& in : poly.inners()) ring(in);
+    mp.addGeometry(&op);
+  }
+  return mp;
+}
+
+BgMultiPolygon from_frame_multipolygon(const OGRMultiPolygon& mp) {
+  BgMultiPolygon out;
+  for (const OGRPolygon* op : mp) {
+    BgPolygon bp;
+    auto ring = [](const OGRLinearRing& r, auto& dst) {
+      for (int i = 0; i < r.getNumPoints(); ++i) dst.push_back(BgPoint(r.getX(i), r.getY(i)));
+    };
+    ring(*op->getExteriorRing(), bp.outer());
+    for (int k = 0; k < op->getNumInteriorRings(); ++k) ring(*op->getInteriorRing(k), bp.inners().emplace_back());
+    boost::geometry::correct(bp);
+    out.push_back(std::move(bp));
+  }
+  return out;
+}
+
+// The areas a route's quality is measured on (EncNoGo::cell_areas, depth_areas, zones), one layer each.
+constexpr const char* kAreaLayers[] = {"cell_areas", "depth_areas", "zones"};
+
+void write_areas(GDALDataset& ds, const char* name, const std::vector<EncChartArea>& areas, const LocalFrame& frame,
+                 const std::string& path) {
+  const auto geo = gdal::wgs84();
+  OGRLayer* layer = ds.CreateLayer(name, geo.get(), wkbMultiPolygon, nullptr);
+  if (layer == nullptr) fail_write(path, std::string("create the ") + name + " layer");
+  for (const auto& [field, type] : std::initializer_list<std::pair<const char*, OGRFieldType>>{
+           {"id", OFTString}, {"cell", OFTString}, {"depth_m", OFTReal}, {"catzoc", OFTInteger}}) {
+    OGRFieldDefn fd(field, type);
+    if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + field);
+  }
+  for (const EncChartArea& a : areas) {
+    OGRFeature out(layer->GetLayerDefn());
+    out.SetField("id", a.id.c_str());
+    out.SetField("cell", a.cell.c_str());
+    if (std::isfinite(a.depth_m)) out.SetField("depth_m", a.depth_m);
+    out.SetField("catzoc", a.catzoc);
+    OGRMultiPolygon mp = to_lonlat(a.area, frame);
+    out.SetGeometry(&mp);
+    if (layer->CreateFeature(&out) != OGRERR_NONE) fail_write(path, std::string("write a row of ") + name);
+  }
+}
+
+std::vector<EncChartArea> read_areas(GDALDataset& ds, const char* name, OGRCoordinateTransformation& ct,
+                                     const std::string& path) {
+  std::vector<EncChartArea> out;
+  OGRLayer* layer = ds.GetLayerByName(name);
+  if (layer == nullptr) return out;  // a chart prepared before they were kept
+  for (auto& f : *layer) {
+    EncChartArea a;
+    a.id = f->GetFieldAsString("id");
+    a.cell = f->GetFieldAsString("cell");
+    const int di = f->GetFieldIndex("depth_m");
+    a.depth_m = di >= 0 && f->IsFieldSetAndNotNull(di) ? f->GetFieldAsDouble(di) : std::nan("");
+    a.catzoc = f->GetFieldAsInteger("catzoc");
+    OGRGeometry* g = f->GetGeometryRef();
+    if (g == nullptr || wkbFlatten(g->getGeometryType()) != wkbMultiPolygon || g->transform(&ct) != OGRERR_NONE) {
+      throw InputError(shown(path) + ": layer " + name + ", feature '" + printable(a.id) +
+                       "': expected a multipolygon in the frame's area");
+    }
+    a.area = from_frame_multipolygon(*g->toMultiPolygon());
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& path) {
   const auto geo = gdal::wgs84();
   OGRLayer* layer = ds.CreateLayer(kFeatureLayer, geo.get(), wkbUnknown, nullptr);
@@ -61,21 +144,7 @@ void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& pa
       out.SetGeometry(&pt);
       out.SetField("radius_m", f.radius_m);
     } else {
-      OGRMultiPolygon mp;
-      for (const BgPolygon& poly : f.area) {
-        OGRPolygon op;
-        auto ring = [&](const auto& r) {
-          OGRLinearRing lr;
-          for (const BgPoint& q : r) {
-            const Vec2 p = ll(to_eigen(q));
-            lr.addPoint(p.x(), p.y());
-          }
-          op.addRing(&lr);
-        };
-        ring(poly.outer());
-        for (const auto& in : poly.inners()) ring(in);
-        mp.addGeometry(&op);
-      }
+      OGRMultiPolygon mp = to_lonlat(f.area, no_go.frame);
       out.SetGeometry(&mp);
     }
     if (layer->CreateFeature(&out) != OGRERR_NONE) fail_write(path, "write feature '" + f.id + "'");
@@ -156,6 +225,9 @@ void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const E
     if (!ds) fail_write(path, "reopen the GeoPackage");
     if (ds->StartTransaction() != OGRERR_NONE) fail_write(path, "start a transaction");
     write_features(*ds, no_go, path);
+    write_areas(*ds, kAreaLayers[0], no_go.cell_areas, no_go.frame, path);
+    write_areas(*ds, kAreaLayers[1], no_go.depth_areas, no_go.frame, path);
+    write_areas(*ds, kAreaLayers[2], no_go.zones, no_go.frame, path);
     write_meta(*ds, no_go, options, path);
     if (ds->CommitTransaction() != OGRERR_NONE) fail_write(path, "commit the GeoPackage");
     ds.reset();  // closes (flushes) before the rename
@@ -205,7 +277,8 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
   ObstacleReadOptions ro;
   ro.local_crs = use.id();
   ro.layers = {"obstacles"};
-  EncNoGo out{use, depth_m + vertical_clearance_m, {}, {}, load_obstacles({path}, ro).obstacles, {}, {}, {}, 0};
+  EncNoGo out{use, depth_m + vertical_clearance_m, {}, {}, load_obstacles({path}, ro).obstacles, {}, {}, {}, 0, {}, {},
+              {}};
 
   OGRLayer* features = ds->GetLayerByName(kFeatureLayer);
   if (features == nullptr) throw InputError(shown(path) + ": expected a no_go_features layer, found none");
@@ -231,20 +304,14 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
       n.point = Vec2(g->toPoint()->getX(), g->toPoint()->getY());
       n.radius_m = f->GetFieldAsDouble("radius_m");
     } else if (wkbFlatten(g->getGeometryType()) == wkbMultiPolygon) {
-      for (const OGRPolygon* op : *g->toMultiPolygon()) {
-        BgPolygon bp;
-        auto ring = [](const OGRLinearRing& r, auto& dst) {
-          for (int i = 0; i < r.getNumPoints(); ++i) dst.push_back(BgPoint(r.getX(i), r.getY(i)));
-        };
-        ring(*op->getExteriorRing(), bp.outer());
-        for (int k = 0; k < op->getNumInteriorRings(); ++k) ring(*op->getInteriorRing(k), bp.inners().emplace_back());
-        boost::geometry::correct(bp);
-        n.area.push_back(std::move(bp));
-      }
+      n.area = from_frame_multipolygon(*g->toMultiPolygon());
     }
     if (n.cls != "M_COVR") ++out.no_go_by_class[n.cls];
     out.features.push_back(std::move(n));
   }
+  out.cell_areas = read_areas(*ds, kAreaLayers[0], *ct, path);
+  out.depth_areas = read_areas(*ds, kAreaLayers[1], *ct, path);
+  out.zones = read_areas(*ds, kAreaLayers[2], *ct, path);
   if (const std::string why = gdal::QuietErrors::last_message(); !why.empty()) {
     throw InputError(shown(path) + ": expected a complete prepared chart, got: " + why);
   }
