@@ -263,6 +263,16 @@ TEST(EncExchangeSet, TheLongTransitPlansFromTheCellsAndFromItsPreparedChart) {
   EXPECT_NEAR(nlohmann::json::parse(warm.out).at("length_m").get<double>(), length, 1.0);
   const test::RunResult recheck = run_cli("check route '" + tmp.file("warm.geojson") + "' --chart " + q + " --depth 5");
   EXPECT_EQ(recheck.exit_code, 0) << recheck.out << recheck.err;
+  // At 7 m the set's prepared polygons, valid where they were made, came back from their lon/lat
+  // round trip with two holes touching (enc/25): read back, they are repaired, not refused.
+  const std::string gpkg7 = tmp.file("ak7.gpkg");
+  ASSERT_EQ(run_cli("chart prepare " + q + " --depth 7 -o '" + gpkg7 + "'").exit_code, 0);
+  const test::RunResult at7 = run_cli("plan --chart '" + gpkg7 + "' --depth 7" +
+                                      std::string(" --from -152.775099,59.423333 --to -150.795995,59.162818 -o '") +
+                                      tmp.file("at7.geojson") + "'");
+  EXPECT_EQ(at7.exit_code, 0) << at7.err;
+  const test::RunResult check7 = run_cli("check route '" + tmp.file("at7.geojson") + "' --chart " + q + " --depth 7");
+  EXPECT_EQ(check7.exit_code, 0) << check7.out << check7.err;
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // the feature and the field, and what was expected.
 #include <gtest/gtest.h>
 
+#include <boost/geometry.hpp>
+
 #include <initializer_list>
 
 #include "deepguide/core/error.hpp"
@@ -206,6 +208,20 @@ TEST(ObstacleErrors, PolygonsThatAreNotSimpleAreRefusedNotGuessed) {
   const std::string bow = dir.write(
       "bow.geojson", collection({polygon("bowtie", "[[[10,54],[10.01,54.01],[10.01,54],[10,54.01],[10,54]]]")}));
   expect_error(error_of({bow}), {bow.c_str(), "feature 0", "bowtie", "geometry", "simple polygon", "cross themselves"});
+  // The library's own files (a prepared chart) ask for a repair instead: the bow-tie's two lobes, each valid.
+  ObstacleReadOptions repair;
+  repair.repair_polygons = true;
+  const LoadedObstacles fixed = load_obstacles({bow}, repair);
+  ASSERT_EQ(fixed.obstacles.polygons.size(), 2u);
+  EXPECT_EQ(fixed.obstacles.polygons[0].id, "bowtie");
+  EXPECT_EQ(fixed.obstacles.polygons[1].id, "bowtie#2");
+  double lobes = 0.0;
+  for (const PolygonObstacle& p : fixed.obstacles.polygons) {
+    EXPECT_TRUE(boost::geometry::is_valid(p.footprint));
+    lobes += boost::geometry::area(p.footprint);
+  }
+  // Each lobe is a quarter of the 0.01 x 0.01 degree square (about 1113 m x 654 m at 54 N).
+  EXPECT_NEAR(lobes, 0.5 * 1113.2 * 654.4, 0.02 * 0.5 * 1113.2 * 654.4);
   const std::string spike =
       dir.write("spike.geojson",
                 collection({polygon("spike", "[[[10,54],[10.01,54],[10.02,54],[10.01,54],[10.01,54.01],[10,54]]]")}));

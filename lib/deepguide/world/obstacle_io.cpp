@@ -16,6 +16,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/world/gdal_support.hpp"
+#include "deepguide/world/no_go_union.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;
@@ -482,6 +483,16 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
           for (const auto& ll : r.rings[k]) ring.push_back(to_bg(to_local_checked(*frame, ll, r.where)));
         }
         boost::geometry::correct(p.footprint);
+        if (options.repair_polygons && !boost::geometry::is_valid(p.footprint)) {
+          const std::vector<BgPolygon> parts = union_no_go({}, {&p.footprint});
+          for (std::size_t k = 0; k < parts.size(); ++k) {
+            PolygonObstacle part = p;
+            part.footprint = parts[k];
+            if (k > 0) part.id += "#" + std::to_string(k + 1);
+            out.obstacles.polygons.push_back(std::move(part));
+          }
+          continue;
+        }
         require_simple(p.footprint, r.where);
         out.obstacles.polygons.push_back(std::move(p));
       }

@@ -39,6 +39,13 @@ struct ObstacleReadOptions {
   /// Without local_crs, when no file holds an obstacle: the lon, lat whose
   /// UTM zone is the frame (a command's start). None: the zone at 0, 0.
   std::optional<Eigen::Vector2d> fallback_lonlat = std::nullopt;
+  /// Repair a polygon that is not simple in the frame (GEOS, no_go_union.hpp)
+  /// instead of refusing it: only for the library's own files, a prepared
+  /// chart's polygons, valid where they were made, that the round trip through
+  /// lon/lat into another frame's round-off can leave touching themselves
+  /// (Kachemak at 7 m: two holes that touch at a vertex). A user's file is
+  /// refused, as repairing it would choose the obstacle's shape for them.
+  bool repair_polygons = false;
 };
 
 struct ObstacleSourceInfo {

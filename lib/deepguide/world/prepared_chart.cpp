@@ -277,6 +277,7 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
   ObstacleReadOptions ro;
   ro.local_crs = use.id();
   ro.layers = {"obstacles"};
+  ro.repair_polygons = true;
   EncNoGo out{use, depth_m + vertical_clearance_m, {}, {}, load_obstacles({path}, ro).obstacles, {}, {}, {}, 0, {}, {},
               {}};
 
