@@ -79,6 +79,11 @@ if [ -f "$enc/noaa-enc-US4MD81M/US4MD81M.000" ] && [ -f "$enc/noaa-enc-US5FL4DQ/
   "$DEEPGUIDE_CLI" render chart "$enc/noaa-enc-US5FL4DQ/US5FL4DQ.000" --depth 1 -o docs/images/enc_key_west.png >/dev/null
   "$DEEPGUIDE_CLI" plan --chart "$enc/noaa-enc-US4MD81M/US4MD81M.000" --depth 5 --from -76.41,38.87 --to -76.35,38.60 \
     --render docs/images/enc_chesapeake_route.png >/dev/null
+  # A 116 km transit across the 11-cell Kachemak exchange set (bands 3 to 5), when ../shared holds it.
+  if [ -d "$enc/noaa-enc-kachemak" ]; then
+    "$DEEPGUIDE_CLI" plan --chart "$enc/noaa-enc-kachemak" --depth 5 --from -152.775099,59.423333 \
+      --to -150.795995,59.162818 --render docs/images/enc_kachemak_transit.png >/dev/null
+  fi
 else
   echo "deepguide: the NOAA cells in $enc are absent: skipping the ENC figures" >&2
 fi

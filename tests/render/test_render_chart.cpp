@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <boost/geometry.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +14,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/render/chart_scene.hpp"
+#include "deepguide/render/enc_layer.hpp"
 #include "deepguide/render/route_on_chart.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/sample_chart.hpp"
@@ -228,4 +230,36 @@ TEST(RenderChart, RouteOverAnEncCell) {
   // Depth bands from the cell's depth areas (DRVAL2 up to 18.2 m).
   ASSERT_GE(l.band_edges.size(), 3u);
   EXPECT_GE(l.band_edges.back(), 18.2);
+}
+
+// An exchange set drawn as the planners read it: Homer's band-5 cell inside
+// the band-4 cell round it. Where both cover, only the harbour cell's
+// soundings are drawn (the approach cell's would pile up under them), each
+// cell is outlined, and the command says how many no-go polygons and
+// hazards it drew.
+TEST(RenderChart, SeveralCellsAreDrawnAsThePlannersReadThem) {
+  const std::string set = test::real_folder("noaa-enc-kachemak");
+  if (set.empty()) GTEST_SKIP() << "../shared/data/real/noaa-enc-kachemak is absent";
+  const std::string si = set + "/US5AK5SI_ENC_ROOT", ph = set + "/US4AK4PH_ENC_ROOT";
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32605");
+  const EncLayer harbour = read_enc_layer({si}, frame, NAN, 2.0);
+  const EncLayer both = read_enc_layer({ph, si}, frame, NAN, 2.0);
+  ASSERT_EQ(both.cells.size(), 2u);
+  EXPECT_EQ(both.cells[0].name, "US5AK5SI");  // the better scale first, whatever the order given
+  EXPECT_EQ(both.cells[1].usage_band, 4);
+  EXPECT_TRUE(harbour.cells.empty());
+  auto inside_harbour = [&](const EncLayer& l) {
+    std::size_t n = 0;
+    for (const EncLayer::Sounding& s : l.soundings) n += boost::geometry::covered_by(to_bg(s.at), harbour.coverage);
+    return n;
+  };
+  EXPECT_GT(inside_harbour(harbour), 0u);
+  EXPECT_EQ(inside_harbour(both), inside_harbour(harbour));
+  EXPECT_GT(both.soundings.size(), harbour.soundings.size());  // the approach cell's, outside the harbour cell
+  ScratchDir tmp;
+  const test::RunResult r =
+      run_cli("render chart '" + ph + "' '" + si + "' --depth 5 -o '" + tmp.file("two.png") + "' --width 600");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find(" 0 no-go polygon(s)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" 0 hazard(s)"), std::string::npos) << r.out;
 }

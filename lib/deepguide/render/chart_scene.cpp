@@ -550,8 +550,9 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   l.height = static_cast<int>(std::ceil(l.footer.y + l.footer.height));
   l.view = ViewTransform(l.extent, l.map);
   l.true_north_deg = 90.0 - frame.true_north_angle(l.extent.centre()) * 180.0 / kPi;
-  l.no_go_polygons = scene.no_go.size();
-  l.hazards = scene.hazards.size();
+  l.no_go_polygons =
+      scene.no_go.size() + (scene.enc && scene.enc->no_go ? scene.enc->no_go->obstacles.polygons.size() : 0);
+  l.hazards = scene.hazards.size() + (scene.enc ? scene.enc->dangers.size() : 0);
 
   Shading sh;
   sh.land = pack(options.style.land);

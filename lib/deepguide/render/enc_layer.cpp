@@ -1,7 +1,9 @@
 #include "deepguide/render/enc_layer.hpp"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "deepguide/core/format.hpp"
@@ -95,9 +97,48 @@ EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame&
   request.classes = {"DEPARE", "DRGARE", "LNDARE", "UNSARE", "OBSTRN", "WRECKS", "UWTROC", "SOUNDG"};
   request.classes.insert(kStructures.begin(), kStructures.end());
   const EncCells read = read_enc_cells(find_enc_cells(cells), frame, request);
-  for (const EncCell& c : read.cells) {
+  // Several cells are drawn as the planners read them: best scale first, and each other cell only
+  // where no better one covers (its areas clipped, its points and soundings there left out), so a
+  // band-3 cell's symbols do not pile up under a harbour cell's.
+  std::vector<const EncCell*> order;
+  for (const EncCell& c : read.cells) order.push_back(&c);
+  std::stable_sort(order.begin(), order.end(), [](const EncCell* a, const EncCell* b) {
+    return decides_before(a->compilation_scale, a->usage_band, a->name, b->compilation_scale, b->usage_band, b->name);
+  });
+  BgMultiPolygon better;
+  for (const EncCell* cp : order) {
+    const EncCell& c = *cp;
     for (const BgPolygon& p : c.coverage) layer.coverage.push_back(p);
-    for (const EncFeature& f : c.features) {
+    if (read.cells.size() > 1) layer.cells.push_back({c.name, c.usage_band, c.compilation_scale, c.coverage});
+    const BgBox better_box = better.empty() ? BgBox() : boost::geometry::return_envelope<BgBox>(better);
+    auto hidden = [&](const Vec2& q) {
+      return !better.empty() && boost::geometry::covered_by(to_bg(q), better_box) &&
+             boost::geometry::covered_by(to_bg(q), better);
+    };
+    auto shown_area = [&](const BgMultiPolygon& a) {
+      if (better.empty() || a.empty() ||
+          !boost::geometry::intersects(boost::geometry::return_envelope<BgBox>(a), better_box)) {
+        return a;
+      }
+      BgMultiPolygon out;
+      boost::geometry::difference(a, better, out);
+      return out;
+    };
+    for (const EncFeature& cell_feature : c.features) {
+      EncFeature f = cell_feature;
+      if (!better.empty()) {
+        f.areas = shown_area(f.areas);
+        std::vector<Vec2> points;
+        std::vector<double> depths;
+        for (std::size_t k = 0; k < f.points.size(); ++k) {
+          if (hidden(f.points[k])) continue;
+          points.push_back(f.points[k]);
+          if (k < f.point_depths.size()) depths.push_back(f.point_depths[k]);
+        }
+        f.points = std::move(points);
+        f.point_depths = std::move(depths);
+        if (f.areas.empty() && f.points.empty() && f.lines.empty()) continue;
+      }
       const std::string id = f.cls + "/" + std::to_string(f.rcid);
       if (f.cls == "DEPARE" || f.cls == "DRGARE") {
         if (!f.areas.empty()) layer.depth_areas.push_back({f.areas, f.drval1});
@@ -117,6 +158,9 @@ EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame&
         for (const auto& l : f.lines) layer.structure_lines.push_back(l);
       }
     }
+    BgMultiPolygon next;
+    boost::geometry::union_(better, c.coverage, next);
+    better = std::move(next);
   }
   return layer;
 }
@@ -164,6 +208,21 @@ void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& l
       for (const auto& r : rings_px(d, view)) canvas.stroke_polyline(r, Stroke{style.no_go, 1.0 * u, {}}, true);
     }
   }
+  // Several cells: each one's coverage outlined faintly, its name and usage band at its top left.
+  for (const EncLayer::Cell& cell : layer.cells) {
+    for (const BgPolygon& p : cell.coverage) {
+      for (const auto& r : rings_px(p, view))
+        canvas.stroke_polyline(r, Stroke{style.cell_edge, 0.9 * u, {4.0 * u, 3.0 * u}}, true);
+    }
+    if (cell.coverage.empty()) continue;
+    const BgBox b = boost::geometry::return_envelope<BgBox>(cell.coverage);
+    const Vec2 corner = view.to_pixel(Vec2(b.min_corner().x(), b.max_corner().y())) + Vec2(3.0 * u, 11.0 * u);
+    const std::string t = cell.name + " (band " + std::to_string(cell.usage_band) + ")";
+    const double w = canvas.text_width(t, 8.5 * u);
+    if (labels.place({corner.x(), corner.y() - 9.0 * u, w, 10.0 * u})) {
+      canvas.text_with_halo(corner, t, 8.5 * u, style.cell_edge, {1.0, 1.0, 1.0, 0.7}, 1.5 * u);
+    }
+  }
   // Structures.
   for (const BgPolygon& p : layer.structure_areas) canvas.fill_rings(rings_px(p, view), style.structure);
   for (const auto& l : layer.structure_lines) {
@@ -184,8 +243,17 @@ void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& l
     if (!labels.place({c.x() - 0.5 * w, c.y() - size, w, size * 1.1})) continue;
     canvas.text(c + Vec2(0.0, 0.0), t, size, too_shallow(s->depth) ? style.no_go : style.sounding, TextAlign::centre);
   }
-  // Dangers: a symbol by kind at each point, an outline round each area.
-  for (const EncLayer::Danger& d : layer.dangers) {
+  // Dangers: a symbol by kind at each point, an outline round each area. At a regional scale
+  // hundreds of them fall on a few pixels of coast: a point symbol is drawn where it overlaps no
+  // symbol drawn before, the ones too shallow first.
+  std::vector<const EncLayer::Danger*> dangers;
+  for (const EncLayer::Danger& d : layer.dangers) dangers.push_back(&d);
+  std::stable_sort(dangers.begin(), dangers.end(), [&](const EncLayer::Danger* a, const EncLayer::Danger* b) {
+    return (too_shallow(a->depth) || std::isnan(a->depth)) > (too_shallow(b->depth) || std::isnan(b->depth));
+  });
+  LabelPlacer symbols(std::numeric_limits<std::size_t>::max());
+  for (const EncLayer::Danger* dp : dangers) {
+    const EncLayer::Danger& d = *dp;
     const Rgba c =
         too_shallow(d.depth) || std::isnan(d.depth) ? (layer.no_go ? style.no_go : style.danger) : style.danger;
     const Stroke line{c, 1.3 * u, {}};
@@ -200,6 +268,7 @@ void draw_enc_layer(Canvas& canvas, const ViewTransform& view, const EncLayer& l
     for (const Vec2& q : d.points) {
       const Vec2 p = view.to_pixel(q);
       const double r = 4.5 * u;
+      if (!symbols.place({p.x() - r, p.y() - r, 2.0 * r, 2.0 * r})) continue;
       if (d.cls == "UWTROC") {  // a cross, the rock symbol
         canvas.stroke_segments({{p - Vec2(r, 0), p + Vec2(r, 0)}, {p - Vec2(0, r), p + Vec2(0, r)}}, line);
       } else if (d.cls == "WRECKS") {  // a hull with three masts

@@ -7,7 +7,10 @@
 // dangers and soundings shallower than the required depth in the no-go
 // colour. Labels (soundings, danger ids) are placed only where they collide
 // with no label already placed, shallowest first, so a cell with hundreds of
-// them stays legible.
+// them stays legible; so are danger symbols, where hundreds fall on a few
+// pixels of a regional chart's coast. Several cells are drawn as the
+// planners read them (the best scale wins where they overlap), each cell's
+// coverage outlined faintly with its name and usage band.
 
 #include <optional>
 #include <string>
@@ -45,6 +48,14 @@ struct EncLayer {
   std::vector<Danger> dangers;
   std::vector<Sounding> soundings;
   BgMultiPolygon coverage;
+  /// Several cells: each one's coverage, best scale first (one cell: none).
+  struct Cell {
+    std::string name;
+    int usage_band = 0;
+    long compilation_scale = 0;
+    BgMultiPolygon coverage;
+  };
+  std::vector<Cell> cells;
   std::optional<EncNoGo> no_go;  ///< with an operating depth
   double max_depth_m = 0;        ///< deepest DRVAL1 (for the depth bands)
 
@@ -64,6 +75,7 @@ struct EncStyle {
   Rgba danger = rgb_hex(0x2b2d31);
   Rgba no_go = rgb_hex(0xc2255c);  ///< hatching, the safety contour, dangers too shallow
   Rgba sounding = rgb_hex(0x5b6b7c);
+  Rgba cell_edge = rgb_hex(0x7d8da0);  ///< the cells' coverage outlines and names, faint
 };
 
 /// Rectangles of labels already on the map; a label goes where none overlaps.
