@@ -22,10 +22,12 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <filesystem>
 #include <memory>
 #include <random>
 
@@ -52,10 +54,12 @@ using Geom = std::unique_ptr<OGRGeometry>;
 // The cell's no-go at required depth D in UTM, read by this test alone.
 struct OwnNoGo {
   std::unique_ptr<OGRSpatialReference> utm;
-  std::vector<Geom> areas;   // no-go areas and strips, as charted (no margin)
-  std::vector<Geom> points;  // point hazards and soundings (no radius)
-  OGREnvelope extent;        // of the coverage, in UTM
+  std::vector<Geom> areas;            // no-go areas and strips, as charted (no margin)
+  std::vector<std::string> area_ids;  // CELL:CLASS/RCID of each area, for what a failure says
+  std::vector<Geom> points;           // point hazards and soundings (no radius)
+  OGREnvelope extent;                 // of the coverage, in UTM
   Geom coverage;
+  long scale = 0;  // DSPM_CSCL
 };
 
 bool drval_shallow(OGRFeature& f, double D) {
@@ -82,9 +86,15 @@ OwnNoGo read_own(const std::string& path, double D, int utm_epsg) {
     if (t == wkbPoint || t == wkbMultiPoint) {
       if (!as_area_only) o.points.push_back(std::move(g));
     } else if (t == wkbLineString || t == wkbMultiLineString) {
-      if (!as_area_only) o.areas.emplace_back(g->Buffer(kLineHalfWidth, 8));
+      if (!as_area_only) {
+        o.areas.emplace_back(g->Buffer(kLineHalfWidth, 8));
+        o.area_ids.push_back(std::filesystem::path(path).stem().string() + ":" + f.GetDefnRef()->GetName() + "/" +
+                             f.GetFieldAsString("RCID"));
+      }
     } else {
       o.areas.push_back(std::move(g));
+      o.area_ids.push_back(std::filesystem::path(path).stem().string() + ":" + f.GetDefnRef()->GetName() + "/" +
+                           f.GetFieldAsString("RCID"));
     }
   };
   const std::vector<std::string> always = {"LNDARE", "UNSARE", "SLCONS", "PONTON", "HULKES", "FLODOC", "PILPNT",
@@ -92,6 +102,7 @@ OwnNoGo read_own(const std::string& path, double D, int utm_epsg) {
   for (OGRLayer* layer : ds->GetLayers()) {
     const std::string cls = layer->GetName();
     for (auto& f : *layer) {
+      if (cls == "DSID") o.scale = f->GetFieldAsInteger("DSPM_CSCL");  // a record without geometry
       if (f->GetGeometryRef() == nullptr || f->GetGeometryRef()->IsEmpty()) continue;
       if (cls == "M_COVR" && f->GetFieldAsInteger("CATCOV") == 1) {
         Geom g(f->GetGeometryRef()->clone());
@@ -117,6 +128,41 @@ OwnNoGo read_own(const std::string& path, double D, int utm_epsg) {
   }
   o.coverage->getEnvelope(&o.extent);
   return o;
+}
+
+// Several cells read as an ECDIS reads them, by this test alone: where
+// coverages overlap the larger compilation scale wins, so every other cell's
+// areas are clipped to what no better cell covers and its points there are
+// left out (points on a better cell's edge too).
+OwnNoGo read_own_set(const std::vector<std::string>& paths, double D, int utm_epsg) {
+  std::vector<OwnNoGo> cells;
+  for (const std::string& p : paths) {
+    cells.push_back(read_own(p, D, utm_epsg));
+    EXPECT_TRUE(paths.size() == 1 || cells.back().scale > 0) << p << ": no DSPM_CSCL read";
+  }
+  std::stable_sort(cells.begin(), cells.end(), [](const OwnNoGo& a, const OwnNoGo& b) {
+    return (a.scale > 0 ? a.scale : LONG_MAX) < (b.scale > 0 ? b.scale : LONG_MAX);
+  });
+  OwnNoGo out;
+  out.utm = std::move(cells.front().utm);
+  Geom better;
+  for (OwnNoGo& c : cells) {
+    for (std::size_t k = 0; k < c.areas.size(); ++k) {
+      Geom& a = c.areas[k];
+      Geom kept = better && a->Intersects(better.get()) ? Geom(a->Difference(better.get())) : std::move(a);
+      if (kept && !kept->IsEmpty()) {
+        out.areas.push_back(std::move(kept));
+        out.area_ids.push_back(c.area_ids[k]);
+      }
+    }
+    for (Geom& p : c.points) {
+      if (!better || !p->Intersects(better.get())) out.points.push_back(std::move(p));
+    }
+    better = better ? Geom(better->Union(c.coverage.get())) : Geom(c.coverage->clone());
+  }
+  out.coverage = std::move(better);
+  out.coverage->getEnvelope(&out.extent);
+  return out;
 }
 
 // Free water on a grid of `cell` metres: no-go grown by the margin plus slack, all touched.
@@ -201,7 +247,8 @@ struct OwnCheck {
   Geom all_points;
   OGRPreparedGeometry* prepared_points = nullptr;
 
-  explicit OwnCheck(const OwnNoGo& o) {
+  const OwnNoGo* own = nullptr;
+  explicit OwnCheck(const OwnNoGo& o) : own(&o) {
     OGRMultiPolygon areas;
     for (const Geom& a : o.areas) {
       if (wkbFlatten(a->getGeometryType()) == wkbPolygon)
@@ -225,6 +272,25 @@ struct OwnCheck {
     OGRDestroyPreparedGeometry(prepared_areas);
     OGRDestroyPreparedGeometry(prepared_points);
   }
+  // Why a leg is too near: the distance to the nearest area and disc, where.
+  std::string why(const std::vector<Vec2>& route_utm, int k) const {
+    OGRLineString leg;
+    leg.addPoint(route_utm[k].x(), route_utm[k].y());
+    leg.addPoint(route_utm[k + 1].x(), route_utm[k + 1].y());
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "leg %d (%.1f, %.1f)-(%.1f, %.1f): %.3f m from the nearest area, %.3f m from a disc",
+                  k, route_utm[k].x(), route_utm[k].y(), route_utm[k + 1].x(), route_utm[k + 1].y(),
+                  leg.Distance(all_areas.get()), leg.Distance(all_points.get()));
+    std::string near;
+    for (std::size_t i = 0; i < own->areas.size(); ++i) {
+      if (leg.Distance(own->areas[i].get()) < kMargin - 0.01) {
+        char d[64];
+        std::snprintf(d, sizeof d, " %.3f m", leg.Distance(own->areas[i].get()));
+        near += "; " + own->area_ids[i] + d;
+      }
+    }
+    return buf + near;
+  }
   // The first leg that comes too near, or -1.
   int first_bad_leg(const std::vector<Vec2>& route_utm) const {
     for (std::size_t k = 0; k + 1 < route_utm.size(); ++k) {
@@ -242,13 +308,24 @@ struct OwnCheck {
 };
 
 struct Case {
-  const char* file;
-  double depth;   // operating depth; D = depth + 2
-  double cell_m;  // the test raster's cells
+  const char* file;                   // a cell, or a folder of cells (an exchange set)
+  double depth;                       // operating depth; D = depth + 2
+  double cell_m;                      // the test raster's cells
+  double min_km = 0.0, max_km = 1e9;  // how far apart the ends are
+  int pairs = 0;                      // 0: pairs_per_case()
 };
 
 void run_case(const Case& c, unsigned seed) {
-  DEEPGUIDE_REAL_FILE_OR_SKIP(path, c.file);
+  const std::string path = test::real_file(c.file).empty() ? test::real_folder(c.file) : test::real_file(c.file);
+  if (path.empty()) GTEST_SKIP() << "../shared/data/real/" << c.file << " is absent: skipping the test on real data";
+  std::vector<std::string> cells;
+  if (std::filesystem::is_directory(path)) {
+    for (const auto& e : std::filesystem::recursive_directory_iterator(path)) {
+      if (e.path().extension() == ".000") cells.push_back(e.path().string());
+    }
+  } else {
+    cells.push_back(path);
+  }
   const double D = c.depth + 2.0;
   EncNoGoOptions options;
   options.operating_depth_m = c.depth;
@@ -257,7 +334,7 @@ void run_case(const Case& c, unsigned seed) {
   const EncNoGo no_go = enc_no_go({path}, std::nullopt, options);
   const std::string epsg = no_go.frame.id();
   ASSERT_EQ(epsg.rfind("EPSG:", 0), 0u);
-  const OwnNoGo own = read_own(path, D, std::stoi(epsg.substr(5)));
+  const OwnNoGo own = read_own_set(cells, D, std::stoi(epsg.substr(5)));
   // Cells grown by the margin, the planner's zone tolerance and simplification (1.5 m), and 1 m slack.
   const FreeRaster raster = free_raster(own, c.cell_m, kMargin + 2.5);
   const OwnCheck check(own);
@@ -273,14 +350,22 @@ void run_case(const Case& c, unsigned seed) {
   std::uniform_int_distribution<std::size_t> pick(0, free_cells.size() - 1);
   PlannerOptions po;
   po.margin = kMargin;
-  const int pairs = pairs_per_case();
+  const int pairs = c.pairs > 0 ? c.pairs : pairs_per_case();
+  auto apart_ok = [&](int a, int b) {
+    const double km =
+        (raster.centre(a % raster.w, a / raster.w) - raster.centre(b % raster.w, b / raster.w)).norm() / 1e3;
+    return km >= c.min_km && km <= c.max_km;
+  };
   int connected = 0, routes = 0, refused_disconnected = 0;
   for (int n = 0; n < pairs; ++n) {
     const int a = free_cells[pick(rng)];
     int b = free_cells[pick(rng)];
+    for (int tries = 0; tries < 2000 && !apart_ok(a, b); ++tries) b = free_cells[pick(rng)];
     // Two in three pairs within one component (the interesting case).
     if (n % 3 != 2) {
-      for (int tries = 0; tries < 200 && raster.component[b] != raster.component[a]; ++tries) b = free_cells[pick(rng)];
+      for (int tries = 0; tries < 2000 && (raster.component[b] != raster.component[a] || !apart_ok(a, b)); ++tries) {
+        b = free_cells[pick(rng)];
+      }
     }
     const Vec2 s = raster.centre(a % raster.w, a / raster.w), g = raster.centre(b % raster.w, b / raster.w);
     if ((g - s).norm() < 1.0) continue;
@@ -297,7 +382,8 @@ void run_case(const Case& c, unsigned seed) {
       }
       ++routes;
       EXPECT_TRUE(plan.outcome.check.safe) << plan.outcome.check.describe();
-      EXPECT_EQ(check.first_bad_leg(plan.outcome.result.route.points), -1);
+      const int bad = check.first_bad_leg(plan.outcome.result.route.points);
+      EXPECT_EQ(bad, -1) << (bad >= 0 ? check.why(plan.outcome.result.route.points, bad) : std::string());
     } catch (const NoRouteError& e) {
       ADD_FAILURE() << "start or goal refused in a free raster cell: " << e.what();
     }
@@ -312,6 +398,25 @@ TEST(EncRoutes, ChesapeakeAt3mIndependentlyChecked) { run_case({"noaa-enc-US4MD8
 TEST(EncRoutes, ChesapeakeAt7mIndependentlyChecked) { run_case({"noaa-enc-US4MD81M/US4MD81M.000", 5.0, 25.0}, 2); }
 TEST(EncRoutes, ChesapeakeAt10mIndependentlyChecked) { run_case({"noaa-enc-US4MD81M/US4MD81M.000", 8.0, 25.0}, 3); }
 TEST(EncRoutes, KeyWestAt5mIndependentlyChecked) { run_case({"noaa-enc-US5FL4DQ/US5FL4DQ.000", 3.0, 10.0}, 4); }
+
+// The 11-cell Kachemak exchange set (bands 3 to 5): transits 20 to 150 km,
+// the better scale winning where coverages overlap (read_own_set). A query
+// across the set takes seconds: DEEPGUIDE_KACHEMAK_PAIRS per depth (default
+// 2; scripts/enc_routes.sh runs more), none under the sanitizers (a minute
+// a query there; the Release build runs them).
+int kachemak_pairs() {
+  const char* env = std::getenv("DEEPGUIDE_KACHEMAK_PAIRS");
+  return env != nullptr ? std::max(1, std::atoi(env)) : 2;
+}
+void run_kachemak(double depth, unsigned seed) {
+#ifdef DEEPGUIDE_SANITIZED
+  GTEST_SKIP() << "Kachemak transits run in the Release build";
+#endif
+  run_case({"noaa-enc-kachemak", depth, 50.0, 20.0, 150.0, kachemak_pairs()}, seed);
+}
+TEST(EncRoutes, KachemakAt5mIndependentlyChecked) { run_kachemak(3.0, 5); }
+TEST(EncRoutes, KachemakAt7mIndependentlyChecked) { run_kachemak(5.0, 6); }
+TEST(EncRoutes, KachemakAt12mIndependentlyChecked) { run_kachemak(10.0, 7); }
 
 }  // namespace
 }  // namespace deepguide
