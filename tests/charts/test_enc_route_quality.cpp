@@ -37,15 +37,18 @@ std::vector<std::array<double, 2>> box(double x0, double y0, double x1, double y
   return {ll(x0, y0), ll(x1, y0), ll(x1, y1), ll(x0, y1)};
 }
 
-// An approach cell (band 4, 1:50,000, 6 km x 3 km, 30 m deep, CATZOC C) and a
-// harbour cell (band 5, 1:12,000, its middle third, 20 m deep, CATZOC B).
+// An approach cell (band 4, 1:50,000, 6 km x 3 km, 30 m deep but its middle
+// third 10 m, CATZOC C) and a harbour cell (band 5, 1:12,000, that middle
+// third, 20 m deep, CATZOC B): where both cover, the harbour cell decides.
 std::vector<std::string> two_bands(const ScratchDir& tmp) {
   test::SyntheticCell approach;
   approach.name = "US4TEST1";
   approach.usage_band = 4;
   approach.compilation_scale = 50000;
   approach.areas = {{"M_COVR", box(0, 0, 6000, 3000), {}, {{"CATCOV", 1}}},
-                    {"DEPARE", box(0, 0, 6000, 3000), {{"DRVAL1", 30.0}, {"DRVAL2", 50.0}}, {}},
+                    {"DEPARE", box(0, 0, 2000, 3000), {{"DRVAL1", 30.0}, {"DRVAL2", 50.0}}, {}},
+                    {"DEPARE", box(2000, 0, 4000, 3000), {{"DRVAL1", 10.0}, {"DRVAL2", 30.0}}, {}},
+                    {"DEPARE", box(4000, 0, 6000, 3000), {{"DRVAL1", 30.0}, {"DRVAL2", 50.0}}, {}},
                     {"M_QUAL", box(0, 0, 6000, 3000), {}, {{"CATZOC", 4}}}};
   test::SyntheticCell harbour;
   harbour.name = "US5TEST2";
@@ -78,7 +81,7 @@ TEST(EncRouteQuality, TwoBandsByHand) {
   EXPECT_EQ(q.cells[1].usage_band, 5);
   EXPECT_NEAR(q.cells[1].length_m, 2000.0 * scale, 0.5);
   ASSERT_TRUE(q.least_depth.has_value());
-  EXPECT_DOUBLE_EQ(q.least_depth->depth_m, 20.0);  // the harbour cell's, which wins where both cover
+  EXPECT_DOUBLE_EQ(q.least_depth->depth_m, 20.0);  // the harbour cell's: the approach cell's 10 m lies under it
   EXPECT_EQ(q.least_depth->cell, "US5TEST2");
   EXPECT_EQ(q.least_depth->zoc, "B");
   EXPECT_NEAR(q.least_depth->along_m, 1500.0 * scale, 0.5);

@@ -91,6 +91,8 @@ TEST(NoGoUnion, InvalidAreasAreRepairedNotRefused) {
     boost::geometry::intersection(all, box_area, kept);
     EXPECT_NEAR(boost::geometry::area(kept), 84.0, 1e-6) << wkt;
     EXPECT_TRUE(boost::geometry::covered_by(BgPoint(1.0, 5.0), all)) << wkt;
+    // Where the box does not reach either: the water a self-overlapping ring covers twice stays no-go.
+    EXPECT_TRUE(boost::geometry::covered_by(BgPoint(3.0, 5.0), all)) << wkt;
   }
 }
 

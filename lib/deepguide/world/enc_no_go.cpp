@@ -191,7 +191,6 @@ struct Builder {
   std::vector<std::size_t> tiles;        // features whose area is a whole, unclipped skin-of-the-earth area
   bool clipped = false;                  // the feature being read lost part of its area to a better cell
   const ZocZones* zones_here = nullptr;  // the zones of the cell being read
-  std::vector<std::unique_ptr<ZocZones>> zones_done;  // of the better cells read before it
 
   std::string id_of(const EncCell& c, const EncFeature& f) const {
     return (several_cells ? c.name + ":" : std::string()) + f.cls + "/" + std::to_string(f.rcid);
@@ -238,8 +237,9 @@ struct Builder {
     return zoc_figures(k < 0 ? 0 : zones.catzoc[static_cast<std::size_t>(k)], o).position_m;
   }
 
-  // ZocPolicy::clipped: a point hazard's disc loses the water of better zones than its own (this
-  // cell's, and the better cells'), unless the hazard itself lies in one (zones that overlap).
+  // ZocPolicy::clipped: a point hazard's disc loses the water of better zones than its own, each
+  // zone where its cell decides (out.zones: a worse cell's zone under a better cell says nothing
+  // there), unless the hazard itself lies in one (zones that overlap). Its own zone is its cell's.
   void clip_disc(EncNoGoFeature& n) const {
     if (o.zoc != ZocPolicy::clipped || !n.point || zones_here == nullptr) return;
     const double z = std::isnan(n.charted_depth_m) ? 0.0 : n.charted_depth_m;
@@ -249,13 +249,13 @@ struct Builder {
     if (rank <= 1) return;
     const BgMultiPolygon disc = disc_polygon(*n.point, n.radius_m);
     std::vector<const BgPolygon*> better;
-    auto gather = [&](const ZocZones& zs) {
-      for (std::size_t i : zs.meeting(disc)) {
-        if (zoc_rank(zs.catzoc[i]) < rank) better.push_back(&zs.polys[i]);
+    const BgBox disc_box = envelope(disc);
+    for (const EncChartArea& zone : out.zones) {
+      if (zoc_rank(zone.catzoc) >= rank || !bg::intersects(disc_box, envelope(zone.area))) continue;
+      for (const BgPolygon& p : zone.area) {
+        if (bg::intersects(p, disc)) better.push_back(&p);
       }
-    };
-    gather(*zones_here);
-    for (const auto& d : zones_done) gather(*d);
+    }
     if (better.empty()) return;
     BgMultiPolygon cut = disc;
     for (const BgPolygon* b : better) {
@@ -521,7 +521,6 @@ struct Builder {
       }
     }
     zones_here = nullptr;
-    zones_done.push_back(std::make_unique<ZocZones>(std::move(zones)));
   }
 };
 
@@ -655,7 +654,7 @@ EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<Lo
 
   EncNoGo out{read.frame, options.operating_depth_m + options.vertical_clearance_m, {}, {}, {}, {}, {}, {}, 0, {}, {},
               {}};
-  Builder builder{options, out, out.required_depth_m, order.size() > 1, {}, false, nullptr, {}};
+  Builder builder{options, out, out.required_depth_m, order.size() > 1, {}, false, nullptr};
   BgMultiPolygon covered;  // by the cells done so far
   for (const EncCell* c : order) {
     out.cells.push_back({c->path, c->name, c->usage_band, c->compilation_scale, c->edition, c->issue_date,

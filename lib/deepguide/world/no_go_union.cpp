@@ -56,7 +56,9 @@ void add_polygonal(OGRMultiPolygon& mp, const OGRGeometry& g) {
   }
 }
 
-// `p` as GEOS can join it: itself when valid, else what GEOS's MakeValid makes of it.
+// `p` as GEOS can join it: itself when valid, else what GEOS's MakeValid makes of it by its
+// STRUCTURE method (shells joined, holes taken out: a ring that runs over itself keeps the water it
+// covers twice, where the default LINEWORK method makes it a hole), LINEWORK where that fails.
 void add_to(OGRMultiPolygon& mp, const BgPolygon& p) {
   OGRPolygon poly;
   OGRLinearRing outer = to_ogr_ring(p.outer());
@@ -69,7 +71,9 @@ void add_to(OGRMultiPolygon& mp, const BgPolygon& p) {
     mp.addGeometry(&poly);
     return;
   }
-  const OgrPtr fixed = owned(poly.MakeValid());
+  const char* const structure[] = {"METHOD=STRUCTURE", nullptr};
+  OgrPtr fixed = owned(poly.MakeValid(structure));
+  if (!fixed) fixed = owned(poly.MakeValid());
   if (fixed) {
     add_polygonal(mp, *fixed);
   } else {

@@ -21,14 +21,17 @@
 // of the areas GEOS is given are not valid polygons (Boost.Geometry's buffer
 // of a 15,000-vertex coast, a difference along shared edges): GEOS then stops
 // with a TopologyException ("side location conflict"). Every input GEOS finds
-// invalid is repaired first (GEOS's MakeValid, polygonal parts kept), and a
+// invalid is repaired first (GEOS's MakeValid by its STRUCTURE method,
+// polygonal parts kept: a ring over itself keeps what it covers twice), and a
 // union that still fails is done again snap-rounded to a grid of
 // kRepairGridM (GEOS's OverlayNG with a fixed precision, which is robust by
 // construction). The result must also be valid for Boost.Geometry, which the
 // planners and the obstacle reader use; where it is not (GEOS and Boost
-// differ on a vertex a hair from an edge), it is snap-rounded too. Snap
-// rounding moves an edge by at most kRepairGridM / sqrt(2) (0.7 mm), the only
-// area a repair may lose; callers that must lose none grow first.
+// differ on a vertex a hair from an edge), it is snap-rounded too, which
+// settles every case seen but two holes touching at a vertex that Boost
+// still reads as crossing. Snap rounding moves an edge by at most
+// kRepairGridM / sqrt(2) (0.7 mm); MakeValid keeps the area a ring encloses
+// (a bow-tie's two lobes); callers that must lose none grow first.
 
 #include <vector>
 
@@ -40,13 +43,15 @@ namespace DEEPGUIDE_API deepguide {
 /// The grid (m) a repaired union is snap-rounded to.
 inline constexpr double kRepairGridM = 1e-3;
 
-/// Disjoint polygons, each valid for GEOS and Boost.Geometry, covering every
-/// tile and every other area (invalid ones as GEOS's MakeValid reads them).
+/// Disjoint polygons, valid for GEOS and, where snap rounding makes them so,
+/// for Boost.Geometry (a hole touching another at a vertex may stay that
+/// Boost reads as crossing), covering every tile and every other area
+/// (invalid ones as GEOS's MakeValid reads them).
 /// `tiles` must not overlap one another (they may share edges and corners).
 /// `grid_m` > 0 snap-rounds the whole union to that grid (vertices on it, no
 /// vertex within half a cell of an edge it is not on: robust against the
-/// round-off of a reprojection). Throws std::runtime_error only when GDAL was
-/// built without GEOS.
+/// round-off of a reprojection). Throws std::runtime_error when GDAL was
+/// built without GEOS, or when even the snap-rounded union fails.
 std::vector<BgPolygon> union_no_go(const std::vector<const BgPolygon*>& tiles,
                                    const std::vector<const BgPolygon*>& others, double grid_m = 0.0);
 

@@ -484,7 +484,11 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
         }
         boost::geometry::correct(p.footprint);
         if (options.repair_polygons && !boost::geometry::is_valid(p.footprint)) {
+          // A repair that leaves no area is refused as before: never an obstacle dropped in silence.
+          // The parts are GEOS's valid polygons; two holes touching at a vertex may stay that Boost
+          // reads as crossing (Kachemak at 7 m, enc/25), which the planners take as they are.
           const std::vector<BgPolygon> parts = union_no_go({}, {&p.footprint});
+          if (parts.empty()) require_simple(p.footprint, r.where);
           for (std::size_t k = 0; k < parts.size(); ++k) {
             PolygonObstacle part = p;
             part.footprint = parts[k];
