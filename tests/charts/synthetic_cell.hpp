@@ -17,6 +17,7 @@
 
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -118,6 +119,19 @@ inline void set_spatial_ref(OGRFeature& f, int rcnm, int rcid) {
 }  // namespace synthetic_cell_detail
 
 // Writes `cell` to `path_000`. Throws std::runtime_error carrying GDAL's message.
+// Lon/lat of a point `east_m`, `north_m` metres from a corner at 76.5 W,
+// 38.8 N, by a flat-earth scale (the cells' own geometry and a planner's UTM
+// frame differ from it by about 0.1 %), and a rectangle of four such corners.
+inline constexpr double kSyntheticLon0 = -76.50, kSyntheticLat0 = 38.80;
+inline std::array<double, 2> synthetic_lonlat(double east_m, double north_m) {
+  const double per_deg_lat = 111320.0;
+  const double per_deg_lon = per_deg_lat * std::cos(kSyntheticLat0 * 3.14159265358979323846 / 180.0);
+  return {kSyntheticLon0 + east_m / per_deg_lon, kSyntheticLat0 + north_m / per_deg_lat};
+}
+inline std::vector<std::array<double, 2>> synthetic_box(double x0, double y0, double x1, double y1) {
+  return {synthetic_lonlat(x0, y0), synthetic_lonlat(x1, y0), synthetic_lonlat(x1, y1), synthetic_lonlat(x0, y1)};
+}
+
 inline void write_synthetic_cell(const std::string& path_000, const SyntheticCell& cell) {
   namespace d = synthetic_cell_detail;
   if (GetGDALDriverManager()->GetDriverByName("S57") == nullptr) GDALAllRegister();

@@ -50,8 +50,9 @@ TEST(ChartOptions, PoliciesParseAndDifferencesAreNamed) {
 }
 
 TEST(ChartOptions, OutOfRangeFiguresAreRefused) {
-  for (const ZocFigures& bad : {ZocFigures{-1.0, 0.05, 500.0}, ZocFigures{2.0, 1.0, 500.0}, ZocFigures{2.0, 0.05, 0.0},
-                                ZocFigures{std::nan(""), 0.05, 500.0}}) {
+  for (const ZocFigures& bad :
+       {ZocFigures{-1.0, 0.05, 500.0}, ZocFigures{2.0, 1.0, 500.0}, ZocFigures{2.0, 0.05, 0.0},
+        ZocFigures{std::nan(""), 0.05, 500.0}, ZocFigures{2.0, 0.05, 1e308}, ZocFigures{1e308, 0.05, 500.0}}) {
     ChartOptions o;
     o.unassessed = bad;
     test::expect_error(test::error_of([&] { check_chart_options(o); }), {"`unassessed`", "expected"});
@@ -115,7 +116,8 @@ TEST(ChartOptionsCli, BadValuesAreOneLineEach) {
            {"--unassessed-zoc 2,0.05", "--unassessed-zoc: expected DEPTH_M,FRACTION,POSITION_M", 1},
            {"--unassessed-zoc 2,0.05,500,7", "--unassessed-zoc: expected DEPTH_M,FRACTION,POSITION_M", 1},
            {"--unassessed-zoc 2,1.5,500", "--unassessed-zoc: expected a depth fraction in [0, 1)", 1},
-           {"--unassessed-zoc 2,0.05,nan", "--unassessed-zoc: expected a position accuracy > 0 m", 1},
+           {"--unassessed-zoc 2,0.05,nan", "--unassessed-zoc: expected a position accuracy in (0, 10000] m", 1},
+           {"--unassessed-zoc 2,0.05,1e308", "--unassessed-zoc: expected a position accuracy in (0, 10000] m", 1},
            {"--zoc strict --no-zoc", "excludes", 2},
        }) {
     const test::RunResult r = run_cli("chart info " + q + " --depth 3 " + c.flags);

@@ -194,6 +194,30 @@ TEST(EncCatalogue, AnUpdateTheCatalogueDoesNotListIsRefused) {
   expect_one_line(error_of([&] { find_enc_cells({copy.string()}); }), {"US5AK5QG.001", "does not list"});
 }
 
+// The updates a catalogue lists are checked as its cells are: one listed
+// but absent is missing, one present with another CRC is refused naming it.
+TEST(EncCatalogue, ListedUpdatesAreCheckedToo) {
+  DEEPGUIDE_REAL_FOLDER_OR_SKIP(root, kSeldoviaRoot);
+  DEEPGUIDE_REAL_FILE_OR_SKIP(update, "noaa-enc-US4MD81M/US4MD81M.001");
+  const std::string real = (fs::path(root) / "CATALOG.031").string();
+  ScratchDir tmp;
+  const fs::path copy = copy_root(root, tmp.path());
+  const std::string cell_crc = crc_hex(bytes_of(copy / "US5AK5QG" / "US5AK5QG.000"));
+  const std::string update_crc = crc_hex(bytes_of(update));
+  write_bytes(copy / "CATALOG.031", catalogue_bytes(real, {{"US5AK5QG\\US5AK5QG.000", "BIN", cell_crc},
+                                                           {"US5AK5QG\\US5AK5QG.001", "BIN", update_crc}}));
+  expect_one_line(error_of([&] { find_enc_cells({copy.string()}); }),
+                  {"US5AK5QG.001", "expected the file", "CATALOG.031", "found none"});
+  // Present and intact, but the catalogue says another file shipped (the cell's CRC given for it).
+  fs::copy_file(update, copy / "US5AK5QG" / "US5AK5QG.001");
+  write_bytes(copy / "CATALOG.031", catalogue_bytes(real, {{"US5AK5QG\\US5AK5QG.000", "BIN", cell_crc},
+                                                           {"US5AK5QG\\US5AK5QG.001", "BIN", cell_crc}}));
+  EXPECT_NE(cell_crc, update_crc);
+  const std::string expected_crc = "expected CRC-32 " + cell_crc;
+  expect_one_line(error_of([&] { find_enc_cells({copy.string()}); }),
+                  {"US5AK5QG.001", expected_crc.c_str(), "CATALOG.031"});
+}
+
 TEST(EncCatalogue, HostileCataloguesAreOneLineEach) {
   DEEPGUIDE_REAL_FOLDER_OR_SKIP(root, kSeldoviaRoot);
   const std::string real = (fs::path(root) / "CATALOG.031").string();

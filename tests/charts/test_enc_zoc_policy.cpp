@@ -28,17 +28,8 @@ namespace {
 using test::run_cli;
 using test::ScratchDir;
 
-constexpr double kLon0 = -76.50, kLat0 = 38.80;
-constexpr double kMetresPerDegLat = 111320.0;
-
-std::array<double, 2> ll(double east_m, double north_m) {
-  const double per_deg_lon = kMetresPerDegLat * std::cos(kLat0 * std::numbers::pi / 180.0);
-  return {kLon0 + east_m / per_deg_lon, kLat0 + north_m / kMetresPerDegLat};
-}
-
-std::vector<std::array<double, 2>> box(double x0, double y0, double x1, double y1) {
-  return {ll(x0, y0), ll(x1, y0), ll(x1, y1), ll(x0, y1)};
-}
+const auto ll = test::synthetic_lonlat;
+const auto box = test::synthetic_box;
 
 std::string lonlat_text(double east_m, double north_m) {
   const auto p = ll(east_m, north_m);

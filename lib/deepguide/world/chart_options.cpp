@@ -49,12 +49,13 @@ void check_chart_options(const ChartOptions& o) {
   auto need = [](bool ok, const char* expected, double got) {
     if (!ok) throw InputError(std::string("`unassessed`: expected ") + expected + ", got " + general(got, 4));
   };
-  need(std::isfinite(u.depth_fixed_m) && u.depth_fixed_m >= 0.0,
-       "a depth uncertainty >= 0 m for unassessed zones of confidence", u.depth_fixed_m);
+  // Bounded too: a 1e308 m position accuracy would reach the discs' geometry as infinities.
+  need(std::isfinite(u.depth_fixed_m) && u.depth_fixed_m >= 0.0 && u.depth_fixed_m <= 1000.0,
+       "a depth uncertainty in [0, 1000] m for unassessed zones of confidence", u.depth_fixed_m);
   need(std::isfinite(u.depth_fraction) && u.depth_fraction >= 0.0 && u.depth_fraction < 1.0,
        "a depth fraction in [0, 1) for unassessed zones of confidence", u.depth_fraction);
-  need(std::isfinite(u.position_m) && u.position_m > 0.0,
-       "a position accuracy > 0 m for unassessed zones of confidence", u.position_m);
+  need(std::isfinite(u.position_m) && u.position_m > 0.0 && u.position_m <= 10000.0,
+       "a position accuracy in (0, 10000] m for unassessed zones of confidence", u.position_m);
 }
 
 }  // namespace deepguide

@@ -56,8 +56,9 @@ struct ChartOptions {
 /// confidence clipped, expected strict"; "" when they agree.
 std::string chart_options_difference(const ChartOptions& prepared, const ChartOptions& asked);
 
-/// Throws InputError naming the field for figures that are not finite, a
-/// negative uncertainty, a fraction outside [0, 1) or a position accuracy <= 0.
+/// Throws InputError naming the field for figures that are not finite, an
+/// uncertainty outside [0, 1000] m, a fraction outside [0, 1) or a position
+/// accuracy outside (0, 10000] m.
 void check_chart_options(const ChartOptions& options);
 
 }  // namespace deepguide
