@@ -61,37 +61,23 @@ inline std::string shared_real_data() {
   return std::filesystem::is_directory(p) ? p.lexically_normal().string() : std::string();
 }
 
-/// Path of a real file under ../shared/data/real, or empty when the folder or the file is absent.
-inline std::string real_file(const std::string& rel) {
+/// Path of a real file (or folder: an exchange set) under ../shared/data/real, or empty when
+/// the data or that file is absent, or is not of that type.
+inline std::string real_data(const std::string& rel, std::filesystem::file_type type) {
   const std::string dir = shared_real_data();
   if (dir.empty()) return {};
   const auto p = std::filesystem::path(dir) / rel;
-  return std::filesystem::is_regular_file(p) ? p.string() : std::string();
+  return std::filesystem::status(p).type() == type ? p.string() : std::string();
 }
+inline std::string real_file(const std::string& rel) { return real_data(rel, std::filesystem::file_type::regular); }
+inline std::string real_folder(const std::string& rel) { return real_data(rel, std::filesystem::file_type::directory); }
 
-/// Declares `var` as the real file `rel`, or skips the test with a message when it is absent.
-#define DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel)                \
-  const std::string var = ::deepguide::test::real_file(rel); \
-  if (var.empty())                                           \
-  GTEST_SKIP() << "../shared/data/real/" << (rel)            \
-               << " is absent: skipping the "                \
-                  "test on real data"
-
-/// Path of a real folder under ../shared/data/real (an exchange set), or empty when absent.
-inline std::string real_folder(const std::string& rel) {
-  const std::string dir = shared_real_data();
-  if (dir.empty()) return {};
-  const auto p = std::filesystem::path(dir) / rel;
-  return std::filesystem::is_directory(p) ? p.string() : std::string();
-}
-
-/// Declares `var` as the real folder `rel`, or skips the test with a message when it is absent.
-#define DEEPGUIDE_REAL_FOLDER_OR_SKIP(var, rel)                \
-  const std::string var = ::deepguide::test::real_folder(rel); \
-  if (var.empty())                                             \
-  GTEST_SKIP() << "../shared/data/real/" << (rel)              \
-               << " is absent: skipping the "                  \
-                  "test on real data"
+/// Declares `var` as the real file (or folder) `rel`, or skips the test with a message when it is absent.
+#define DEEPGUIDE_REAL_OR_SKIP_(var, rel, type)                                                \
+  const std::string var = ::deepguide::test::real_data(rel, std::filesystem::file_type::type); \
+  if (var.empty()) GTEST_SKIP() << "../shared/data/real/" << (rel) << " is absent: skipping the test on real data"
+#define DEEPGUIDE_REAL_FILE_OR_SKIP(var, rel) DEEPGUIDE_REAL_OR_SKIP_(var, rel, regular)
+#define DEEPGUIDE_REAL_FOLDER_OR_SKIP(var, rel) DEEPGUIDE_REAL_OR_SKIP_(var, rel, directory)
 
 inline std::string source_file(const std::string& rel) {
   return (std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / rel).string();

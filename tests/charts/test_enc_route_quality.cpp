@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "deepguide/mission/mission_report.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/enc_route_quality.hpp"
 #include "synthetic_cell.hpp"
@@ -124,6 +125,74 @@ TEST(EncRouteQuality, PlanAndCheckRouteReportIt) {
   EXPECT_EQ(wq.at("cells").size(), 2u);
   EXPECT_NEAR(wq.at("length_by_zoc_m").at("B").get<double>(), q.at("length_by_zoc_m").at("B").get<double>(), 1e-3);
   EXPECT_EQ(wq.at("least_depth").at("feature"), q.at("least_depth").at("feature"));
+}
+
+// A mission over the two cells, out at 5 m and back at 17 m: each phase is
+// judged at its own required depth (D = depth + 2 m). Out (D 7 m) nothing is
+// no-go inside, the nearest is the charts' edge 500 m off; back (D 19 m) the
+// harbour cell's 20 m in CATZOC B (least 20 - 1 - 0.4 = 18.6 m) is no-go
+// under the whole middle third.
+TEST(EncRouteQuality, MissionPhasesEachAtTheirDepth) {
+  ScratchDir tmp;
+  const std::vector<std::string> cells = two_bands(tmp);
+  const std::string yaml = tmp.file("out_and_back.yaml");
+  char text[1024];
+  std::snprintf(text, sizeof text,
+                "name: out and back\nenvironment:\n  charts: ['%s', '%s']\nsafety:\n  margin_m: 5\n"
+                "  vertical_clearance_m: 2\nstart: {lon: %.8f, lat: %.8f, depth_m: 0}\nmanoeuvres:\n"
+                "  - track: {name: out, depth_m: 5, speed_kn: 3, waypoints: [{lon: %.8f, lat: %.8f}]}\n"
+                "  - track: {name: back, depth_m: 17, speed_kn: 3, waypoints: [{lon: %.8f, lat: %.8f}]}\n",
+                cells[0].c_str(), cells[1].c_str(), ll(500, 1500)[0], ll(500, 1500)[1], ll(5500, 1500)[0],
+                ll(5500, 1500)[1], ll(500, 1500)[0], ll(500, 1500)[1]);
+  std::ofstream(yaml) << text;
+  const MissionCheckReport r = check_mission_file(yaml);
+  ASSERT_EQ(r.chart_quality.size(), 2u);
+  const PhaseQuality& out = r.chart_quality[0];
+  const PhaseQuality& back = r.chart_quality[1];
+  const double scale = out.quality.length_m / 5000.0;
+  ASSERT_NEAR(scale, 1.0, 2e-3);
+  EXPECT_EQ(out.name, "out");
+  EXPECT_EQ(out.manoeuvre, 0u);
+  EXPECT_DOUBLE_EQ(out.required_depth_m, 7.0);
+  EXPECT_DOUBLE_EQ(back.required_depth_m, 19.0);
+  EXPECT_NEAR(back.from_m, out.quality.length_m, 1e-6);
+  for (const PhaseQuality* p : {&out, &back}) {
+    ASSERT_EQ(p->quality.cells.size(), 2u) << p->name;
+    EXPECT_EQ(p->quality.cells[0].cell, "US4TEST1");
+    EXPECT_NEAR(p->quality.cells[1].length_m, 2000.0 * scale, 0.5);
+    EXPECT_NEAR(p->quality.length_by_zoc.at("B"), 2000.0 * scale, 0.5);
+    EXPECT_NEAR(p->quality.length_by_zoc.at("C"), 3000.0 * scale, 0.5);
+    ASSERT_TRUE(p->quality.least_depth.has_value());
+    EXPECT_DOUBLE_EQ(p->quality.least_depth->depth_m, 20.0);
+    ASSERT_TRUE(p->quality.nearest_no_go.has_value());
+  }
+  EXPECT_EQ(out.quality.nearest_no_go->feature_id, "M_COVR/outside");
+  EXPECT_NEAR(out.quality.nearest_no_go->distance_m, 500.0 * scale, 0.5);
+  EXPECT_EQ(back.quality.nearest_no_go->feature_id.rfind("US5TEST2:DEPARE/", 0), 0u)
+      << back.quality.nearest_no_go->feature_id;
+  EXPECT_DOUBLE_EQ(back.quality.nearest_no_go->distance_m, 0.0);
+  EXPECT_NE(back.quality.nearest_no_go->reason.find("least 18.6 m at CATZOC B, < 19 m"), std::string::npos)
+      << back.quality.nearest_no_go->reason;
+  // The same quality as the route on its own at that depth.
+  EncNoGoOptions o;
+  o.operating_depth_m = 17.0;
+  const EncNoGo deep = enc_no_go(cells, r.loaded.mission.frame, o);
+  const RouteQuality alone = route_quality({r.loaded.plan.basics[1].from, r.loaded.plan.basics[1].to}, deep);
+  EXPECT_EQ(alone.nearest_no_go->feature_id, back.quality.nearest_no_go->feature_id);
+  EXPECT_NEAR(alone.length_m, back.quality.length_m, 1e-6);
+
+  // Reported by mission check and mission plan, in text and JSON.
+  const nlohmann::json j = r.to_json();
+  ASSERT_EQ(j.at("chart_quality").size(), 2u);
+  EXPECT_EQ(j.at("chart_quality").at(1).at("manoeuvre"), 2);
+  EXPECT_EQ(j.at("chart_quality").at(1).at("nearest_no_go").at("distance_m"), 0.0);
+  const test::RunResult check = run_cli("mission check '" + yaml + "'");
+  EXPECT_NE(check.out.find("phase 2          track 'back': "), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find(" m along, at 17 m (required depth 19 m)\n"), std::string::npos) << check.out;
+  const test::RunResult plan = run_cli("mission plan '" + yaml + "' --json");
+  const nlohmann::json pj = nlohmann::json::parse(plan.out);
+  ASSERT_TRUE(pj.contains("chart_quality")) << plan.out;
+  EXPECT_EQ(pj.at("chart_quality").at(0).at("required_depth_m"), 7.0);
 }
 
 // ------------------------------------------------------------------ the real set, read by the test itself

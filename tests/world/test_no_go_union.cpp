@@ -5,6 +5,7 @@
 // polygons (a bow-tie, a ring that loops over itself, a hole outside its
 // shell), on which GEOS's plain union stops with a TopologyException: they
 // are repaired, and every polygon returned is valid for Boost.Geometry.
+// overlay_no_go: an area less zones sharing its edges, and within them.
 
 #include <gtest/gtest.h>
 
@@ -113,6 +114,25 @@ TEST(NoGoUnion, AGridSnapRoundsEveryVertex) {
   const double exact =
       boost::geometry::area(a) + boost::geometry::area(b) - (10.9876543 - 5.5555555) * (10.1234567 - 5.5555555);
   EXPECT_NEAR(area(u), exact, 81.0 * 0.5e-3) << "each edge (81 m of them) moves by at most half a cell";
+}
+
+// A 4 x 2 strip with zones sharing its edges: its left half, and a unit
+// square in its lower right corner.
+TEST(NoGoUnion, OverlayLessAndWithinZonesSharingEdges) {
+  const BgMultiPolygon strip{box(0, 0, 4, 2)};
+  const BgPolygon left = box(0, 0, 2, 2), right = box(3, 0, 4, 1);
+  const std::vector<BgPolygon> less = overlay_no_go(strip, {&left, &right}, false);
+  EXPECT_NEAR(area(less), 8.0 - 4.0 - 1.0, 1e-9);
+  EXPECT_FALSE(boost::geometry::covered_by(BgPoint(1.0, 1.0), less.front()));
+  const std::vector<BgPolygon> within = overlay_no_go(strip, {&left, &right}, true);
+  EXPECT_NEAR(area(within), 5.0, 1e-9);
+  for (const BgPolygon& p : within) EXPECT_TRUE(boost::geometry::is_valid(p));
+  // No zones: the area itself, or nothing of it.
+  EXPECT_NEAR(area(overlay_no_go(strip, {}, false)), 8.0, 1e-9);
+  EXPECT_TRUE(overlay_no_go(strip, {}, true).empty());
+  // A zone beyond the area cuts nothing.
+  const BgPolygon far = box(10, 10, 11, 11);
+  EXPECT_NEAR(area(overlay_no_go(strip, {&far}, false)), 8.0, 1e-9);
 }
 
 }  // namespace

@@ -28,15 +28,13 @@ Vec2 constant_current(const Mission& mission) {
   return speed * Vec2(std::cos(a), std::sin(a));
 }
 
-namespace {
-
-EncNoGoOptions sea_floor_options(const ChartOptions& chart) {
-  EncNoGoOptions o;
-  static_cast<ChartOptions&>(o) = chart;
-  return o;
+std::vector<std::string> enc_charts_of(const Mission& mission) {
+  std::vector<std::string> enc;
+  for (const std::string& path : mission.charts) {
+    if (names_enc(path) || chart_kind(path) == ChartKind::s57) enc.push_back(path);
+  }
+  return enc;
 }
-
-}  // namespace
 
 MissionEnvironment load_environment(const Mission& mission, const ChartOptions& chart) {
   MissionEnvironment env;
@@ -83,7 +81,7 @@ MissionEnvironment load_environment(const Mission& mission, const ChartOptions& 
     const Vec2 pad = Vec2::Constant(200.0);
     env.floor = std::make_shared<const SeaFloor>(
         enc.empty() ? SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0)
-                    : enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0, sea_floor_options(chart)));
+                    : enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0, enc_options(chart)));
   }
   return env;
 }

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
@@ -30,6 +31,9 @@ struct MissionEnvironment {
 /// from true north at the start); zero without one. A current_file gives
 /// zero here: what reads it says so.
 Vec2 constant_current(const Mission& mission);
+
+/// The S-57 cells (and folders and exchange sets of them) among the mission's charts.
+std::vector<std::string> enc_charts_of(const Mission& mission);
 
 /// Throws InputError (naming the file) for an unreadable file or more than
 /// one raster. S-57 cells are read by `chart` (chart_options.hpp).

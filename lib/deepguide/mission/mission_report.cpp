@@ -106,6 +106,7 @@ MissionCheckReport check_mission_file(const std::string& path, const ChartOption
   // Whether mission control can resolve each: what it cannot is reported here already.
   r.planned = plan_mission(l.mission, l.env, l.plan);
   r.beaten = legs_beaten_by_current(l.plan, l.env.current);
+  r.chart_quality = phase_quality(l.mission, l.plan, chart);
   return r;
 }
 
@@ -164,6 +165,7 @@ nlohmann::json MissionCheckReport::to_json() const {
                        {"lat", ll.y()}});
   }
   j["beaten_by_current"] = against;
+  if (!chart_quality.empty()) j["chart_quality"] = phase_quality_json(chart_quality, m.frame);
   return j;
 }
 
@@ -193,6 +195,7 @@ std::string MissionCheckReport::to_text() const {
     const std::string name = (m.manoeuvres[i].type + " '" + printable(m.manoeuvres[i].name) + "'").substr(0, 40);
     t += printf_text("%4zu %-40s %6zu %10.0f %9.0f\n", i + 1, name.c_str(), count, from, length);
   }
+  t += phase_quality_text(chart_quality, m.frame);
   if (!m.current_file.empty()) {
     t += report_line("current", printable(m.current_file) +
                                     ": not checked against the vehicle's speed (a constant "
@@ -245,6 +248,7 @@ MissionPlanReport plan_mission_file(const std::string& path, const ChartOptions&
   r.loaded = load_mission(path, chart);
   r.planned = plan_mission(r.loaded.mission, r.loaded.env, r.loaded.plan);
   r.verdict = check_mission_plan(r.planned.plan, r.loaded.env, observation_options(r.loaded.mission));
+  r.chart_quality = phase_quality(r.loaded.mission, r.planned.plan, chart);
   return r;
 }
 
@@ -262,15 +266,17 @@ nlohmann::json MissionPlanReport::to_json() const {
   nlohmann::json list = nlohmann::json::array();
   for (const Resolution& r : planned.resolutions)
     list.push_back(resolution_json(r, m.frame.to_lonlat(r.conflict.where)));
-  return {{"mission", m.name},
-          {"crs", m.frame.id()},
-          {"basic_manoeuvres", planned.plan.basics.size()},
-          {"length_m", planned.plan.length_m},
-          {"time_s", plan_duration(planned.plan)},
-          {"original_length_m", loaded.plan.length_m},
-          {"resolutions", list},
-          {"remaining_conflicts", planned.remaining.size()},
-          {"check", {{"safe", verdict.safe}, {"legs", verdict.legs}, {"problem", verdict.problem}}}};
+  nlohmann::json j = {{"mission", m.name},
+                      {"crs", m.frame.id()},
+                      {"basic_manoeuvres", planned.plan.basics.size()},
+                      {"length_m", planned.plan.length_m},
+                      {"time_s", plan_duration(planned.plan)},
+                      {"original_length_m", loaded.plan.length_m},
+                      {"resolutions", list},
+                      {"remaining_conflicts", planned.remaining.size()},
+                      {"check", {{"safe", verdict.safe}, {"legs", verdict.legs}, {"problem", verdict.problem}}}};
+  if (!chart_quality.empty()) j["chart_quality"] = phase_quality_json(chart_quality, m.frame);
+  return j;
 }
 
 std::string MissionPlanReport::to_text() const {
@@ -310,7 +316,7 @@ std::string MissionPlanReport::to_text() const {
                                   verdict.safe ? "safe" : "UNSAFE", verdict.legs);
   if (std::isfinite(verdict.min_floor_gap_m))
     check += printf_text("; least water under the vehicle %.1f m", verdict.min_floor_gap_m);
-  return t + report_line("check", check);
+  return t + report_line("check", check) + phase_quality_text(chart_quality, m.frame);
 }
 
 // ---- mission export

@@ -17,6 +17,7 @@
 #include "deepguide/mission/collision_observation.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/mission/phase_quality.hpp"
 #include "deepguide/mission/plan_check.hpp"
 #include "deepguide/mission/route_export.hpp"
 
@@ -31,6 +32,7 @@ struct MissionCheckReport {
   std::vector<Conflict> conflicts;
   PlannedMission planned;
   std::vector<BeatenLeg> beaten;
+  std::vector<PhaseQuality> chart_quality;  ///< the plan as written, per phase, on S-57 cells
 
   nlohmann::json to_json() const;
   std::string to_text() const;
@@ -46,6 +48,7 @@ struct MissionPlanReport {
   LoadedMission loaded;
   PlannedMission planned;
   MissionPlanCheck verdict;
+  std::vector<PhaseQuality> chart_quality;  ///< the planned mission, per phase, on S-57 cells
 
   nlohmann::json to_json() const;
   std::string to_text() const;

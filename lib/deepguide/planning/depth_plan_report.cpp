@@ -50,10 +50,8 @@ void read_charts(const LocalFrame& frame, const DepthPlanRequest& r, DepthPlanRe
     if (report.floor) {
       throw InputError(enc_charts.front() + ": planning in depth: expected one sea floor, got a raster and S-57 cells");
     }
-    EncNoGoOptions read;
-    static_cast<ChartOptions&>(read) = r.chart;
-    report.floor =
-        std::make_shared<const SeaFloor>(enc_sea_floor(enc_charts, frame, lo, hi, std::max(spacing, 5.0), read));
+    report.floor = std::make_shared<const SeaFloor>(
+        enc_sea_floor(enc_charts, frame, lo, hi, std::max(spacing, 5.0), enc_options(r.chart)));
   }
   if (!vector_charts.empty()) {
     ChartObstacleOptions chart_options;  // no depth: every hazard stays, with its top

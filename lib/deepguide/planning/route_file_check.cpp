@@ -62,10 +62,7 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
   if (std::isnan(o.operating_depth_m)) {
     throw InputError("operating depth: expected the depth (m) to check the route against S-57 charts at");
   }
-  EncNoGoOptions opts;
-  static_cast<ChartOptions&>(opts) = o.chart;
-  opts.operating_depth_m = o.operating_depth_m;
-  opts.vertical_clearance_m = o.vertical_clearance_m;
+  const EncNoGoOptions opts = enc_options(o.chart, o.operating_depth_m, o.vertical_clearance_m);
   std::optional<LocalFrame> frame;
   if (!o.crs.empty()) frame = LocalFrame::from_user_crs(o.crs);
   const EncNoGo no_go = chart_no_go(o.charts, frame, opts);

@@ -158,7 +158,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
     chart_options.depth_m = r.depth_m;
     chart_options.clearance_m = r.vertical_clearance_m;
     chart_options.source_crs = r.src_crs;
-    static_cast<ChartOptions&>(chart_options.enc) = r.chart;
+    chart_options.enc = enc_options(r.chart);
     charted = chart_obstacles(r.charts, frame, chart_options);
     for (const ChartFileObstacles& f : charted.files) report.passed_over += f.passed_over;
     append(report.obstacles, charted.obstacles);

@@ -77,11 +77,7 @@ EncLayer read_enc_layer(const std::vector<std::string>& cells, const LocalFrame&
   EncLayer layer;
   const bool prepared = cells.size() == 1 && is_prepared_chart(cells.front());
   if (std::isfinite(depth_m)) {
-    EncNoGoOptions o;
-    static_cast<ChartOptions&>(o) = chart;
-    o.operating_depth_m = depth_m;
-    o.vertical_clearance_m = clearance_m;
-    layer.no_go = chart_no_go(cells, frame, o);
+    layer.no_go = chart_no_go(cells, frame, enc_options(chart, depth_m, clearance_m));
   }
   if (prepared) {
     // Only the no-go was kept: its features stand for the chart.

@@ -161,11 +161,7 @@ void s57_info(ChartInfo& info, const ChartInfoOptions& o) {
   }
   std::optional<EncNoGo> no_go;
   if (!std::isnan(o.depth_m)) {
-    EncNoGoOptions eo;
-    static_cast<ChartOptions&>(eo) = o.chart;
-    eo.operating_depth_m = o.depth_m;
-    eo.vertical_clearance_m = o.clearance_m;
-    no_go = enc_no_go({info.path}, frame, eo);
+    no_go = enc_no_go({info.path}, frame, enc_options(o.chart, o.depth_m, o.clearance_m));
   }
   if (several) {
     if (no_go) {

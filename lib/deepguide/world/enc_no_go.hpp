@@ -63,6 +63,12 @@ struct EncNoGoOptions : ChartOptions {
   bool planner_obstacles = true;
 };
 
+/// The options for a vehicle at `operating_depth_m` keeping `vertical_clearance_m`, with the
+/// chart options a command was given and the library's defaults for the rest.
+EncNoGoOptions enc_options(const ChartOptions& chart,
+                           double operating_depth_m = std::numeric_limits<double>::quiet_NaN(),
+                           double vertical_clearance_m = 2.0);
+
 /// One feature (or part of one) that is no-go, with why.
 struct EncNoGoFeature {
   std::string id;    ///< "CLASS/RCID", prefixed "CELL:" when several cells are read

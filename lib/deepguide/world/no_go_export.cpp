@@ -16,10 +16,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 void from_cells(const NoGoExportRequest& r, NoGoExportReport& out) {
-  EncNoGoOptions opts;
-  static_cast<ChartOptions&>(opts) = r.chart;
-  opts.operating_depth_m = r.nogo.operating_depth_m;
-  opts.vertical_clearance_m = r.nogo.vertical_clearance_m;
+  EncNoGoOptions opts = enc_options(r.chart, r.nogo.operating_depth_m, r.nogo.vertical_clearance_m);
   opts.simplify_tolerance_m = r.nogo.simplify_tolerance_m;
   const auto t0 = std::chrono::steady_clock::now();
   const EncNoGo no_go = enc_no_go(

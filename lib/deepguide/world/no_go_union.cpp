@@ -179,16 +179,35 @@ bool covers_every_tile(const std::vector<BgPolygon>& result, const std::vector<c
   return true;
 }
 
+struct GeosContext {
+  GEOSContextHandle_t h = OGRGeometry::createGEOSContext();
+  ~GeosContext() { OGRGeometry::freeGEOSContext(h); }
+};
+
 // GEOS's union of `all` snap-rounded to `grid` (OverlayNG at a fixed precision), or null.
 OgrPtr snap_rounded(const OGRGeometry& all, double grid) {
-  struct Context {
-    GEOSContextHandle_t h = OGRGeometry::createGEOSContext();
-    ~Context() { OGRGeometry::freeGEOSContext(h); }
-  } ctx;
+  GeosContext ctx;
   GEOSGeometry* in = all.exportToGEOS(ctx.h);
   if (in == nullptr) return owned(nullptr);
   GEOSGeometry* out = GEOSUnaryUnionPrec_r(ctx.h, in, grid);
   GEOSGeom_destroy_r(ctx.h, in);
+  if (out == nullptr) return owned(nullptr);
+  OGRGeometry* g = OGRGeometryFactory::createFromGEOS(ctx.h, out);
+  GEOSGeom_destroy_r(ctx.h, out);
+  return owned(g);
+}
+
+// a less b (or a within b) snap-rounded to `grid`, or null.
+OgrPtr snap_rounded_overlay(const OGRGeometry& a, const OGRGeometry& b, bool keep_inside, double grid) {
+  GeosContext ctx;
+  GEOSGeometry* ga = a.exportToGEOS(ctx.h);
+  GEOSGeometry* gb = b.exportToGEOS(ctx.h);
+  GEOSGeometry* out = nullptr;
+  if (ga != nullptr && gb != nullptr) {
+    out = keep_inside ? GEOSIntersectionPrec_r(ctx.h, ga, gb, grid) : GEOSDifferencePrec_r(ctx.h, ga, gb, grid);
+  }
+  if (ga != nullptr) GEOSGeom_destroy_r(ctx.h, ga);
+  if (gb != nullptr) GEOSGeom_destroy_r(ctx.h, gb);
   if (out == nullptr) return owned(nullptr);
   OGRGeometry* g = OGRGeometryFactory::createFromGEOS(ctx.h, out);
   GEOSGeom_destroy_r(ctx.h, out);
@@ -239,6 +258,29 @@ std::vector<BgPolygon> union_no_go(const std::vector<const BgPolygon*>& tiles,
     out.clear();
     if (!plain.IsEmpty()) from_ogr(*joined(plain, grid_m), out);
   }
+  make_valid_for_boost(out);
+  return out;
+}
+
+std::vector<BgPolygon> overlay_no_go(const BgMultiPolygon& area, const std::vector<const BgPolygon*>& cuts,
+                                     bool keep_inside) {
+  if (!OGRGeometryFactory::haveGEOS()) throw std::runtime_error("GDAL was built without GEOS: no polygon overlay");
+  gdal::QuietErrors quiet;
+  OGRMultiPolygon a, c;
+  for (const BgPolygon& p : area) add_to(a, p);
+  for (const BgPolygon* p : cuts) add_to(c, *p);
+  std::vector<BgPolygon> out;
+  if (a.IsEmpty()) return out;
+  if (c.IsEmpty()) {
+    if (!keep_inside) from_ogr(a, out);
+    make_valid_for_boost(out);
+    return out;
+  }
+  const OgrPtr cut = joined(c, 0.0);
+  OgrPtr result = owned(keep_inside ? a.Intersection(cut.get()) : a.Difference(cut.get()));
+  if (!result) result = snap_rounded_overlay(a, *cut, keep_inside, kRepairGridM);
+  if (!result) throw std::runtime_error("GEOS could not overlay a no-go area: " + gdal::QuietErrors::last_message());
+  from_ogr(*result, out);
   make_valid_for_boost(out);
   return out;
 }
