@@ -95,11 +95,12 @@ std::vector<Link> pairs_within_horizons(const std::vector<Vec2>& points, const s
   const std::size_t m = points.size();
   const std::size_t workers = build_workers(m);
   const OcclusionHorizon occlusion(visibility.polygons(), visibility.eps());
+  std::vector<BearingSet> supporting(m);
   std::vector<Horizon> seen(m);
   parallel_blocks(m, 256, workers, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t u = begin; u < end; ++u) {
-      seen[u] =
-          occlusion.horizon(points[u], supporting_bearings(to_prev[u], to_next[u], visibility.eps()), kHorizonPieces);
+      supporting[u] = supporting_bearings(to_prev[u], to_next[u], visibility.eps());
+      seen[u] = occlusion.horizon(points[u], supporting[u], kHorizonPieces);
     }
   });
   double open_pairs = 0.0;
@@ -140,8 +141,13 @@ std::vector<Link> pairs_within_horizons(const std::vector<Vec2>& points, const s
           }
         }
       };
+      // Within the reach, only the supporting bearings: a coast's corners are
+      // nearly flat, their supporting lines two narrow cones along the coast,
+      // where a square round them holds the whole bay.
       const double r = seen[u].reach_m + visibility.eps();
-      collect(BgBox(to_bg(p - Vec2(r, r)), to_bg(p + Vec2(r, r))), r * r);
+      for (const auto& [lo, hi] : supporting[u]) {
+        for (const BgPolygon& wedge : bearing_wedges(p, lo, hi, r)) collect(wedge, r * r);
+      }
       // Beyond the reach, only the open bearings: wedges from p past every corner.
       const Vec2 span =
           (to_eigen(extent.max_corner()) - p).cwiseAbs().cwiseMax((to_eigen(extent.min_corner()) - p).cwiseAbs());
