@@ -184,6 +184,17 @@ OwnNoGo read_own(const std::string& path, double D, int utm_epsg, ZocPolicy zoc)
       o.zones.push_back({i >= 0 && f->IsFieldSetAndNotNull(i) ? f->GetFieldAsInteger(i) : 0, utm_of(*f)});
     }
   }
+  // Depth areas, for a danger whose depth EXPSOU ties to them.
+  std::vector<std::pair<Geom, double>> depth_areas;
+  if (OGRLayer* d = ds->GetLayerByName("DEPARE"); d != nullptr) {
+    for (auto& f : *d) {
+      if (f->GetGeometryRef() == nullptr || !has_area(f->GetGeometryRef())) continue;
+      const int i = f->GetFieldIndex("DRVAL1");
+      depth_areas.emplace_back(utm_of(*f), i >= 0 && f->IsFieldSetAndNotNull(i)
+                                               ? f->GetFieldAsDouble(i)
+                                               : std::numeric_limits<double>::quiet_NaN());
+    }
+  }
   auto add_point = [&](Geom p, double z, const std::string& id) {
     const int k = zoc == ZocPolicy::none ? 0 : zone_at(o.zones, *p, std::isnan(z) ? 0.0 : z);
     if (!too_shallow(z, D, k, zoc)) return;
@@ -228,8 +239,23 @@ OwnNoGo read_own(const std::string& path, double D, int utm_epsg, ZocPolicy zoc)
       } else if (std::find(always.begin(), always.end(), cls) != always.end()) {
         take(*f, kAlways);
       } else if (cls == "OBSTRN" || cls == "WRECKS" || cls == "UWTROC") {
-        // Unknown depth: no-go here (the library may tell it from WATLEV, CATWRK or EXPSOU: never less no-go).
-        take(*f, field(*f, "VALSOU"));
+        // docs/CHARTS.md, "The depth of a danger without VALSOU", read here by this test: VALSOU;
+        // WATLEV 1, 2, 4 to 7 dries (0 m); a non-dangerous wreck (CATWRK 1) 20.1 m; EXPSOU 1 or 3
+        // the least DRVAL1 of the depth areas it lies in; else unknown, no-go at every depth.
+        double z = field(*f, "VALSOU");
+        const double watlev = field(*f, "WATLEV"), catwrk = field(*f, "CATWRK"), expsou = field(*f, "EXPSOU");
+        if (std::isnan(z) && (watlev == 1 || watlev == 2 || (watlev >= 4 && watlev <= 7))) z = 0.0;
+        if (std::isnan(z) && cls == "WRECKS" && catwrk == 1) z = 20.1;
+        if (std::isnan(z) && (expsou == 1 || expsou == 3)) {
+          const Geom at = utm_of(*f);
+          double least = std::numeric_limits<double>::infinity();
+          for (const auto& [area, drval1] : depth_areas) {
+            if (area->Intersects(at.get())) least = std::isnan(drval1) ? drval1 : std::min(least, drval1);
+            if (std::isnan(least)) break;
+          }
+          if (std::isfinite(least)) z = least;
+        }
+        take(*f, z);
       } else if (cls == "SOUNDG") {
         Geom g = utm_of(*f);
         for (const OGRGeometry* p : *g->toGeometryCollection()) {
