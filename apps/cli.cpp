@@ -4,6 +4,8 @@
 // (tests/planning/test_toy_graph.cpp).
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -23,6 +25,47 @@ void add_frame_options(CLI::App& cmd, FrameOptions& options) {
                  "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the data)");
   cmd.add_option("--src-crs", options.src_crs,
                  "CRS of input files that carry none, e.g. a CSV in UTM (default: EPSG:4326 lon/lat)");
+}
+
+std::optional<double> finite_number(std::string_view text) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+void require_finite_numbers(CLI::App& app) {
+  // A value, or each comma-separated part of it, that reads as a number must
+  // be a finite one; what is no number at all is left to the option's parser.
+  // Refused as bad input (one line, exit 1) like every other bad value the
+  // commands read, not as a usage error.
+  for (CLI::Option* o : app.get_options()) {
+    if (o->get_type_name().find("FLOAT") == std::string::npos) continue;
+    const std::string flag = o->get_lnames().empty() ? o->get_name() : "--" + o->get_lnames().front();
+    o->check(CLI::Validator(
+        [flag](std::string& text) -> std::string {
+          std::string_view rest = text;
+          for (;;) {
+            const std::size_t comma = rest.find(',');
+            const std::string part(rest.substr(0, comma));
+            char* end = nullptr;
+            const double v = std::strtod(part.c_str(), &end);
+            const char* stop = end;
+            const bool all =
+                stop != part.c_str() && std::all_of(stop, part.c_str() + part.size(), [](char c) { return c == ' '; });
+            if (all && !std::isfinite(v)) {
+              throw InputError(flag + ": expected a finite number, got '" + printable(text) + "'");
+            }
+            if (comma == std::string_view::npos) return std::string();
+            rest.remove_prefix(comma + 1);
+          }
+        },
+        ""));
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) require_finite_numbers(*sub);
 }
 
 void add_chart_options(CLI::App& cmd, ChartOptions& chart, double* vertical_clearance_m) {
@@ -51,6 +94,7 @@ void add_chart_options(CLI::App& cmd, ChartOptions& chart, double* vertical_clea
           const std::string part = end == std::string::npos ? std::string() : text.substr(at, end - at);
           char* stop = nullptr;
           v[k] = part.empty() ? std::nan("") : std::strtod(part.c_str(), &stop);
+          // The values' ranges (NaN and infinities out) are check_chart_options's.
           if (part.empty() || stop == nullptr || *stop != '\0' || (k == 2 && end != text.size())) {
             throw InputError("--unassessed-zoc: expected DEPTH_M,FRACTION,POSITION_M (e.g. 2,0.05,500), got '" +
                              printable(text) + "'");
@@ -95,6 +139,7 @@ const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter
     {"min_cell_m", "--min-cell"},
     {"name", "--name"},
     {"operating_depth_m", "--depth"},
+    {"output", "--output"},
     {"overwrite", "--overwrite"},
     {"replan_events", "--replan-events"},
     {"search", "--search"},
@@ -122,8 +167,7 @@ std::optional<std::string> flag_of_parameter(std::string_view parameter) {
   return std::string(it->second);
 }
 
-int run(int argc, char** argv) {
-  CLI::App app{"deepguide: plan and analyse how an AUV is guided around obstacles and objects"};
+void register_commands(CLI::App& app) {
   app.set_version_flag("--version", std::string("deepguide ") + kVersion);
   app.require_subcommand(1);
 
@@ -155,6 +199,12 @@ int run(int argc, char** argv) {
   register_render_reactive(*render);
   register_render_identification(*render);
   register_render_mission(*render);
+  require_finite_numbers(app);
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"deepguide: plan and analyse how an AUV is guided around obstacles and objects"};
+  register_commands(app);
 
   // Every message is one line a terminal shows as it is: what a file put in
   // an id or a name (a newline, an escape sequence, U+202E) is escaped here

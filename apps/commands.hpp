@@ -20,6 +20,20 @@ namespace deepguide::app {
 /// (apps/cli.cpp): what `main` does, callable in-process.
 int run(int argc, char** argv);
 
+/// Every command and its options under `app` (run's tree), each number an
+/// option takes checked finite (require_finite_numbers).
+void register_commands(CLI::App& app);
+
+/// Adds, to every option under `app` whose values are numbers (CLI11's FLOAT
+/// type), a check that refuses NaN and infinities (InputError naming the flag), also inside lists such as
+/// TOP,BOTTOM: NaN passes every range check (each comparison with it is
+/// false) and stands for "not given" in many of the library's requests.
+void require_finite_numbers(CLI::App& app);
+
+/// The number `text` spells, if it is one and finite (no NaN, no infinity);
+/// a leading '+' and surrounding blanks are allowed. For options read as text.
+std::optional<double> finite_number(std::string_view text);
+
 /// The flag that sets a parameter a library message names ("min_cell_m" ->
 /// "--min-cell"); nothing for a parameter no flag sets.
 std::optional<std::string> flag_of_parameter(std::string_view parameter);

@@ -23,12 +23,15 @@ namespace {
 
 // "TOP,BOTTOM" in metres, depths positive down; the checks on the values are the volume's.
 std::pair<double, double> parse_band(const std::string& text) {
-  double top = 0.0, bottom = 0.0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf%c", &top, &bottom, &tail) != 2) {
-    throw InputError("--depth-band: expected TOP,BOTTOM in metres (depths, positive down), got '" + text + "'");
+  const std::size_t comma = text.find(',');
+  const std::optional<double> top = comma == std::string::npos ? std::nullopt : finite_number(text.substr(0, comma));
+  const std::optional<double> bottom =
+      comma == std::string::npos ? std::nullopt : finite_number(text.substr(comma + 1));
+  if (!top || !bottom) {
+    throw InputError("--depth-band: expected TOP,BOTTOM in metres (depths, positive down), got '" + printable(text) +
+                     "'");
   }
-  return {top, bottom};
+  return {*top, *bottom};
 }
 
 }  // namespace
@@ -59,6 +62,7 @@ void check_depth_flags(bool in_depth, const DepthFlags& f, bool flags_2d) {
         "ends: --graph tangent)");
   }
   if (!f.render_profile.empty()) image_format_for(f.render_profile);  // before the work, not after
+  if (!f.depth_band.empty()) parse_band(f.depth_band);
 }
 
 void run_plan_in_depth(const LocalFrame& frame, const RoutePlanRequest& shared, const DepthFlags& f,

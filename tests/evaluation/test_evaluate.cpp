@@ -203,6 +203,13 @@ TEST(Evaluate, OneAndTwoThreadsAndMergedShardsWriteTheSameBytes) {
       },
       "given already");
   expect_one_line_error([&] { merge_evaluations({shards[0], tmp.file("one")}, tmp.file("m4"), false); }, "same run");
+  // An output that is a shard, or holds one, even when told to overwrite (issue 39): the shard stays.
+  const std::string rows_before = slurp(std::filesystem::path(shards[1]) / "rows.csv");
+  expect_one_line_error([&] { merge_evaluations(shards, shards[1], false, true); }, "got the shard");
+  expect_one_line_error([&] { merge_evaluations(shards, shards[1] + "/./", false, true); }, "got the shard");
+  expect_one_line_error([&] { merge_evaluations(shards, tmp.path().string(), false, true); },
+                        "got a folder holding the shard");
+  EXPECT_EQ(slurp(std::filesystem::path(shards[1]) / "rows.csv"), rows_before);
 }
 
 TEST(Evaluate, StoppedRunResumesWithoutLostOrDuplicatedRows) {

@@ -379,9 +379,28 @@ EvaluationRun read_evaluation(const std::string& dir_text) {
 EvaluationRun merge_evaluations(const std::vector<std::string>& shard_dirs, const std::string& out_dir, bool report,
                                 bool overwrite) {
   if (shard_dirs.empty()) throw InputError("evaluate merge: expected the shards' folders");
-  // A merge makes a new run: never into a folder that holds something, unless told to replace its run.
+  // A merge makes a new run: never into a folder that holds something, unless told to replace its run,
+  // and never into a shard's own folder or one that holds it, whatever it is told: the run it
+  // replaced would be one of its inputs (`merge -o sh2 sh1 sh2 --overwrite` replaced shard 2).
   const fs::path dir(out_dir);
   std::error_code ec;
+  // Both resolved (links, "..", "."), without a trailing separator.
+  const auto resolved = [](const fs::path& p, std::error_code& e) {
+    fs::path r = fs::weakly_canonical(p, e);
+    return r.has_filename() || !r.has_parent_path() ? r : r.parent_path();
+  };
+  const fs::path out_real = resolved(dir, ec);
+  for (const std::string& d : shard_dirs) {
+    std::error_code e2;
+    const fs::path shard_real = resolved(fs::path(d), e2);
+    if (ec || e2) continue;  // an unreadable shard is refused below, naming it
+    const auto [o_end, s_at] = std::mismatch(out_real.begin(), out_real.end(), shard_real.begin(), shard_real.end());
+    if (o_end == out_real.end()) {
+      throw InputError("`output` " + out_dir + ": expected a folder that is not a shard's nor holds one, got " +
+                       (s_at == shard_real.end() ? "the shard " : "a folder holding the shard ") + d);
+    }
+  }
+  ec.clear();
   if (!overwrite && fs::is_directory(dir, ec)) {
     for (const auto& e : fs::directory_iterator(dir, ec)) {
       const std::string name = e.path().filename().string();

@@ -36,7 +36,7 @@ CostModel cost_model_of(const RoutePlanRequest& r, const VehicleParams& vehicle,
     try {
       std::size_t used = 0;
       m.speed_mps = std::stod(r.speed, &used);
-      if (used != r.speed.size()) throw std::invalid_argument("trailing text");
+      if (used != r.speed.size() || !std::isfinite(m.speed_mps)) throw std::invalid_argument("not a finite number");
     } catch (const std::exception&) {
       throw InputError("`speed`: expected cruise, optimal or a speed in m/s, got '" + r.speed + "'");
     }
