@@ -31,7 +31,7 @@ void register_chart_nogo(CLI::App& chart) {
   cmd->add_option("-o,--output", r.output, "Output obstacle file (.geojson/.json, .gpkg, .csv)")->required();
   cmd->add_option(
       "--crs", r.crs,
-      "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the raster's centre)");
+      "Local planning frame, a projected CRS in metres such as EPSG:32632 (default: UTM zone of the raster's centre)");
   cmd->add_option("--src-crs", r.src_crs,
                   "CRS of a raster that carries none, e.g. EPSG:4326 (default: such a raster is an error)");
   cmd->add_option("--sense", f->sense, "Cell values are elevation (up positive), depth, or auto (from the file)")

@@ -22,7 +22,7 @@ namespace deepguide::app {
 
 void add_frame_options(CLI::App& cmd, FrameOptions& options) {
   cmd.add_option("--crs", options.crs,
-                 "Local planning frame, a projected CRS such as EPSG:32632 (default: UTM zone of the data)");
+                 "Local planning frame, a projected CRS in metres such as EPSG:32632 (default: UTM zone of the data)");
   cmd.add_option("--src-crs", options.src_crs,
                  "CRS of input files that carry none, e.g. a CSV in UTM (default: EPSG:4326 lon/lat)");
 }

@@ -91,3 +91,21 @@ TEST(LocalFrame, GeographicCrsIsRefusedAsPlanningFrame) {
     EXPECT_NE(std::string(e.what()).find("projected"), std::string::npos) << e.what();
   }
 }
+
+// Issue 39: a frame in feet took a 5 m margin as 5 ft (plan passed 15.9 m inside an obstacle with
+// +units=us-ft) and `obstacles info --crs EPSG:2229` printed feet as metres.
+TEST(LocalFrame, AFrameNotInMetresIsRefusedNamingItsUnit) {
+  for (const char* crs :
+       {"+proj=utm +zone=32 +datum=WGS84 +units=us-ft", "EPSG:2229", "+proj=utm +zone=32 +units=km"}) {
+    try {
+      LocalFrame::from_user_crs(crs, "--crs");
+      FAIL() << crs << ": no error";
+    } catch (const InputError& e) {
+      const std::string why = e.what();
+      EXPECT_NE(why.find("--crs: expected a projected CRS in metres"), std::string::npos) << why;
+      EXPECT_NE(why.find(crs), std::string::npos) << why;
+    }
+  }
+  EXPECT_NO_THROW(LocalFrame::from_user_crs("+proj=utm +zone=32 +datum=WGS84 +units=m"));
+  EXPECT_NO_THROW(LocalFrame::from_user_crs("EPSG:3413"));
+}

@@ -212,8 +212,8 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
 
   // The frame: crs, else the UTM zone of the start (which must then be lon/lat).
   if (root.has("crs")) {
-    r.frame =
-        LocalFrame::from_user_crs(root.text("crs", "a projected CRS such as EPSG:32632"), root.where("crs").describe());
+    r.frame = LocalFrame::from_user_crs(root.text("crs", "a projected CRS in metres such as EPSG:32632"),
+                                        root.where("crs").describe());
   }
   if (!root.has("start"))
     throw input_error(root.where("start"), "a start {lon, lat, depth_m} or {x, y, depth_m}", "nothing");

@@ -312,8 +312,8 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
 
   // The frame: crs, else the obstacle file's, else the start's UTM zone when lon/lat are used.
   if (root.has("crs")) {
-    sc.frame =
-        LocalFrame::from_user_crs(root.text("crs", "a projected CRS such as EPSG:32632"), root.where("crs").describe());
+    sc.frame = LocalFrame::from_user_crs(root.text("crs", "a projected CRS in metres such as EPSG:32632"),
+                                         root.where("crs").describe());
   }
   ObstacleSet from_file;
   if (root.has("obstacles_file")) {

@@ -70,6 +70,15 @@ LocalFrame LocalFrame::from_user_crs(const std::string& crs, const std::string& 
     throw InputError(what + ": expected a projected (metric) CRS for the local frame, got '" + crs +
                      "' which is not projected");
   }
+  // Every length in deepguide is a metre: obstacle axes, margins, speeds. A frame in feet (a US
+  // survey-foot UTM, a state plane) would take a 5 m margin as 5 ft and report feet as metres.
+  const char* unit = nullptr;
+  const double metres_per_unit = impl->srs->GetLinearUnits(&unit);
+  if (std::abs(metres_per_unit - 1.0) > 1e-12) {
+    throw InputError(what + ": expected a projected CRS in metres for the local frame, got '" + crs + "' in " +
+                     (unit != nullptr ? std::string(unit) : std::string("another unit")) + " (" +
+                     general(metres_per_unit, 10) + " m)");
+  }
   const auto geo = gdal::wgs84();
   impl->to_local = gdal::make_transform(*geo, *impl->srs);
   impl->to_geo = gdal::make_transform(*impl->srs, *geo);
