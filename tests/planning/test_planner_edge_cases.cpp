@@ -98,6 +98,40 @@ TEST_P(BothGraphs, ObstaclesTouchingAtACornerLeaveNoPassage) {
   EXPECT_TRUE(blocked.check.safe) << blocked.check.describe();
 }
 
+// Issue 39: two squares of 65 m touching at a corner, where a chart puts
+// them (UTM, half a million metres from the origin, turned a little as
+// lon/lat squares are), planned past the corner at margins from 0 to 10 m:
+// "internal error: the planned route failed the independent check" at 1e-6
+// (the zones, buffered by micrometres at coordinates of 6e6 m, merged into a
+// pinch the route went through), and at margin 0 the route went through the
+// touching point. Also two squares sharing an edge. Each margin plans round
+// the pair, never through it, and the route passes the check.
+TEST_P(BothGraphs, TouchingObstaclesFarFromTheOriginAtAnyMargin) {
+  const Vec2 origin(434500.0, 5984000.0);
+  const double turn = 0.005;  // rad
+  const auto at = [&](double x, double y) -> Vec2 {
+    return origin + Vec2(std::cos(turn) * x - std::sin(turn) * y, std::sin(turn) * x + std::cos(turn) * y);
+  };
+  const auto square = [&](double x0, double y0, double side, const char* id) {
+    return polygon({at(x0, y0), at(x0, y0 + side), at(x0 + side, y0 + side), at(x0 + side, y0)}, id);
+  };
+  for (const bool corner : {true, false}) {
+    ObstacleSet set;
+    set.polygons.push_back(square(0, 0, 65, "SW"));
+    set.polygons.push_back(corner ? square(65, 65, 65, "NE") : square(65, 0, 65, "E"));
+    // Corner: from the north-west to the south-east across the touching point; edge: across the shared edge.
+    const Vec2 s = corner ? at(-30, 95) : at(65, -40), g = corner ? at(95, -30) : at(65, 105);
+    for (const double margin : {0.0, 1e-9, 1e-7, 1e-6, 3e-6, 1e-5, 1e-4, 1e-3, 1.0, 10.0}) {
+      SCOPED_TRACE(::testing::Message() << (corner ? "corner" : "edge") << ", margin " << margin);
+      Planner planner(set, {margin, 0.5, GetParam(), SearchAlgorithm::astar});
+      const PlanOutcome out = planner.solve({s, g});  // an internal error fails the test
+      ASSERT_TRUE(out.result.found) << out.result.message;
+      EXPECT_TRUE(out.check.safe) << out.check.describe();
+      EXPECT_GT(out.result.route.length(), (g - s).norm() + 10.0) << "through the pair, not round it";
+    }
+  }
+}
+
 TEST_P(BothGraphs, StartAndGoalExactlyOnAZoneBoundary) {
   // Disc r = 10, margin 5: the zone is the disc of radius 15. From (-15, 0) on
   // its boundary to (100, 0): arc from angle pi to the tangent point at

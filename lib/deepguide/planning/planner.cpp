@@ -31,8 +31,21 @@ std::string to_string(const GraphKind& kind) { return kind.name; }
 std::string to_string(SearchAlgorithm a) { return a == SearchAlgorithm::astar ? "astar" : "dijkstra"; }
 
 namespace {
-// See PlannerOptions::margin: zero-width gaps between touching obstacles are closed.
-constexpr double kMinGraphMargin = 1e-6;
+
+// The least margin the graphs plan with (PlannerOptions::margin): zero-width
+// gaps between touching obstacles are closed. 1 um, or a ten-billionth of the
+// largest coordinate where that is more: zones buffered by micrometres at UTM
+// coordinates (6e6 m, where a double's step is 1e-9 m) came out within a few
+// micrometres of where they belong, and two squares touching at a corner
+// merged into a pinch the route went through (issue 39: "internal error: the
+// planned route failed the independent check" at margins 1e-6 to 1e-5 m).
+double min_graph_margin(const ObstacleSet& obstacles) {
+  const auto [lo, hi] = footprint_box(obstacles);
+  const bool any = (lo.array() <= hi.array()).all();
+  const double largest = any ? std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) : 0.0;
+  return std::max(1e-6, 1e-10 * largest);
+}
+
 }  // namespace
 
 struct Planner::Impl {
@@ -105,7 +118,7 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
                      " graph keeps no turning radius)");
   }
   impl_ = std::make_unique<Impl>(ObstacleField(obstacles, options.margin));
-  const double graph_margin = std::max(options.margin, kMinGraphMargin);
+  const double graph_margin = std::max(options.margin, min_graph_margin(obstacles));
   if (entry.build) {
     const auto started = std::chrono::steady_clock::now();
     impl_->registered = entry.build(GraphBuild{obstacles, impl_->field, options, focus});
@@ -224,7 +237,8 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   const std::string none =
       "no route keeps the " + general(options_.margin) + " m margin turning no tighter than " + radius;
   if (!impl_->plain) {
-    impl_->plain = std::make_unique<TangentGraph>(impl_->field.obstacles(), std::max(options_.margin, kMinGraphMargin),
+    impl_->plain = std::make_unique<TangentGraph>(impl_->field.obstacles(),
+                                                  std::max(options_.margin, min_graph_margin(impl_->field.obstacles())),
                                                   options_.tolerance);
   }
   PlanningProblem free_ends = problem;
