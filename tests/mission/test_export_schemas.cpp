@@ -23,6 +23,9 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <filesystem>
+#include <iterator>
+#include <yaml-cpp/yaml.h>
 
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/plan_export.hpp"
@@ -527,4 +530,116 @@ TEST(ExportSchemas, RtzOfATurningRouteTurnsOnItsArcs) {
       "[ export ] RTZ of a route within %.0f m: %zu waypoints, %d arcs; the ECDIS track keeps %.3f m, "
       "at most %.3f m off the planned arcs\n",
       radius, wp.size(), arcs, least, furthest);
+}
+
+// Issue 39, item 3: a name is whole in every format, or refused naming it.
+// Names a user may type (markup, CDATA's end without its '>', quotes, format
+// specifiers, any script) come back byte for byte through each format's own
+// reader; names no format carries whole (a control character, "]]>", bytes
+// that are not UTF-8) are refused before any file is written.
+TEST(ExportSchemas, HostileNamesComeBackWholeFromEveryFormatOrAreRefusedNamingTheField) {
+  ScratchDir dir;
+  const std::vector<std::string> kept = {"a]]b ]> <!-- x <![CDATA[ y", "&amp; <b>\"q\" 'a' %s %n {{n}} ${x}",
+                                         "\xc3\xa9 \xe4\xb8\xad\xe6\x96\x87 \xf0\x9f\x9a\xa2 \xe2\x80\xae rtl",
+                                         "a,b;c|d\\e=f"};
+  const std::vector<std::string> formats = {"gpx", "kml", "rtz", "geojson", "csv", "plan", "bhv"};
+  int k = 0;
+  for (const std::string& name : kept) {
+    ExportRoute route = sample().route;
+    route.name = name;
+    for (ExportWaypoint& w : route.waypoints) w.manoeuvre = name;
+    for (const std::string& ext : formats) {
+      const std::string path = dir.file("r" + std::to_string(k++) + "." + ext);
+      ASSERT_NO_THROW(write_route_file(route, path, export_format_for(path), {0.5, false, name})) << ext << " " << name;
+      if (ext == "gpx") {
+        EXPECT_EQ(schema_errors(schema("gpx/gpx.xsd"), path), "") << name;
+        const Xml x(path, {{"g", "http://www.topografix.com/GPX/1/1"}});
+        EXPECT_EQ(x.all("//g:rte/g:name"), std::vector<std::string>{name});
+      } else if (ext == "kml") {
+        EXPECT_EQ(schema_errors(schema("kml22/ogckml22.xsd"), path), "") << name;
+        const Xml x(path, {{"k", "http://www.opengis.net/kml/2.2"}});
+        EXPECT_EQ(x.all("//k:Placemark[k:LineString]/k:name"), std::vector<std::string>{name});
+      } else if (ext == "rtz") {
+        EXPECT_EQ(schema_errors(schema("rtz/rtz_1_0.xsd"), path), "") << name;
+        const Xml x(path, {{"r", "http://www.cirm.org/RTZ/1/0"}});
+        EXPECT_EQ(x.all("//r:routeInfo/@routeName"), std::vector<std::string>{name});
+      } else if (ext == "geojson") {
+        std::ifstream in(path);
+        const nlohmann::json j = nlohmann::json::parse(in);
+        int lines = 0;
+        for (const auto& f : j.at("features")) {
+          if (f.at("properties").at("kind") == "waypoint") continue;
+          ++lines;
+          EXPECT_EQ(f.at("properties").at("name"), name);
+        }
+        EXPECT_EQ(lines, 1);
+      } else if (ext == "csv") {
+        GDALAllRegister();
+        GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+        ASSERT_TRUE(ds);
+        std::size_t rows = 0;
+        for (auto& f : ds->GetLayer(0)) {
+          ++rows;
+          EXPECT_EQ(std::string(f->GetFieldAsString("manoeuvre")), name);
+        }
+        EXPECT_EQ(rows, route.waypoints.size());
+      } else if (ext == "plan") {
+        std::ifstream in(path);
+        EXPECT_TRUE(nlohmann::json::accept(in)) << name;
+      } else if (ext == "bhv") {
+        std::ifstream in(path, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        EXPECT_EQ(text.substr(0, text.find('\n')), "// deepguide route for pHelmIvP: " + name);
+        for (const char c : text) EXPECT_TRUE(c == '\n' || static_cast<unsigned char>(c) >= 0x20) << int(c);
+      }
+    }
+  }
+  const std::vector<std::string> refused = {
+      "a]]>b<!-- c", "a\x01" "b", "\x1b[31mred", "a\x7f" "b", "a\x0b" "b", std::string("a\0b", 3), "a\xff" "b",
+      "tab\there", "new\nline", "c1 \xc2\x85 next-line"};
+  for (const std::string& name : refused) {
+    for (const std::string& ext : formats) {
+      ExportRoute route = sample().route;
+      route.name = name;
+      const std::string path = dir.file("bad" + std::to_string(k++) + "." + ext);
+      try {
+        write_route_file(route, path, export_format_for(path), {0.5, false, "plain"});
+        ADD_FAILURE() << ext << ": accepted '" << name << "'";
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("route name"), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_EQ(what.find('\x1b'), std::string::npos) << what;
+      }
+      EXPECT_FALSE(std::filesystem::exists(path)) << ext;
+    }
+  }
+  // The route name plan -o takes from the output file's name, and a manoeuvre's.
+  {
+    ExportRoute route = sample().route;
+    const std::string path = dir.file("x]]>y.kml");
+    EXPECT_THROW(write_route_file(route, path, ExportFormat::kml, {}), InputError);
+    EXPECT_FALSE(std::filesystem::exists(path));
+    route.waypoints[1].manoeuvre = "m\x01";
+    try {
+      write_route_file(route, dir.file("m.gpx"), ExportFormat::gpx, {});
+      ADD_FAILURE() << "a manoeuvre name with a control character accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("manoeuvre name"), std::string::npos) << e.what();
+    }
+  }
+  // A mission's plan as YAML: the name comes back through yaml-cpp, or is refused.
+  for (const std::string& name : {kept[0], kept[1], kept[2], refused[1], refused[5]}) {
+    Mission mission = sample().mission;
+    mission.name = name;
+    const std::string path = dir.file("m" + std::to_string(k++) + ".yaml");
+    const bool bad = name == refused[1] || name == refused[5];
+    if (bad) {
+      EXPECT_THROW(export_plan(mission, sample().plan, path, ExportFormat::yaml), InputError);
+      EXPECT_FALSE(std::filesystem::exists(path));
+      continue;
+    }
+    export_plan(mission, sample().plan, path, ExportFormat::yaml);
+    EXPECT_EQ(YAML::LoadFile(path)["name"].as<std::string>(), name);
+  }
 }

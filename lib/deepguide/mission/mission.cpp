@@ -10,6 +10,7 @@
 #include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/planning/route_io.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/current_field.hpp"
 
 namespace deepguide {
@@ -37,9 +38,15 @@ struct Reader {
   Vec2 position_of(const Mapping& m) const {
     const bool lonlat = m.has("lon") || m.has("lat");
     if (lonlat && (m.has("x") || m.has("y"))) throw input_error(m.where("x"), "either x, y or lon, lat", "both");
-    if (!lonlat) return {m.number("x", kCoordinate), m.number("y", kCoordinate)};
-    const Vec2 xy = frame->from_lonlat(m.number("lon", kLon), m.number("lat", kLat));
+    if (!lonlat) {
+      const Vec2 xy(m.number("x", kCoordinate), m.number("y", kCoordinate));
+      require_true_scale(*frame, std::vector<Vec2>{frame->to_lonlat(xy)}, m.where("x").describe());
+      return xy;
+    }
+    const Vec2 ll(m.number("lon", kLon), m.number("lat", kLat));
+    const Vec2 xy = frame->from_lonlat(ll);
     if (!xy.allFinite()) throw input_error(m.where("lon"), "a position inside the frame " + frame->id());
+    require_true_scale(*frame, std::vector<Vec2>{ll}, m.where("lon").describe());
     return xy;
   }
   Vec2 position(const YAML::Node& node, const std::string& key) const {
@@ -210,7 +217,8 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
   }
   Reader r{source, base_dir, std::nullopt};
 
-  // The frame: crs, else the UTM zone of the start (which must then be lon/lat).
+  // The frame: crs, else the one chosen at the start (its UTM zone; a stereographic
+  // beyond UTM), which must then be lon/lat.
   if (root.has("crs")) {
     r.frame = LocalFrame::from_user_crs(root.text("crs", "a projected CRS in metres such as EPSG:32632"),
                                         root.where("crs").describe());
@@ -222,7 +230,8 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
                     "a start {lon: DEG, lat: DEG, depth_m: M} or {x: M, y: M, depth_m: M}");
     if (!r.frame) {
       if (!s.has("lon")) throw input_error(root.where("start"), "lon, lat for the start, or a crs for x, y");
-      r.frame = LocalFrame::utm_for(s.number("lon", kLon), s.number("lat", kLat));
+      const double lon = s.number("lon", kLon), lat = s.number("lat", kLat);
+      r.frame = default_frame_for({lon, lon, lat, lat});
     }
     mission.start = r.position_of(s);
     mission.start_depth_m = s.number_or("depth_m", kDepth, 0.0);

@@ -118,6 +118,32 @@ ExportRoute export_route(const Route& route, const LocalFrame& frame, const Vehi
 
 namespace detail {
 
+void require_exportable_text(const std::string& text, const std::string& what, const std::string& path) {
+  const auto refuse = [&](const std::string& holds) {
+    throw InputError(printable(path) + ": the " + what + " '" + printable(text) + "' holds " + holds +
+                     ", which not every route format carries; expected a name without control characters or ']]>'");
+  };
+  if (text.find("]]>") != std::string::npos) refuse("']]>'");
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    // The length of the UTF-8 sequence this byte starts, and its code point.
+    const int n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+    if (n == 0 || i + static_cast<std::size_t>(n) > text.size()) refuse("bytes that are not UTF-8");
+    char32_t cp = n == 1 ? c : c & (0x7F >> n);
+    for (int k = 1; k < n; ++k) {
+      const auto b = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
+      if ((b & 0xC0) != 0x80) refuse("bytes that are not UTF-8");
+      cp = (cp << 6) | (b & 0x3F);
+    }
+    const bool overlong = (n == 2 && cp < 0x80) || (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000);
+    if (overlong || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF) || cp == 0xFFFE || cp == 0xFFFF) {
+      refuse("bytes that are not UTF-8");
+    }
+    if (cp < 0x20 || (cp >= 0x7F && cp <= 0x9F)) refuse("a control character");
+    i += static_cast<std::size_t>(n);
+  }
+}
+
 void write_atomically(const std::string& path, bool overwrite, const std::function<void(const std::string&)>& write) {
   std::error_code ec;
   if (!overwrite && fs::exists(path, ec)) {
@@ -143,6 +169,12 @@ void write_route_file(const ExportRoute& route, const std::string& path, ExportF
   if (format == ExportFormat::yaml) route_file_format(path);  // throws: not a route format
   if (route.waypoints.size() < 2) throw InputError(path + ": expected a route with at least two waypoints to write");
   const std::string name = options.route_name.empty() ? fs::path(path).stem().string() : options.route_name;
+  detail::require_exportable_text(route.name, "route name", path);
+  detail::require_exportable_text(name, options.route_name.empty() ? "file name" : "route name", path);
+  for (const ExportWaypoint& w : route.waypoints) {
+    detail::require_exportable_text(w.name, "waypoint name", path);
+    detail::require_exportable_text(w.manoeuvre, "manoeuvre name", path);
+  }
   const detail::ExportInput in{path, route, name};
   detail::write_atomically(path, options.overwrite, [&](const std::string& temp) {
     switch (format) {

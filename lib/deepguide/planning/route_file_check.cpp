@@ -8,6 +8,7 @@
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/enc_route_quality.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 
@@ -17,9 +18,13 @@ namespace {
 // The route against obstacle files: the verdict is the first unsafe part, else
 // the part that comes closest.
 RouteFileCheckReport check_on_obstacles(const RouteFileCheckOptions& o, const std::vector<RouteFilePart>& parts) {
-  // Files without an obstacle fix no frame: the route's start does (its UTM zone).
-  const LoadedObstacles loaded =
-      load_obstacles(o.obstacles, {o.crs, o.src_crs, {}, {}, parts.front().points.front().lonlat});
+  // The check never takes the frame a route was planned in (a route file
+  // does not say it): it chooses one over the route and the obstacles, or
+  // takes the user's, which must keep true metres over both (frame_scale.hpp).
+  ObstacleReadOptions read{o.crs, o.src_crs};
+  for (const RouteFilePart& part : parts)
+    for (const RouteFileWaypoint& w : part.points) read.work_area_lonlat.push_back(w.lonlat);
+  const LoadedObstacles loaded = load_obstacles(o.obstacles, read);
   const LocalFrame& frame = loaded.frame;
   const ObstacleField field(loaded.obstacles, o.margin_m);
   RouteFileCheckReport r;
@@ -70,6 +75,10 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
   nlohmann::json& j = r.details;
   j = {{"margin_m", o.margin_m}, {"required_depth_m", no_go.required_depth_m}};
   std::size_t lines = 0, points = 0, crossed = 0;
+  std::vector<Vec2> lonlat;
+  for (const RouteFilePart& part : parts)
+    for (const RouteFileWaypoint& w : part.points) lonlat.push_back(w.lonlat);
+  require_true_scale(no_go.frame, lonlat, o.route);
   for (const RouteFilePart& part : parts) {
     const Route route = route_in_frame(part.points, no_go.frame, o.route + ": " + part.label);
     if (part.is_point) {

@@ -12,6 +12,7 @@
 #include "deepguide/planning/waypoint_grid.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/enc_route_check.hpp"
+#include "deepguide/world/frame_scale.hpp"
 
 namespace deepguide {
 namespace {
@@ -212,6 +213,11 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   report.min_clearance_m = out.legs_check ? out.legs_check->min_clearance_m : out.check.min_clearance_m;
   if (!r.replan_events.empty()) replay(report);
   refuse_leaving_coverage(charted, report.route, frame);
+  {  // Where the route goes, the frame's metres are true ones (frame_scale.hpp).
+    std::vector<Vec2> lonlat;
+    for (const Vec2& p : report.route.points) lonlat.push_back(frame.to_lonlat(p));
+    require_true_scale(frame, lonlat, "the route");
+  }
   if (charted.enc) report.chart_quality = route_quality(report.route.points, *charted.enc);
 
   report.priced = price_route(model, report.route.points);

@@ -17,6 +17,7 @@
 #include "deepguide/render/map_furniture.hpp"
 #include "deepguide/render/plot_furniture.hpp"  // draw_figure_title
 #include "deepguide/render/route_scene.hpp"     // kMinImageWidth, kMaxImageWidth
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/chart_info.hpp"
@@ -482,8 +483,7 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
     const std::string& first = options.charts.front();
     for (const RasterSource& r : scene.rasters) {
       if (r.path == first) {
-        return LocalFrame::utm_for(0.5 * (r.info.extent.west + r.info.extent.east),
-                                   0.5 * (r.info.extent.south + r.info.extent.north));
+        return default_frame_for(r.info.extent);
       }
     }
     if (!scene.enc_charts.empty() && scene.enc_charts.front() == first) {

@@ -16,6 +16,7 @@
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/current_summary.hpp"
 #include "deepguide/world/obstacle_io.hpp"
@@ -47,12 +48,18 @@ bool is_lonlat(const Mapping& m) {
 }
 
 // {x, y} or {lon, lat}; lon/lat need the frame.
+// With a frame, the frame keeps metres metres there (frame_scale.hpp).
 Vec2 read_position(const Mapping& m, const std::optional<LocalFrame>& frame) {
-  if (!is_lonlat(m)) return {m.number("x", kCoordinate), m.number("y", kCoordinate)};
+  if (!is_lonlat(m)) {
+    const Vec2 xy(m.number("x", kCoordinate), m.number("y", kCoordinate));
+    if (frame) require_true_scale(*frame, std::vector<Vec2>{frame->to_lonlat(xy)}, m.where("x").describe());
+    return xy;
+  }
   if (!frame) throw input_error(m.where("lon"), "x, y (lon, lat need a geographic frame)");
   const double lon = m.number("lon", kLon), lat = m.number("lat", kLat);
   const Vec2 xy = frame->from_lonlat(lon, lat);
   if (!xy.allFinite()) throw input_error(m.where("lon"), "a position inside the frame " + frame->id());
+  require_true_scale(*frame, std::vector<Vec2>{Vec2(lon, lat)}, m.where("lon").describe());
   return xy;
 }
 
@@ -89,6 +96,10 @@ void read_obstacles(const Mapping& root, const std::optional<LocalFrame>& frame,
     if (c.footprint.b > c.footprint.a) {
       throw input_error(m.where("semi_minor_m"), "semi_minor_m <= semi_major_m (" + yaml_number(c.footprint.a) + ")",
                         yaml_number(c.footprint.b));
+    }
+    if (frame) {  // true metres into frame metres, as obstacle files are (frame_scale.hpp)
+      const double scale = frame->scale_at(frame->to_lonlat(c.footprint.centre)).greatest;
+      if (std::isfinite(scale)) c.footprint.a *= scale, c.footprint.b *= scale;
     }
     c.footprint.theta = to_math(m.number_or("orientation_deg", kAngle, 0.0), c.footprint.centre, frame);
     sc.obstacles.push_back(std::move(c));
@@ -336,7 +347,8 @@ Scenario parse(const YAML::Node& doc, const std::string& source, const std::stri
     }
     const Mapping m(root.value("start"), source, "start.", {"x", "y", "lon", "lat"}, "a position");
     is_lonlat(m);
-    sc.frame = LocalFrame::utm_for(m.number("lon", kLon), m.number("lat", kLat));
+    const double lon = m.number("lon", kLon), lat = m.number("lat", kLat);
+    sc.frame = default_frame_for({lon, lon, lat, lat});
   }
 
   sc.start = read_point(root, "start", sc.frame);

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
-#include "deepguide/world/s57_chart.hpp"  // LonLatExtent
+#include "deepguide/world/extent.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

@@ -16,6 +16,8 @@
 #include "deepguide/geometry/safety_zone.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/world/s57_chart.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/no_go_union.hpp"
@@ -38,8 +40,10 @@ void check_options(const ChartInfoOptions& o) {
 }
 
 LocalFrame frame_for(const LonLatExtent& e, const ChartInfoOptions& o) {
-  if (!o.local_crs.empty()) return LocalFrame::from_user_crs(o.local_crs);
-  return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
+  if (o.local_crs.empty()) return default_frame_for(e);
+  LocalFrame frame = LocalFrame::from_user_crs(o.local_crs);
+  require_true_scale(frame, e, "the charts");
+  return frame;
 }
 
 // Size (east x north, m) in the local frame of a lon/lat box: the box of its corners.

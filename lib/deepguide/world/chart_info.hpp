@@ -32,7 +32,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/world/chart_options.hpp"
-#include "deepguide/world/s57_chart.hpp"  // LonLatExtent
+#include "deepguide/world/extent.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

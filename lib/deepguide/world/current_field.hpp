@@ -59,7 +59,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/world/local_frame.hpp"
-#include "deepguide/world/s57_chart.hpp"  // LonLatExtent
+#include "deepguide/world/extent.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

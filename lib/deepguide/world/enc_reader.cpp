@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/plausible_depth.hpp"
 #include "deepguide/world/s57_unknown_objects.hpp"
@@ -333,7 +334,9 @@ EncCells read_enc_cells(const std::vector<EncCellFiles>& files, const std::optio
                          ": expected a coverage area (M_COVR with CATCOV 1) to choose the local frame "
                          "by, found none; name one with `local_crs`");
       }
-      use = LocalFrame::utm_for(0.5 * (coverage.MinX + coverage.MaxX), 0.5 * (coverage.MinY + coverage.MaxY));
+      use = default_frame_for({coverage.MinX, coverage.MaxX, coverage.MinY, coverage.MaxY});
+    } else if (frame && coverage.IsInit()) {
+      require_true_scale(*frame, {coverage.MinX, coverage.MaxX, coverage.MinY, coverage.MaxY}, shown(f.base));
     }
   }
   if (!use) throw InputError("charts: expected at least one S-57 cell, got none");

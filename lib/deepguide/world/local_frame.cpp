@@ -6,10 +6,12 @@
 #include <mutex>
 #include <numbers>
 #include <optional>
+#include <proj.h>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -21,6 +23,14 @@ struct LocalFrame::Impl {
   std::string id;
   std::string name;
   std::string wkt;
+  // The projected CRS for proj_factors, in its own PROJ context (a context
+  // and its objects are used by one thread at a time: the mutex).
+  struct ProjFree {
+    void operator()(PJ_CONTEXT* c) const { proj_context_destroy(c); }
+    void operator()(PJ* p) const { proj_destroy(p); }
+  };
+  std::unique_ptr<PJ_CONTEXT, ProjFree> proj_context;
+  std::unique_ptr<PJ, ProjFree> proj_crs;
   // OGRCoordinateTransformation::Transform is not guaranteed thread-safe.
   mutable std::mutex mutex;
 };
@@ -37,11 +47,12 @@ int utm_epsg_for(double lon_deg, double lat_deg) {
 namespace {
 
 // UTM is defined from 80 S to 84 N; beyond, a polar projection is the frame.
-void require_utm_latitude(double lat_deg, const std::string& what) {
+void require_utm_latitude(double lon_deg, double lat_deg, const std::string& what) {
   if (lat_deg >= -80.0 && lat_deg <= 84.0) return;
   throw InputError(what + ": latitude " + fixed(lat_deg, 4) +
-                   " lies beyond UTM's 80 S to 84 N; give `local_crs` with a polar projection (EPSG:3413 north, "
-                   "EPSG:3031 south; positions are then x,y in it)");
+                   " lies beyond UTM's 80 S to 84 N; give `local_crs` with a projection of true scale there "
+                   "(positions are then x,y in it), e.g. '" +
+                   stereographic_crs_for({lon_deg, lon_deg, lat_deg, lat_deg}) + "'");
 }
 
 // The central meridian of a WGS 84 UTM frame (EPSG:326zz / 327zz); none for other frames.
@@ -55,7 +66,7 @@ std::optional<double> utm_central_meridian(const std::string& id) {
 }  // namespace
 
 LocalFrame LocalFrame::utm_for(double lon_deg, double lat_deg) {
-  require_utm_latitude(lat_deg, "UTM zone");
+  require_utm_latitude(lon_deg, lat_deg, "UTM zone");
   return from_user_crs("EPSG:" + std::to_string(utm_epsg_for(lon_deg, lat_deg)), "UTM zone");
 }
 
@@ -85,13 +96,27 @@ LocalFrame LocalFrame::from_user_crs(const std::string& crs, const std::string& 
   if (!impl->to_local || !impl->to_geo) {
     throw InputError(what + ": no transformation between WGS 84 and '" + crs + "'");
   }
-  impl->id = gdal::srs_id(*impl->srs);
+  // A CRS without an authority code is known by what the user gave, so that
+  // the id made into a frame again (a prepared chart, a scenario) is the same frame.
+  impl->id = impl->srs->GetAuthorityCode(nullptr) != nullptr ? gdal::srs_id(*impl->srs) : crs;
   const char* name = impl->srs->GetName();
   impl->name = name != nullptr ? name : impl->id;
   char* wkt = nullptr;
   impl->srs->exportToWkt(&wkt);
   impl->wkt = wkt != nullptr ? wkt : "";
   CPLFree(wkt);
+  // PROJ reads WKT2 whole; a bound CRS (one with a +towgs84) is taken by its projected source.
+  char* wkt2 = nullptr;
+  const char* const wkt2_options[] = {"FORMAT=WKT2_2019", nullptr};
+  impl->srs->exportToWkt(&wkt2, wkt2_options);
+  impl->proj_context.reset(proj_context_create());
+  if (wkt2 != nullptr && impl->proj_context) {
+    impl->proj_crs.reset(proj_create(impl->proj_context.get(), wkt2));
+    if (impl->proj_crs && proj_get_type(impl->proj_crs.get()) == PJ_TYPE_BOUND_CRS) {
+      impl->proj_crs.reset(proj_get_source_crs(impl->proj_context.get(), impl->proj_crs.get()));
+    }
+  }
+  CPLFree(wkt2);
   return LocalFrame(std::move(impl));
 }
 
@@ -113,6 +138,19 @@ Eigen::Vector2d LocalFrame::to_lonlat(const Eigen::Vector2d& xy) const {
     return {std::nan(""), std::nan("")};
   }
   return {x, y};
+}
+
+LocalFrame::Scale LocalFrame::scale_at(const Eigen::Vector2d& lonlat) const {
+  const double nan = std::nan("");
+  std::lock_guard lock(impl_->mutex);
+  if (!impl_->proj_crs || !lonlat.allFinite()) return {nan, nan};
+  PJ_COORD lp = proj_coord(lonlat.x() * std::numbers::pi / 180.0, lonlat.y() * std::numbers::pi / 180.0, 0.0, 0.0);
+  proj_errno_reset(impl_->proj_crs.get());
+  const PJ_FACTORS f = proj_factors(impl_->proj_crs.get(), lp);
+  if (proj_errno(impl_->proj_crs.get()) != 0 || !(f.tissot_semiminor > 0.0) || !std::isfinite(f.tissot_semimajor)) {
+    return {nan, nan};
+  }
+  return {f.tissot_semiminor, f.tissot_semimajor};
 }
 
 double LocalFrame::true_north_angle(const Eigen::Vector2d& xy) const {
@@ -170,6 +208,9 @@ Eigen::Vector2d parse_position(const std::string& text, const std::string& what,
   if (frame_coordinates) {
     const std::optional<Eigen::Vector2d> v = number_pair(text);
     if (!v) throw InputError(what + ": expected x,y in " + frame.id() + " metres, got '" + text + "'");
+    const Eigen::Vector2d ll = frame.to_lonlat(*v);
+    if (!ll.allFinite()) throw InputError(what + ": expected a position inside the local frame " + frame.id());
+    require_true_scale(frame, std::vector<Eigen::Vector2d>{ll}, what);
     return *v;
   }
   const Eigen::Vector2d ll = parse_lonlat(text, what);
@@ -177,7 +218,7 @@ Eigen::Vector2d parse_position(const std::string& text, const std::string& what,
   // In a UTM frame: within its latitudes, and within a zone's width (6 deg)
   // of its central meridian, where its scale is off by at most 0.55 %.
   if (const std::optional<double> cm = utm_central_meridian(frame.id())) {
-    require_utm_latitude(v[1], what);
+    require_utm_latitude(v[0], v[1], what);
     const double off = std::abs(std::remainder(v[0] - *cm, 360.0));
     if (off > 6.0) {
       const double b = std::cos(v[1] * std::numbers::pi / 180.0) * std::sin(off * std::numbers::pi / 180.0);
@@ -192,6 +233,7 @@ Eigen::Vector2d parse_position(const std::string& text, const std::string& what,
   }
   const Eigen::Vector2d xy = frame.from_lonlat(v[0], v[1]);
   if (!xy.allFinite()) throw InputError(what + ": expected a position inside the local frame " + frame.id());
+  require_true_scale(frame, std::vector<Eigen::Vector2d>{ll}, what);
   return xy;
 }
 

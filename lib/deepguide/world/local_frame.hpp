@@ -32,6 +32,16 @@ class LocalFrame {
   /// Local (x, y) in metres -> (longitude, latitude) in degrees.
   Eigen::Vector2d to_lonlat(const Eigen::Vector2d& xy) const;
 
+  /// How many frame units one true metre becomes at a point (lon, lat in
+  /// degrees), least and greatest over all directions: the semi-axes of
+  /// Tissot's indicatrix, from PROJ's proj_factors. Equal in a conformal
+  /// frame; (NaN, NaN) where PROJ cannot tell (outside the projection).
+  struct Scale {
+    double least;
+    double greatest;
+  };
+  Scale scale_at(const Eigen::Vector2d& lonlat) const;
+
   /// Math angle (rad, ccw from the frame's x axis) of true north at a local point.
   double true_north_angle(const Eigen::Vector2d& xy) const;
   /// Nautical heading (deg, clockwise from true north) at xy -> local math angle (rad), and back.

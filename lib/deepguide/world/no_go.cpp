@@ -22,6 +22,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/polygon_ops.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -198,8 +199,7 @@ int CPL_STDCALL drop_mask_cache(double, const char*, void* arg) {
 LocalFrame raster_local_frame(const std::string& path, const BathymetryOptions& options) {
   gdal::QuietErrors quiet;
   const detail::OpenedBathymetry raster = detail::open_bathymetry(path, options);
-  const LonLatExtent& e = raster.info.extent;
-  return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
+  return default_frame_for(raster.info.extent);
 }
 
 BgPolygon raster_coverage(const std::string& path, const LocalFrame& frame, const BathymetryOptions& options) {

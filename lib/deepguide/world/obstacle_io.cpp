@@ -15,6 +15,7 @@
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go_union.hpp"
 
@@ -440,22 +441,21 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
   if (!options.local_crs.empty()) frame = LocalFrame::from_user_crs(options.local_crs, "`local_crs`");
 
   std::vector<SourceRead> sources;
-  double west = std::numeric_limits<double>::infinity(), east = -west, south = west, north = -west;
+  std::vector<Eigen::Vector2d> positions;
   for (const std::string& path : paths) {
     sources.push_back(read_source(path, options));
     for (const GeoRecord& r : sources.back().records) {
-      auto grow = [&](const Eigen::Vector2d& ll) {
-        west = std::min(west, ll.x()), east = std::max(east, ll.x());
-        south = std::min(south, ll.y()), north = std::max(north, ll.y());
-      };
-      if (r.is_ellipse) grow(r.centre);
-      for (const auto& ring : r.rings) std::for_each(ring.begin(), ring.end(), grow);
+      if (r.is_ellipse) positions.push_back(r.centre);
+      for (const auto& ring : r.rings) positions.insert(positions.end(), ring.begin(), ring.end());
     }
   }
+  positions.insert(positions.end(), options.work_area_lonlat.begin(), options.work_area_lonlat.end());
+  const LonLatExtent extent = extent_of(positions);
   if (!frame) {
-    const Eigen::Vector2d at = west <= east ? Eigen::Vector2d(0.5 * (west + east), 0.5 * (south + north))
-                                            : options.fallback_lonlat.value_or(Eigen::Vector2d(0.0, 0.0));
-    frame = LocalFrame::utm_for(at.x(), at.y());
+    const Eigen::Vector2d at = options.fallback_lonlat.value_or(Eigen::Vector2d(0.0, 0.0));
+    frame = default_frame_for(!extent.empty() ? extent : LonLatExtent{at.x(), at.x(), at.y(), at.y()});
+  } else if (!extent.empty()) {
+    require_true_scale(*frame, extent, paths.size() == 1 ? printable(paths.front(), 240) : std::string("the obstacles"));
   }
 
   LoadedObstacles out{{}, *frame, {}};
@@ -467,8 +467,11 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
         EllipticCylinder c;
         c.id = r.id;
         c.footprint.centre = to_local_checked(*frame, r.centre, r.where);
-        c.footprint.a = r.a;
-        c.footprint.b = r.b;
+        // Axes are true metres; the frame's scale at the centre makes them frame
+        // metres (frame_scale.hpp), the greater one where it is not conformal.
+        const double scale = frame->scale_at(r.centre).greatest;
+        c.footprint.a = r.a * (std::isfinite(scale) ? scale : 1.0);
+        c.footprint.b = r.b * (std::isfinite(scale) ? scale : 1.0);
         c.footprint.theta = frame->heading_to_local(r.heading_deg, c.footprint.centre);
         c.height_m = r.height_m;
         c.top_depth_m = r.top_depth_m;

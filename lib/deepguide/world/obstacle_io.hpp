@@ -36,8 +36,12 @@ struct ObstacleReadOptions {
   std::vector<std::string> extra_fields = {};
   /// Layers to read (empty: every layer with geometry), e.g. a prepared chart's "obstacles".
   std::vector<std::string> layers = {};
-  /// Without local_crs, when no file holds an obstacle: the lon, lat whose
-  /// UTM zone is the frame (a command's start). None: the zone at 0, 0.
+  /// Positions (lon, lat) besides the obstacles' that the frame serves, e.g. a
+  /// route being checked: the default frame is chosen over both, and a named
+  /// frame must keep true metres over both (frame_scale.hpp).
+  std::vector<Eigen::Vector2d> work_area_lonlat = {};
+  /// Without local_crs, when no file holds an obstacle and no work area is
+  /// given: the lon, lat the frame is chosen at (a command's start). None: 0, 0.
   std::optional<Eigen::Vector2d> fallback_lonlat = std::nullopt;
   /// Repair a polygon that is not simple in the frame (GEOS, no_go_union.hpp)
   /// instead of refusing it: only for the library's own files, a prepared

@@ -12,6 +12,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/plausible_depth.hpp"
 #include "deepguide/world/s57_unknown_objects.hpp"
@@ -139,9 +140,10 @@ S57Summary summarize_s57(const std::string& path, bool apply_updates) {
 }
 
 LocalFrame s57_local_frame(const S57Summary& summary, const S57Options& options) {
-  if (!options.local_crs.empty()) return LocalFrame::from_user_crs(options.local_crs, "`local_crs`");
-  const LonLatExtent& e = summary.extent;
-  return LocalFrame::utm_for(0.5 * (e.west + e.east), 0.5 * (e.south + e.north));
+  if (options.local_crs.empty()) return default_frame_for(summary.extent);
+  LocalFrame frame = LocalFrame::from_user_crs(options.local_crs, "`local_crs`");
+  require_true_scale(frame, summary.extent, "the cell");
+  return frame;
 }
 
 S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S57Options& options) {

@@ -34,6 +34,7 @@
 #include <string>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/world/extent.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
@@ -50,14 +51,6 @@ struct S57Options {
   bool apply_updates = true;
   /// Local planning frame for s57_local_frame(): empty = UTM zone of the cell's centre.
   std::string local_crs;
-};
-
-/// Longitude/latitude bounds (degrees).
-struct LonLatExtent {
-  double west = std::numeric_limits<double>::quiet_NaN();
-  double east = std::numeric_limits<double>::quiet_NaN();
-  double south = std::numeric_limits<double>::quiet_NaN();
-  double north = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct S57Summary {
