@@ -105,3 +105,25 @@ TEST(RouteFiles, HostileRtzIsAOneLineError) {
   }
   EXPECT_THROW(read_route_waypoints(dir.file("missing.rtz")), InputError);
 }
+
+// A CSV of waypoints holds each position twice, as WKT and as lon, lat (as
+// `mission export` writes it): a file whose two disagree is refused, since
+// GDAL reads the WKT and drops the rest without a word (issue 39).
+TEST(RouteFiles, ACsvWhoseWktAndLonLatDisagreeIsRefused) {
+  ScratchDir dir;
+  const std::string agree =
+      dir.write("ok.csv", "WKT,name,lon,lat\n\"POINT (10 54)\",001,10,54\n\"POINT (10.01 54)\",002,10.01,54\n");
+  const std::vector<RouteFilePart> parts = read_route_parts(agree);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts.front().points.size(), 2u);
+  const std::string apart =
+      dir.write("apart.csv", "WKT,name,lon,lat\n\"POINT (10 54)\",001,10,54\n\"POINT (10.01 54)\",002,10.03,54\n");
+  try {
+    read_route_parts(apart);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    for (const char* w : {"apart.csv", "'lon', 'lat' (10.03, 54)", "geometry (10.01, 54)", "one position"})
+      EXPECT_NE(what.find(w), std::string::npos) << what;
+  }
+}

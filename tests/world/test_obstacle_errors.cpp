@@ -94,6 +94,17 @@ TEST(ObstacleErrors, CsvColumnsThatLeaveACoordinateUnclearAreRefused) {
   expect_error(error_of({twice}), {"twice.csv", "line 1", "each column once", "'lon' as columns 2 and 4"});
   const std::string wkt = dir.write("wkt.csv", "WKT,geometry,id\n\"POINT (10 54)\",\"POINT (11 54)\",a\n");
   expect_error(error_of({wkt}), {"wkt.csv", "one column of wkt/geometry/geom"});
+  // Positions in a WKT column and in lon, lat columns: GDAL took the WKT without a word (issue 39).
+  const std::string wkt_and_lonlat =
+      dir.write("wl.csv", "WKT,lon,lat,id,semi_major_m\n\"POINT (10 54)\",10.02,54,a,5\n");
+  expect_error(error_of({wkt_and_lonlat}), {"wl.csv", "line 1", "in one place", "'wkt' and 'lon'"});
+  // Saved as UTF-16 by an editor: said so, not "not a vector file".
+  for (const auto& [name, bom] : std::vector<std::pair<std::string, std::string>>{
+           {"u16le.csv", "\xff\xfe"}, {"u16be.gpx", "\xfe\xff"}, {"u32.geojson", std::string("\xff\xfe\0\0", 4)}}) {
+    std::string text = bom;
+    for (const char c : std::string("id,lon,lat,semi_major_m\na,10,54,5\n")) text += std::string{c, '\0'};
+    expect_error(error_of({dir.write(name, text)}), {name.c_str(), "expected UTF-8 text", "UTF-", "save it as UTF-8"});
+  }
   // One of each reads.
   const std::string ok = dir.write("ok.csv", "id,Longitude,LAT,semi_major_m\na,10,54,5\n");
   EXPECT_EQ(load_obstacles({ok}).obstacles.ellipses.size(), 1u);

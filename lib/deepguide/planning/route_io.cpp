@@ -211,6 +211,18 @@ std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
           const OGRPoint* pt = member->toPoint();
           if (pt->IsEmpty()) return;
           take(pt->getX(), pt->getY(), 0);
+          // A CSV of waypoints with a WKT column and lon, lat columns (as
+          // `mission export` writes): GDAL takes the WKT, so both must agree.
+          const int lon = feature->GetFieldIndex("lon"), lat = feature->GetFieldIndex("lat");
+          if (lon >= 0 && lat >= 0 && feature->IsFieldSetAndNotNull(lon) && feature->IsFieldSetAndNotNull(lat)) {
+            const Vec2 fields(feature->GetFieldAsDouble(lon), feature->GetFieldAsDouble(lat));
+            const Vec2& geometry = part.points.back().lonlat;
+            if (!((fields - geometry).cwiseAbs().maxCoeff() <= 1e-7)) {
+              throw InputError(path + ": " + label + ": fields 'lon', 'lat' (" + general(fields.x()) + ", " +
+                               general(fields.y()) + ") disagree with its geometry (" + general(geometry.x()) +
+                               ", " + general(geometry.y()) + "): expected one position");
+            }
+          }
         } else {
           const OGRLineString* line = member->toLineString();
           for (int i = 0; i < line->getNumPoints(); ++i) take(line->getX(i), line->getY(i), i);

@@ -283,15 +283,24 @@ void refuse_ambiguous_csv_columns(const std::string& path) {
     }
     seen.push_back(name);
   }
+  std::vector<std::vector<std::string>> present;
   for (const auto* names : {&kCsvX, &kCsvY, &kCsvGeometry}) {
-    std::vector<std::string> present;
+    present.emplace_back();
     for (const std::string& n : seen) {
-      if (std::find(names->begin(), names->end(), n) != names->end()) present.push_back(n);
+      if (std::find(names->begin(), names->end(), n) != names->end()) present.back().push_back(n);
     }
-    if (present.size() > 1) {
+    if (present.back().size() > 1) {
       throw InputError(path + ": line 1: expected one column of " + joined(*names, "/") + ", got " +
-                       joined(present, " and ") + ": which one holds the coordinate is not known");
+                       joined(present.back(), " and ") + ": which one holds the coordinate is not known");
     }
+  }
+  // A geometry column and coordinate columns: GDAL takes the geometry and
+  // drops the others without a word, though they may disagree.
+  if (!present[2].empty() && (!present[0].empty() || !present[1].empty())) {
+    throw InputError(path + ": line 1: expected the positions in one place, a " + joined(kCsvGeometry, "/") +
+                     " column or x/y columns, got both '" + present[2].front() + "' and '" +
+                     (!present[0].empty() ? present[0] : present[1]).front() +
+                     "': which one holds the position is not known");
   }
 }
 
