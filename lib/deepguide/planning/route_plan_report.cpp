@@ -322,6 +322,7 @@ nlohmann::json RoutePlanReport::to_json() const {
     }
     j["repairs"] = repairs;
     j["reached_goal"] = replay->reached_goal;
+    j["detections_after_arrival"] = replay->after_arrival;
   }
   return j;
 }
@@ -432,7 +433,11 @@ std::string RoutePlanReport::to_text() const {
   if (replay) {
     t += report_line("replanning", std::to_string(replay->repairs.size()) +
                                        " detection(s) replayed with D* Lite; the vehicle " +
-                                       (replay->reached_goal ? "reaches the goal" : "stops: no way on"));
+                                       (replay->reached_goal ? "reaches the goal" : "stops: no way on") +
+                                       (replay->after_arrival > 0
+                                            ? "; " + std::to_string(replay->after_arrival) +
+                                                  " detection(s) reported past the goal, not replayed"
+                                            : std::string()));
     t += printf_text("%6s %10s %8s %10s %9s %10s\n", "repair", "along m", "blocked", "length m", "expanded",
                      "repair ms");
     for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
