@@ -127,6 +127,14 @@ TEST(ObstacleErrors, HugeAxesAndHeadingsAreRefused) {
       "e.geojson",
       collection({point_feature(R"("id":"e","semi_major_m":100000,"semi_minor_m":10,"orientation_deg":-360)")}));
   EXPECT_EQ(error_of({edge}), "");
+  // Axes below a millimetre: 1e-300 squared underflowed in the tangent graph (issue 39).
+  const std::string tiny = dir.write("t.geojson", collection({point_feature(R"("id":"t","semi_major_m":1e-300)")}));
+  expect_error(error_of({tiny}), {"t.geojson", "'t'", "semi_major_m", "at least 1 mm", "got 1e-300"});
+  const std::string flat =
+      dir.write("f.geojson", collection({point_feature(R"("id":"f","semi_major_m":5,"semi_minor_m":1e-9)")}));
+  expect_error(error_of({flat}), {"f.geojson", "semi_minor_m", "at least 1 mm", "got 1e-09"});
+  const std::string mm = dir.write("mm.geojson", collection({point_feature(R"("id":"mm","semi_major_m":0.001)")}));
+  EXPECT_EQ(error_of({mm}), "");
 }
 
 TEST(ObstacleErrors, SemiMinorLargerThanSemiMajor) {

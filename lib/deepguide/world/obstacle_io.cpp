@@ -139,12 +139,16 @@ void read_ellipse_fields(const OGRFeature& f, const InputLocation& where, GeoRec
   w.field = "semi_major_m";
   if (!a) throw input_error(w, "a semi-major axis in metres for a Point obstacle", "no value");
   // An obstacle's axes are metres to kilometres; 100 km is far beyond any
-  // (and beyond what a UTM frame holds to the metre).
-  constexpr double kMaxAxis_m = 1e5;
-  if (!(*a > 0.0 && *a <= kMaxAxis_m)) throw input_error(w, "a semi-major axis > 0 m and at most 100 km", general(*a));
+  // (and beyond what a UTM frame holds to the metre). Below a millimetre no
+  // chart or sonar places anything, and the graphs square the axes: 1e-300
+  // underflowed to 0 in the tangent graph (issue 39).
+  constexpr double kMinAxis_m = 1e-3, kMaxAxis_m = 1e5;
+  if (!(*a >= kMinAxis_m && *a <= kMaxAxis_m)) {
+    throw input_error(w, "a semi-major axis of at least 1 mm and at most 100 km", general(*a));
+  }
   const auto b = numeric_field(f, "semi_minor_m", where);
   w.field = "semi_minor_m";
-  if (b && *b <= 0.0) throw input_error(w, "a semi-minor axis > 0 m", general(*b));
+  if (b && !(*b >= kMinAxis_m)) throw input_error(w, "a semi-minor axis of at least 1 mm", general(*b));
   if (b && *b > *a) {
     throw input_error(w, "semi_minor_m <= semi_major_m (" + general(*a) + " m)", general(*b));
   }
