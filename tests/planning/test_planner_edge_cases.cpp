@@ -232,6 +232,13 @@ TEST(PlannerInput, EscapeLeavesTheZoneTheShortestWay) {
     EXPECT_NEAR(out.result.route.points[1].y(), 0.0, 1e-9);
     EXPECT_TRUE(out.check.safe) << out.check.describe();
     EXPECT_NEAR(out.result.route.length(), 88.0, 1e-5);
+    // Where the graph gives lines and arcs, the escape is the first line and
+    // the exact length holds it (the tangent graph's left it out: issue 39).
+    if (!out.result.legs.empty()) {
+      EXPECT_EQ(out.result.legs.front().from, Vec2(12, 0));
+      EXPECT_NEAR(out.result.legs.front().length_m, 3.0, 1e-5);
+      EXPECT_NEAR(out.result.exact_length_m, 88.0, 1e-5);
+    }
     // From inside the footprint itself, out through the nearest boundary point.
     const PlanOutcome deep = planner.solve({{0, 3}, {0, 100}, true});
     ASSERT_TRUE(deep.result.found);

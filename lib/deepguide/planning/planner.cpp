@@ -374,7 +374,19 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     inner.start = escape_point(impl_->field, problem.start, escaped_from);
     inner.escape = false;
     PlanOutcome out = solve(inner);
-    if (out.result.found) out.result.route.points.insert(out.result.route.points.begin(), problem.start);
+    if (out.result.found) {
+      out.result.route.points.insert(out.result.route.points.begin(), problem.start);
+      // The escape is sailed too: where the graph gives lines and arcs, it is
+      // the first line, and the exact length holds it (it left it out).
+      if (!out.result.legs.empty()) {
+        RouteLeg escape;
+        escape.from = problem.start;
+        escape.to = inner.start;
+        escape.length_m = (inner.start - problem.start).norm();
+        out.result.legs.insert(out.result.legs.begin(), escape);
+        out.result.exact_length_m += escape.length_m;
+      }
+    }
     out.escaped_from = escaped_from;
     return out;
   }
