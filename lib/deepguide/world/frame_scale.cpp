@@ -55,7 +55,7 @@ void require_true_scale(const LocalFrame& frame, const LonLatExtent& area, const
                              fixed(100.0 * (kGreatestFrameScale - 1.0), 2) +
                              " % long (docs/PLANNING.md); leave `local_crs` out and deepguide chooses one, or give '" +
                              stereographic_crs_for(area) + "'";
-  const std::string head = what + ": the local frame " + frame.id();
+  const std::string head = what + ": the local frame '" + printable(frame.id(), 80) + "'";
   if (!r.known) throw InputError(head + " cannot tell its scale at " + position(r.unknown_at) + advice);
   if (r.greatest > kGreatestFrameScale) {
     throw InputError(head + " stretches distances by " + fixed(100.0 * (r.greatest - 1.0), 2) + " % at " +
