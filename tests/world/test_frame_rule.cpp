@@ -235,7 +235,7 @@ Outcome run(const Scenario& s, std::uint32_t seed, const test::ScratchDir& dir) 
 }
 
 // The rule lets a frame lengthen distances by kGreatestFrameScale - 1: a
-// margin is kept to that fraction (1 cm of 5 m); 1 mm covers the test's 2000-gons.
+// margin is kept to that fraction (3 cm of 5 m); 1 mm covers the test's 2000-gons.
 double kept(double margin_m) { return margin_m / kGreatestFrameScale - 1e-3; }
 
 std::string utm(int zone, bool north) { return "EPSG:" + std::to_string((north ? 32600 : 32700) + zone); }

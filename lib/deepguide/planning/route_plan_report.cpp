@@ -122,6 +122,28 @@ void refuse_leaving_coverage(const ChartObstacles& charted, const Route& route, 
                      ": the depth there is not known (give a chart that covers the way)");
 }
 
+// No route in a changing current: a route that arrives after the field's last
+// time step is as infeasible as one against a current too strong, and
+// which it is decides what the user must change (issue 39). The shortest
+// route at the planned speed with every node's current behind it gives the
+// earliest arrival there can be.
+std::string time_axis_reason(const RoutePlanReport& report, const std::string& why) {
+  const CostModel& model = *report.model;
+  PlannerOptions by_length = report.options;
+  by_length.cost = nullptr;
+  const SingleQueryPlan shortest = plan_single_query(report.obstacles, report.request.problem, by_length);
+  if (!shortest.outcome.result.found) return why;
+  const double length = shortest.outcome.result.route.length();
+  const double through_water = model.economical ? model.max_speed_mps : model.speed_mps;
+  const double earliest = model.depart_s + length / (through_water + model.max_current_mps);
+  const std::string axis = format_utc(model.time_first_s) + " .. " + format_utc(model.time_last_s);
+  if (earliest <= model.time_last_s) return why + " (or the current field's time axis " + axis + " ends too soon)";
+  return "the current field's time axis " + axis + " ends before the vehicle can arrive: the shortest route, " +
+         fixed(length, 0) + " m at " + fixed(through_water, 2) + " m/s with at most " +
+         fixed(model.max_current_mps, 2) + " m/s of current behind it, departing " + format_utc(model.depart_s) +
+         ", arrives at " + format_utc(earliest) + " at the earliest; give a field that covers the voyage";
+}
+
 // The detections replayed along the route with D* Lite. The route the report
 // keeps is D* Lite's first (of equal length to A*'s, but on a cell grid ties
 // abound): the one the vehicle sails and detected_at_m is measured along.
@@ -193,6 +215,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   const PlanOutcome& out = report.plan.outcome;
   if (!out.result.found) {
     std::string why = out.result.message;
+    if (options.cost && !model.steady && out.result.stopped == SearchStop::none) why = time_axis_reason(report, why);
     if (charted.enc) {
       // What an operator looks at first: the no-go feature across the straight line (a shoal, a
       // hazard's disc across a channel).
