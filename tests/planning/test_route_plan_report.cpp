@@ -114,6 +114,35 @@ TEST(RoutePlanReport, ATimeRouteInACurrentIsComparedWithTheShortest) {
   EXPECT_NE(report.to_text().find("shortest route   "), std::string::npos);
 }
 
+// A field whose time axis ends before the vehicle can arrive: the reason is
+// the axis, with both times, not "the current is stronger than the vehicle"
+// (a 0.5 m/s field; issue 39).
+TEST(RoutePlanReport, ATimeRoutePastTheFieldsTimeAxisSaysSo) {
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
+  RoutePlanRequest r = round_one_disc();
+  r.cost = CostKind::time;
+  CurrentField f;
+  f.source = "short.nc";
+  f.crs = "EPSG:32632";
+  f.crs_wkt = frame.wkt();
+  f.geographic = false;
+  for (double c = -1000.0; c <= 1000.0; c += 500.0) f.x.push_back(c), f.y.push_back(c);
+  f.times_s = {1.7e9, 1.7e9 + 100.0};  // 100 s; the route is 600 m
+  f.u.assign(f.x.size() * f.y.size() * 2, 0.5);
+  f.v.assign(f.u.size(), 0.0);
+  f.extent = {4.49, 4.51, -0.01, 0.01};
+  r.current = std::make_shared<const CurrentField>(f);
+  try {
+    plan_route_request(frame, r);
+    FAIL() << "planned past the field's last time";
+  } catch (const NoRouteError& e) {
+    const std::string what = e.what();
+    for (const char* w : {"time axis", "2023-11-14", "ends before the vehicle can arrive", "at the earliest"})
+      EXPECT_NE(what.find(w), std::string::npos) << what;
+    EXPECT_EQ(what.find("stronger than the vehicle"), std::string::npos) << what;
+  }
+}
+
 TEST(RoutePlanReport, TheRouteFileCarriesTheReport) {
   const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
   test::ScratchDir dir;
