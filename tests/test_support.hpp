@@ -28,6 +28,16 @@ inline constexpr int kCaseDivisor = 1;
 #endif
 inline constexpr int cases(int n) { return n / kCaseDivisor; }
 
+/// A time limit that tells a hang from a slow run: the sanitizers make the
+/// command 5 to 10 times slower (and CI's machine, shared, slower still), so
+/// a limit set for Release is multiplied there. Never a speed assertion.
+#ifdef DEEPGUIDE_SANITIZED
+inline constexpr int kHangLimitFactor = 6;
+#else
+inline constexpr int kHangLimitFactor = 1;
+#endif
+inline constexpr int hang_limit_s(int release_s) { return release_s * kHangLimitFactor; }
+
 /// A fresh folder under the system temp dir, removed at the end of the test.
 class ScratchDir {
  public:

@@ -127,16 +127,17 @@ TEST_P(TruncationSweep, OriginalResultOrOneLineErrorWithin10s) {
   command = replace_all(command, "OBSTACLES", "'" + obstacles + "'");
   command = replace_all(command, "VEHICLE", "'" + test::source_file("data/vehicles/deepc.yaml") + "'");
 
-  const test::RunResult intact = test::run_cli(command, 10);
+  const int limit_s = test::hang_limit_s(10);
+  const test::RunResult intact = test::run_cli(command, limit_s);
   ASSERT_EQ(intact.exit_code, 0) << command << "\n" << intact.err;
   const std::string bytes = slurp(target);
   const auto& listed = undetectable().count(f.name) ? undetectable().at(f.name) : std::set<std::size_t>{};
   int same = 0, errors = 0, altered_listed = 0;
   for (const Damage& d : damages(bytes)) {
     std::ofstream(target, std::ios::binary | std::ios::trunc) << d.bytes;
-    const test::RunResult r = test::run_cli(command, 10);
+    const test::RunResult r = test::run_cli(command, limit_s);
     const std::string where = std::string(f.rel) + ", " + d.what;
-    ASSERT_NE(r.exit_code, 124) << where << ": still running after 10 s";
+    ASSERT_NE(r.exit_code, 124) << where << ": still running after " << limit_s << " s";
     if (r.exit_code == 0 && without_timings(r.out) == without_timings(intact.out)) {
       ++same;
     } else if (r.exit_code == 1) {
