@@ -11,7 +11,7 @@ DEEPGUIDE_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 DEEPGUIDE_PACKAGES=(
   g++ cmake ninja-build pkg-config git
   libeigen3-dev libboost-dev libboost-graph-dev
-  libgdal-dev libgeos-dev libproj-dev gdal-bin libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
+  libgdal-dev libgeos-dev gdal-bin libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   libcairo2-dev libxml2-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
 )
 

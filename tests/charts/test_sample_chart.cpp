@@ -20,6 +20,7 @@
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/world/s57_chart.hpp"
 #include "deepguide/world/sample_chart.hpp"
 #include "test_support.hpp"
 

@@ -13,19 +13,19 @@
 #include <libxml/xpathInternals.h>
 #include <ogrsf_frmts.h>
 
+#include <yaml-cpp/yaml.h>
 #include <algorithm>
 #include <boost/geometry.hpp>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <filesystem>
-#include <iterator>
-#include <yaml-cpp/yaml.h>
 
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/plan_export.hpp"
@@ -594,9 +594,20 @@ TEST(ExportSchemas, HostileNamesComeBackWholeFromEveryFormatOrAreRefusedNamingTh
       }
     }
   }
-  const std::vector<std::string> refused = {
-      "a]]>b<!-- c", "a\x01" "b", "\x1b[31mred", "a\x7f" "b", "a\x0b" "b", std::string("a\0b", 3), "a\xff" "b",
-      "tab\there", "new\nline", "c1 \xc2\x85 next-line"};
+  const std::vector<std::string> refused = {"a]]>b<!-- c",
+                                            "a\x01"
+                                            "b",
+                                            "\x1b[31mred",
+                                            "a\x7f"
+                                            "b",
+                                            "a\x0b"
+                                            "b",
+                                            std::string("a\0b", 3),
+                                            "a\xff"
+                                            "b",
+                                            "tab\there",
+                                            "new\nline",
+                                            "c1 \xc2\x85 next-line"};
   for (const std::string& name : refused) {
     for (const std::string& ext : formats) {
       ExportRoute route = sample().route;

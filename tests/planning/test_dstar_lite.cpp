@@ -238,26 +238,27 @@ TEST(DStarLite, CollinearCellsDoNotHideARepairInRounding) {
   EXPECT_GE(shortfalls, 10) << "of " << tried;
 }
 
-// A detection reported farther along than the whole voyage comes after the
-// vehicle reached the goal: no repair (the CLI wrote a repair file for it and
-// failed: "expected a route with at least two waypoints"), said so (issue 39).
-TEST(DStarLite, DetectionsPastTheGoalAreNotReplayed) {
+// A detection reported farther along than the whole voyage reaches the
+// vehicle at the goal: its repair is the goal alone (the CLI wrote a repair
+// file for it and failed: "expected a route with at least two waypoints";
+// route_plan_report writes none and counts it, issue 39).
+TEST(DStarLite, DetectionsPastTheGoalRepairNothing) {
   ObstacleSet set;
   set.ellipses.push_back(disc(300, 300, 20, "rock"));
   const ObstacleField field(set, 5.0);
   QuadtreeGraph graph(field, area(0, 0, 600, 600, 8.0));
   const PlanningProblem problem{{100.0, 300.0}, {500.0, 300.0}};
-  std::vector<ReplanEvent> detections(3);
-  detections[0].along_m = 50.0;
-  detections[0].obstacles.ellipses.push_back(disc(200, 330, 10, "near"));
-  detections[1].along_m = 1e6;
-  detections[1].obstacles.ellipses.push_back(disc(450, 300, 10, "late"));
-  detections[2].along_m = 2e6;
-  detections[2].obstacles.ellipses.push_back(disc(460, 300, 10, "later"));
+  std::vector<ReplanEvent> detections(2);
+  detections[0].along_m = 1e6;
+  detections[0].obstacles.ellipses.push_back(disc(450, 300, 10, "late"));
+  detections[1].along_m = 2e6;
+  detections[1].obstacles.ellipses.push_back(disc(460, 300, 10, "later"));
   const Replay replay = replay_detections(graph, problem, detections, 5.0);
-  ASSERT_EQ(replay.repairs.size(), 1u);
-  EXPECT_TRUE(replay.repairs.front().found);
-  EXPECT_EQ(replay.after_arrival, 2u);
+  ASSERT_EQ(replay.repairs.size(), 2u);
+  for (const Repair& r : replay.repairs) {
+    EXPECT_TRUE(r.found);
+    EXPECT_EQ(r.route.size(), 1u);
+    EXPECT_NEAR((r.vehicle - problem.goal).norm(), 0.0, 1e-9);
+  }
   EXPECT_TRUE(replay.reached_goal);
-  EXPECT_NEAR((replay.track.back() - problem.goal).norm(), 0.0, 1e-9);
 }

@@ -40,14 +40,14 @@ TEST(FrameScale, UtmScaleIsItsTransverseMercatorClosedForm) {
   EXPECT_NEAR(on.least, 0.9996, 1e-9);
   EXPECT_NEAR(on.greatest, 0.9996, 1e-9);
   // Off the meridian k = k0 / sqrt(1 - B^2), B = cos(lat) sin(dlon), on the
-  // sphere; the ellipsoid adds a few parts in 1e5 at 3 degrees.
+  // sphere; the ellipsoid changes k - k0 by about 1 % of itself.
   for (const double dlon : {1.0, 3.0, 5.0}) {
     for (const double lat : {0.0, 40.0, 70.0}) {
       const LocalFrame::Scale s = utm.scale_at({9.0 + dlon, lat});
       const double b = std::cos(rad(lat)) * std::sin(rad(dlon));
       const double k = 0.9996 / std::sqrt(1.0 - b * b);
-      EXPECT_NEAR(s.greatest, k, 1e-4 * (k - 0.9996) + 2e-6) << dlon << " " << lat;
-      EXPECT_NEAR(s.least, s.greatest, 1e-9) << "conformal";
+      EXPECT_NEAR(s.greatest, k, 0.015 * (k - 0.9996) + 2e-6) << dlon << " " << lat;
+      EXPECT_NEAR(s.least, s.greatest, 1e-7) << "conformal (PROJ differentiates numerically)";
     }
   }
 }
@@ -70,7 +70,7 @@ TEST(FrameScale, PolarStereographicIsTrueAtItsStandardParallelOnly) {
   const LocalFrame north = LocalFrame::from_user_crs("EPSG:3413");  // true at 70 N
   EXPECT_NEAR(north.scale_at({-45.0, 70.0}).greatest, 1.0, 1e-6);
   EXPECT_GT(north.scale_at({-45.0, 60.0}).greatest, 1.03);
-  EXPECT_LT(north.scale_at({-45.0, 85.0}).least, 0.97);
+  EXPECT_LT(north.scale_at({-45.0, 85.0}).least, 0.975);            // (1 + sin 70) / (1 + sin 85) on the sphere: 0.9716
   const LocalFrame south = LocalFrame::from_user_crs("EPSG:3031");  // true at 71 S
   EXPECT_NEAR(south.scale_at({0.0, -71.0}).greatest, 1.0, 1e-6);
 }
@@ -86,8 +86,8 @@ TEST(FrameScale, TheRuleRefusesDistortingFramesNamingTheFrameWhereAndHowMuch) {
   EXPECT_NE(refusal("EPSG:3413", around(-45.0, 60.0)), "");
   EXPECT_NE(refusal("EPSG:3413", around(-45.0, 85.0)).find("shrinks distances"), std::string::npos);
   EXPECT_NE(refusal("EPSG:3031", around(0.0, -60.0)), "");
-  // UTM 35N (central meridian 27 E) at 9 E, 54 N: 18 degrees off, 4.2 % long.
-  EXPECT_NE(refusal("EPSG:32635", around(9.0, 54.0)).find("stretches distances by 4."), std::string::npos);
+  // UTM 35N (central meridian 27 E) at 9 E, 54 N: 18 degrees off, 1.6 % long.
+  EXPECT_NE(refusal("EPSG:32635", around(9.0, 54.0)).find("stretches distances by 1.6"), std::string::npos);
   // Kept: UTM within its zone, the polar frames at their standard parallels,
   // a stereographic centred on the area.
   EXPECT_EQ(refusal("EPSG:32632", around(9.0, 54.0)), "");

@@ -75,10 +75,10 @@ TEST(ObstacleErrors, FeatureWithoutSemiMajor) {
 TEST(ObstacleErrors, ZeroOrNegativeAxis) {
   ScratchDir dir;
   const std::string zero = dir.write("z.geojson", collection({point_feature(R"("id":"z","semi_major_m":0)")}));
-  expect_error(error_of({zero}), {zero.c_str(), "feature 0", "semi_major_m", "> 0", "got 0"});
+  expect_error(error_of({zero}), {zero.c_str(), "feature 0", "semi_major_m", "at least 1 mm", "got 0"});
   const std::string neg =
       dir.write("n.geojson", collection({kGood, point_feature(R"("id":"n","semi_major_m":4,"semi_minor_m":-1)")}));
-  expect_error(error_of({neg}), {neg.c_str(), "feature 1", "semi_minor_m", "> 0", "got -1"});
+  expect_error(error_of({neg}), {neg.c_str(), "feature 1", "semi_minor_m", "at least 1 mm", "got -1"});
 }
 
 // Two columns for one coordinate ("x" and "lon"), or a column named twice:

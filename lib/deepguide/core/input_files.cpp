@@ -28,7 +28,7 @@ void refuse_special_file(const std::string& path) {
   if (!text.count(ext)) return;
   unsigned char bom[4] = {1, 1, 1, 1};
   std::ifstream(path, std::ios::binary).read(reinterpret_cast<char*>(bom), 4);
-  const char* encoding = bom[0] == 0xFF && bom[1] == 0xFE && bom[2] == 0 && bom[3] == 0 ? "UTF-32 (little-endian)"
+  const char* encoding = bom[0] == 0xFF && bom[1] == 0xFE && bom[2] == 0 && bom[3] == 0   ? "UTF-32 (little-endian)"
                          : bom[0] == 0 && bom[1] == 0 && bom[2] == 0xFE && bom[3] == 0xFF ? "UTF-32 (big-endian)"
                          : bom[0] == 0xFF && bom[1] == 0xFE                               ? "UTF-16 (little-endian)"
                          : bom[0] == 0xFE && bom[1] == 0xFF                               ? "UTF-16 (big-endian)"

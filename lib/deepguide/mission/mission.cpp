@@ -10,8 +10,8 @@
 #include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/planning/route_io.hpp"
-#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/current_field.hpp"
+#include "deepguide/world/frame_scale.hpp"
 
 namespace deepguide {
 namespace {

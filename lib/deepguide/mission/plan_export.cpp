@@ -116,7 +116,8 @@ void export_plan(const Mission& mission, const MissionPlan& plan, const std::str
   if (plan.basics.empty()) throw InputError(path + ": expected a plan with at least one manoeuvre to export");
   if (format == ExportFormat::yaml) {
     detail::require_exportable_text(mission.name, "mission name", path);
-    for (const ComplexManoeuvre& c : mission.manoeuvres) detail::require_exportable_text(c.name, "manoeuvre name", path);
+    for (const ComplexManoeuvre& c : mission.manoeuvres)
+      detail::require_exportable_text(c.name, "manoeuvre name", path);
     detail::write_atomically(path, options.overwrite,
                              [&](const std::string& temp) { detail::write_plan_yaml(temp, path, mission, plan); });
     return;

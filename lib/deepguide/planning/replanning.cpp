@@ -100,10 +100,6 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
   };
   for (const ReplanEvent& d : detections) {
     sail(d.along_m);
-    if (at == goal) {
-      replay.after_arrival = detections.size() - replay.repairs.size();
-      break;
-    }
     const auto t0 = std::chrono::steady_clock::now();
     const std::size_t before = dstar.expanded();
     dstar.move_to(at);

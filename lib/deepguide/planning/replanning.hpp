@@ -44,10 +44,7 @@ struct Repair {
 struct Replay {
   std::vector<Vec2> initial_route;  ///< D* Lite's first route: the one the vehicle sails until a report
   double initial_cost = 0.0;
-  std::vector<Repair> repairs;  ///< one per detection the vehicle met before the goal, in order
-  /// Detections reported farther along than the vehicle sailed to reach the
-  /// goal: the voyage was over, so they are not replayed (no repair, no file).
-  std::size_t after_arrival = 0;
+  std::vector<Repair> repairs;  ///< one per detection, in order
   std::vector<Vec2> track;      ///< every vertex the vehicle reached, start first
   std::vector<GraphVertex> track_vertices;
   bool reached_goal = false;

@@ -219,8 +219,8 @@ std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
             const Vec2& geometry = part.points.back().lonlat;
             if (!((fields - geometry).cwiseAbs().maxCoeff() <= 1e-7)) {
               throw InputError(path + ": " + label + ": fields 'lon', 'lat' (" + general(fields.x()) + ", " +
-                               general(fields.y()) + ") disagree with its geometry (" + general(geometry.x()) +
-                               ", " + general(geometry.y()) + "): expected one position");
+                               general(fields.y()) + ") disagree with its geometry (" + general(geometry.x()) + ", " +
+                               general(geometry.y()) + "): expected one position");
             }
           }
         } else {

@@ -122,6 +122,12 @@ void refuse_leaving_coverage(const ChartObstacles& charted, const Route& route, 
                      ": the depth there is not known (give a chart that covers the way)");
 }
 
+// Reports that reached the vehicle at the goal: their "repair" is the goal alone.
+std::size_t after_arrival(const Replay& replay) {
+  return static_cast<std::size_t>(std::count_if(replay.repairs.begin(), replay.repairs.end(),
+                                                [](const Repair& r) { return r.found && r.route.size() < 2; }));
+}
+
 // No route in a changing current: a route that arrives after the field's last
 // time step is as infeasible as one against a current too strong, and
 // which it is decides what the user must change (issue 39). The shortest
@@ -152,7 +158,10 @@ void replay(RoutePlanReport& report) {
   report.detections = load_detections(r.replan_events, report.frame, r.src_crs);
   report.replay = replay_detections(*report.plan.planner->quadtree(), r.problem, report.detections, r.margin_m);
   for (std::size_t k = 0; k < report.replay->repairs.size(); ++k) {
-    const bool written = report.replay->repairs[k].found && !r.route_file.empty();
+    // A report that reaches the vehicle at the goal (reported past the route's
+    // end) repairs nothing: no file (it once failed writing a one-point route).
+    const Repair& repair = report.replay->repairs[k];
+    const bool written = repair.found && repair.route.size() >= 2 && !r.route_file.empty();
     report.repair_files.push_back(written ? repair_file_name(r.route_file, k + 1) : "");
   }
   report.route = Route{report.replay->initial_route};
@@ -215,7 +224,8 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   const PlanOutcome& out = report.plan.outcome;
   if (!out.result.found) {
     std::string why = out.result.message;
-    if (options.cost && !model.steady && out.result.stopped == SearchStop::none) why = time_axis_reason(report, why);
+    if (options.cost && !model.steady && out.result.stats.stopped == SearchStop::none)
+      why = time_axis_reason(report, why);
     if (charted.enc) {
       // What an operator looks at first: the no-go feature across the straight line (a shoal, a
       // hazard's disc across a channel).
@@ -345,7 +355,7 @@ nlohmann::json RoutePlanReport::to_json() const {
     }
     j["repairs"] = repairs;
     j["reached_goal"] = replay->reached_goal;
-    j["detections_after_arrival"] = replay->after_arrival;
+    j["detections_after_arrival"] = after_arrival(*replay);
   }
   return j;
 }
@@ -454,13 +464,12 @@ std::string RoutePlanReport::to_text() const {
     }
   }
   if (replay) {
-    t += report_line("replanning", std::to_string(replay->repairs.size()) +
-                                       " detection(s) replayed with D* Lite; the vehicle " +
-                                       (replay->reached_goal ? "reaches the goal" : "stops: no way on") +
-                                       (replay->after_arrival > 0
-                                            ? "; " + std::to_string(replay->after_arrival) +
-                                                  " detection(s) reported past the goal, not replayed"
-                                            : std::string()));
+    t += report_line("replanning",
+                     std::to_string(replay->repairs.size()) + " detection(s) replayed with D* Lite; the vehicle " +
+                         (replay->reached_goal ? "reaches the goal" : "stops: no way on") +
+                         (after_arrival(*replay) > 0 ? "; " + std::to_string(after_arrival(*replay)) +
+                                                           " detection(s) reached it at the goal, nothing to repair"
+                                                     : std::string()));
     t += printf_text("%6s %10s %8s %10s %9s %10s\n", "repair", "along m", "blocked", "length m", "expanded",
                      "repair ms");
     for (std::size_t k = 0; k < replay->repairs.size(); ++k) {

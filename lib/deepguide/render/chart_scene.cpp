@@ -17,11 +17,11 @@
 #include "deepguide/render/map_furniture.hpp"
 #include "deepguide/render/plot_furniture.hpp"  // draw_figure_title
 #include "deepguide/render/route_scene.hpp"     // kMinImageWidth, kMaxImageWidth
-#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/enc_cells.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"

@@ -16,9 +16,9 @@
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
 #include "deepguide/world/current_field.hpp"
-#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/current_summary.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide {
@@ -98,7 +98,7 @@ void read_obstacles(const Mapping& root, const std::optional<LocalFrame>& frame,
                         yaml_number(c.footprint.b));
     }
     if (frame) {  // true metres into frame metres, as obstacle files are (frame_scale.hpp)
-      const double scale = frame->scale_at(frame->to_lonlat(c.footprint.centre)).greatest;
+      const double scale = std::max(1.0, frame->scale_at(frame->to_lonlat(c.footprint.centre)).greatest);
       if (std::isfinite(scale)) c.footprint.a *= scale, c.footprint.b *= scale;
     }
     c.footprint.theta = to_math(m.number_or("orientation_deg", kAngle, 0.0), c.footprint.centre, frame);

@@ -16,13 +16,13 @@
 #include "deepguide/geometry/safety_zone.hpp"
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/s57_chart.hpp"
 #include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/no_go_union.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/obstacle_summary.hpp"
+#include "deepguide/world/s57_chart.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;

@@ -58,8 +58,8 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
-#include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/extent.hpp"
+#include "deepguide/world/local_frame.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

@@ -67,8 +67,7 @@ void require_true_scale(const LocalFrame& frame, const LonLatExtent& area, const
   }
 }
 
-void require_true_scale(const LocalFrame& frame, const std::vector<Eigen::Vector2d>& lonlat,
-                        const std::string& what) {
+void require_true_scale(const LocalFrame& frame, const std::vector<Eigen::Vector2d>& lonlat, const std::string& what) {
   require_true_scale(frame, extent_of(lonlat), what);
 }
 

@@ -9,14 +9,17 @@
 //   over the work area, in every direction, one true metre is between
 //   kLeastFrameScale and kGreatestFrameScale metres of the frame.
 //
-// Below 1 a frame makes sizes given in metres too small, so the band is tight
-// there (UTM's 0.9996 on its central meridian is the least a frame may have);
-// above 1 it only shrinks margins and clearances, by at most 0.6 % (3 cm of
-// 5 m), and lengthens routes by as much: the band UTM keeps within a zone's
-// width (6 degrees) of its central meridian at the equator, which the
-// planner's own fixtures and many users' areas need. Within 3 degrees of it,
-// where the default frame mostly plans, the error is under 0.1 %. An obstacle's axes are scaled by the
-// frame's scale at its centre when it is placed, so its size is true.
+// (Scale: frame metres per true metre.) Above 1 a frame makes every size
+// given in metres too small in truth: obstacles, margins, clearances; the
+// band lets it be 0.6 % above (3 cm of a 5 m margin), which is what UTM keeps
+// within a zone's width (6 degrees) of its central meridian at the equator,
+// and what the planner's fixtures and many users' areas need; within 3
+// degrees, where the default frame mostly plans, it is under 0.1 %. An
+// ellipse's axes are multiplied by the frame's scale at its centre where that
+// is above 1, so an obstacle file's obstacles keep their true size; margins
+// and a chart's buffers are not (a remaining error of at most 0.6 %). Below 1
+// sizes err on the safe side, and the band is tight there (UTM's 0.9996 on
+// its central meridian is the least), so lengths stay true.
 // A frame that breaks the rule is refused with one line naming it, where, and
 // its scale there.
 

@@ -6,7 +6,6 @@
 #include <mutex>
 #include <numbers>
 #include <optional>
-#include <proj.h>
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
@@ -23,14 +22,6 @@ struct LocalFrame::Impl {
   std::string id;
   std::string name;
   std::string wkt;
-  // The projected CRS for proj_factors, in its own PROJ context (a context
-  // and its objects are used by one thread at a time: the mutex).
-  struct ProjFree {
-    void operator()(PJ_CONTEXT* c) const { proj_context_destroy(c); }
-    void operator()(PJ* p) const { proj_destroy(p); }
-  };
-  std::unique_ptr<PJ_CONTEXT, ProjFree> proj_context;
-  std::unique_ptr<PJ, ProjFree> proj_crs;
   // OGRCoordinateTransformation::Transform is not guaranteed thread-safe.
   mutable std::mutex mutex;
 };
@@ -105,18 +96,6 @@ LocalFrame LocalFrame::from_user_crs(const std::string& crs, const std::string& 
   impl->srs->exportToWkt(&wkt);
   impl->wkt = wkt != nullptr ? wkt : "";
   CPLFree(wkt);
-  // PROJ reads WKT2 whole; a bound CRS (one with a +towgs84) is taken by its projected source.
-  char* wkt2 = nullptr;
-  const char* const wkt2_options[] = {"FORMAT=WKT2_2019", nullptr};
-  impl->srs->exportToWkt(&wkt2, wkt2_options);
-  impl->proj_context.reset(proj_context_create());
-  if (wkt2 != nullptr && impl->proj_context) {
-    impl->proj_crs.reset(proj_create(impl->proj_context.get(), wkt2));
-    if (impl->proj_crs && proj_get_type(impl->proj_crs.get()) == PJ_TYPE_BOUND_CRS) {
-      impl->proj_crs.reset(proj_get_source_crs(impl->proj_context.get(), impl->proj_crs.get()));
-    }
-  }
-  CPLFree(wkt2);
   return LocalFrame(std::move(impl));
 }
 
@@ -140,17 +119,34 @@ Eigen::Vector2d LocalFrame::to_lonlat(const Eigen::Vector2d& xy) const {
   return {x, y};
 }
 
+// Tissot's indicatrix by differences: the frame's Jacobian against true
+// metres east and north on the WGS 84 ellipsoid (the datum every lon, lat
+// here is on), whose singular values are the least and greatest scale. Not
+// PROJ's proj_factors: it measures a projection against its own ellipsoid or
+// sphere, and Web Mercator (a sphere on WGS 84's lon, lat) is 0.67 % longer
+// north-south than it says at the equator.
 LocalFrame::Scale LocalFrame::scale_at(const Eigen::Vector2d& lonlat) const {
   const double nan = std::nan("");
-  std::lock_guard lock(impl_->mutex);
-  if (!impl_->proj_crs || !lonlat.allFinite()) return {nan, nan};
-  PJ_COORD lp = proj_coord(lonlat.x() * std::numbers::pi / 180.0, lonlat.y() * std::numbers::pi / 180.0, 0.0, 0.0);
-  proj_errno_reset(impl_->proj_crs.get());
-  const PJ_FACTORS f = proj_factors(impl_->proj_crs.get(), lp);
-  if (proj_errno(impl_->proj_crs.get()) != 0 || !(f.tissot_semiminor > 0.0) || !std::isfinite(f.tissot_semimajor)) {
-    return {nan, nan};
-  }
-  return {f.tissot_semiminor, f.tissot_semimajor};
+  if (!lonlat.allFinite() || std::abs(lonlat.y()) > 90.0) return {nan, nan};
+  constexpr double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
+  const double phi = lonlat.y() * std::numbers::pi / 180.0;
+  const double w = std::sqrt(1.0 - e2 * std::sin(phi) * std::sin(phi));
+  const double meridian = a * (1.0 - e2) / (w * w * w);  // M: metres per radian north
+  const double parallel = a / w * std::cos(phi);         // N cos(lat): metres per radian east
+  // Steps of about 1 m (central differences: the error is of the step squared).
+  constexpr double kStepM = 1.0;
+  const double dlat = kStepM / meridian * 180.0 / std::numbers::pi;
+  const double dlon = kStepM / std::max(parallel, 1e-3) * 180.0 / std::numbers::pi;
+  if (std::abs(lonlat.y()) + dlat > 90.0) return {nan, nan};
+  const Eigen::Vector2d e = (from_lonlat(lonlat.x() + dlon, lonlat.y()) - from_lonlat(lonlat.x() - dlon, lonlat.y())) /
+                            (2.0 * dlon * std::numbers::pi / 180.0 * parallel);
+  const Eigen::Vector2d n = (from_lonlat(lonlat.x(), lonlat.y() + dlat) - from_lonlat(lonlat.x(), lonlat.y() - dlat)) /
+                            (2.0 * dlat * std::numbers::pi / 180.0 * meridian);
+  if (!e.allFinite() || !n.allFinite()) return {nan, nan};
+  // Singular values of [e n]: sqrt((s +- sqrt(s^2 - 4 det^2)) / 2).
+  const double s = e.squaredNorm() + n.squaredNorm(), det = e.x() * n.y() - e.y() * n.x();
+  const double root = std::sqrt(std::max(0.0, s * s - 4.0 * det * det));
+  return {std::sqrt(std::max(0.0, 0.5 * (s - root))), std::sqrt(0.5 * (s + root))};
 }
 
 double LocalFrame::true_north_angle(const Eigen::Vector2d& xy) const {

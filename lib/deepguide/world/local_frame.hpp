@@ -32,10 +32,10 @@ class LocalFrame {
   /// Local (x, y) in metres -> (longitude, latitude) in degrees.
   Eigen::Vector2d to_lonlat(const Eigen::Vector2d& xy) const;
 
-  /// How many frame units one true metre becomes at a point (lon, lat in
-  /// degrees), least and greatest over all directions: the semi-axes of
-  /// Tissot's indicatrix, from PROJ's proj_factors. Equal in a conformal
-  /// frame; (NaN, NaN) where PROJ cannot tell (outside the projection).
+  /// How many frame units one true metre (on the WGS 84 ellipsoid) becomes at
+  /// a point (lon, lat in degrees), least and greatest over all directions:
+  /// the semi-axes of Tissot's indicatrix. Equal in a conformal frame; (NaN,
+  /// NaN) where the frame does not reach (outside the projection, a pole).
   struct Scale {
     double least;
     double greatest;

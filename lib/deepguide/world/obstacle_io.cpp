@@ -468,7 +468,8 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
     const Eigen::Vector2d at = options.fallback_lonlat.value_or(Eigen::Vector2d(0.0, 0.0));
     frame = default_frame_for(!extent.empty() ? extent : LonLatExtent{at.x(), at.x(), at.y(), at.y()});
   } else if (!extent.empty()) {
-    require_true_scale(*frame, extent, paths.size() == 1 ? printable(paths.front(), 240) : std::string("the obstacles"));
+    require_true_scale(*frame, extent,
+                       paths.size() == 1 ? printable(paths.front(), 240) : std::string("the obstacles"));
   }
 
   LoadedObstacles out{{}, *frame, {}};
@@ -480,9 +481,10 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
         EllipticCylinder c;
         c.id = r.id;
         c.footprint.centre = to_local_checked(*frame, r.centre, r.where);
-        // Axes are true metres; the frame's scale at the centre makes them frame
-        // metres (frame_scale.hpp), the greater one where it is not conformal.
-        const double scale = frame->scale_at(r.centre).greatest;
+        // Axes are true metres: where the frame stretches them they are made
+        // frame metres (frame_scale.hpp); where it shrinks them (at most
+        // 0.05 %) they stay as given, as every other size from a chart does.
+        const double scale = std::max(1.0, frame->scale_at(r.centre).greatest);
         c.footprint.a = r.a * (std::isfinite(scale) ? scale : 1.0);
         c.footprint.b = r.b * (std::isfinite(scale) ? scale : 1.0);
         c.footprint.theta = frame->heading_to_local(r.heading_deg, c.footprint.centre);
