@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <initializer_list>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -101,6 +102,12 @@ inline std::string real_folder(const std::string& rel) { return real_data(rel, s
 
 inline std::string source_file(const std::string& rel) {
   return (std::filesystem::path(DEEPGUIDE_SOURCE_DIR) / rel).string();
+}
+
+/// The whole file's bytes; empty when it cannot be read.
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 struct RunResult {

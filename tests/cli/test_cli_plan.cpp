@@ -466,6 +466,11 @@ TEST(CliPlanOctree, BadInputIsOneLineAndExitOne) {
       {" --from-depth 10 --to-depth 1", {"the goal", "band"}},
       {"", {"--depth"}},
       {" --depth 10 --max-dive 95", {"--max-dive"}},
+      // Issue 39: a dive so shallow that one cell is wider than the voyage (was "a raster that covers the work area").
+      {" --depth 10 --max-dive 1e-9", {"--max-dive", "1e-09 deg", "1.14592e+11 m wide", "at least 0.375 deg"}},
+      {" --depth 10 --max-dive 0.2", {"--max-dive", "572.955 m wide", "at least 0.375 deg"}},
+      // A coarse floor (1 deg: 115 m cells) says how coarse.
+      {" --depth 10 --max-dive 1", {"the start", "sea floor", "sampled every 114.6 m"}},
       {" --depth 10 --cost energy", {"--graph octree", "--cost"}},
       {" --depth 10 --render-profile p.txt", {"p.txt"}},
   };

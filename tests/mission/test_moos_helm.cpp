@@ -189,7 +189,13 @@ TEST(MoosHelm, TheRealHelmSailsTheExportToItsEnd) {
   const Planned p = planned(mission_file);
   const MoosPlan plan = moos_plan(p.route);
   ScratchDir dir;
-  export_plan(p.mission, p.plan, dir.file("mission.bhv"), ExportFormat::moos);
+  // Issue 39: the mission's name goes into the .bhv (its first line); the helm reads the file whatever
+  // an exportable name holds: markup, braces, MOOS's own separators and comment marks, CJK, an emoji,
+  // a right-to-left override.
+  Mission named = p.mission;
+  named.name = "<a href=\"x\">&amp;</a> ]] {dg} = , // # %s \u822a\u8def \U0001F6A2 \u202Eevil";
+  export_plan(named, p.plan, dir.file("mission.bhv"), ExportFormat::moos);
+  ASSERT_NE(slurp(dir.file("mission.bhv")).find(named.name), std::string::npos);
   double deepest = 0.0;
   for (const ExportWaypoint& w : p.route.waypoints) deepest = std::max(deepest, w.depth_m);
   MoosCommunityOptions options;

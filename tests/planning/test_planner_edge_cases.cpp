@@ -119,10 +119,13 @@ TEST_P(BothGraphs, TouchingObstaclesFarFromTheOriginAtAnyMargin) {
     ObstacleSet set;
     set.polygons.push_back(square(0, 0, 65, "SW"));
     set.polygons.push_back(corner ? square(65, 65, 65, "NE") : square(65, 0, 65, "E"));
-    // Corner: from the north-west to the south-east across the touching point; edge: across the shared edge.
-    const Vec2 s = corner ? at(-30, 95) : at(65, -40), g = corner ? at(95, -30) : at(65, 105);
-    for (const double margin : {0.0, 1e-9, 1e-7, 1e-6, 3e-6, 1e-5, 1e-4, 1e-3, 1.0, 10.0}) {
+    // Corner: from the north-west to the south-east across the touching point; edge: across the shared
+    // edge. Start and goal 40 m outside the zones, whatever the margin (up to the largest, 100 km).
+    for (const double margin : {0.0, 1e-9, 1e-7, 1e-6, 3e-6, 1e-5, 1e-4, 1e-3, 1.0, 10.0, 1e3, 1e5}) {
       SCOPED_TRACE(::testing::Message() << (corner ? "corner" : "edge") << ", margin " << margin);
+      const double away = margin + 40.0;
+      const Vec2 s = corner ? at(-away, 130 + away) : at(65, -away);
+      const Vec2 g = corner ? at(130 + away, -away) : at(65, 65 + away);
       Planner planner(set, {margin, 0.5, GetParam(), SearchAlgorithm::astar});
       const PlanOutcome out = planner.solve({s, g});  // an internal error fails the test
       ASSERT_TRUE(out.result.found) << out.result.message;

@@ -127,3 +127,38 @@ TEST(RouteFiles, ACsvWhoseWktAndLonLatDisagreeIsRefused) {
       EXPECT_NE(what.find(w), std::string::npos) << what;
   }
 }
+
+// A CSV of waypoints in lon and lat columns is read (it was "expected a route
+// line or points, found none"); a row without a finite position is a hole in
+// the route, refused naming its line and columns, never skipped (issue 39:
+// NaN in a file's fields).
+TEST(RouteFiles, ACsvOfLonLatIsReadAndARowWithoutAFinitePositionIsRefused) {
+  ScratchDir dir;
+  const std::vector<RouteFilePart> parts =
+      read_route_parts(dir.write("lonlat.csv", "name,Lat,Lon\na,54.0,10.0\nb,54.001,10.002\nc,54.002,10.0\n"));
+  ASSERT_EQ(parts.size(), 1u);  // the points, joined in file order into the route
+  ASSERT_EQ(parts[0].points.size(), 3u);
+  EXPECT_DOUBLE_EQ(parts[0].points[1].lonlat.x(), 10.002);
+  EXPECT_DOUBLE_EQ(parts[0].points[1].lonlat.y(), 54.001);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> bad = {
+      {"lon,lat\n10,54\nnan,54.001\n", {"line 3", "fields 'lon', 'lat'", "no finite number and '54.001'"}},
+      {"lon,lat\n10,54\n10.002,inf\n", {"line 3", "'10.002' and no finite number"}},
+      {"lon,lat\n10,54\n10.002,\n", {"line 3", "no finite number"}},
+      {"lon,lat\n10,54\n10.002,-inf\n10,54.002\n", {"line 3"}},
+      {"x,y\n10,54\n10.002,54.001\n", {"line 1", "column 'x'", "lon and lat columns"}},
+      {"name,depth\na,4\nb,5\n", {"line 1", "a WKT column, or lon and lat columns"}},
+      {"lon,longitude,lat\n10,10,54\n", {"line 1", "expected one column of", "lon and longitude"}},
+      {"WKT,lon,lat\n\"POINT (10 54)\",10,54\n\"POINT (nan 54)\",10,54\n", {"line 3", "field 'wkt'"}},
+  };
+  for (const auto& [text, words] : bad) {
+    const std::string path = dir.write("bad.csv", text);
+    try {
+      read_route_parts(path);
+      ADD_FAILURE() << text << ": accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+      for (const std::string& w : words) EXPECT_NE(what.find(w), std::string::npos) << text << ": " << what;
+    }
+  }
+}

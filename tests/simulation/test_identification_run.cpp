@@ -120,6 +120,46 @@ TEST(IdentificationRun, AligningKeepsClearOfOtherObstaclesOnTheWayRound) {
   EXPECT_GT(r.stats.vehicle.min_clearance_m, 10.0);
 }
 
+// Issue 39: a rock in the flow shade, on the held point. The run held station
+// inside it ("held", exit 0, min clearance -4.6 m). Nothing may end "held" or
+// "laps_done" after the vehicle entered an obstacle; the failure names it and,
+// aligning, says that the held point lies inside it.
+TEST(IdentificationRun, ARunThatEntersAnObstacleFailsNamingItNeverHeld) {
+  Scenario sc = identify_scenario(IdentifyMode::align, kWreck, {-250.0, 40.0}, current_towards(0.5, 100.0));
+  const IdentifyResult clear = simulate_identification(sc);
+  ASSERT_EQ(clear.end, IdentifyEnd::held);
+  const Vec2 g = clear.goal;
+  // A rock of radius 6 m on the held point (1 m off the standoff ellipse's far side).
+  for (const double offset : {0.0, 4.0}) {
+    Scenario rocky = sc;
+    rocky.obstacles.push_back({"rock", {g + Vec2(offset, 0.0), 6.0, 6.0, 0.0}, {}, {}});
+    const IdentifyResult r = simulate_identification(rocky);
+    EXPECT_NE(r.end, IdentifyEnd::held) << offset;
+    EXPECT_FALSE(r.stats.vehicle.reached);
+    EXPECT_NE(r.failure.find("the held point"), std::string::npos) << r.failure;
+    EXPECT_NE(r.failure.find("inside obstacle 'rock'"), std::string::npos) << r.failure;
+    if (r.end == IdentifyEnd::collided) {
+      EXPECT_LT(r.stats.vehicle.min_clearance_m, 0.0);
+      EXPECT_NE(r.failure.find("the vehicle is inside obstacle 'rock'"), std::string::npos) << r.failure;
+      // The run stops at the first sample inside: the one before was outside.
+      ASSERT_GE(r.samples, 2u);
+    }
+  }
+  // Going around with a rock on the path: the vehicle hits it and the laps are not "done".
+  Scenario around = identify_scenario(IdentifyMode::around, kLongWreck, {-200.0, -150.0}, Vec2::Zero());
+  around.identify->around.distance_m = 25.0;
+  const IdentifyResult free_run = simulate_identification(around);
+  ASSERT_EQ(free_run.end, IdentifyEnd::laps_done);
+  // A point the vehicle passes half-way through the run, on the path.
+  const IdentifyResult recorded = simulate_identification(around, {true});
+  const Vec2 on_path = recorded.trajectory[recorded.trajectory.size() / 2].vehicle.position;
+  around.obstacles.push_back({"rock", {on_path, 5.0, 5.0, 0.0}, {}, {}});
+  const IdentifyResult hit = simulate_identification(around);
+  EXPECT_EQ(hit.end, IdentifyEnd::collided);
+  EXPECT_NE(hit.failure.find("the vehicle is inside obstacle 'rock'"), std::string::npos) << hit.failure;
+  EXPECT_EQ(hit.failure.find("held point"), std::string::npos) << hit.failure;  // aligning's only
+}
+
 // ---------------------------------------------------------------- going around
 
 TEST(IdentificationRun, GoingAroundCompletesTheLapsOnThePathInCurrents) {
@@ -351,6 +391,19 @@ TEST(IdentifyCli, ExitCodes) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
   EXPECT_TRUE(std::ifstream(csv).good());  // what there is, for a look
   EXPECT_EQ(test::run_cli("identify").exit_code, 2);
+  // The align sample with a rock where the held point falls: exit 3, never "held".
+  std::string rocky = test::read_text(align);
+  const std::string rock = "  - id: rock\n";
+  ASSERT_NE(rocky.find(rock), std::string::npos);
+  rocky.replace(rocky.find(rock), rock.size(), "  - {id: shade_rock, x: 22, y: -4, semi_major_m: 6}\n" + rock);
+  const std::string vehicle = "../vehicles/deepc.yaml";
+  ASSERT_NE(rocky.find(vehicle), std::string::npos);
+  rocky.replace(rocky.find(vehicle), vehicle.size(), test::source_file("data/vehicles/deepc.yaml"));
+  const test::RunResult held = test::run_cli("identify '" + dir.write("rocky.yaml", rocky) + "'");
+  EXPECT_EQ(held.exit_code, 3) << held.out;
+  EXPECT_EQ(held.out.find("end                      held"), std::string::npos) << held.out;
+  EXPECT_NE(held.err.find("inside obstacle 'shade_rock'"), std::string::npos) << held.err;
+  EXPECT_EQ(std::count(held.err.begin(), held.err.end(), '\n'), 1) << held.err;
 }
 
 }  // namespace

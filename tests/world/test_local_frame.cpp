@@ -109,3 +109,31 @@ TEST(LocalFrame, AFrameNotInMetresIsRefusedNamingItsUnit) {
   EXPECT_NO_THROW(LocalFrame::from_user_crs("+proj=utm +zone=32 +datum=WGS84 +units=m"));
   EXPECT_NO_THROW(LocalFrame::from_user_crs("EPSG:3413"));
 }
+
+// Issue 39: a WKT with a typo in its projection method was read, and every
+// position then failed to project: the first obstacle was blamed ("expected a
+// position inside the area of the local frame"). The frame itself is refused.
+TEST(LocalFrame, AProjectionMethodPROJDoesNotKnowIsRefusedAsTheFrame) {
+  const std::string typo =
+      R"(PROJCS["WGS 84 / UTM zone 32N",GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],)"
+      R"(PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]],PROJECTION["Transverse_Mercatorr"],)"
+      R"(PARAMETER["latitude_of_origin",0],PARAMETER["central_meridian",9],PARAMETER["scale_factor",0.9996],)"
+      R"(PARAMETER["false_easting",500000],PARAMETER["false_northing",0],UNIT["metre",1]])";
+  try {
+    LocalFrame::from_user_crs(typo, "--crs");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("--crs: 'PROJCS[\"WGS 84 / UTM zone 32N\""), std::string::npos) << why;
+    EXPECT_NE(why.find("projects no position (projection method 'Transverse_Mercatorr')"), std::string::npos) << why;
+    EXPECT_EQ(why.find('\n'), std::string::npos) << why;
+  }
+  // The same WKT spelt right, and frames whose origin is a pole or far from the equator, are kept.
+  std::string right = typo;
+  right.replace(right.find("Mercatorr"), 9, "Mercator");
+  EXPECT_EQ(LocalFrame::from_user_crs(right).name(), "WGS 84 / UTM zone 32N");
+  for (const char* crs : {"EPSG:3031", "EPSG:3413", "+proj=stere +lat_0=90 +lon_0=-45 +datum=WGS84 +units=m",
+                          "+proj=ortho +lat_0=54 +lon_0=10 +datum=WGS84 +units=m", "EPSG:3832", "EPSG:5041"}) {
+    EXPECT_NO_THROW(LocalFrame::from_user_crs(crs)) << crs;
+  }
+}

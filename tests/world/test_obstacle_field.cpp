@@ -42,6 +42,7 @@
 #include "deepguide/geometry/ellipse_segment.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "geometry/reference_ellipse.hpp"
+#include "test_support.hpp"
 
 using namespace deepguide;
 
@@ -330,7 +331,7 @@ TEST(ObstacleField, SegmentEllipseMatchesReference) {
   int disjoint = 0;
   int crossing = 0;
   double worst = 0.0;
-  for (int iter = 0; disjoint < 300; ++iter) {
+  for (int iter = 0; disjoint < test::cases(300); ++iter) {
     ASSERT_LT(iter, 2000) << "case generation stalled";
     const double a = 1.0 + 49.0 * unit(rng);
     const double b = a * (0.05 + 0.95 * unit(rng));
@@ -366,7 +367,7 @@ TEST(ObstacleField, SegmentEllipseMatchesReference) {
     EXPECT_NEAR(reference_segment_distance(n.point_on_segment, p0, p1), 0.0, 1e-9);
     EXPECT_NEAR(test_ref::reference_distance(f, n.point_on_segment).distance, n.distance, 1e-7) << "iter " << iter;
   }
-  EXPECT_GE(crossing, 20);
+  EXPECT_GE(crossing, test::cases(20));
   RecordProperty("worst_abs_error", std::to_string(worst));
 }
 
@@ -380,7 +381,7 @@ TEST(ObstacleField, SegmentFreeMatchesReferenceAroundTheZone) {
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int free_cases = 0, blocked_cases = 0;
-  for (int iter = 0; iter < 1500; ++iter) {
+  for (int iter = 0; iter < test::cases(1500); ++iter) {
     const double a = 1.0 + 49.0 * unit(rng);
     const double b = a * (0.05 + 0.95 * unit(rng));
     const double margin = 0.5 + 20.0 * unit(rng);
@@ -415,8 +416,8 @@ TEST(ObstacleField, SegmentFreeMatchesReferenceAroundTheZone) {
     // Skipping the only obstacle makes everything free.
     EXPECT_TRUE(field.segment_free(p0, p1, 0));
   }
-  EXPECT_GE(free_cases, 150);  // 208 and 600-odd with this seed
-  EXPECT_GE(blocked_cases, 300);
+  EXPECT_GE(free_cases, test::cases(150));  // 208 and 600-odd with this seed
+  EXPECT_GE(blocked_cases, test::cases(300));
 }
 
 // ---- Pruning -------------------------------------------------------------------------
@@ -481,7 +482,7 @@ TEST(ObstacleField, RTreePruningMatchesBruteForce) {
   ASSERT_EQ(field.size(), 2000u);
   int negative = 0;
   int positive = 0;
-  for (int k = 0; k < 200; ++k) {
+  for (int k = 0; k < test::cases(200); ++k) {
     // Mostly inside the field, some beyond its edge, lengths from 0 to 600 m.
     const double lo = k % 5 == 0 ? extent + 50.0 : -100.0;
     const double span = k % 5 == 0 ? 500.0 : extent + 200.0;
@@ -504,6 +505,6 @@ TEST(ObstacleField, RTreePruningMatchesBruteForce) {
     EXPECT_EQ(field.is_free(a), point_brute >= field.margin()) << "point " << k;
   }
   // Both regimes must be exercised for the comparison to mean something.
-  EXPECT_GE(negative, 20);
-  EXPECT_GE(positive, 40);
+  EXPECT_GE(negative, test::cases(20));
+  EXPECT_GE(positive, test::cases(40));
 }

@@ -25,6 +25,24 @@ double vehicle_dive_deg(const VehicleParams& vehicle, const std::string& vehicle
   return rad_to_deg(std::asin(vehicle.max_vertical_speed_mps / vehicle.cruise_speed_mps));
 }
 
+// The octree's smallest cell is min_cell_m / tan(dive) wide, and the sea
+// floor is sampled at that width: a shallow enough dive makes it wider than
+// the voyage (1e-9 deg: 5.7e10 m), and the run then failed for reasons that
+// were the resolution's (a raster "not covering the work area", land
+// everywhere). At least eight cells from start to goal; any dive of 45 deg
+// or more is accepted.
+void require_resolving_dive(const OctreeOptions& o, double distance_m) {
+  const double width = o.min_cell_m / std::min(1.0, std::tan(deg_to_rad(o.max_dive_deg)));
+  const double widest = std::max(distance_m / 8.0, o.min_cell_m);
+  if (width <= widest) return;
+  throw InputError(printf_text(
+      "`max_dive_deg`: %s deg makes the octree's smallest cell %s m wide (its %s m height over the dive's slope), "
+      "more than an eighth of the %.0f m from start to goal, and the sea floor would be sampled that coarsely; give "
+      "at least %.3g deg, or a smaller `min_cell_m`",
+      general(o.max_dive_deg).c_str(), general(width).c_str(), general(o.min_cell_m).c_str(), distance_m,
+      rad_to_deg(std::atan(o.min_cell_m / widest))));
+}
+
 // One bathymetry raster is the sea floor, or S-57 cells are; the other charts
 // add obstacles with their tops to report.obstacles.
 void read_charts(const LocalFrame& frame, const DepthPlanRequest& r, DepthPlanReport& report) {
@@ -80,6 +98,7 @@ DepthPlanReport plan_depth_request(const LocalFrame& frame, const DepthPlanReque
   options.octree.max_dive_deg =
       std::isnan(r.max_dive_deg) ? vehicle_dive_deg(report.vehicle, r.vehicle) : r.max_dive_deg;
   validate(options.octree);
+  require_resolving_dive(options.octree, (r.goal - r.start).norm());
   if (std::isnan(r.start_depth_m) || std::isnan(r.goal_depth_m)) {
     throw InputError("planning in depth: expected the start's and the goal's depth");
   }

@@ -15,6 +15,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/input_files.hpp"
+#include "deepguide/world/csv_positions.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {
@@ -179,7 +180,24 @@ std::vector<RouteFileWaypoint> read_rtz(const std::string& path) {
 std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
   gdal::ensure_registered();
   gdal::QuietErrors quiet;
-  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY);
+  // A CSV's waypoints from its WKT column (lon and lat kept as fields, to
+  // agree with it: `mission export` writes both), else from its lon and lat
+  // columns. A route file carries no CRS: x/y columns would be read as degrees.
+  const bool csv = ascii_lower(std::filesystem::path(path).extension().string()) == ".csv";
+  gdal::CsvPositionColumns columns;
+  std::vector<std::string> csv_options;
+  if (csv) {
+    columns = gdal::csv_position_columns(path);
+    if (columns.geometry.empty() && (columns.x == "x" || columns.x == "easting")) {
+      throw InputError(path + ": line 1: column '" + columns.x +
+                       "': expected the waypoints in lon and lat columns (WGS 84 degrees) or a WKT column");
+    }
+    csv_options = gdal::csv_open_options(columns, true);
+  }
+  std::vector<const char*> open_options;
+  for (const std::string& o : csv_options) open_options.push_back(o.c_str());
+  open_options.push_back(nullptr);
+  GDALDatasetUniquePtr ds = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, open_options.data());
   if (!ds) fail(path, "open it as a vector file (GeoJSON, GPX, KML, RTZ, ...)");
   const auto geo = gdal::wgs84();
   std::vector<RouteFilePart> parts;
@@ -195,6 +213,27 @@ std::vector<RouteFilePart> read_ogr_parts(const std::string& path) {
     if (!ct) fail(path, "transform its CRS to WGS 84");
     for (auto& feature : *layer) {
       const OGRGeometry* g = feature->GetGeometryRef();
+      // A CSV row is a waypoint: one without a position is a hole in the route, not a row to skip.
+      const bool unplaced = g == nullptr || g->IsEmpty() ||
+                            (wkbFlatten(g->getGeometryType()) == wkbPoint &&
+                             !(std::isfinite(g->toPoint()->getX()) && std::isfinite(g->toPoint()->getY())));
+      if (csv && unplaced) {
+        const std::string line = path + ": line " + std::to_string(feature->GetFID() + 1);
+        if (!columns.geometry.empty())
+          throw InputError(line + ": field '" + columns.geometry + "': expected a WKT POINT");
+        if (!columns.has_xy()) {
+          throw InputError(path + ": line 1: expected a WKT column, or lon and lat columns, holding the waypoints");
+        }
+        const auto text = [&](const std::string& name) {
+          const int i = feature->GetFieldIndex(name.c_str());
+          // GDAL leaves a blank, "nan" or "inf" unset in a coordinate column.
+          return i >= 0 && feature->IsFieldSetAndNotNull(i) ? "'" + printable(feature->GetFieldAsString(i)) + "'"
+                                                            : std::string("no finite number");
+        };
+        throw InputError(line + ": fields '" + columns.x + "', '" + columns.y +
+                         "': expected two finite numbers (degrees), got " + text(columns.x) + " and " +
+                         text(columns.y));
+      }
       if (g == nullptr) continue;
       const std::string where = std::string(layer->GetName()) + " feature " + std::to_string(feature->GetFID());
       // A part from a line string or a point; `k` numbers the members of a multi-geometry.

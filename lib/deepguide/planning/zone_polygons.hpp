@@ -6,7 +6,9 @@
 // obstacle's zone, polygon (+) disc(d), by Boost.Geometry's buffer with round
 // joins at the distance d / cos(pi / n): the joins' chords then stay outside
 // the disc of radius d and the straight sides d (1 / cos(pi / n) - 1) <= tol
-// farther out than needed. Overlapping zones are merged (Boost.Geometry
+// farther out than needed (a margin over 50 times the polygon's size is grown
+// in steps that share the tolerance: Boost's buffer takes a polygon far
+// smaller than the distance for a point). Overlapping zones are merged (Boost.Geometry
 // union; groups of more than 64 overlapping zones, a chart's coast with its
 // hazards, through GEOS: world/no_go_union.hpp), so no vertex of one zone
 // hides inside another.

@@ -102,7 +102,7 @@ std::string identification_summary(const IdentifyResult& run) {
     text = fixed(s.laps, 1) + " laps in " + fixed(s.vehicle.time_s, 0) + " s; cross-track RMS " +
            fixed(s.cross_track_m.rms, 2) + " m, max " + fixed(s.cross_track_m.max_abs, 2) + " m; ";
   }
-  if (run.end == IdentifyEnd::overpowered || run.end == IdentifyEnd::time_out) text += "FAILED; ";
+  if (!run.failure.empty()) text += "FAILED; ";
   if (std::isfinite(s.vehicle.min_clearance_m)) text += "min clearance " + fixed(s.vehicle.min_clearance_m, 1) + " m";
   if (s.vehicle.collided) text += ", COLLIDED";
   return text;

@@ -7,6 +7,7 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/simulation/plant.hpp"
 
@@ -80,6 +81,7 @@ std::string_view to_string(IdentifyEnd end) {
     case IdentifyEnd::held: return "held";
     case IdentifyEnd::laps_done: return "laps_done";
     case IdentifyEnd::overpowered: return "overpowered";
+    case IdentifyEnd::collided: return "collided";
     case IdentifyEnd::time_out: return "time_out";
   }
   return "?";
@@ -162,6 +164,21 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     return u;
   };
 
+  // Aligning's held point inside a true obstacle (the object's safety
+  // ellipse keeps it off the object; nothing keeps it off the others): said
+  // with a failure, as its cause.
+  auto held_point_note = [&](const Vec2& g) -> std::string {
+    if (!aligning) return {};
+    for (const EllipticCylinder& o : sc.obstacles) {
+      const double d = signed_distance(o.footprint, g);
+      if (d < 0.0) {
+        return printf_text("; the held point (x %.1f, y %.1f m) lies %.2f m inside obstacle '%s'", g.x(), g.y(), -d,
+                           printable(o.id).c_str());
+      }
+    }
+    return {};
+  };
+
   IdentifyResult result;
   result.mode = id.mode;
   if (options.record_trajectory) result.trajectory.reserve(std::min<std::size_t>(max_steps + 1, std::size_t{1} << 20));
@@ -242,6 +259,14 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
       result.failure = text;
       break;
     }
+    if (x.vehicle.clearance_m < 0.0) {
+      result.end = IdentifyEnd::collided;
+      const EllipticCylinder& hit = sc.obstacles[clearance.nearest()];
+      result.failure = printf_text("the vehicle is inside obstacle '%s' (%.3f m deep) %s", printable(hit.id).c_str(),
+                                   -x.vehicle.clearance_m, where(t, state.position).c_str()) +
+                       held_point_note(u.goal);
+      break;
+    }
     if (aligning && holding && t - hold_start >= id.hold_time_s - 1e-9) {
       result.end = IdentifyEnd::held;
       break;
@@ -253,7 +278,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     if (k >= max_steps) {
       result.end = IdentifyEnd::time_out;
       result.failure = std::string(aligning ? "not held for hold_time_s" : "laps not completed") +
-                       " by the time limit " + where(t, state.position);
+                       " by the time limit " + where(t, state.position) + held_point_note(u.goal);
       break;
     }
     plant.advance();

@@ -14,10 +14,13 @@
 //   2. the unit's command (course over ground, speed, mode) -> autopilot
 //   3. record sample k; a mode different from sample k-1's is a ModeSwitch,
 //      logged with the time and the position of sample k
-//   4. stop: aligning has held the position for hold_time_s without leaving
+//   4. stop: the vehicle is inside a true obstacle, the object or another
+//      (`collided`: a run that hit something has failed, however well it
+//      held); aligning has held the position for hold_time_s without leaving
 //      the positioning mode (`held`; leaving it restarts the hold); going
 //      around has completed its laps (`laps_done`); t_k >= the time limit
-//      (`time_out`)
+//      (`time_out`). A failure names the obstacle, and for aligning whether
+//      the held point itself lies inside one (nothing can hold it then).
 //   5. step the plant
 // The vehicle starts on start_heading (default: towards the object's centre)
 // at the unit's speed, at depth_m. Deterministic: no random numbers.
@@ -96,7 +99,7 @@ struct IdentifyStats {
   std::size_t mode_switches = 0;
 };
 
-enum class IdentifyEnd { held, laps_done, overpowered, time_out };
+enum class IdentifyEnd { held, laps_done, overpowered, collided, time_out };
 std::string_view to_string(IdentifyEnd end);
 
 struct IdentifyResult {
@@ -108,7 +111,7 @@ struct IdentifyResult {
   IdentifyEnd end = IdentifyEnd::time_out;
   std::size_t samples = 0;
   Vec2 goal{0.0, 0.0};  ///< aligning: the held point g (at the end; it turns with the current)
-  /// Why the run failed (overpowered, time_out), one line with time and place; empty otherwise.
+  /// Why the run failed (overpowered, collided, time_out), one line with time and place; empty otherwise.
   std::string failure;
 };
 

@@ -34,6 +34,8 @@ class NearestClearance {
  public:
   explicit NearestClearance(const std::vector<EllipticCylinder>& obstacles) : obstacles_(obstacles) {}
   double at(const Vec2& p);
+  /// The obstacle the last at() measured to (its index in `obstacles`).
+  std::size_t nearest() const { return nearest_; }
 
  private:
   const std::vector<EllipticCylinder>& obstacles_;

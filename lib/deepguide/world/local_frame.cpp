@@ -26,6 +26,35 @@ struct LocalFrame::Impl {
   mutable std::mutex mutex;
 };
 
+namespace {
+
+// OSR reads a WKT whose projection method PROJ does not know (a typo such as
+// "Transverse_Mercatorr") and makes a transformation that then fails on every
+// point; the first position given blamed the data. The frame is tried at its
+// own origin (the central meridian and latitude of origin) and at a few
+// places a projection of any extent holds one of.
+void require_projects_somewhere(const OGRSpatialReference& srs, OGRCoordinateTransformation& to_local,
+                                const std::string& crs, const std::string& what) {
+  const double lon0 =
+      srs.GetNormProjParm(SRS_PP_CENTRAL_MERIDIAN, srs.GetNormProjParm(SRS_PP_LONGITUDE_OF_ORIGIN, 0.0));
+  const double lat0 =
+      srs.GetNormProjParm(SRS_PP_LATITUDE_OF_ORIGIN, srs.GetNormProjParm(SRS_PP_LATITUDE_OF_CENTER, 0.0));
+  gdal::QuietErrors quiet;
+  for (const auto& [lon, lat] :
+       {std::pair{lon0, lat0}, {lon0, 0.0}, {lon0, 45.0}, {lon0, -45.0}, {lon0, 80.0}, {lon0, -80.0}, {0.0, 0.0}}) {
+    double x = lon, y = lat;
+    if (to_local.Transform(1, &x, &y) && std::isfinite(x) && std::isfinite(y)) return;
+  }
+  const char* method = srs.GetAttrValue("PROJECTION");
+  const std::string why = gdal::QuietErrors::last_message();
+  throw InputError(what + ": '" + printable(crs, 80) + "' projects no position" +
+                   (method != nullptr ? " (projection method '" + printable(method) + "')" : std::string()) +
+                   (why.empty() ? std::string() : ": " + printable(why, 120)) +
+                   "; expected a CRS PROJ can project with, such as EPSG:32632");
+}
+
+}  // namespace
+
 LocalFrame::LocalFrame(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
 int utm_epsg_for(double lon_deg, double lat_deg) {
@@ -87,6 +116,7 @@ LocalFrame LocalFrame::from_user_crs(const std::string& crs, const std::string& 
   if (!impl->to_local || !impl->to_geo) {
     throw InputError(what + ": no transformation between WGS 84 and '" + crs + "'");
   }
+  require_projects_somewhere(*impl->srs, *impl->to_local, crs, what);
   // A CRS without an authority code is known by what the user gave, so that
   // the id made into a frame again (a prepared chart, a scenario) is the same frame.
   impl->id = impl->srs->GetAuthorityCode(nullptr) != nullptr ? gdal::srs_id(*impl->srs) : crs;

@@ -285,4 +285,23 @@ std::vector<BgPolygon> overlay_no_go(const BgMultiPolygon& area, const std::vect
   return out;
 }
 
+std::vector<BgPolygon> geos_buffer(const BgPolygon& polygon, double distance, int points_per_circle) {
+  OGRPolygon poly;
+  OGRLinearRing outer = to_ogr_ring(polygon.outer());
+  poly.addRing(&outer);
+  for (const auto& in : polygon.inners()) {
+    OGRLinearRing r = to_ogr_ring(in);
+    poly.addRing(&r);
+  }
+  // GEOS's quadrant segments: a quarter circle in at most this many steps.
+  const int quadrant = std::max(2, (points_per_circle + 3) / 4);
+  OgrPtr grown = owned(poly.Buffer(distance, quadrant));
+  if (!grown || grown->IsEmpty()) {
+    throw std::runtime_error("GEOS could not grow a polygon by " + std::to_string(distance) + " m");
+  }
+  std::vector<BgPolygon> out;
+  from_ogr(*grown, out);
+  return out;
+}
+
 }  // namespace deepguide

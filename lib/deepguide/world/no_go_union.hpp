@@ -65,4 +65,12 @@ std::vector<BgPolygon> union_no_go(const std::vector<const BgPolygon*>& tiles,
 std::vector<BgPolygon> overlay_no_go(const BgMultiPolygon& area, const std::vector<const BgPolygon*>& cuts,
                                      bool keep_inside);
 
+/// `polygon` (+) disc(`distance`) by GEOS's buffer (through OGR): round
+/// joins whose vertices lie on the circle of `distance`, at most
+/// 2 pi / `points_per_circle` apart (so the caller widens the distance for
+/// chords that must stay outside a circle). For distances far beyond the
+/// polygon's size, where Boost.Geometry's buffer fails. Throws
+/// std::runtime_error when GDAL was built without GEOS or GEOS fails.
+std::vector<BgPolygon> geos_buffer(const BgPolygon& polygon, double distance, int points_per_circle);
+
 }  // namespace deepguide

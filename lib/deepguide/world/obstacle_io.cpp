@@ -15,6 +15,7 @@
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/world/csv_positions.hpp"
 #include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
 #include "deepguide/world/no_go_union.hpp"
@@ -256,56 +257,14 @@ struct SourceRead {
   std::vector<GeoRecord> records;
 };
 
-// The CSV columns coordinates come from (GDAL's X/Y/GEOM_POSSIBLE_NAMES).
-const std::vector<std::string> kCsvX = {"x", "lon", "long", "longitude", "easting"};
-const std::vector<std::string> kCsvY = {"y", "lat", "latitude", "northing"};
-const std::vector<std::string> kCsvGeometry = {"wkt", "geometry", "geom"};
-
-std::string joined(const std::vector<std::string>& names, const char* sep) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : sep) + n;
-  return out;
-}
-
-// A CSV whose header names a column twice, or two columns of one coordinate
-// ("x" and "lon"): GDAL reads one of them without a word, and its CSV driver
-// crashed on the first feature (found by fuzz/fuzz_obstacles_csv). Read
-// plainly, without the coordinate options, the header is checked first.
-void refuse_ambiguous_csv_columns(const std::string& path) {
-  const char* const drivers[] = {"CSV", nullptr};
-  const GDALDatasetUniquePtr plain = gdal::open_dataset(path, GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers);
-  if (!plain || plain->GetLayerCount() < 1) return;  // the real open says what is wrong
-  const OGRFeatureDefn* defn = plain->GetLayer(0)->GetLayerDefn();
-  std::vector<std::string> seen;
-  for (int i = 0; i < defn->GetFieldCount(); ++i) {
-    std::string name = defn->GetFieldDefn(i)->GetNameRef();
-    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-    const auto first = std::find(seen.begin(), seen.end(), name);
-    if (first != seen.end()) {
-      throw InputError(path + ": line 1: expected each column once, got '" + printable(name) + "' as columns " +
-                       std::to_string(first - seen.begin() + 1) + " and " + std::to_string(i + 1));
-    }
-    seen.push_back(name);
-  }
-  std::vector<std::vector<std::string>> present;
-  for (const auto* names : {&kCsvX, &kCsvY, &kCsvGeometry}) {
-    present.emplace_back();
-    for (const std::string& n : seen) {
-      if (std::find(names->begin(), names->end(), n) != names->end()) present.back().push_back(n);
-    }
-    if (present.back().size() > 1) {
-      throw InputError(path + ": line 1: expected one column of " + joined(*names, "/") + ", got " +
-                       joined(present.back(), " and ") + ": which one holds the coordinate is not known");
-    }
-  }
-  // A geometry column and coordinate columns: GDAL takes the geometry and
-  // drops the others without a word, though they may disagree.
-  if (!present[2].empty() && (!present[0].empty() || !present[1].empty())) {
-    throw InputError(path + ": line 1: expected the positions in one place, a " + joined(kCsvGeometry, "/") +
-                     " column or x/y columns, got both '" + present[2].front() + "' and '" +
-                     (!present[0].empty() ? present[0] : present[1]).front() +
-                     "': which one holds the position is not known");
-  }
+// A geometry column and coordinate columns: GDAL takes the geometry and drops
+// the others without a word, though they may disagree.
+void refuse_two_places_for_positions(const std::string& path, const gdal::CsvPositionColumns& columns) {
+  if (columns.geometry.empty() || (columns.x.empty() && columns.y.empty())) return;
+  throw InputError(path + ": line 1: expected the positions in one place, a " +
+                   gdal::joined_names(gdal::csv_geometry_names(), "/") + " column or x/y columns, got both '" +
+                   columns.geometry + "' and '" + (!columns.x.empty() ? columns.x : columns.y) +
+                   "': which one holds the position is not known");
 }
 
 SourceRead read_source(const std::string& path, const ObstacleReadOptions& options) {
@@ -320,9 +279,9 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
-    refuse_ambiguous_csv_columns(path);
-    csv_options = {"X_POSSIBLE_NAMES=" + joined(kCsvX, ","), "Y_POSSIBLE_NAMES=" + joined(kCsvY, ","),
-                   "GEOM_POSSIBLE_NAMES=" + joined(kCsvGeometry, ","), "KEEP_GEOM_COLUMNS=NO"};
+    const gdal::CsvPositionColumns columns = gdal::csv_position_columns(path);
+    refuse_two_places_for_positions(path, columns);
+    csv_options = gdal::csv_open_options(columns, false);
     for (const std::string& o : csv_options) open_options.push_back(o.c_str());
   }
   open_options.push_back(nullptr);

@@ -204,7 +204,11 @@ WaterVolume::Verdict WaterVolume::check_segment(const Vec3& a, const Vec3& b) co
   if (floor_ != nullptr) {
     const SeaFloor::Gap gap = floor_->lowest_gap(a, b);
     if (gap.gap_m < c - kRounding) {
-      return {true, "comes within " + fixed(gap.gap_m, 2) + " m of the sea floor (clearance " + general(c) + " m)",
+      // The floor as the planner holds it: its spacing (the octree's cell
+      // width) says why a point can be judged nearer than a finer chart shows.
+      return {true,
+              "comes within " + fixed(gap.gap_m, 2) + " m of the sea floor (clearance " + general(c) +
+                  " m; the floor sampled every " + general(floor_->spacing(), 4) + " m)",
               gap.where};
     }
   }
