@@ -25,3 +25,20 @@ execute_process(COMMAND ${WORK_DIR}/build/consumer RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer returned ${rc}")
 endif()
+# The installed command runs from its prefix, with no library path set
+# (its RPATH is $ORIGIN/../lib), and finds its bundled data there.
+file(GLOB installed_bin ${WORK_DIR}/prefix/bin/deepguide)
+if(NOT installed_bin)
+  message(FATAL_ERROR "no bin/deepguide in the installed prefix ${WORK_DIR}/prefix")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH ${installed_bin} --version
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT out MATCHES "deepguide")
+  message(FATAL_ERROR "the installed bin/deepguide did not run (${rc}): ${out}${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH ${installed_bin} obstacles info
+                        ${WORK_DIR}/prefix/share/deepguide/data/sample_obstacles.geojson
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT out MATCHES "6 elliptical cylinder")
+  message(FATAL_ERROR "the installed bin/deepguide could not read the installed sample (${rc}): ${out}${err}")
+endif()

@@ -21,6 +21,7 @@
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/planner.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
 

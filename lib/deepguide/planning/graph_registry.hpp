@@ -26,7 +26,13 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
-#include "deepguide/planning/planner.hpp"
+#include "deepguide/planning/cost_model.hpp"
+#include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/planner_options.hpp"
+#include "deepguide/planning/query_focus.hpp"
+#include "deepguide/planning/route.hpp"
+#include "deepguide/world/obstacle.hpp"
+#include "deepguide/world/obstacle_field.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
