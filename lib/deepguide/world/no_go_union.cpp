@@ -44,6 +44,17 @@ OGRLinearRing to_ogr_ring(const BgPolygon::ring_type& ring) {
   return r;
 }
 
+OGRPolygon to_ogr(const BgPolygon& p) {
+  OGRPolygon poly;
+  OGRLinearRing outer = to_ogr_ring(p.outer());
+  poly.addRing(&outer);
+  for (const auto& in : p.inners()) {
+    OGRLinearRing r = to_ogr_ring(in);
+    poly.addRing(&r);
+  }
+  return poly;
+}
+
 // The polygonal parts of `g` into `mp` (a repair may return lines and points beside them).
 void add_polygonal(OGRMultiPolygon& mp, const OGRGeometry& g) {
   switch (wkbFlatten(g.getGeometryType())) {
@@ -60,13 +71,7 @@ void add_polygonal(OGRMultiPolygon& mp, const OGRGeometry& g) {
 // STRUCTURE method (shells joined, holes taken out: a ring that runs over itself keeps the water it
 // covers twice, where the default LINEWORK method makes it a hole), LINEWORK where that fails.
 void add_to(OGRMultiPolygon& mp, const BgPolygon& p) {
-  OGRPolygon poly;
-  OGRLinearRing outer = to_ogr_ring(p.outer());
-  poly.addRing(&outer);
-  for (const auto& in : p.inners()) {
-    OGRLinearRing r = to_ogr_ring(in);
-    poly.addRing(&r);
-  }
+  OGRPolygon poly = to_ogr(p);
   if (poly.IsValid()) {
     mp.addGeometry(&poly);
     return;
@@ -286,13 +291,7 @@ std::vector<BgPolygon> overlay_no_go(const BgMultiPolygon& area, const std::vect
 }
 
 std::vector<BgPolygon> geos_buffer(const BgPolygon& polygon, double distance, int points_per_circle) {
-  OGRPolygon poly;
-  OGRLinearRing outer = to_ogr_ring(polygon.outer());
-  poly.addRing(&outer);
-  for (const auto& in : polygon.inners()) {
-    OGRLinearRing r = to_ogr_ring(in);
-    poly.addRing(&r);
-  }
+  const OGRPolygon poly = to_ogr(polygon);
   // GEOS's quadrant segments: a quarter circle in at most this many steps.
   const int quadrant = std::max(2, (points_per_circle + 3) / 4);
   OgrPtr grown = owned(poly.Buffer(distance, quadrant));
