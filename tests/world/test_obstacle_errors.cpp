@@ -158,8 +158,11 @@ TEST(ObstacleErrors, NanOrInfiniteCoordinates) {
   const std::string inf =
       dir.write("inf.geojson", collection({kGood, point_feature(R"("semi_major_m":5)", "[Infinity, 54]")}));
   expect_error(error_of({inf}), {inf.c_str(), "feature 1", "geometry", "finite"});
+  // A CSV's coordinate columns are named (the geometry is GDAL's, made from them).
   const std::string csv = dir.write("nan.csv", "lon,lat,semi_major_m\n10,54,3\nnan,54,3\n");
-  expect_error(error_of({csv}), {csv.c_str(), "line 3", "geometry"});
+  expect_error(error_of({csv}), {csv.c_str(), "line 3", "fields 'lon', 'lat'", "two finite numbers"});
+  const std::string blank = dir.write("blank.csv", "x,y,semi_major_m\n10,54,3\n10.001,,3\n");
+  expect_error(error_of({blank}), {blank.c_str(), "line 3", "fields 'x', 'y'", "not finite"});
   const std::string wkt = dir.write("w.csv", "WKT,semi_major_m\n\"POINT (inf 54)\",3\n");
   expect_error(error_of({wkt}), {wkt.c_str(), "line 2", "geometry"});
 }

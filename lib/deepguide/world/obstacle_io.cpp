@@ -275,11 +275,12 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
 
   gdal::QuietErrors quiet;
   std::vector<std::string> csv_options;
+  gdal::CsvPositionColumns columns;  // a CSV's
   std::vector<const char*> open_options;
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
-    const gdal::CsvPositionColumns columns = gdal::csv_position_columns(path);
+    columns = gdal::csv_position_columns(path);
     refuse_two_places_for_positions(path, columns);
     csv_options = gdal::csv_open_options(columns, false);
     for (const std::string& o : csv_options) open_options.push_back(o.c_str());
@@ -362,6 +363,11 @@ SourceRead read_source(const std::string& path, const ObstacleReadOptions& optio
       const OGRGeometry* g = feature->GetGeometryRef();
       InputLocation gw = where;
       gw.field = "geometry";
+      if ((g == nullptr || g->IsEmpty()) && columns.geometry.empty() && columns.has_xy()) {
+        // GDAL leaves a CSV row's point unset for a blank, "nan" or "inf" coordinate.
+        throw input_error(where, "fields '" + columns.x + "', '" + columns.y + "' holding two finite numbers",
+                          "a blank or a coordinate that is not finite");
+      }
       if (g == nullptr || g->IsEmpty()) {
         throw input_error(gw, "a Point or Polygon geometry with finite coordinates", "an empty or missing geometry");
       }
