@@ -56,6 +56,20 @@ double around_length(const Ellipse& e, double d) {
   return std::numbers::pi * (a + b) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h))) + 2.0 * std::numbers::pi * d;
 }
 
+// Aligning's held point inside a true obstacle (the object's safety ellipse
+// keeps it off the object; nothing keeps it off the others): said with a
+// failure, as its cause.
+std::string held_point_note(const std::vector<EllipticCylinder>& obstacles, const Vec2& g) {
+  for (const EllipticCylinder& o : obstacles) {
+    const double d = signed_distance(o.footprint, g);
+    if (d < 0.0) {
+      return printf_text("; the held point (x %.1f, y %.1f m) lies %.2f m inside obstacle '%s'", g.x(), g.y(), -d,
+                         printable(o.id).c_str());
+    }
+  }
+  return {};
+}
+
 std::string where(double t, const Vec2& p) {
   char text[96];
   std::snprintf(text, sizeof text, "at t %.1f s, x %.1f, y %.1f m", t, p.x(), p.y());
@@ -164,21 +178,6 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     return u;
   };
 
-  // Aligning's held point inside a true obstacle (the object's safety
-  // ellipse keeps it off the object; nothing keeps it off the others): said
-  // with a failure, as its cause.
-  auto held_point_note = [&](const Vec2& g) -> std::string {
-    if (!aligning) return {};
-    for (const EllipticCylinder& o : sc.obstacles) {
-      const double d = signed_distance(o.footprint, g);
-      if (d < 0.0) {
-        return printf_text("; the held point (x %.1f, y %.1f m) lies %.2f m inside obstacle '%s'", g.x(), g.y(), -d,
-                           printable(o.id).c_str());
-      }
-    }
-    return {};
-  };
-
   IdentifyResult result;
   result.mode = id.mode;
   if (options.record_trajectory) result.trajectory.reserve(std::min<std::size_t>(max_steps + 1, std::size_t{1} << 20));
@@ -264,7 +263,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
       const EllipticCylinder& hit = sc.obstacles[clearance.nearest()];
       result.failure = printf_text("the vehicle is inside obstacle '%s' (%.3f m deep) %s", printable(hit.id).c_str(),
                                    -x.vehicle.clearance_m, where(t, state.position).c_str()) +
-                       held_point_note(u.goal);
+                       (aligning ? held_point_note(sc.obstacles, u.goal) : std::string());
       break;
     }
     if (aligning && holding && t - hold_start >= id.hold_time_s - 1e-9) {
@@ -278,7 +277,8 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     if (k >= max_steps) {
       result.end = IdentifyEnd::time_out;
       result.failure = std::string(aligning ? "not held for hold_time_s" : "laps not completed") +
-                       " by the time limit " + where(t, state.position) + held_point_note(u.goal);
+                       " by the time limit " + where(t, state.position) +
+                       (aligning ? held_point_note(sc.obstacles, u.goal) : std::string());
       break;
     }
     plant.advance();
