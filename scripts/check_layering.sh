@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The library's layering (docs/ARCHITECTURE.md, "Layers"): each module may
+# include only the modules below it in the document's drawing (its arrows,
+# followed to the end). A change that makes a module reach up (core including planning, the
+# reactive methods including the planners) fails, naming the file and line.
+# Run by ctest (`layering`, and `layering_catches` on a fixture that breaks it).
+#   scripts/check_layering.sh [LIB_DIR]   (default: lib; LIB_DIR/deepguide/<module>/...)
+set -euo pipefail
+lib="${1:-$(dirname "${BASH_SOURCE[0]}")/../lib}"
+declare -A uses=(
+  [core]=""
+  [geometry]="core"
+  [world]="core geometry"
+  [vehicle]="core geometry world"
+  [planning]="core geometry vehicle world"
+  [reactive]="core geometry"
+  [identification]="core geometry reactive"
+  [mission]="core geometry identification planning reactive vehicle world"
+  [simulation]="core geometry identification mission planning reactive vehicle world"
+  [render]="core geometry identification mission planning reactive simulation vehicle world"
+  [evaluation]="core geometry identification mission planning reactive render simulation vehicle world"
+)
+bad=0
+for dir in "$lib"/deepguide/*/; do
+  module="$(basename "$dir")"
+  if [ -z "${uses[$module]+known}" ]; then
+    echo "$dir: a module docs/ARCHITECTURE.md does not place (add it to its table and to this script)"
+    bad=1
+    continue
+  fi
+  while IFS=: read -r file line text; do
+    used="$(sed -E 's|.*#include "deepguide/([a-z_]+)/.*|\1|' <<<"$text")"
+    [ "$used" = "$module" ] && continue
+    if [[ " ${uses[$module]} " != *" $used "* ]]; then
+      echo "$file:$line: $module includes $used (allowed: ${uses[$module]:-nothing})"
+      bad=1
+    fi
+  done < <(grep -rnE '^#include "deepguide/[a-z_]+/' "$dir" || true)
+done
+exit "$bad"

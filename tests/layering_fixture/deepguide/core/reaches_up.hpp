@@ -1,0 +1,3 @@
+#pragma once
+// A fixture for the layering test: core reaching up into planning.
+#include "deepguide/planning/planner.hpp"
