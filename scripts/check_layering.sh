@@ -28,13 +28,14 @@ for dir in "$lib"/deepguide/*/; do
     bad=1
     continue
   fi
-  while IFS=: read -r file line text; do
-    used="$(sed -E 's|.*#include "deepguide/([a-z_]+)/.*|\1|' <<<"$text")"
+  # file:line:module for every include of another deepguide module.
+  while IFS=: read -r file line used; do
     [ "$used" = "$module" ] && continue
     if [[ " ${uses[$module]} " != *" $used "* ]]; then
       echo "$file:$line: $module includes $used (allowed: ${uses[$module]:-nothing})"
       bad=1
     fi
-  done < <(grep -rnE '^#include "deepguide/[a-z_]+/' "$dir" || true)
+  done < <(grep -rnE '^#include "deepguide/[a-z_]+/' "$dir" |
+    sed -E 's|^([^:]+):([0-9]+):#include "deepguide/([a-z_]+)/.*|\1:\2:\3|' || true)
 done
 exit "$bad"
