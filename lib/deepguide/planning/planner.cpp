@@ -9,9 +9,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
-#include "deepguide/planning/corner_fillets.hpp"
 #include "deepguide/planning/graph_registry.hpp"
-#include "deepguide/planning/route_refinement.hpp"
+#include "deepguide/planning/route_finishing.hpp"
 #include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
 #include "deepguide/planning/visibility_graph.hpp"
@@ -248,93 +247,6 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   return none;
 }
 
-// The message for a route whose corners cannot be rounded on the radius.
-std::string Planner::unrounded_message(const Vec2& at, const std::string& why) const {
-  return "the " + to_string(options_.graph) + " route cannot turn at " + general(options_.turn_radius_m) + " m at " +
-         point_text(at, 1) + ": " + why + " (try `graph` tangent)";
-}
-
-// A polygon graph's route with its corners rounded on the turning radius.
-// Close corners that wrap one zone are joined first. A corner that still
-// turns too tightly for its fillet (an S-bend through a gap the turning
-// polygons narrow) is cut when the straight line past it keeps the margin
-// from the exact zones, or merged with its neighbour across a short leg.
-// Not found when none of that helps; solve() then checks what was rounded.
-bool Planner::round_corners(PlanResult& result) const {
-  const double radius = options_.turn_radius_m;
-  const ObstacleField& field = impl_->field;
-  const auto keeps_margin = [&](const Vec2& a, const Vec2& b) {
-    return field.segment_clearance(a, b).distance >= field.margin();
-  };
-  const auto too_close = [&](const Vec2& at) {
-    result.found = false;
-    result.message = unrounded_message(at, "its corners there are too close to round");
-    return false;
-  };
-  std::vector<Vec2> points = result.route.points;
-  FilletedRoute rounded;
-  for (std::size_t cuts = 0;; ++cuts) {
-    points = join_tight_corners(points, radius);
-    rounded = fillet_corners(points, radius);
-    if (!rounded.too_tight) break;
-    const std::size_t k = *rounded.too_tight;
-    if (k == 0 || k + 1 >= points.size() || cuts >= result.route.points.size()) return too_close(points[k]);
-    if (keeps_margin(points[k - 1], points[k + 1])) {
-      points.erase(points.begin() + static_cast<std::ptrdiff_t>(k));
-      continue;
-    }
-    // An S-bend over a short leg: its two corners become one at the leg's middle.
-    bool merged = false;
-    for (const std::size_t j : {k, k - 1}) {
-      if (j == 0 || j + 2 >= points.size()) continue;
-      const Vec2 mid = 0.5 * (points[j] + points[j + 1]);
-      if (keeps_margin(points[j - 1], mid) && keeps_margin(mid, points[j + 2])) {
-        points[j] = mid;
-        points.erase(points.begin() + static_cast<std::ptrdiff_t>(j) + 1);
-        merged = true;
-        break;
-      }
-    }
-    if (!merged) return too_close(points[k]);
-  }
-  result.route.points = points;
-  result.legs = rounded.legs;
-  result.exact_length_m = 0.0;
-  for (const RouteLeg& leg : result.legs) result.exact_length_m += leg.length_m;
-  return true;
-}
-
-// A polygon graph's route made what is returned: a time or energy route in
-// a current that changes from place to place taken from the graph's
-// vertices to the continuous optimum near it (every leg keeps the margin
-// from the exact zones), then, within a turning radius, its corners rounded.
-// The graph's route stays when the refined one cannot be rounded. False when
-// no route can be rounded (round_corners says why).
-bool Planner::refine_and_round(PlanResult& result) const {
-  if (!result.found) return true;
-  const bool rounding = options_.turn_radius_m > 0.0;
-  if (options_.refine && options_.cost && refinement_applies(*options_.cost)) {
-    const auto started = std::chrono::steady_clock::now();
-    const ObstacleField& field = impl_->field;
-    const RefinedRoute refined = refine_route(*options_.cost, result.route.points,
-                                              [&](const Vec2& a, const Vec2& b) { return field.segment_free(a, b); });
-    result.stats.refine_sweeps = refined.sweeps;
-    result.stats.refine_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    if (refined.cost_after < refined.cost_before) {
-      PlanResult trial = result;
-      trial.route.points = refined.points;
-      trial.cost = refined.cost_after;
-      trial.stats.refine_gain = 1.0 - refined.cost_after / refined.cost_before;
-      if (!rounding || round_corners(trial)) {
-        result = std::move(trial);
-        return true;
-      }
-    }
-  }
-  return !rounding || round_corners(result);
-}
-
 PlanOutcome Planner::solve(const PlanningProblem& problem) {
   if (!problem.start.allFinite() || !problem.goal.allFinite()) {
     throw InputError("start and goal: expected finite coordinates");
@@ -392,7 +304,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   } else if (impl_->quadtree) {
     out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get(), options_.budget);
-    rounding_failed = !refine_and_round(out.result);
+    rounding_failed = !refine_and_round(out.result, impl_->field, options_);
   } else if (impl_->tangent) {
     out.result = impl_->tangent->solve(problem, options_.search, options_.budget);
   } else {
@@ -410,7 +322,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
       if (start_in_band) pts.insert(pts.begin(), problem.start);
       if (goal_in_band) pts.push_back(problem.goal);
     }
-    rounding_failed = !refine_and_round(out.result);
+    rounding_failed = !refine_and_round(out.result, impl_->field, options_);
   }
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start}, impl_->field);
   if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
@@ -421,7 +333,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     const RouteCheck& bad = out.check.safe ? *out.legs_check : out.check;
     out.result.found = false;
     out.result.message =
-        unrounded_message(bad.worst_point, "rounding its corners comes within the margin of another zone");
+        unrounded_message(options_, bad.worst_point, "rounding its corners comes within the margin of another zone");
     rounding_failed = true;
   }
   if (out.result.stats.stopped != SearchStop::none) {

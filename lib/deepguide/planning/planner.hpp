@@ -57,9 +57,6 @@ class Planner {
 
  private:
   std::string why_no_turning_route(const PlanningProblem& problem);
-  bool round_corners(PlanResult& result) const;
-  bool refine_and_round(PlanResult& result) const;
-  std::string unrounded_message(const Vec2& at, const std::string& why) const;
   struct Impl;
   PlannerOptions options_;
   double build_ms_ = 0.0;  ///< a registered graph's build (the built-in ones time their own)
