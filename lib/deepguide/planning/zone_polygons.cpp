@@ -17,22 +17,6 @@ namespace bgi = boost::geometry::index;
 
 namespace {
 
-// Geometry (+) disc(d) by Boost.Geometry's buffer, round joins at d / cos(pi / n).
-template <typename Geometry>
-BgMultiPolygon buffered(const Geometry& geometry, double d, double tolerance) {
-  // Smallest n with d (1/cos(pi/n) - 1) <= tol.
-  const int n = std::max(8, static_cast<int>(std::ceil(std::numbers::pi / std::acos(d / (d + tolerance)))));
-  const double distance = d / std::cos(std::numbers::pi / n);
-  bg::strategy::buffer::distance_symmetric<double> dist(distance);
-  bg::strategy::buffer::side_straight side;
-  bg::strategy::buffer::join_round join(static_cast<std::size_t>(n));
-  bg::strategy::buffer::end_round end(static_cast<std::size_t>(n));
-  bg::strategy::buffer::point_circle circle(static_cast<std::size_t>(n));
-  BgMultiPolygon out;
-  bg::buffer(geometry, out, dist, side, join, end, circle);
-  return out;
-}
-
 // Beyond this ratio of the margin to the polygon's size, GEOS grows it (below).
 constexpr double kLargestBoostRatio = 10.0;
 
@@ -40,6 +24,10 @@ constexpr double kLargestBoostRatio = 10.0;
 
 BgMultiPolygon polygon_zone(const BgPolygon& footprint, const ZoneOptions& options) {
   if (options.margin <= 0.0) return {footprint};
+  // Smallest n with d (1/cos(pi/n) - 1) <= tol; the joins' vertices at d / cos(pi/n).
+  const double d = options.margin;
+  const int n = std::max(8, static_cast<int>(std::ceil(std::numbers::pi / std::acos(d / (d + options.tolerance)))));
+  const double distance = d / std::cos(std::numbers::pi / n);
   // Boost.Geometry's buffer of a polygon far smaller than the distance is
   // wrong: a 65 m square grown by 50 km came out round one corner, short by
   // the square's diagonal (92 m inside the margin; the route check caught it
@@ -47,13 +35,17 @@ BgMultiPolygon polygon_zone(const BgPolygon& footprint, const ZoneOptions& optio
   // buffer (through OGR) is robust there; Boost's stays where it has been
   // checked on every chart and scenario, margins up to ten times the size.
   const BgBox box = bg::return_envelope<BgBox>(footprint);
-  if (options.margin <= kLargestBoostRatio * bg::distance(box.min_corner(), box.max_corner())) {
-    return buffered(footprint, options.margin, options.tolerance);
-  }
-  const double d = options.margin;
-  const int n = std::max(8, static_cast<int>(std::ceil(std::numbers::pi / std::acos(d / (d + options.tolerance)))));
   BgMultiPolygon out;
-  for (BgPolygon& part : geos_buffer(footprint, d / std::cos(std::numbers::pi / n), n)) out.push_back(std::move(part));
+  if (d > kLargestBoostRatio * bg::distance(box.min_corner(), box.max_corner())) {
+    for (BgPolygon& part : geos_buffer(footprint, distance, n)) out.push_back(std::move(part));
+    return out;
+  }
+  bg::strategy::buffer::distance_symmetric<double> dist(distance);
+  bg::strategy::buffer::side_straight side;
+  bg::strategy::buffer::join_round join(static_cast<std::size_t>(n));
+  bg::strategy::buffer::end_round end(static_cast<std::size_t>(n));
+  bg::strategy::buffer::point_circle circle(static_cast<std::size_t>(n));
+  bg::buffer(footprint, out, dist, side, join, end, circle);
   return out;
 }
 
