@@ -18,6 +18,7 @@
 #include "deepguide/evaluation/eval_summary.hpp"
 #include "deepguide/evaluation/evaluate.hpp"
 #include "deepguide/evaluation/suite.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -78,8 +79,9 @@ void register_evaluate(CLI::App& app) {
       "evaluate", "Run every scenario of a suite through planners and reactive methods; tables, summary and report");
   cmd->add_option("SUITE", o->suite, "Suite folder, its suite.yaml, or one scenario file (docs/EVALUATION.md)");
   cmd->add_option("--methods", o->methods,
-                  "Comma-separated methods: geometric, dipole, potential, or GRAPH[:SEARCH][:COST] "
-                  "(visibility, visibility-full, tangent, quadtree; astar, dijkstra; length, time, energy)");
+                  "Comma-separated methods: geometric, dipole, potential, or GRAPH[:SEARCH][:COST] (" +
+                      graph_names_text([](const GraphEntry& e) { return !e.can.in_depth; }) +
+                      "; astar, dijkstra; length, time, energy)");
   cmd->add_option("-o,--output", o->output, "Output folder (rows.csv, results.json, summary.md, report.html)");
   cmd->add_option("--threads", o->threads, "Worker threads (default: SLURM_CPUS_PER_TASK when set, else every core)")
       ->check(CLI::Range(1, 1024));

@@ -13,6 +13,7 @@
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_io.hpp"
+#include "deepguide/render/graph_layers.hpp"
 #include "deepguide/render/route_scene.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -92,8 +93,7 @@ void register_render_route(CLI::App& render) {
     if (graph) {
       planner.emplace(loaded.obstacles,
                       PlannerOptions{.margin = o->margin, .tolerance = o->tolerance, .graph = *graph});
-      scene.zone_polygons = &planner->zone_polygons();
-      scene.graph_edges = planner->graph_edges();
+      add_graph_layers(*planner, scene);
     }
     render_route(scene, o->output, o->width);
     std::printf("wrote            %s\n", o->output.c_str());

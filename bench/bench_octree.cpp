@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench_options.hpp"
-#include "deepguide/planning/octree_graph.hpp"
+#include "deepguide/planning/graphs/octree/octree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 
 using namespace deepguide;

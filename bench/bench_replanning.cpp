@@ -18,7 +18,7 @@
 
 #include "bench_options.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/planning/quadtree_graph.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/planning/replanning.hpp"
 
 using namespace deepguide;

@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "deepguide/planning/occlusion_horizon.hpp"
+#include "deepguide/planning/graphs/visibility/occlusion_horizon.hpp"
+#include "deepguide/planning/graphs/visibility/visibility_graph.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
-#include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 #include "test_support.hpp"
 

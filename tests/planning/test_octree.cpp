@@ -1,4 +1,4 @@
-// The octree graph (planning/octree_graph.hpp): conservative cells in 3-D,
+// The octree graph (planning/graphs/octree/octree_graph.hpp): conservative cells in 3-D,
 // routes in depth that pass the 3-D checker (band, sea floor, obstacle tops,
 // dive angle), over a low rock and around a tall one, A* = Dijkstra, and bad
 // input.
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "deepguide/core/error.hpp"
-#include "deepguide/planning/octree_graph.hpp"
+#include "deepguide/planning/graphs/octree/octree_graph.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "planning/obstacle_builders.hpp"

@@ -1,5 +1,5 @@
 // Quadtree / octree decomposition (planning/cell_tree.hpp) and the quadtree
-// graph (planning/quadtree_graph.hpp): conservative cells, neighbours against
+// graph (planning/graphs/quadtree/quadtree_graph.hpp): conservative cells, neighbours against
 // brute force in 2-D and 3-D, routes that pass the independent checker and
 // are never shorter than the visibility graph's, smoothing, bad input.
 #include <gtest/gtest.h>

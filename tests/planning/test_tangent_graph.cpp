@@ -6,10 +6,11 @@
 #include <limits>
 #include <random>
 
+#include "deepguide/planning/graphs/tangent/tangent_graph.hpp"
+#include "deepguide/planning/graphs/tangent/zone_pieces.hpp"
+#include "deepguide/planning/graphs/visibility/visibility_graph.hpp"
+#include "deepguide/planning/graphs/visibility/zone_visibility_graph.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/planning/tangent_graph.hpp"
-#include "deepguide/planning/visibility_graph.hpp"
-#include "deepguide/planning/zone_pieces.hpp"
 #include "test_support.hpp"
 
 using namespace deepguide;
@@ -229,7 +230,8 @@ TEST(TangentGraph, RandomEllipsesAreBracketedByPolygonGraphs) {
     }
     const Vec2 s(-230.0, pos(rng)), g(230.0, pos(rng));
     Planner poly(set, {margin, 0.05, GraphKind::visibility, SearchAlgorithm::astar});
-    if (poly.zone_polygons().size() != set.size()) continue;  // zones overlap: no simple bracket
+    if (poly.graph().as<ZoneVisibilityGraph>()->zones().size() != set.size())
+      continue;  // zones overlap: no simple bracket
     Planner tangent(set, {margin, 0.05, GraphKind::tangent, SearchAlgorithm::astar});
     const PlanOutcome t = tangent.solve({s, g});
     const PlanOutcome p = poly.solve({s, g});

@@ -8,9 +8,10 @@
 #include <random>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/graphs/visibility/visibility_graph.hpp"
+#include "deepguide/planning/graphs/visibility/zone_visibility_graph.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/planning/visibility_graph.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"
@@ -140,7 +141,7 @@ TEST(VisibilityPlanner, RandomScenariosAgreeWithEveryReference) {
       ASSERT_NEAR(got, length, 1e-9 * length) << "scenario " << scenario << " " << to_string(options.graph);
     }
 
-    if (bg::num_geometries(reduced.zone_polygons()) != set.size()) {
+    if (bg::num_geometries(reduced.graph().as<ZoneVisibilityGraph>()->zones()) != set.size()) {
       ++merged_cases;
       continue;
     }

@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "deepguide/core/api.hpp"
-#include "deepguide/planning/octree_graph.hpp"
+#include "deepguide/planning/graphs/octree/octree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"

@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/graphs/builtin_graphs.hpp"
 
 namespace deepguide {
 namespace {
@@ -11,23 +12,12 @@ namespace {
 struct Registry {
   std::mutex mutex;
   // A deque: registering another graph leaves references to the entries valid.
-  std::deque<GraphEntry> entries{
-      {GraphKind::visibility.name,
-       "reduced polygon graph",
-       {.weighs_cost = true, .open_water_grid = true, .turn_radius = true},
-       {}},
-      {GraphKind::visibility_full.name,
-       "the seed's",
-       {.weighs_cost = true, .open_water_grid = true, .turn_radius = true},
-       {}},
-      {GraphKind::tangent.name, "exact, curved", {.turn_radius = true}, {}},
-      // The quadtree keeps a turning radius only with --smooth (planner.cpp says why).
-      {GraphKind::quadtree.name,
-       "free cells' centres, the seed's Fig. 7",
-       {.weighs_cost = true, .turn_radius = true},
-       {}},
-      {GraphKind::octree.name, "a route in depth over the sea floor", {.in_depth = true}, {}},
-  };
+  std::deque<GraphEntry> entries = seeded();
+
+  static std::deque<GraphEntry> seeded() {
+    const std::vector<GraphEntry> builtin = builtin_graph_entries();
+    return {builtin.begin(), builtin.end()};
+  }
 };
 
 Registry& registry() {

@@ -13,11 +13,12 @@
 // docs/ARCHITECTURE.md works one through; tests/planning/test_toy_graph.cpp
 // is one.
 //
-// The built-in graphs (visibility, visibility-full, tangent, quadtree) are
-// entries without a build function: the Planner builds them itself, for what
-// they add beyond the interface (Dubins ends, corner rounding, the quadtree's
-// cells for D* Lite). The octree plans in depth (depth_planning.hpp): its
-// entry names it, and callers send it there.
+// Every graph comes in by this door, the built-in ones too (each in its
+// folder under planning/graphs/, listed in graphs/builtin_graphs.cpp): an
+// entry with its build function and what it can do, stated once, in the
+// graph's folder. The octree plans in depth (depth_planning.hpp), not among
+// obstacles in the plane: its entry names it and has no build function, and
+// callers send it there.
 
 #include <functional>
 #include <memory>
@@ -31,25 +32,11 @@
 #include "deepguide/planning/planner_options.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
+#include "deepguide/planning/route_graph.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
 namespace DEEPGUIDE_API deepguide {
-
-/// A graph built for one environment, answering any number of queries.
-class RouteGraph {
- public:
-  virtual ~RouteGraph() = default;
-  /// A route from start to goal, both outside every safety zone (the Planner
-  /// has checked), weighed by `cost` when it is not null (else by length);
-  /// found == false with a one-line message when the graph has none. Its
-  /// searches keep to `budget` (shortest_path takes it; stats.stopped says
-  /// when one ran out).
-  virtual PlanResult solve(const PlanningProblem& problem, SearchAlgorithm search, const CostModel* cost,
-                           const SearchBudget& budget) = 0;
-  /// Its edges, for drawings (`plan --render-graph`).
-  virtual std::vector<std::pair<Vec2, Vec2>> edges() const = 0;
-};
 
 /// What a graph is built from.
 struct GraphBuild {
@@ -58,20 +45,36 @@ struct GraphBuild {
   const PlannerOptions& options;
   /// The one query the graph may restrict itself to (query_focus.hpp); inactive: any query.
   const QueryFocus& focus;
+  /// The margin the graph plans with: options.margin, but never below a
+  /// micrometre or a ten-billionth of the largest coordinate (planner.cpp says why).
+  double margin = 0.0;
 };
 
 struct GraphCapabilities {
   bool weighs_cost = false;      ///< plans by time and energy too (else by length only)
   bool open_water_grid = false;  ///< takes PlannerOptions::grid
-  bool turn_radius = false;      ///< keeps PlannerOptions::turn_radius_m
-  bool in_depth = false;         ///< plans in depth (the octree), not by the Planner
+  bool turn_radius = false;      ///< keeps PlannerOptions::turn_radius_m (with `smooth` when it steps)
+  /// Its routes step from cell to cell: it takes PlannerOptions::quadtree.smooth
+  /// (string pulling), and keeps a turning radius only with it.
+  bool steps = false;
+  /// Its routes are finished by the Planner: refined off the vertices in a
+  /// changing current, corners rounded within a turning radius
+  /// (route_finishing.hpp). Otherwise the graph keeps the radius itself.
+  bool finished_by_planner = false;
+  bool dubins_ends = false;   ///< plans a start or goal heading (PlanningProblem::start_heading)
+  bool dstar_repair = false;  ///< D* Lite repairs its route as the sonar finds obstacles (replanning.hpp)
+  /// It covers a work area, not the ellipse round start and goal that a
+  /// focus bounds: plan_single_query builds it once, over every obstacle,
+  /// and the focus it is given only names the query (its area is sized for it).
+  bool covers_area = false;
+  bool in_depth = false;  ///< plans in depth (the octree), not by the Planner
 };
 
 struct GraphEntry {
   std::string name;  ///< what --graph and evaluate's methods call it
   std::string help;  ///< one phrase, e.g. "exact, curved"
   GraphCapabilities can;
-  /// Builds the graph; null for the built-in graphs, which the Planner builds itself.
+  /// Builds the graph; null only for a graph that plans in depth.
   std::function<std::unique_ptr<RouteGraph>(const GraphBuild&)> build;
 };
 

@@ -11,10 +11,7 @@
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_finishing.hpp"
-#include "deepguide/planning/tangent_graph.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
-#include "deepguide/planning/visibility_graph.hpp"
-#include "deepguide/planning/zone_polygons.hpp"
 
 namespace deepguide {
 
@@ -34,37 +31,22 @@ double min_graph_margin(const ObstacleSet& obstacles) {
   return std::max(1e-6, 1e-10 * largest);
 }
 
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
 }  // namespace
 
 struct Planner::Impl {
   explicit Impl(ObstacleField f) : field(std::move(f)) {}
-  ObstacleField field;
-  BgMultiPolygon zones;  // visibility graphs only
-  std::unique_ptr<VisibilityGraph> visibility;
-  std::unique_ptr<TangentGraph> tangent;
-  std::unique_ptr<QuadtreeGraph> quadtree;
-  std::unique_ptr<RouteGraph> registered;        // a graph from the registry's build function
-  std::unique_ptr<ObstacleField> turning_field;  // the quadtree's, within a turning radius
-  // With a turning radius: the graph without it, built when no route is
-  // found, to say where the radius closes the way.
-  std::unique_ptr<TangentGraph> plain;
+  ObstacleField field;  // before the graph, which may hold a reference to it
+  GraphCapabilities can;
+  std::unique_ptr<RouteGraph> graph;
+  double build_ms = 0.0;
+  // With a turning radius: the tangent graph without it, built when no route
+  // is found, to say where the radius closes the way.
+  std::unique_ptr<RouteGraph> plain;
 };
-
-namespace {
-
-// The quadtree's area when none is given: the zones' box, widened by a tenth
-// (at least ten cells) on every side.
-QuadtreeOptions quadtree_area(const ObstacleSet& obstacles, QuadtreeOptions q, double margin) {
-  if ((q.area_max - q.area_min).minCoeff() > 0.0) return q;
-  if (obstacles.empty()) throw InputError("quadtree: expected obstacles or a work area");
-  const auto [lo, hi] = footprint_box(obstacles);
-  const double pad = margin + std::max(0.1 * (hi - lo).maxCoeff(), 10.0 * q.min_cell_m);
-  q.area_min = lo - Vec2::Constant(pad);
-  q.area_max = hi + Vec2::Constant(pad);
-  return q;
-}
-
-}  // namespace
 
 Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const QueryFocus& focus) : options_(options) {
   // 100 km is far beyond any safety margin, and keeps the zones' polygons
@@ -76,7 +58,7 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
     throw InputError("`tolerance`: expected a polygon tolerance > 0 m, got " + std::to_string(options.tolerance));
   }
   const GraphEntry& entry = graph_entry(options.graph);
-  if (entry.can.in_depth) {
+  if (entry.can.in_depth || !entry.build) {
     throw InputError("`graph` " + entry.name +
                      ": plans in depth (depth_planning.hpp), not among obstacles in the plane");
   }
@@ -95,10 +77,15 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   if (!std::isfinite(options.turn_radius_m) || options.turn_radius_m < 0.0) {
     throw InputError("turn radius: expected a radius > 0 m (or 0 for none), got " + general(options.turn_radius_m));
   }
-  if (options.turn_radius_m > 0.0 && options.graph == GraphKind::quadtree && !options.quadtree.smooth) {
-    throw InputError(
-        "turn radius: expected `graph` tangent, visibility or visibility-full, or quadtree with "
-        "`smooth` (the quadtree's cell-to-cell steps cannot be rounded)");
+  if (options.turn_radius_m > 0.0 && entry.can.steps && !options.quadtree.smooth) {
+    // The graphs that keep the radius themselves first, then those the Planner rounds.
+    const std::string itself = graph_names_text(
+        [](const GraphEntry& e) { return e.can.turn_radius && !e.can.steps && !e.can.finished_by_planner; });
+    const std::string rounded = graph_names_text(
+        [](const GraphEntry& e) { return e.can.turn_radius && !e.can.steps && e.can.finished_by_planner; });
+    throw InputError("turn radius: expected `graph` " + itself + (itself.empty() || rounded.empty() ? "" : ", ") +
+                     rounded + ", or " + graph_names_text([](const GraphEntry& e) { return e.can.steps; }) +
+                     " with `smooth` (the " + entry.name + " graph's cell-to-cell steps cannot be rounded)");
   }
   if (options.turn_radius_m > 0.0 && !entry.can.turn_radius) {
     throw InputError("turn radius: expected `graph` " +
@@ -106,45 +93,14 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
                      " graph keeps no turning radius)");
   }
   impl_ = std::make_unique<Impl>(ObstacleField(obstacles, options.margin));
-  const double graph_margin = std::max(options.margin, min_graph_margin(obstacles));
-  if (entry.build) {
-    const auto started = std::chrono::steady_clock::now();
-    impl_->registered = entry.build(GraphBuild{obstacles, impl_->field, options, focus});
-    if (!impl_->registered) throw InputError("graph '" + entry.name + "': its build function returned no graph");
-    build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  } else if (options.graph == GraphKind::quadtree) {
-    // Within a turning radius the cells keep out of the turning circles too
-    // (discs whose zones are the circles widened by the tolerance, as the
-    // visibility graphs' 32-gons), and the tolerance beyond every zone: the
-    // taut route then has room to lose the small zig-zags its corner cutting
-    // leaves where it wraps a zone, which no fillet could round.
-    const ObstacleField* cells_field = &impl_->field;
-    if (options.turn_radius_m > 0.0) {
-      ObstacleSet turning = obstacles;
-      for (const TurningCircle& c : turning_circles(obstacles, options.margin, options.turn_radius_m)) {
-        const double r = options.turn_radius_m - options.margin;
-        turning.ellipses.push_back({"turning circle of " + impl_->field.obstacle_name(c.obstacle),
-                                    Ellipse{c.centre, r, r, 0.0}, std::nullopt, std::nullopt});
-      }
-      impl_->turning_field = std::make_unique<ObstacleField>(turning, options.margin + options.tolerance);
-      cells_field = impl_->turning_field.get();
-    }
-    impl_->quadtree =
-        std::make_unique<QuadtreeGraph>(*cells_field, quadtree_area(obstacles, options.quadtree, options.margin));
-  } else if (options.graph == GraphKind::tangent) {
-    impl_->tangent =
-        std::make_unique<TangentGraph>(obstacles, graph_margin, options.tolerance, focus, options.turn_radius_m);
-  } else {
-    impl_->zones = merged_zone_polygons(obstacles, {graph_margin, options.tolerance});
-    if (options.turn_radius_m > 0.0) {
-      impl_->zones =
-          rounded_zone_polygons(impl_->zones, obstacles, graph_margin, options.turn_radius_m, options.tolerance);
-    }
-    impl_->visibility = std::make_unique<VisibilityGraph>(
-        impl_->zones,
-        options.graph == GraphKind::visibility_full ? VisibilityVariant::full : VisibilityVariant::reduced, focus,
-        options.grid);
-  }
+  impl_->can = entry.can;
+  const auto started = std::chrono::steady_clock::now();
+  // The field's own copy of the obstacles: a graph may keep a reference to it.
+  const ObstacleSet& kept = impl_->field.obstacles();
+  impl_->graph =
+      entry.build(GraphBuild{kept, impl_->field, options, focus, std::max(options.margin, min_graph_margin(kept))});
+  if (!impl_->graph) throw InputError("graph '" + entry.name + "': its build function returned no graph");
+  impl_->build_ms = elapsed_ms(started);
 }
 
 Planner::~Planner() = default;
@@ -152,15 +108,8 @@ Planner::Planner(Planner&&) noexcept = default;
 Planner& Planner::operator=(Planner&&) noexcept = default;
 
 const ObstacleField& Planner::field() const { return impl_->field; }
-const BgMultiPolygon& Planner::zone_polygons() const { return impl_->zones; }
-std::vector<std::pair<Vec2, Vec2>> Planner::graph_edges() const {
-  if (impl_->registered) return impl_->registered->edges();
-  if (impl_->quadtree) return impl_->quadtree->edges();
-  return impl_->tangent ? impl_->tangent->tangent_segments() : impl_->visibility->edges();
-}
-
-const QuadtreeGraph* Planner::quadtree() const { return impl_->quadtree.get(); }
-QuadtreeGraph* Planner::quadtree() { return impl_->quadtree.get(); }
+RouteGraph& Planner::graph() { return *impl_->graph; }
+const RouteGraph& Planner::graph() const { return *impl_->graph; }
 
 namespace {
 
@@ -225,14 +174,20 @@ std::string Planner::why_no_turning_route(const PlanningProblem& problem) {
   const std::string none =
       "no route keeps the " + general(options_.margin) + " m margin turning no tighter than " + radius;
   if (!impl_->plain) {
-    impl_->plain = std::make_unique<TangentGraph>(impl_->field.obstacles(),
-                                                  std::max(options_.margin, min_graph_margin(impl_->field.obstacles())),
-                                                  options_.tolerance);
+    PlannerOptions turning_freely = options_;
+    turning_freely.graph = GraphKind::tangent;
+    turning_freely.turn_radius_m = 0.0;
+    turning_freely.cost = nullptr;
+    turning_freely.grid = {};
+    const ObstacleSet& obstacles = impl_->field.obstacles();
+    impl_->plain = graph_entry(GraphKind::tangent)
+                       .build(GraphBuild{obstacles, impl_->field, turning_freely, QueryFocus{},
+                                         std::max(options_.margin, min_graph_margin(obstacles))});
   }
   PlanningProblem free_ends = problem;
   free_ends.start_heading.reset();
   free_ends.goal_heading.reset();
-  const PlanResult plain = impl_->plain->solve(free_ends, options_.search);
+  const PlanResult plain = impl_->plain->solve(free_ends, options_.search, nullptr, SearchBudget{});
   if (!plain.found) return plain.message;
   for (const RouteLeg& leg : plain.legs) {
     if (min_turn_radius(leg) < options_.turn_radius_m) {
@@ -258,9 +213,10 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
     // Dubins ends are circles of the tangent graph (tangent_graph.hpp); the
     // polygon graphs would need them as polygons and fillets of their own.
     const char* which = problem.start_heading ? "a start heading" : "a goal heading";
-    if (!impl_->tangent) {
-      throw InputError(std::string(which) + ": expected the tangent graph (the graph that plans Dubins ends), got " +
-                       to_string(options_.graph));
+    if (!impl_->can.dubins_ends) {
+      throw InputError(std::string(which) + ": expected the " +
+                       graph_names_text([](const GraphEntry& e) { return e.can.dubins_ends; }) +
+                       " graph (the graph that plans Dubins ends), got " + to_string(options_.graph));
     }
     if (!(options_.turn_radius_m > 0.0)) throw InputError(std::string(which) + ": expected a turning radius > 0");
     if (problem.escape && problem.start_heading && !impl_->field.is_free(problem.start)) {
@@ -295,40 +251,16 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   require_free(impl_->field, problem.goal, "the goal");
 
   PlanOutcome out;
-  bool rounding_failed = false;
-  if (impl_->registered) {
-    const auto started = std::chrono::steady_clock::now();
-    out.result = impl_->registered->solve(problem, options_.search, options_.cost.get(), options_.budget);
-    out.result.stats.build_ms = build_ms_;
-    out.result.stats.query_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  } else if (impl_->quadtree) {
-    out.result = impl_->quadtree->solve(problem, options_.search, options_.cost.get(), options_.budget);
-    rounding_failed = !refine_and_round(out.result, impl_->field, options_);
-  } else if (impl_->tangent) {
-    out.result = impl_->tangent->solve(problem, options_.search, options_.budget);
-  } else {
-    // A point outside the true zone can still lie in the thin band between a
-    // zone and its enclosing polygon; step to the polygon's boundary first.
-    VisibilityGraph& graph = *impl_->visibility;
-    PlanningProblem banded = problem;
-    const bool start_in_band = graph.strictly_inside(problem.start);
-    const bool goal_in_band = graph.strictly_inside(problem.goal);
-    if (start_in_band) banded.start = graph.closest_boundary_point(problem.start);
-    if (goal_in_band) banded.goal = graph.closest_boundary_point(problem.goal);
-    out.result = graph.solve(banded, options_.search, options_.cost.get(), options_.budget);
-    if (out.result.found) {
-      auto& pts = out.result.route.points;
-      if (start_in_band) pts.insert(pts.begin(), problem.start);
-      if (goal_in_band) pts.push_back(problem.goal);
-    }
-    rounding_failed = !refine_and_round(out.result, impl_->field, options_);
-  }
+  const auto started = std::chrono::steady_clock::now();
+  out.result = impl_->graph->solve(problem, options_.search, options_.cost.get(), options_.budget);
+  out.result.stats.build_ms = impl_->build_ms;
+  out.result.stats.query_ms = elapsed_ms(started);
+  bool rounding_failed = impl_->can.finished_by_planner && !refine_and_round(out.result, impl_->field, options_);
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start}, impl_->field);
   if (out.result.found && !out.result.legs.empty()) out.legs_check = check_route_legs(out.result.legs, impl_->field);
   // A rounded polygon route whose joined corners or fillets come near another
   // zone is refused, saying where, rather than returned to fail the check.
-  const bool rounded = out.result.found && options_.turn_radius_m > 0.0 && !impl_->tangent && !impl_->registered;
+  const bool rounded = out.result.found && options_.turn_radius_m > 0.0 && impl_->can.finished_by_planner;
   if (rounded && (!out.check.safe || !out.legs_check->safe)) {
     const RouteCheck& bad = out.check.safe ? *out.legs_check : out.check;
     out.result.found = false;

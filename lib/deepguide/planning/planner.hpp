@@ -2,19 +2,23 @@
 // The planning facade (in the spirit of OMPL's SimpleSetup): one environment,
 // built once, many start/goal queries. It owns the obstacles, the exact
 // obstacle field used to judge start and goal, and the graph of the chosen
-// kind; every query returns a PlanResult and every route it returns has
-// passed the independent route checker.
+// kind, built by its registry entry (graph_registry.hpp). What it does is
+// what every graph shares: it refuses the options the graph cannot serve
+// (the entry's capabilities), leaves a start inside a zone (escape), finishes
+// the routes of the graphs that ask for it (route_finishing.hpp), times
+// build and queries, and runs the independent route checker on every route.
 
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/planning/planner_options.hpp"
-#include "deepguide/planning/quadtree_graph.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/planning/route_check.hpp"
+#include "deepguide/planning/route_graph.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
@@ -48,18 +52,16 @@ class Planner {
 
   const ObstacleField& field() const;
   const PlannerOptions& options() const { return options_; }
-  /// Graph geometry for drawings: zone polygons (empty for the tangent graph) and edges.
-  const BgMultiPolygon& zone_polygons() const;
-  std::vector<std::pair<Vec2, Vec2>> graph_edges() const;
-  /// The quadtree (its cells, for drawings), or null for the other graphs.
-  const QuadtreeGraph* quadtree() const;
-  QuadtreeGraph* quadtree();
+  /// The graph; its extras by type: `graph().as<QuadtreeGraph>()`.
+  RouteGraph& graph();
+  const RouteGraph& graph() const;
+  /// The graph's edges, for drawings.
+  std::vector<std::pair<Vec2, Vec2>> graph_edges() const { return graph().edges(); }
 
  private:
   std::string why_no_turning_route(const PlanningProblem& problem);
   struct Impl;
   PlannerOptions options_;
-  double build_ms_ = 0.0;  ///< a registered graph's build (the built-in ones time their own)
   std::unique_ptr<Impl> impl_;
 };
 

@@ -10,7 +10,7 @@
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
-#include "deepguide/planning/quadtree_graph.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_options.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
 
 namespace DEEPGUIDE_API deepguide {

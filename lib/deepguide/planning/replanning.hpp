@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
-#include "deepguide/planning/quadtree_graph.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 

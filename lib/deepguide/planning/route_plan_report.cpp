@@ -8,6 +8,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
+#include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
@@ -71,9 +73,10 @@ void check_request(const RoutePlanRequest& r) {
   }
   if (p.start_heading || p.goal_heading) {
     const std::string which = p.start_heading ? "`start_heading`" : "`goal_heading`";
-    if (r.graph != GraphKind::tangent) {
-      throw InputError(which + ": expected `graph` tangent (the graph that plans Dubins ends), got " +
-                       to_string(r.graph));
+    if (!graph_entry(r.graph).can.dubins_ends) {
+      throw InputError(which + ": expected `graph` " +
+                       graph_names_text([](const GraphEntry& e) { return e.can.dubins_ends; }) +
+                       " (the graph that plans Dubins ends), got " + to_string(r.graph));
     }
     if (!r.turn_radius_m && r.vehicle.empty()) {
       throw InputError(which + ": expected `turn_radius_m` or `vehicle` (the radius the route turns on)");
@@ -83,13 +86,15 @@ void check_request(const RoutePlanRequest& r) {
     throw InputError("`turn_radius_m`: expected a radius > 0 m, got " + general(*r.turn_radius_m));
   }
   if (!r.replan_events.empty() &&
-      (r.graph != GraphKind::quadtree || r.cost != CostKind::length || r.smooth || r.problem.escape)) {
-    throw InputError(
-        "`replan_events`: expected `graph` quadtree with `cost` length, and neither `smooth` nor "
-        "`escape` (D* Lite repairs the cell route by length from a start outside every zone)");
+      (!graph_entry(r.graph).can.dstar_repair || r.cost != CostKind::length || r.smooth || r.problem.escape)) {
+    throw InputError("`replan_events`: expected `graph` " +
+                     graph_names_text([](const GraphEntry& e) { return e.can.dstar_repair; }) +
+                     " with `cost` length, and neither `smooth` nor `escape` (D* Lite repairs the cell route by "
+                     "length from a start outside every zone)");
   }
-  if (r.smooth && r.graph != GraphKind::quadtree) {
-    throw InputError("`smooth`: expected `graph` quadtree (the other graphs' routes are taut already)");
+  if (r.smooth && !graph_entry(r.graph).can.steps) {
+    throw InputError("`smooth`: expected `graph` " + graph_names_text([](const GraphEntry& e) { return e.can.steps; }) +
+                     " (the other graphs' routes are taut already)");
   }
 }
 
@@ -156,7 +161,10 @@ std::string time_axis_reason(const RoutePlanReport& report, const std::string& w
 void replay(RoutePlanReport& report) {
   const RoutePlanRequest& r = report.request;
   report.detections = load_detections(r.replan_events, report.frame, r.src_crs);
-  report.replay = replay_detections(*report.plan.planner->quadtree(), r.problem, report.detections, r.margin_m);
+  QuadtreeGraph* cells = report.plan.planner->graph().as<QuadtreeGraph>();
+  if (cells == nullptr)
+    throw std::logic_error("replay: the plan's graph is no quadtree (check_request lets none else)");
+  report.replay = replay_detections(*cells, r.problem, report.detections, r.margin_m);
   for (std::size_t k = 0; k < report.replay->repairs.size(); ++k) {
     // A report that reaches the vehicle at the goal (reported past the route's
     // end) repairs nothing: no file (it once failed writing a one-point route).
@@ -215,7 +223,8 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   if (model.kind != CostKind::length) options.cost = report.model;
   if (r.turn_radius_m) {
     options.turn_radius_m = *r.turn_radius_m;
-  } else if (!r.vehicle.empty() && (r.graph != GraphKind::quadtree || r.smooth)) {
+  } else if (!r.vehicle.empty() && (!graph_entry(r.graph).can.steps || r.smooth)) {
+    // A graph whose routes step cell to cell keeps a radius only when smoothed (planner.cpp).
     options.turn_radius_m = route_turn_radius(report.vehicle, model.speed_mps, model.max_current_mps);
   }
   if (r.waypoint_grid_m) options.grid = waypoint_grid_for(r.problem.start, r.problem.goal, *r.waypoint_grid_m);

@@ -9,6 +9,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/informed_bound.hpp"
 
 namespace deepguide {
@@ -86,28 +87,11 @@ SingleQueryPlan plan_single_query(const ObstacleSet& obstacles, const PlanningPr
 
   SingleQueryPlan plan;
   plan.obstacles_total = obstacles.size();
-  if (options.graph == GraphKind::quadtree) {
-    // The quadtree covers a box, not the ellipse bound: one round over the
-    // start-goal box widened by half their distance (at least ten cells).
-    PlannerOptions boxed = options;
-    QuadtreeOptions& q = boxed.quadtree;
-    // Cells wider than half the trip cannot tell the water between start and
-    // goal apart: the route runs through centres far off (a 1.8 km trip at
-    // --min-cell 1e5 became 314 km, every leg safe, the route absurd).
-    const double widest = 0.5 * (g - s).norm();
-    if (q.min_cell_m > widest && widest > 0.0) {
-      throw InputError("`min_cell_m`: expected at most half the distance from start to goal (" + fixed(widest, 1) +
-                       " m), got " + general(q.min_cell_m) + " m: larger cells cannot resolve the water between them");
-    }
-    if (!((q.area_max - q.area_min).minCoeff() > 0.0)) {
-      const double pad = std::max(0.5 * (g - s).norm(), 10.0 * q.min_cell_m);
-      q.area_min = s.cwiseMin(g) - Vec2::Constant(pad);
-      q.area_max = s.cwiseMax(g) + Vec2::Constant(pad);
-    }
+  if (graph_entry(options.graph).can.covers_area) {
     plan.rounds = 1;
     plan.obstacles_used = obstacles.size();
     plan.bound_m = std::numeric_limits<double>::infinity();
-    plan.planner = std::make_unique<Planner>(obstacles, boxed);
+    plan.planner = std::make_unique<Planner>(obstacles, options, QueryFocus{s, g, kFirstStretch * (g - s).norm()});
     plan.outcome = plan.planner->solve(problem);
     plan.build_ms = plan.outcome.result.stats.build_ms;
     plan.query_ms = plan.outcome.result.stats.query_ms;

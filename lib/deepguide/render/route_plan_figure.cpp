@@ -1,6 +1,7 @@
 #include "deepguide/render/route_plan_figure.hpp"
 
 #include "deepguide/core/format.hpp"
+#include "deepguide/render/graph_layers.hpp"
 #include "deepguide/render/route_on_chart.hpp"
 #include "deepguide/render/route_scene.hpp"
 
@@ -19,19 +20,6 @@ void add_replay(const RoutePlanReport& report, RouteScene& scene, ObstacleSet& d
     if (r.found) scene.repaired_routes.push_back(r.route);
   }
   scene.track = report.replay->track;
-}
-
-void add_graph(const Planner& planner, RouteScene& scene) {
-  if (const QuadtreeGraph* quadtree = planner.quadtree()) {
-    const CellTree<2>& tree = quadtree->tree();
-    for (const auto& leaf : tree.leaves()) {
-      auto& cells = leaf.state == CellState::free ? scene.free_cells : scene.occupied_cells;
-      const auto box = tree.box(leaf);
-      cells.emplace_back(box.min, box.max);
-    }
-  }
-  if (!planner.zone_polygons().empty()) scene.zone_polygons = &planner.zone_polygons();
-  scene.graph_edges = planner.graph_edges();
 }
 
 }  // namespace
@@ -75,7 +63,7 @@ void render_route_plan(const RoutePlanReport& report, const std::string& path, b
   }
   ObstacleSet detected;
   if (report.replay) add_replay(report, scene, detected);
-  if (draw_graph) add_graph(*report.plan.planner, scene);
+  if (draw_graph) add_graph_layers(*report.plan.planner, scene);
   render_route(scene, path);
 }
 

@@ -11,8 +11,10 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
+#include "deepguide/planning/graphs/visibility/zone_visibility_graph.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/planning/quadtree_graph.hpp"
 #include "deepguide/render/field_figure.hpp"
 #include "deepguide/render/mission_figure.hpp"
 #include "deepguide/render/route_scene.hpp"
@@ -97,8 +99,8 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
   PlannerOptions options;
   options.margin = sc.reactive.margin_m;
   options.graph = kind;
-  if (kind == GraphKind::quadtree) {
-    // The box over start, target and every zone, a tenth wider: the route
+  if (graph_entry(kind).can.steps) {
+    // A cell graph covers a work area: the box over start, target and every zone, a tenth wider: the route
     // may pass outside the obstacles' box.
     const auto [lo, hi] = footprint_box(obstacles);
     WorldBox box;
@@ -126,9 +128,12 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
   scene.start = sc.start;
   scene.goal = sc.target;
   scene.graph_edges = planner.graph_edges();
-  if (!planner.zone_polygons().empty()) scene.zone_polygons = &planner.zone_polygons();
+  if (const auto* visibility = planner.graph().as<ZoneVisibilityGraph>()) {
+    if (!visibility->zones().empty()) scene.zone_polygons = &visibility->zones();
+  }
   std::size_t free_cells = 0, cells = 0;
-  if (const QuadtreeGraph* q = planner.quadtree()) {
+  const QuadtreeGraph* q = planner.graph().as<QuadtreeGraph>();
+  if (q != nullptr) {
     for (const auto& leaf : q->tree().leaves()) {
       auto& list = leaf.state == CellState::free ? scene.free_cells : scene.occupied_cells;
       // The root overhangs the work area; what lies beyond it is no cell of the graph.
@@ -144,8 +149,8 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
       std::to_string(r.stats.graph_vertices) + " vertices, " + std::to_string(r.stats.graph_edges) + " edges";
   const std::string route =
       "route " + fixed(r.route.length(), 1) + " m, " + std::to_string(r.route.points.size()) + " waypoints";
-  scene.title = title(number, (kind == GraphKind::quadtree ? "quadtree graph, " : "visibility graph, ") + sizes + "; " +
-                                  route + " (margin " + general(options.margin) + " m)");
+  scene.title = title(number, (q != nullptr ? "quadtree graph, " : "visibility graph, ") + sizes + "; " + route +
+                                  " (margin " + general(options.margin) + " m)");
   render_route(scene, job.path, job.width_px);
 
   WrittenSeedFigure w;
@@ -155,7 +160,7 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
              {"waypoints", static_cast<double>(r.route.points.size())},
              {"min_clearance_m", outcome.check.min_clearance_m}};
   w.summary = sizes + ", " + route + ", least clearance " + metres(outcome.check.min_clearance_m, 2);
-  if (kind == GraphKind::quadtree) {
+  if (q != nullptr) {
     w.facts["cells"] = static_cast<double>(cells);
     w.facts["free_cells"] = static_cast<double>(free_cells);
     w.summary = std::to_string(cells) + " cells (" + std::to_string(free_cells) + " free), " + w.summary;

@@ -1,4 +1,4 @@
-#include "deepguide/planning/visibility_graph.hpp"
+#include "deepguide/planning/graphs/visibility/visibility_graph.hpp"
 
 #include <boost/geometry.hpp>
 #include <chrono>
@@ -8,8 +8,8 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/parallel_blocks.hpp"
+#include "deepguide/planning/graphs/visibility/occlusion_horizon.hpp"
 #include "deepguide/planning/informed_bound.hpp"
-#include "deepguide/planning/occlusion_horizon.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;

@@ -1,4 +1,4 @@
-#include "deepguide/planning/quadtree_graph.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
@@ -26,6 +26,11 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 }
 
 }  // namespace
+
+QuadtreeGraph::QuadtreeGraph(std::unique_ptr<const ObstacleField> field, const QuadtreeOptions& options)
+    : QuadtreeGraph(*field, options) {
+  own_field_ = std::move(field);
+}
 
 QuadtreeGraph::QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& options)
     : field_(&field), options_(options) {

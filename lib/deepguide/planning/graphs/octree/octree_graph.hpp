@@ -37,6 +37,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/cell_tree.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/world/water_volume.hpp"
@@ -95,5 +96,9 @@ class OctreeGraph {
   std::vector<std::uint32_t> vertex_of_;  // leaf -> graph vertex (kNone: occupied)
   double build_ms_ = 0.0;
 };
+
+/// The registry's entry (`--graph octree`): a name, a phrase and `in_depth`;
+/// no build function, for it plans in depth (depth_planning.hpp).
+GraphEntry octree_graph_entry();
 
 }  // namespace deepguide

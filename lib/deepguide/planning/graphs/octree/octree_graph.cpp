@@ -1,4 +1,4 @@
-#include "deepguide/planning/octree_graph.hpp"
+#include "deepguide/planning/graphs/octree/octree_graph.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -244,6 +244,14 @@ PlanResult OctreeGraph::solve(const Vec3& start, const Vec3& goal, SearchAlgorit
   result.cost = result.route.length();
   result.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;
+}
+
+GraphEntry octree_graph_entry() {
+  GraphEntry e;
+  e.name = GraphKind::octree.name;
+  e.help = "a route in depth over the sea floor";
+  e.can = {.in_depth = true};
+  return e;
 }
 
 }  // namespace deepguide

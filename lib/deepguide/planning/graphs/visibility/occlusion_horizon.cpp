@@ -1,4 +1,4 @@
-#include "deepguide/planning/occlusion_horizon.hpp"
+#include "deepguide/planning/graphs/visibility/occlusion_horizon.hpp"
 
 #include <algorithm>
 #include <boost/geometry.hpp>

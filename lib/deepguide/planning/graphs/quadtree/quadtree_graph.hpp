@@ -36,33 +36,28 @@
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/cell_tree.hpp"
 #include "deepguide/planning/cost_model.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/graph_search.hpp"
+#include "deepguide/planning/graphs/quadtree/quadtree_options.hpp"
 #include "deepguide/planning/route.hpp"
+#include "deepguide/planning/route_graph.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-struct QuadtreeOptions {
-  double min_cell_m = 2.0;  ///< the smallest cell side (m), > 0
-  Vec2 area_min{0.0, 0.0};  ///< the work area (local frame); the root is the square over it
-  Vec2 area_max{0.0, 0.0};
-  bool smooth = false;
-  /// Refused above this many cells (InputError): a free cell costs about
-  /// 1 KiB with its edges, so 2 million is about 2 GiB.
-  std::size_t max_cells = 2'000'000;
-};
-
-class QuadtreeGraph {
+class QuadtreeGraph : public RouteGraph {
  public:
   /// Decomposes the area around the field's obstacles. Throws InputError for a
   /// minimum cell <= 0, an empty or non-finite area, more than max_cells cells,
   /// and an area without a free cell.
   QuadtreeGraph(const ObstacleField& field, const QuadtreeOptions& options);
+  /// The same over a field the graph keeps (the registry's, within a turning radius).
+  QuadtreeGraph(std::unique_ptr<const ObstacleField> field, const QuadtreeOptions& options);
 
   /// Cheapest route from start to goal over the free cells (see the header).
   /// Throws NoRouteError when start or goal lies outside the area.
   PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost = nullptr,
-                   const SearchBudget& budget = {});
+                   const SearchBudget& budget = {}) override;
 
   /// For incremental replanning (dstar_lite.hpp): start and goal joined to
   /// the graph as vertices start_vertex() and goal_vertex() until detach()
@@ -83,10 +78,11 @@ class QuadtreeGraph {
   std::size_t edge_count() const { return edges_; }
   double build_ms() const { return build_ms_; }
   /// Graph edges between free cell centres (for drawings).
-  std::vector<std::pair<Vec2, Vec2>> edges() const;
+  std::vector<std::pair<Vec2, Vec2>> edges() const override;
 
  private:
   const ObstacleField* field_;
+  std::unique_ptr<const ObstacleField> own_field_;  // set by the second constructor
   QuadtreeOptions options_;
   std::unique_ptr<CellTree<2>> tree_;
   std::vector<std::size_t> free_;       // graph vertex -> leaf
@@ -100,5 +96,10 @@ class QuadtreeGraph {
   std::size_t edges_ = 0;
   double build_ms_ = 0.0;
 };
+
+/// The registry's entry (`--graph quadtree`): its cells keep out of the
+/// turning circles within a turning radius; single queries cover the
+/// start-goal box (quadtree_entry.cpp).
+GraphEntry quadtree_graph_entry();
 
 }  // namespace deepguide

@@ -20,14 +20,16 @@
 #include <memory>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/query_focus.hpp"
 #include "deepguide/planning/route.hpp"
+#include "deepguide/planning/route_graph.hpp"
 #include "deepguide/world/obstacle.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-class TangentGraph {
+class TangentGraph : public RouteGraph {
  public:
   /// With an active `focus` only what a route from its start to its goal no
   /// longer than its bound can use is built (query_focus.hpp); solve() then
@@ -39,11 +41,15 @@ class TangentGraph {
   /// (turn_rounding.hpp), which are places to turn, not obstacles.
   TangentGraph(const ObstacleSet& obstacles, double margin, double tolerance, const QueryFocus& focus = {},
                double turn_radius = 0.0);
-  ~TangentGraph();
+  ~TangentGraph() override;
   TangentGraph(TangentGraph&&) noexcept;
   TangentGraph& operator=(TangentGraph&&) noexcept;
 
-  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const SearchBudget& budget = {});
+  /// Shortest by length: the arcs are priced by length only, so `cost` is
+  /// not read (the registry's entry says so, and the Planner refuses others).
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel* cost,
+                   const SearchBudget& budget) override;
+  std::vector<std::pair<Vec2, Vec2>> edges() const override { return tangent_segments(); }
 
   std::size_t piece_count() const;
   std::size_t tangent_count() const;  ///< collision-free common tangents found at build
@@ -55,5 +61,8 @@ class TangentGraph {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The registry's entry (`--graph tangent`).
+GraphEntry tangent_graph_entry();
 
 }  // namespace deepguide

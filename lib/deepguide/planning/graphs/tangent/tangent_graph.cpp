@@ -1,4 +1,4 @@
-#include "deepguide/planning/tangent_graph.hpp"
+#include "deepguide/planning/graphs/tangent/tangent_graph.hpp"
 
 #include <algorithm>
 #include <boost/geometry.hpp>
@@ -13,10 +13,10 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/periodic_roots.hpp"
+#include "deepguide/planning/graphs/tangent/zone_pieces.hpp"
 #include "deepguide/planning/informed_bound.hpp"
 #include "deepguide/planning/polygon_visibility.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
-#include "deepguide/planning/zone_pieces.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
 namespace deepguide {
@@ -555,7 +555,8 @@ std::vector<RouteLeg> TangentGraph::Impl::arc_legs(std::size_t piece, double phi
   return out;
 }
 
-PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const SearchBudget& budget) {
+PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm algorithm, const CostModel*,
+                               const SearchBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   Impl& m = *impl_;
   const Vec2 s = problem.start - m.origin;
@@ -815,6 +816,18 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
             pts.end());
   result.stats.query_ms = elapsed_ms(t0);
   return result;
+}
+
+GraphEntry tangent_graph_entry() {
+  GraphEntry e;
+  e.name = GraphKind::tangent.name;
+  e.help = "exact, curved";
+  e.can = {.turn_radius = true, .dubins_ends = true};
+  e.build = [](const GraphBuild& in) -> std::unique_ptr<RouteGraph> {
+    return std::make_unique<TangentGraph>(in.obstacles, in.margin, in.options.tolerance, in.focus,
+                                          in.options.turn_radius_m);
+  };
+  return e;
 }
 
 }  // namespace deepguide

@@ -1,4 +1,4 @@
-#include "deepguide/planning/zone_pieces.hpp"
+#include "deepguide/planning/graphs/tangent/zone_pieces.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
