@@ -330,7 +330,8 @@ Options parse(int argc, char** argv) {
 int main(int argc, char** argv) {
   const Options opt = parse(argc, argv);
   const auto run_t0 = Clock::now();
-  const std::vector<GraphKind> kinds{GraphKind::visibility_full, GraphKind::visibility, GraphKind::tangent};
+  const std::vector<GraphKind> kinds{GraphKind::visibility_full, GraphKind::visibility, GraphKind::tangent,
+                                     GraphKind{"navmesh"}};
 
   std::printf("# bench_planning\n\n");
   std::printf("Load average at start: %s (1, 5, 15 min).\n\n", loadavg().c_str());

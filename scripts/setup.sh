@@ -12,7 +12,7 @@ DEEPGUIDE_PACKAGES=(
   g++ cmake ninja-build pkg-config git
   libeigen3-dev libboost-dev libboost-graph-dev
   libgdal-dev libgeos-dev gdal-bin libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
-  libcairo2-dev libxml2-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcairo2-dev libxml2-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
 )
 
 deepguide_install_packages() {

@@ -9,7 +9,7 @@
 
 namespace DEEPGUIDE_API deepguide {
 
-/// visibility, visibility-full, tangent, quadtree, octree.
+/// visibility, visibility-full, tangent, navmesh, quadtree, octree.
 std::vector<GraphEntry> builtin_graph_entries();
 
 }  // namespace deepguide

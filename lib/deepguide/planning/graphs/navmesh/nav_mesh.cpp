@@ -1,0 +1,171 @@
+#include "deepguide/planning/graphs/navmesh/nav_mesh.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <cmath>
+#include <deque>
+#include <unordered_map>
+
+#include "deepguide/core/error.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+struct FaceInfo {
+  int depth = -1;  // constraint edges crossed from outside the area; -1: not reached yet
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::int64_t, K>;
+using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+
+// Each ring as closed constraint edges, its repeated closing point left out.
+template <class Ring>
+void insert_ring(Cdt& cdt, const Ring& ring) {
+  std::vector<K::Point_2> points;
+  for (const BgPoint& p : ring) {
+    const K::Point_2 q(p.x(), p.y());
+    if (points.empty() || points.back() != q) points.push_back(q);
+  }
+  while (points.size() > 1 && points.front() == points.back()) points.pop_back();
+  if (points.size() >= 3) cdt.insert_constraint(points.begin(), points.end(), true);
+}
+
+// The flood: faces reached without crossing a constraint share a depth; each
+// constraint crossed adds one (CGAL's polygon-with-holes example, in breadth).
+void mark_depths(Cdt& cdt) {
+  std::deque<std::pair<Cdt::Face_handle, int>> border{{cdt.infinite_face(), 0}};
+  while (!border.empty()) {
+    const auto [start, depth] = border.front();
+    border.pop_front();
+    if (start->info().depth != -1) continue;
+    std::deque<Cdt::Face_handle> flood{start};
+    start->info().depth = depth;
+    while (!flood.empty()) {
+      const Cdt::Face_handle f = flood.front();
+      flood.pop_front();
+      for (int i = 0; i < 3; ++i) {
+        const Cdt::Face_handle n = f->neighbor(i);
+        if (n->info().depth != -1) continue;
+        if (cdt.is_constrained({f, i})) {
+          border.emplace_back(n, depth + 1);
+        } else {
+          n->info().depth = depth;
+          flood.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+bool water(const Cdt& cdt, Cdt::Face_handle f) { return !cdt.is_infinite(f) && f->info().depth % 2 == 1; }
+
+}  // namespace
+
+struct NavMesh::Index {
+  using Item = std::pair<BgBox, std::int32_t>;
+  bgi::rtree<Item, bgi::rstar<16>> faces;
+};
+
+NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& area_max)
+    : area_min_(area_min), area_max_(area_max), index_(std::make_unique<Index>()) {
+  if (!area_min.allFinite() || !area_max.allFinite() || !((area_max - area_min).minCoeff() > 0.0)) {
+    throw InputError("navigation mesh: expected a work area with a positive, finite extent");
+  }
+  Cdt cdt;
+  const std::vector<BgPoint> box{{area_min.x(), area_min.y()},
+                                 {area_max.x(), area_min.y()},
+                                 {area_max.x(), area_max.y()},
+                                 {area_min.x(), area_max.y()}};
+  insert_ring(cdt, box);
+  for (const BgPolygon& poly : no_go) {
+    insert_ring(cdt, poly.outer());
+    for (const auto& inner : poly.inners()) insert_ring(cdt, inner);
+  }
+  mark_depths(cdt);
+
+  // Number the water's faces and the vertices they use.
+  std::unordered_map<const void*, std::int32_t> face_id;
+  std::int64_t next_vertex = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info() = -1;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!water(cdt, f)) continue;
+    face_id.emplace(&*f, static_cast<std::int32_t>(face_id.size()));
+    for (int i = 0; i < 3; ++i) {
+      if (f->vertex(i)->info() == -1) {
+        f->vertex(i)->info() = next_vertex++;
+        vertices_.emplace_back(f->vertex(i)->point().x(), f->vertex(i)->point().y());
+      }
+    }
+  }
+  corner_.assign(vertices_.size(), 0);
+  faces_.resize(face_id.size());
+  std::vector<Index::Item> boxes;
+  boxes.reserve(faces_.size());
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!water(cdt, f)) continue;
+    const std::int32_t id = face_id.at(&*f);
+    Face& out = faces_[id];
+    for (int k = 0; k < 3; ++k) out.v[k] = static_cast<std::uint32_t>(f->vertex(k)->info());
+    for (int k = 0; k < 3; ++k) {
+      // Edge (v[k], v[k+1]) lies opposite CGAL's vertex k + 2.
+      const int opposite = (k + 2) % 3;
+      const Cdt::Face_handle n = f->neighbor(opposite);
+      const bool open = !cdt.is_constrained({f, opposite}) && water(cdt, n);
+      out.next[k] = open ? face_id.at(&*n) : kNone;
+      if (!open) corner_[out.v[k]] = corner_[out.v[(k + 1) % 3]] = 1;
+    }
+    BgBox b;
+    bg::assign_inverse(b);
+    for (const std::uint32_t v : out.v) bg::expand(b, to_bg(vertices_[v]));
+    boxes.emplace_back(b, id);
+  }
+  index_->faces = bgi::rtree<Index::Item, bgi::rstar<16>>(boxes.begin(), boxes.end());
+}
+
+NavMesh::~NavMesh() = default;
+NavMesh::NavMesh(NavMesh&&) noexcept = default;
+NavMesh& NavMesh::operator=(NavMesh&&) noexcept = default;
+
+std::vector<std::int32_t> NavMesh::faces_at(const Vec2& p) const {
+  std::vector<Index::Item> near;
+  index_->faces.query(bgi::intersects(to_bg(p)), std::back_inserter(near));
+  std::vector<std::int32_t> out;
+  for (const auto& [box, id] : near) {
+    const Face& f = faces_[id];
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      const Vec2& a = vertices_[f.v[k]];
+      const Vec2& b = vertices_[f.v[(k + 1) % 3]];
+      // On the edge's line counts as inside, up to rounding of the edge's length.
+      const Vec2 ab = b - a, ap = p - a;
+      inside = ab.x() * ap.y() - ab.y() * ap.x() >= -1e-12 * ab.squaredNorm();
+    }
+    if (inside) out.push_back(id);
+  }
+  return out;
+}
+
+std::vector<std::pair<Vec2, Vec2>> NavMesh::edges() const {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  for (std::size_t id = 0; id < faces_.size(); ++id) {
+    const Face& f = faces_[id];
+    for (int k = 0; k < 3; ++k) {
+      if (f.next[k] != kNone && static_cast<std::size_t>(f.next[k]) < id) continue;  // the other face has it
+      out.emplace_back(vertices_[f.v[k]], vertices_[f.v[(k + 1) % 3]]);
+    }
+  }
+  return out;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,70 @@
+#pragma once
+// A navigation mesh of the free water: the constrained Delaunay
+// triangulation (CGAL) of a work area with the no-go polygons' rings as
+// constraint edges, keeping the triangles that lie in the water.
+//
+// Faces are triangles with their corners anticlockwise and, across each
+// edge, the face on the other side, or none where the edge bounds the water
+// (a no-go ring or the area's edge). A vertex on such an edge is a corner:
+// the only places a shortest route can turn (a taut string bends only round
+// an obstacle), which is what Polyanya (polyanya.hpp) needs to know of it.
+//
+// Which triangles are water: a flood from outside the area that flips at
+// every constraint edge (outside the area, in it, in a no-go polygon, in a
+// hole of one, ...): odd depths are water. The rings must not cross; merged
+// zone polygons (zone_polygons.hpp) do not. Triangles are kept as they are
+// (not merged into larger convex polygons): a few more search nodes, one
+// simple projection step.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "deepguide/core/api.hpp"
+#include "deepguide/geometry/polygon.hpp"
+#include "deepguide/geometry/vec2.hpp"
+
+namespace DEEPGUIDE_API deepguide {
+
+class NavMesh {
+ public:
+  static constexpr std::int32_t kNone = -1;
+  struct Face {
+    std::array<std::uint32_t, 3> v;  ///< corners, anticlockwise
+    std::array<std::int32_t, 3> next;  ///< the face across edge (v[k], v[k+1]); kNone: no water there
+  };
+
+  /// The box from area_min to area_max less the polygons of `no_go`, which
+  /// must lie strictly inside it. Throws InputError for an empty or
+  /// non-finite box.
+  NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& area_max);
+  ~NavMesh();
+  NavMesh(NavMesh&&) noexcept;
+  NavMesh& operator=(NavMesh&&) noexcept;
+
+  const std::vector<Vec2>& vertices() const { return vertices_; }
+  const std::vector<Face>& faces() const { return faces_; }
+  bool corner(std::uint32_t v) const { return corner_[v] != 0; }
+  Vec2 area_min() const { return area_min_; }
+  Vec2 area_max() const { return area_max_; }
+
+  /// The faces whose closed triangle holds p: one inside a face, two on an
+  /// edge, all round a vertex; none outside the water.
+  std::vector<std::int32_t> faces_at(const Vec2& p) const;
+  /// Each edge between two water faces once, and each edge of the water's
+  /// boundary: for drawings and the graph's size.
+  std::vector<std::pair<Vec2, Vec2>> edges() const;
+
+ private:
+  std::vector<Vec2> vertices_;
+  std::vector<std::uint8_t> corner_;
+  std::vector<Face> faces_;
+  Vec2 area_min_, area_max_;
+  struct Index;  // R-tree of the faces' boxes
+  std::unique_ptr<Index> index_;
+};
+
+}  // namespace deepguide

@@ -1,0 +1,109 @@
+#include "deepguide/planning/graphs/navmesh/nav_mesh_graph.hpp"
+
+#include <algorithm>
+#include <boost/geometry.hpp>
+
+#include "deepguide/planning/graph_zones.hpp"
+#include "deepguide/planning/graphs/navmesh/polyanya.hpp"
+
+namespace deepguide {
+namespace bg = boost::geometry;
+
+namespace {
+
+// The area round `lo`..`hi`: a tenth wider on every side, at least 100 m.
+std::pair<Vec2, Vec2> widened(const Vec2& lo, const Vec2& hi) {
+  const double pad = std::max(0.1 * (hi - lo).maxCoeff(), 100.0);
+  return {lo - Vec2::Constant(pad), hi + Vec2::Constant(pad)};
+}
+
+}  // namespace
+
+NavMeshGraph::NavMeshGraph(const GraphBuild& in) : zones_(graph_zone_polygons(in)) {
+  BgBox box;
+  bg::assign_inverse(box);
+  if (!zones_.empty()) bg::envelope(zones_, box);
+  // About the zones' centre, as the visibility graph: the band test below is then the same.
+  if (!zones_.empty()) origin_ = 0.5 * (to_eigen(box.min_corner()) + to_eigen(box.max_corner()));
+  if (in.focus.active()) {
+    bg::expand(box, to_bg(in.focus.start));
+    bg::expand(box, to_bg(in.focus.goal));
+  }
+  Vec2 lo(0.0, 0.0), hi(0.0, 0.0);
+  if (box.min_corner().x() <= box.max_corner().x()) lo = to_eigen(box.min_corner()), hi = to_eigen(box.max_corner());
+  BgMultiPolygon local = zones_;
+  double extent = 1.0;
+  for (BgPolygon& poly : local) {
+    bg::correct(poly);
+    auto shift = [&](auto& ring) {
+      for (BgPoint& pt : ring) {
+        pt = to_bg(to_eigen(pt) - origin_);
+        extent = std::max({extent, std::abs(pt.x()), std::abs(pt.y())});
+      }
+    };
+    shift(poly.outer());
+    for (auto& inner : poly.inners()) shift(inner);
+  }
+  polygons_ = std::make_unique<PolygonVisibility>(std::move(local), 1e-9 * extent);
+  const auto [area_lo, area_hi] = widened(lo - origin_, hi - origin_);
+  triangulate(area_lo, area_hi);
+}
+
+NavMeshGraph::~NavMeshGraph() = default;
+
+void NavMeshGraph::triangulate(const Vec2& lo, const Vec2& hi) {
+  mesh_ = std::make_unique<NavMesh>(polygons_->polygons(), lo, hi);
+  edge_count_ = mesh_->edges().size();
+}
+
+PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm, const CostModel*,
+                               const SearchBudget& budget) {
+  const Vec2 s = problem.start - origin_, g = problem.goal - origin_;
+  const Vec2 lo = s.cwiseMin(g), hi = s.cwiseMax(g);
+  if ((lo.array() <= mesh_->area_min().array()).any() || (hi.array() >= mesh_->area_max().array()).any()) {
+    const auto [area_lo, area_hi] = widened(lo.cwiseMin(mesh_->area_min()), hi.cwiseMax(mesh_->area_max()));
+    triangulate(area_lo, area_hi);
+  }
+  PolyanyaResult found;
+  PlanResult result = solve_from_zone_boundary(
+      problem, [&](const Vec2& p) { return polygons_->strictly_inside(p - origin_); },
+      [&](const Vec2& p) -> Vec2 { return polygons_->closest_boundary_point(p - origin_) + origin_; },
+      [&](const PlanningProblem& banded) {
+        found = polyanya(*mesh_, banded.start - origin_, banded.goal - origin_, budget);
+        PlanResult r;
+        r.found = found.found;
+        r.cost = found.length;
+        r.stats.stopped = found.stopped;
+        r.stats.expanded = found.expanded;
+        if (found.found) {
+          for (const Vec2& p : found.path) r.route.points.push_back(p + origin_);
+          r.route.points.front() = banded.start;
+          r.route.points.back() = banded.goal;
+        } else {
+          r.message = found.stopped != SearchStop::none
+                          ? search_stop_message(found.stopped, found.expanded)
+                          : "the goal cannot be reached from the start without entering a safety zone";
+        }
+        return r;
+      });
+  result.stats.graph_vertices = mesh_->vertices().size();
+  result.stats.graph_edges = edge_count_;
+  return result;
+}
+
+std::vector<std::pair<Vec2, Vec2>> NavMeshGraph::edges() const {
+  std::vector<std::pair<Vec2, Vec2>> out = mesh_->edges();
+  for (auto& [a, b] : out) a += origin_, b += origin_;
+  return out;
+}
+
+GraphEntry nav_mesh_graph_entry() {
+  GraphEntry e;
+  e.name = "navmesh";
+  e.help = "Polyanya on a navigation mesh, exact among the zone polygons";
+  e.can = {.turn_radius = true, .finished_by_planner = true};
+  e.build = [](const GraphBuild& in) -> std::unique_ptr<RouteGraph> { return std::make_unique<NavMeshGraph>(in); };
+  return e;
+}
+
+}  // namespace deepguide

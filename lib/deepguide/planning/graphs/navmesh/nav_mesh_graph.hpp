@@ -1,0 +1,57 @@
+#pragma once
+// The navigation-mesh graph as the registry builds it (`--graph navmesh`):
+// the mesh of the water (nav_mesh.hpp) round the same zone polygons the
+// visibility graphs use (graph_zones.hpp), searched by Polyanya
+// (polyanya.hpp). Its routes are the shortest among those polygons, as the
+// full visibility graph's are, found without a graph of what sees what.
+//
+// The work area is the polygons' box, with the query's start and goal when
+// it is built for one (GraphBuild::focus), widened by a tenth (at least
+// 100 m). The shortest route never leaves the convex hull of the polygons,
+// start and goal, so the box costs nothing in length; a query whose start or
+// goal lies outside it widens it and triangulates again. Coordinates are
+// taken about the box's centre (UTM's millions of metres cost orientation
+// tests six digits).
+
+#include <cstddef>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "deepguide/core/api.hpp"
+#include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/graphs/navmesh/nav_mesh.hpp"
+#include "deepguide/planning/polygon_visibility.hpp"
+
+namespace DEEPGUIDE_API deepguide {
+
+class NavMeshGraph : public RouteGraph {
+ public:
+  explicit NavMeshGraph(const GraphBuild& in);
+  ~NavMeshGraph() override;
+
+  /// Shortest by length (`cost` is not read: the entry prices by length only).
+  PlanResult solve(const PlanningProblem& problem, SearchAlgorithm search, const CostModel* cost,
+                   const SearchBudget& budget) override;
+  /// The mesh's edges, in the planning frame.
+  std::vector<std::pair<Vec2, Vec2>> edges() const override;
+
+  const NavMesh& mesh() const { return *mesh_; }
+  /// Where the mesh's coordinates have their origin, in the planning frame.
+  Vec2 origin() const { return origin_; }
+  const BgMultiPolygon& zones() const { return zones_; }
+
+ private:
+  void triangulate(const Vec2& lo, const Vec2& hi);  // the area, in the mesh's coordinates
+
+  BgMultiPolygon zones_;
+  Vec2 origin_{0.0, 0.0};
+  std::unique_ptr<PolygonVisibility> polygons_;  // the zones about origin_: the band round them
+  std::unique_ptr<NavMesh> mesh_;
+  std::size_t edge_count_ = 0;
+};
+
+/// The registry's entry (`--graph navmesh`).
+GraphEntry nav_mesh_graph_entry();
+
+}  // namespace deepguide

@@ -1,0 +1,266 @@
+#include "deepguide/planning/graphs/navmesh/polyanya.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+
+namespace deepguide {
+namespace {
+
+constexpr std::int32_t kNoVertex = -1;
+constexpr std::int32_t kStartRoot = -2;
+constexpr std::int32_t kFinal = -1;  // Node::face of a node that ends at the goal
+// Ray parameters this close to an edge's end are its end: the ray passes
+// through the vertex, which then bounds the interval as a vertex (a corner
+// the route may turn round), not as a point a rounding error away from it.
+constexpr double kSnap = 1e-10;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+struct Node {
+  Vec2 root;
+  std::int32_t root_id;  // mesh vertex, or kStartRoot
+  Vec2 left, right;      // the interval's ends as seen from the root
+  std::int32_t left_vertex, right_vertex;  // the mesh vertex at that end, else kNoVertex
+  std::int32_t face;     // the face beyond the interval, or kFinal
+  int edge;              // that face's edge (v[edge], v[edge + 1]) holding the interval, left at v[edge]
+  bool fan = false;      // the root is an end of that edge: it sees the whole face beyond
+  double g, f;
+  std::int32_t parent;  // the node this one was made from; -1 for the start's
+};
+
+// min over p in [left, right] of |r p| + |p t|, t mirrored onto the far side.
+double heuristic(const Vec2& r, const Vec2& left, const Vec2& right, const Vec2& t) {
+  const Vec2 d = left - right;
+  const double len2 = d.squaredNorm();
+  const double sr = cross(d, r - right);
+  if (len2 == 0.0 || sr == 0.0) return (t - r).norm();  // admissible; such nodes are not made
+  const double st = cross(d, t - right);
+  const Vec2 goal = (sr > 0.0) == (st > 0.0) && st != 0.0 ? Vec2(t - 2.0 * st / len2 * Vec2(-d.y(), d.x())) : t;
+  const Vec2 w = goal - r;
+  const double den = cross(d, w);
+  const double u = den != 0.0 ? cross(r - right, w) / den : -1.0;
+  if (u >= 0.0 && u <= 1.0) return w.norm();
+  return std::min((left - r).norm() + (goal - left).norm(), (right - r).norm() + (goal - right).norm());
+}
+
+struct Range {
+  double lo = 1.0, hi = 0.0;
+  bool empty() const { return !(hi - lo > kSnap); }
+};
+
+double snapped(double t) {
+  if (std::abs(t) < kSnap) return 0.0;
+  if (std::abs(t - 1.0) < kSnap) return 1.0;
+  return t;
+}
+
+// The t in [0, 1] where a + b t >= 0; eps: what counts as zero for a and b.
+Range where_not_negative(double a, double b, double eps) {
+  if (std::abs(b) <= eps) return a >= -eps ? Range{0.0, 1.0} : Range{};
+  const double t0 = snapped(-a / b);
+  return b > 0.0 ? Range{std::max(t0, 0.0), 1.0} : Range{0.0, std::min(t0, 1.0)};
+}
+
+Range both(const Range& x, const Range& y) { return {std::max(x.lo, y.lo), std::min(x.hi, y.hi)}; }
+
+class Search {
+ public:
+  Search(const NavMesh& mesh, const Vec2& goal, const SearchBudget& budget)
+      : mesh_(mesh), goal_(goal), budget_(budget), best_(mesh.vertices().size(), kInf) {
+    for (const std::int32_t f : mesh.faces_at(goal)) goal_faces_.push_back(f);
+  }
+
+  PolyanyaResult run(const Vec2& start) {
+    PolyanyaResult out;
+    const std::vector<std::int32_t> start_faces = mesh_.faces_at(start);
+    if (start_faces.empty() || goal_faces_.empty()) return out;
+    for (const std::int32_t f : start_faces) {
+      if (holds_goal(f)) {  // a face is convex: the straight line
+        out.found = true;
+        out.path = {start, goal_};
+        out.length = (goal_ - start).norm();
+        return out;
+      }
+    }
+    for (const std::int32_t f : start_faces) start_successors(start, f);
+    while (!open_.empty()) {
+      const std::int32_t id = open_.top().second;
+      open_.pop();
+      const Node n = nodes_[id];
+      if (n.face == kFinal) return finish(id, out);
+      if (n.root_id >= 0 && n.g > best_[n.root_id] + tie(n.g)) continue;  // its root has a shorter way since
+      if (budget_.max_expansions > 0 && out.expanded >= budget_.max_expansions) {
+        out.stopped = SearchStop::budget;
+        break;
+      }
+      if (budget_.cancelled && out.expanded % 256 == 0 && budget_.cancelled()) {
+        out.stopped = SearchStop::cancelled;
+        break;
+      }
+      ++out.expanded;
+      expand(id, n);
+    }
+    out.generated = nodes_.size();
+    return out;
+  }
+
+ private:
+  static double tie(double g) { return 1e-12 * std::max(g, 1.0); }
+
+  bool holds_goal(std::int32_t face) const {
+    return std::find(goal_faces_.begin(), goal_faces_.end(), face) != goal_faces_.end();
+  }
+
+  void push(Node n) {
+    const auto id = static_cast<std::int32_t>(nodes_.size());
+    nodes_.push_back(n);
+    open_.push({{n.f, -n.g}, id});
+  }
+
+  // The node for the part [lo, hi] of edge (P, Q) (P on the right), seen
+  // from `root`, into the face across it; nothing when the part is a point
+  // or lies on a line through the root.
+  void make(const Node& from, std::int32_t parent, const Vec2& root, std::int32_t root_id, double g, std::int32_t face,
+            int e, const Range& part) {
+    const NavMesh::Face& f = mesh_.faces()[face];
+    const std::int32_t across = f.next[e];
+    if (across == NavMesh::kNone || part.empty()) return;
+    const std::uint32_t p = f.v[e], q = f.v[(e + 1) % 3];
+    const Vec2& P = mesh_.vertices()[p];
+    const Vec2& Q = mesh_.vertices()[q];
+    const double len = (Q - P).norm();
+    Node n;
+    if (std::abs(cross(Q - P, root - P)) <= 1e-10 * len * std::max(len, (root - P).norm())) {
+      // On the edge's line the root sees through the edge only when it is one
+      // of its ends, and then sees all of the face beyond (it is a corner of
+      // it): the fan round a corner a route turns at. Elsewhere on the line
+      // the interval leads nowhere.
+      if (root_id < 0 || (root_id != static_cast<std::int32_t>(p) && root_id != static_cast<std::int32_t>(q))) return;
+      n.fan = true;
+    }
+    n.root = root;
+    n.root_id = root_id;
+    n.right = part.lo == 0.0 ? P : Vec2(P + part.lo * (Q - P));
+    n.left = part.hi == 1.0 ? Q : Vec2(P + part.hi * (Q - P));
+    n.right_vertex = part.lo == 0.0 ? static_cast<std::int32_t>(p) : kNoVertex;
+    n.left_vertex = part.hi == 1.0 ? static_cast<std::int32_t>(q) : kNoVertex;
+    n.face = across;
+    const NavMesh::Face& beyond = mesh_.faces()[across];
+    n.edge = 0;
+    while (n.edge < 3 && !(beyond.v[n.edge] == q && beyond.v[(n.edge + 1) % 3] == p)) ++n.edge;
+    if (n.edge == 3) return;  // not the shared edge: cannot happen in a valid mesh
+    n.g = g;
+    n.f = g + heuristic(root, n.left, n.right, goal_);
+    n.parent = parent;
+    (void)from;
+    push(n);
+  }
+
+  void start_successors(const Vec2& start, std::int32_t face) {
+    // From inside a face its edges, anticlockwise, run from right to left.
+    for (int e = 0; e < 3; ++e) make(Node{}, -1, start, kStartRoot, 0.0, face, e, Range{0.0, 1.0});
+  }
+
+  // A turn round the interval's end `v` (a mesh vertex or none): its g, or
+  // +inf when v is no corner or a shorter way to it is known.
+  double turn(const Node& n, std::int32_t v, const Vec2& at) {
+    if (v == kNoVertex || !mesh_.corner(static_cast<std::uint32_t>(v))) return kInf;
+    const double g = n.g + (at - n.root).norm();
+    if (g > best_[v] + tie(g)) return kInf;
+    best_[v] = std::min(best_[v], g);
+    return g;
+  }
+
+  void expand(std::int32_t id, const Node& n) {
+    const NavMesh::Face& f = mesh_.faces()[n.face];
+    if (n.fan) {
+      // The root is a corner of this face: every far edge is seen whole (the
+      // next edge round the root fans on; the way back is not taken again).
+      for (int e = 0; e < 3; ++e) {
+        if (e != n.edge) make(n, id, n.root, n.root_id, n.g, n.face, e, Range{0.0, 1.0});
+      }
+      if (holds_goal(n.face)) finals(id, n, kInf, kInf);
+      return;
+    }
+    const Vec2& r = n.root;
+    const Vec2 to_right = n.right - r, to_left = n.left - r;
+    const double g_right = turn(n, n.right_vertex, n.right);
+    const double g_left = turn(n, n.left_vertex, n.left);
+    // The far edges, from the interval's right end round to its left.
+    for (int step = 1; step < 3; ++step) {
+      const int e = (n.edge + step) % 3;
+      const Vec2& P = mesh_.vertices()[f.v[e]];
+      const Vec2& Q = mesh_.vertices()[f.v[(e + 1) % 3]];
+      const double eps_r = 1e-12 * to_right.norm() * ((Q - P).norm() + (P - r).norm());
+      const double eps_l = 1e-12 * to_left.norm() * ((Q - P).norm() + (P - r).norm());
+      // Left of (or on) the ray r -> right, and right of (or on) r -> left.
+      const double ar = cross(to_right, P - r), br = cross(to_right, Q - P);
+      const double al = cross(to_left, P - r), bl = cross(to_left, Q - P);
+      const Range right_of_left = where_not_negative(-al, -bl, eps_l);
+      const Range left_of_right = where_not_negative(ar, br, eps_r);
+      make(n, id, r, n.root_id, n.g, n.face, e, both(left_of_right, right_of_left));
+      if (g_right < kInf) make(n, id, n.right, n.right_vertex, g_right, n.face, e, where_not_negative(-ar, -br, eps_r));
+      if (g_left < kInf) make(n, id, n.left, n.left_vertex, g_left, n.face, e, where_not_negative(al, bl, eps_l));
+    }
+    if (holds_goal(n.face)) finals(id, n, g_right, g_left);
+  }
+
+  // The goal lies in the face beyond n's interval: seen from the root, or
+  // round an end of the interval that is a corner.
+  void finals(std::int32_t id, const Node& n, double g_right, double g_left) {
+    const Vec2& r = n.root;
+    const double sr = cross(n.right - r, goal_ - r), sl = cross(n.left - r, goal_ - r);
+    const double eps = 1e-12 * (goal_ - r).norm() * ((n.right - r).norm() + (n.left - r).norm());
+    Node last = n;
+    last.face = kFinal;
+    last.parent = id;
+    if (n.fan || (sr >= -eps && sl <= eps)) {
+      last.f = n.g + (goal_ - r).norm();
+    } else if (sr < 0.0 && g_right < kInf) {
+      last.root = n.right, last.root_id = n.right_vertex, last.g = g_right;
+      last.f = g_right + (goal_ - n.right).norm();
+    } else if (sl > 0.0 && g_left < kInf) {
+      last.root = n.left, last.root_id = n.left_vertex, last.g = g_left;
+      last.f = g_left + (goal_ - n.left).norm();
+    } else {
+      return;
+    }
+    push(last);
+  }
+
+  PolyanyaResult& finish(std::int32_t id, PolyanyaResult& out) {
+    out.found = true;
+    out.generated = nodes_.size();
+    out.length = nodes_[id].f;
+    std::vector<Vec2> path{goal_};
+    std::int32_t last_root = std::numeric_limits<std::int32_t>::min();
+    for (std::int32_t k = id; k != -1; k = nodes_[k].parent) {
+      if (nodes_[k].root_id == last_root) continue;
+      last_root = nodes_[k].root_id;
+      path.push_back(nodes_[k].root);
+    }
+    out.path.assign(path.rbegin(), path.rend());
+    return out;
+  }
+
+  const NavMesh& mesh_;
+  Vec2 goal_;
+  const SearchBudget& budget_;
+  std::vector<double> best_;  // the shortest way found to each corner used as a root
+  std::vector<std::int32_t> goal_faces_;
+  std::vector<Node> nodes_;
+  using Entry = std::pair<std::pair<double, double>, std::int32_t>;  // (f, -g), node: least f, then most g
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
+};
+
+}  // namespace
+
+PolyanyaResult polyanya(const NavMesh& mesh, const Vec2& start, const Vec2& goal, const SearchBudget& budget) {
+  return Search(mesh, goal, budget).run(start);
+}
+
+}  // namespace deepguide
