@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <set>
 #include <string>
@@ -71,11 +72,15 @@ TEST(NavMesh, ABoxWithASquareHoleIsItsWaterInAnticlockwiseTrianglesWithSymmetric
   }
   EXPECT_NEAR(area, 100.0 * 100.0 - 20.0 * 20.0, 1e-9);
   for (std::uint32_t v = 0; v < mesh.vertices().size(); ++v) EXPECT_TRUE(mesh.corner(v)) << v;
-  EXPECT_TRUE(mesh.faces_at({0, 0}).empty());      // in the hole
-  EXPECT_TRUE(mesh.faces_at({60, 0}).empty());     // outside the area
-  EXPECT_EQ(mesh.faces_at({30, 3}).size(), 1u);    // inside one face
-  EXPECT_GE(mesh.faces_at({10, 0}).size(), 1u);    // on the hole's edge
-  EXPECT_EQ(mesh.edges().size(), 16u);             // 8 boundary edges and 8 between faces
+  EXPECT_TRUE(mesh.faces_at({0, 0}).empty());    // in the hole
+  EXPECT_TRUE(mesh.faces_at({60, 0}).empty());   // outside the area
+  EXPECT_EQ(mesh.faces_at({30, 3}).size(), 1u);  // inside one face
+  EXPECT_GE(mesh.faces_at({10, 0}).size(), 1u);  // on the hole's edge
+  // Within rounding of the edge, on the hole's side: still on it (a start
+  // stepped onto a zone polygon comes out so); a micrometre in: not.
+  EXPECT_GE(mesh.faces_at({3, 10 - 1e-12}).size(), 1u);
+  EXPECT_TRUE(mesh.faces_at({3, 10 - 1e-6}).empty());
+  EXPECT_EQ(mesh.edges().size(), 16u);  // 8 boundary edges and 8 between faces
   EXPECT_THROW(NavMesh(square(-1, -1, 1, 1), {0, 0}, {0, 5}), InputError);
 }
 
@@ -111,7 +116,8 @@ TEST(Polyanya, AGoalInsideAClosedRingIsUnreachable) {
   // A ring-shaped no-go (a square with a square hole) round the goal.
   BgPolygon ring = box(-20, -20, 20, 20).footprint;
   ring.inners().resize(1);
-  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}}) {
+  for (const auto& [x, y] :
+       std::vector<std::pair<double, double>>{{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}}) {
     ring.inners()[0].push_back(BgPoint(x, y));
   }
   boost::geometry::correct(ring);
@@ -126,7 +132,8 @@ TEST(Polyanya, AGoalInsideAClosedRingIsUnreachable) {
 TEST(Polyanya, ABudgetStopsTheSearchAndSaysSo) {
   BgMultiPolygon zones;
   for (int i = 0; i < 6; ++i) {
-    for (const BgPolygon& p : square(-50 + 20 * i, -30 + 7 * (i % 3), -42 + 20 * i, 30 + 7 * (i % 3))) zones.push_back(p);
+    for (const BgPolygon& p : square(-50 + 20 * i, -30 + 7 * (i % 3), -42 + 20 * i, 30 + 7 * (i % 3)))
+      zones.push_back(p);
   }
   const NavMesh mesh(zones, {-100, -100}, {100, 100});
   SearchBudget budget;
@@ -140,7 +147,9 @@ TEST(Polyanya, ABudgetStopsTheSearchAndSaysSo) {
 // The navmesh route against the full visibility graph's on the same zone
 // polygons: equal length to 1e-9 relative, every route checked. Sparse and
 // dense fields of ellipses and boxes, fresh seeds.
+// DEEPGUIDE_NAVMESH_SEED shifts the seeds: a claim holds only when a fresh seed confirms it.
 void expect_navmesh_equals_visibility_full(unsigned seed, int scenarios, int most_obstacles, double spread) {
+  if (const char* shift = std::getenv("DEEPGUIDE_NAVMESH_SEED")) seed += static_cast<unsigned>(std::atoi(shift));
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> pos(-spread, spread), ang(-kPi, kPi), u01(0.0, 1.0);
   std::uniform_int_distribution<int> count(1, most_obstacles);
@@ -165,8 +174,8 @@ void expect_navmesh_equals_visibility_full(unsigned seed, int scenarios, int mos
     options.graph = GraphKind{"navmesh"};
     Planner navmesh(set, options);
     const PlanOutcome mesh = navmesh.solve({start, goal});
-    ASSERT_EQ(mesh.result.found, full.result.found) << "seed " << seed << " scenario " << scenario << ": "
-                                                    << mesh.result.message;
+    ASSERT_EQ(mesh.result.found, full.result.found)
+        << "seed " << seed << " scenario " << scenario << ": " << mesh.result.message;
     if (!full.result.found) {
       ++none;
       continue;
@@ -241,4 +250,31 @@ TEST(NavMesh, AMeshThatLostAConstraintCutsTheCornerTheComparisonWouldCatch) {
   ObstacleSet square_obstacle;
   square_obstacle.polygons.push_back(box(-10, -10, 10, 10, "square"));
   EXPECT_FALSE(check_route(lost.path, ObstacleField(square_obstacle, 0.0)).safe);
+}
+
+// A start in the band between a zone and its polygon steps onto the polygon's
+// boundary, which rounding leaves a hair to either side of the edge; the mesh
+// must still hold it. (On US4MD81M 1 in 1000 random starts had no face: the
+// box around the point missed an axis-parallel edge by 1e-12 m.)
+TEST(NavMeshGraph, StartsInTheBandRoundAZoneStepOntoItsPolygonAndPlan) {
+  ObstacleSet set;
+  set.polygons.push_back(box(4000, 5000, 4100, 5050, "pier"));
+  const double margin = 5.0;
+  PlannerOptions options{margin, 0.5, GraphKind::visibility_full, SearchAlgorithm::astar};
+  Planner full(set, options);
+  options.graph = GraphKind{"navmesh"};
+  Planner mesh(set, options);
+  int planned = 0;
+  for (int i = 1; i < 200; ++i) {
+    // Just outside the true zone over the pier's top and along its right side.
+    for (const Vec2& s : {Vec2(4000 + 0.5 * i, 5050 + margin + 1e-7), Vec2(4100 + margin + 1e-7, 5000 + 0.25 * i)}) {
+      const Vec2 g(3000, 4000);
+      const PlanOutcome a = full.solve({s, g}), b = mesh.solve({s, g});
+      ASSERT_TRUE(b.result.found) << "from (" << s.x() << ", " << s.y() << "): " << b.result.message;
+      ASSERT_TRUE(b.check.safe) << b.check.describe();
+      ASSERT_NEAR(b.result.route.length(), a.result.route.length(), 1e-9 * a.result.route.length());
+      ++planned;
+    }
+  }
+  EXPECT_EQ(planned, 398);
 }

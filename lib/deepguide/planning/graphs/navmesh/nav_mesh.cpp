@@ -138,8 +138,13 @@ NavMesh::NavMesh(NavMesh&&) noexcept = default;
 NavMesh& NavMesh::operator=(NavMesh&&) noexcept = default;
 
 std::vector<std::int32_t> NavMesh::faces_at(const Vec2& p) const {
+  // A point on an edge counts as in the face up to a nanometre: a start
+  // stepped onto a zone polygon's boundary (the band round a zone) comes out
+  // within rounding of the edge, on either side of it.
+  constexpr double kOn = 1e-9;
   std::vector<Index::Item> near;
-  index_->faces.query(bgi::intersects(to_bg(p)), std::back_inserter(near));
+  const BgBox around(to_bg(p - Vec2::Constant(kOn)), to_bg(p + Vec2::Constant(kOn)));
+  index_->faces.query(bgi::intersects(around), std::back_inserter(near));
   std::vector<std::int32_t> out;
   for (const auto& [box, id] : near) {
     const Face& f = faces_[id];
@@ -147,9 +152,8 @@ std::vector<std::int32_t> NavMesh::faces_at(const Vec2& p) const {
     for (int k = 0; k < 3 && inside; ++k) {
       const Vec2& a = vertices_[f.v[k]];
       const Vec2& b = vertices_[f.v[(k + 1) % 3]];
-      // On the edge's line counts as inside, up to rounding of the edge's length.
       const Vec2 ab = b - a, ap = p - a;
-      inside = ab.x() * ap.y() - ab.y() * ap.x() >= -1e-12 * ab.squaredNorm();
+      inside = ab.x() * ap.y() - ab.y() * ap.x() >= -kOn * ab.norm();  // signed distance times |ab|
     }
     if (inside) out.push_back(id);
   }

@@ -33,7 +33,7 @@ class NavMesh {
  public:
   static constexpr std::int32_t kNone = -1;
   struct Face {
-    std::array<std::uint32_t, 3> v;  ///< corners, anticlockwise
+    std::array<std::uint32_t, 3> v;    ///< corners, anticlockwise
     std::array<std::int32_t, 3> next;  ///< the face across edge (v[k], v[k+1]); kNone: no water there
   };
 

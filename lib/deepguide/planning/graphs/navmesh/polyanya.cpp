@@ -22,12 +22,12 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 
 struct Node {
   Vec2 root;
-  std::int32_t root_id;  // mesh vertex, or kStartRoot
-  Vec2 left, right;      // the interval's ends as seen from the root
+  std::int32_t root_id;                    // mesh vertex, or kStartRoot
+  Vec2 left, right;                        // the interval's ends as seen from the root
   std::int32_t left_vertex, right_vertex;  // the mesh vertex at that end, else kNoVertex
-  std::int32_t face;     // the face beyond the interval, or kFinal
-  int edge;              // that face's edge (v[edge], v[edge + 1]) holding the interval, left at v[edge]
-  bool fan = false;      // the root is an end of that edge: it sees the whole face beyond
+  std::int32_t face;                       // the face beyond the interval, or kFinal
+  int edge;          // that face's edge (v[edge], v[edge + 1]) holding the interval, left at v[edge]
+  bool fan = false;  // the root is an end of that edge: it sees the whole face beyond
   double g, f;
   std::int32_t parent;  // the node this one was made from; -1 for the start's
 };

@@ -1,0 +1,132 @@
+// Queries on a prebuilt navigation mesh at chart scale, against the reduced
+// visibility graph on the same queries in the same run: the no-go of a chart
+// (S-57 cells or an exchange set's folder) at a depth, one Planner per graph
+// over every obstacle, then N random pairs of free points (seeded), each
+// answered by both. Prints markdown: build time, peak RSS, and the whole
+// Planner::solve's median, p90, p99 and max, with the ratios.
+//   bench_navmesh CHART [--depth M] [--queries N] [--seed S] [--no-visibility]
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <sys/resource.h>
+#include <vector>
+
+#include "bench_options.hpp"
+#include "deepguide/planning/planner.hpp"
+#include "deepguide/world/enc_no_go.hpp"
+
+using namespace deepguide;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
+}
+
+struct Run {
+  std::string graph;
+  double build_ms = 0.0, rss_mb = 0.0;
+  std::vector<double> solve_ms, lengths;
+  int found = 0;
+};
+
+Run run(const ObstacleSet& obstacles, const GraphKind& kind, const std::vector<std::pair<Vec2, Vec2>>& queries) {
+  Run r;
+  r.graph = kind.name;
+  PlannerOptions options;
+  options.margin = 5.0;
+  options.graph = kind;
+  const auto t0 = Clock::now();
+  Planner planner(obstacles, options);
+  r.build_ms = ms_since(t0);
+  for (const auto& [s, g] : queries) {
+    const auto q0 = Clock::now();
+    const PlanOutcome out = planner.solve({s, g});
+    r.solve_ms.push_back(ms_since(q0));
+    r.lengths.push_back(out.result.found ? out.result.route.length() : -1.0);
+    r.found += out.result.found && out.check.safe ? 1 : 0;
+  }
+  r.rss_mb = peak_rss_mb();
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string chart;
+  double depth = 5.0;
+  int queries = 1000;
+  unsigned seed = 1;
+  bool visibility = true;
+  CLI::App app{"bench_navmesh: queries on a prebuilt navigation mesh of a chart, against the visibility graph"};
+  app.add_option("CHART", chart, "S-57 cell, folder of cells or prepared chart")->required();
+  app.add_option("--depth", depth, "Operating depth (m); the vertical clearance is 2 m")->capture_default_str();
+  app.add_option("--queries", queries, "Random pairs of free points")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--seed", seed, "Seed of the pairs")->capture_default_str();
+  app.add_flag("!--no-visibility", visibility, "Skip the visibility graph (its build takes long on large sets)");
+  deepguide::bench::parse_or_exit(app, argc, argv);
+
+  EncNoGoOptions options;
+  options.operating_depth_m = depth;
+  options.vertical_clearance_m = 2.0;
+  const auto t0 = Clock::now();
+  const EncNoGo no_go = enc_no_go({chart}, std::nullopt, options);
+  const double read_ms = ms_since(t0);
+  const ObstacleField field(no_go.obstacles, 5.0);
+  const auto [lo, hi] = footprint_box(no_go.obstacles);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> x(lo.x(), hi.x()), y(lo.y(), hi.y());
+  auto free_point = [&] {
+    for (;;) {
+      const Vec2 p(x(rng), y(rng));
+      if (field.is_free(p)) return p;
+    }
+  };
+  std::vector<std::pair<Vec2, Vec2>> pairs;
+  for (int k = 0; k < queries; ++k) pairs.emplace_back(free_point(), free_point());
+
+  std::printf("# bench_navmesh: %s at %g m\n\n", chart.c_str(), depth);
+  std::printf("%zu obstacles, read and made no-go in %.0f ms; %d random pairs of free points (seed %u), margin 5 m. "
+              "`solve` is the whole Planner::solve (route check included), ms.\n\n",
+              no_go.obstacles.size(), read_ms, queries, seed);
+  std::vector<Run> runs{run(no_go.obstacles, GraphKind{"navmesh"}, pairs)};
+  if (visibility) runs.push_back(run(no_go.obstacles, GraphKind::visibility, pairs));
+  std::printf("| graph | build ms | peak RSS MB | found and safe | solve median | p90 | p99 | max |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const Run& r : runs) {
+    std::printf("| %s | %.1f | %.0f | %d/%d | %.3f | %.3f | %.3f | %.3f |\n", r.graph.c_str(), r.build_ms, r.rss_mb,
+                r.found, queries, quantile(r.solve_ms, 0.5), quantile(r.solve_ms, 0.9), quantile(r.solve_ms, 0.99),
+                quantile(r.solve_ms, 1.0));
+  }
+  if (runs.size() == 2) {
+    int same = 0;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const double a = runs[0].lengths[k], b = runs[1].lengths[k];
+      const bool equal = (a < 0 && b < 0) || (a >= 0 && b >= 0 && std::abs(a - b) <= 1e-9 * b);
+      same += equal ? 1 : 0;
+      if (!equal) {
+        std::printf("differ: from (%.17g, %.17g) to (%.17g, %.17g): navmesh %.6f m, visibility %.6f m (-1: none)\n",
+                    pairs[k].first.x(), pairs[k].first.y(), pairs[k].second.x(), pairs[k].second.y(), a, b);
+      }
+    }
+    std::printf("\nnavmesh / visibility: build %.3f, solve median %.3f, p99 %.3f; equal lengths (1e-9) on %d of %d\n",
+                runs[0].build_ms / runs[1].build_ms,
+                quantile(runs[0].solve_ms, 0.5) / quantile(runs[1].solve_ms, 0.5),
+                quantile(runs[0].solve_ms, 0.99) / quantile(runs[1].solve_ms, 0.99), same, queries);
+  }
+  return 0;
+}
