@@ -5,13 +5,13 @@
 // answered by both. Prints markdown: build time, peak RSS, and the whole
 // Planner::solve's median, p90, p99 and max, with the ratios.
 //   bench_navmesh CHART [--depth M] [--queries N] [--seed S] [--no-visibility]
+#include <sys/resource.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
 #include <string>
-#include <sys/resource.h>
 #include <vector>
 
 #include "bench_options.hpp"
@@ -59,6 +59,10 @@ Run run(const ObstacleSet& obstacles, const GraphKind& kind, const std::vector<s
     r.solve_ms.push_back(ms_since(q0));
     r.lengths.push_back(out.result.found ? out.result.route.length() : -1.0);
     r.found += out.result.found && out.check.safe ? 1 : 0;
+    if (out.result.found && !out.check.safe) {
+      std::printf("unsafe: %s from (%.17g, %.17g) to (%.17g, %.17g): %s\n", kind.name.c_str(), s.x(), s.y(), g.x(),
+                  g.y(), out.check.describe().c_str());
+    }
   }
   r.rss_mb = peak_rss_mb();
   return r;
@@ -75,7 +79,9 @@ int main(int argc, char** argv) {
   CLI::App app{"bench_navmesh: queries on a prebuilt navigation mesh of a chart, against the visibility graph"};
   app.add_option("CHART", chart, "S-57 cell, folder of cells or prepared chart")->required();
   app.add_option("--depth", depth, "Operating depth (m); the vertical clearance is 2 m")->capture_default_str();
-  app.add_option("--queries", queries, "Random pairs of free points")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--queries", queries, "Random pairs of free points")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--seed", seed, "Seed of the pairs")->capture_default_str();
   app.add_flag("!--no-visibility", visibility, "Skip the visibility graph (its build takes long on large sets)");
   deepguide::bench::parse_or_exit(app, argc, argv);
@@ -100,9 +106,10 @@ int main(int argc, char** argv) {
   for (int k = 0; k < queries; ++k) pairs.emplace_back(free_point(), free_point());
 
   std::printf("# bench_navmesh: %s at %g m\n\n", chart.c_str(), depth);
-  std::printf("%zu obstacles, read and made no-go in %.0f ms; %d random pairs of free points (seed %u), margin 5 m. "
-              "`solve` is the whole Planner::solve (route check included), ms.\n\n",
-              no_go.obstacles.size(), read_ms, queries, seed);
+  std::printf(
+      "%zu obstacles, read and made no-go in %.0f ms; %d random pairs of free points (seed %u), margin 5 m. "
+      "`solve` is the whole Planner::solve (route check included), ms.\n\n",
+      no_go.obstacles.size(), read_ms, queries, seed);
   std::vector<Run> runs{run(no_go.obstacles, GraphKind{"navmesh"}, pairs)};
   if (visibility) runs.push_back(run(no_go.obstacles, GraphKind::visibility, pairs));
   std::printf("| graph | build ms | peak RSS MB | found and safe | solve median | p90 | p99 | max |\n");
@@ -124,8 +131,7 @@ int main(int argc, char** argv) {
       }
     }
     std::printf("\nnavmesh / visibility: build %.3f, solve median %.3f, p99 %.3f; equal lengths (1e-9) on %d of %d\n",
-                runs[0].build_ms / runs[1].build_ms,
-                quantile(runs[0].solve_ms, 0.5) / quantile(runs[1].solve_ms, 0.5),
+                runs[0].build_ms / runs[1].build_ms, quantile(runs[0].solve_ms, 0.5) / quantile(runs[1].solve_ms, 0.5),
                 quantile(runs[0].solve_ms, 0.99) / quantile(runs[1].solve_ms, 0.99), same, queries);
   }
   return 0;

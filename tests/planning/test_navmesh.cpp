@@ -227,6 +227,12 @@ TEST(NavMeshGraph, IsARegisteredGraphThatPricesByLengthOnly) {
   const PlanOutcome far = planner.solve({{-5000, 3}, {4000, -2}});
   ASSERT_TRUE(far.result.found);
   EXPECT_TRUE(far.check.safe);
+  // Dijkstra's order (h = 0): the same route, more intervals expanded.
+  PlannerOptions dijkstra{5.0, 0.5, GraphKind{"navmesh"}, SearchAlgorithm::dijkstra};
+  const PlanOutcome slow = Planner(set, dijkstra).solve({{-5000, 3}, {4000, -2}});
+  ASSERT_TRUE(slow.result.found);
+  EXPECT_NEAR(slow.result.route.length(), far.result.route.length(), 1e-9 * far.result.route.length());
+  EXPECT_GT(slow.result.stats.expanded, far.result.stats.expanded);
   // A start inside a zone: the Planner's one-line refusal, as for every graph.
   EXPECT_THROW(planner.solve({{0, 0}, {100, 0}}), NoRouteError);
 }

@@ -56,7 +56,7 @@ void NavMeshGraph::triangulate(const Vec2& lo, const Vec2& hi) {
   edge_count_ = mesh_->edges().size();
 }
 
-PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm, const CostModel*,
+PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm search, const CostModel*,
                                const SearchBudget& budget) {
   const Vec2 s = problem.start - origin_, g = problem.goal - origin_;
   const Vec2 lo = s.cwiseMin(g), hi = s.cwiseMax(g);
@@ -69,7 +69,8 @@ PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm, 
       problem, [&](const Vec2& p) { return polygons_->strictly_inside(p - origin_); },
       [&](const Vec2& p) -> Vec2 { return polygons_->closest_boundary_point(p - origin_) + origin_; },
       [&](const PlanningProblem& banded) {
-        found = polyanya(*mesh_, banded.start - origin_, banded.goal - origin_, budget);
+        found =
+            polyanya(*mesh_, banded.start - origin_, banded.goal - origin_, budget, search == SearchAlgorithm::astar);
         PlanResult r;
         r.found = found.found;
         r.cost = found.length;

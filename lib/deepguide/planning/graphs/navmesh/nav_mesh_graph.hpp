@@ -30,7 +30,8 @@ class NavMeshGraph : public RouteGraph {
   explicit NavMeshGraph(const GraphBuild& in);
   ~NavMeshGraph() override;
 
-  /// Shortest by length (`cost` is not read: the entry prices by length only).
+  /// Shortest by length (`cost` is not read: the entry prices by length
+  /// only); Polyanya with its heuristic for A*, without for Dijkstra.
   PlanResult solve(const PlanningProblem& problem, SearchAlgorithm search, const CostModel* cost,
                    const SearchBudget& budget) override;
   /// The mesh's edges, in the planning frame.

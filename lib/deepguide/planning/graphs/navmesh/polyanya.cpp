@@ -69,8 +69,8 @@ Range both(const Range& x, const Range& y) { return {std::max(x.lo, y.lo), std::
 
 class Search {
  public:
-  Search(const NavMesh& mesh, const Vec2& goal, const SearchBudget& budget)
-      : mesh_(mesh), goal_(goal), budget_(budget), best_(mesh.vertices().size(), kInf) {
+  Search(const NavMesh& mesh, const Vec2& goal, const SearchBudget& budget, bool heuristic)
+      : mesh_(mesh), goal_(goal), budget_(budget), heuristic_(heuristic), best_(mesh.vertices().size(), kInf) {
     for (const std::int32_t f : mesh.faces_at(goal)) goal_faces_.push_back(f);
   }
 
@@ -154,7 +154,7 @@ class Search {
     while (n.edge < 3 && !(beyond.v[n.edge] == q && beyond.v[(n.edge + 1) % 3] == p)) ++n.edge;
     if (n.edge == 3) return;  // not the shared edge: cannot happen in a valid mesh
     n.g = g;
-    n.f = g + heuristic(root, n.left, n.right, goal_);
+    n.f = g + (heuristic_ ? heuristic(root, n.left, n.right, goal_) : 0.0);
     n.parent = parent;
     (void)from;
     push(n);
@@ -250,6 +250,7 @@ class Search {
   const NavMesh& mesh_;
   Vec2 goal_;
   const SearchBudget& budget_;
+  bool heuristic_;
   std::vector<double> best_;  // the shortest way found to each corner used as a root
   std::vector<std::int32_t> goal_faces_;
   std::vector<Node> nodes_;
@@ -259,8 +260,9 @@ class Search {
 
 }  // namespace
 
-PolyanyaResult polyanya(const NavMesh& mesh, const Vec2& start, const Vec2& goal, const SearchBudget& budget) {
-  return Search(mesh, goal, budget).run(start);
+PolyanyaResult polyanya(const NavMesh& mesh, const Vec2& start, const Vec2& goal, const SearchBudget& budget,
+                        bool heuristic) {
+  return Search(mesh, goal, budget, heuristic).run(start);
 }
 
 }  // namespace deepguide

@@ -50,7 +50,10 @@ struct PolyanyaResult {
 };
 
 /// The shortest route from start to goal within the mesh's water; found is
-/// false when none joins them (or start or goal lies in no face).
-PolyanyaResult polyanya(const NavMesh& mesh, const Vec2& start, const Vec2& goal, const SearchBudget& budget = {});
+/// false when none joins them (or start or goal lies in no face). With
+/// `heuristic` false, h is 0: the same route in Dijkstra's order (`--search
+/// dijkstra`), for comparison.
+PolyanyaResult polyanya(const NavMesh& mesh, const Vec2& start, const Vec2& goal, const SearchBudget& budget = {},
+                        bool heuristic = true);
 
 }  // namespace deepguide
