@@ -131,4 +131,29 @@ bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
   return true;
 }
 
+CentredVisibility centred_visibility(const BgMultiPolygon& polygons) {
+  CentredVisibility out;
+  if (!polygons.empty()) {
+    BgBox box;
+    bg::envelope(polygons, box);
+    out.origin =
+        Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()), 0.5 * (box.min_corner().y() + box.max_corner().y()));
+  }
+  BgMultiPolygon local = polygons;
+  double extent = 1.0;
+  for (BgPolygon& poly : local) {
+    bg::correct(poly);
+    auto shift = [&](auto& ring) {
+      for (BgPoint& pt : ring) {
+        pt = to_bg(to_eigen(pt) - out.origin);
+        extent = std::max({extent, std::abs(pt.x()), std::abs(pt.y())});
+      }
+    };
+    shift(poly.outer());
+    for (auto& inner : poly.inners()) shift(inner);
+  }
+  out.visibility = std::make_unique<PolygonVisibility>(std::move(local), 1e-9 * extent);
+  return out;
+}
+
 }  // namespace deepguide

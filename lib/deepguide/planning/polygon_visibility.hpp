@@ -63,4 +63,14 @@ class PolygonVisibility {
   std::unique_ptr<PolygonLocator> locator_;  // which polygon holds a point (strictly_inside)
 };
 
+/// The polygon graphs' frame: `polygons` (corrected) about the centre of
+/// their box, for UTM's millions of metres cost orientation tests six
+/// digits, and their visibility with eps a billionth of their extent from it
+/// (at least 1 m). The origin is zero for no polygons.
+struct CentredVisibility {
+  Vec2 origin{0.0, 0.0};
+  std::unique_ptr<PolygonVisibility> visibility;
+};
+CentredVisibility centred_visibility(const BgMultiPolygon& polygons);
+
 }  // namespace deepguide

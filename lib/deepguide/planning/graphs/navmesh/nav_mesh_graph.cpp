@@ -20,31 +20,20 @@ std::pair<Vec2, Vec2> widened(const Vec2& lo, const Vec2& hi) {
 }  // namespace
 
 NavMeshGraph::NavMeshGraph(const GraphBuild& in) : zones_(graph_zone_polygons(in)) {
+  // The visibility graph's frame and band test (centred_visibility), so a
+  // start in the band steps to the same point for both.
+  CentredVisibility centred = centred_visibility(zones_);
+  origin_ = centred.origin;
+  polygons_ = std::move(centred.visibility);
   BgBox box;
   bg::assign_inverse(box);
   if (!zones_.empty()) bg::envelope(zones_, box);
-  // About the zones' centre, as the visibility graph: the band test below is then the same.
-  if (!zones_.empty()) origin_ = 0.5 * (to_eigen(box.min_corner()) + to_eigen(box.max_corner()));
   if (in.focus.active()) {
     bg::expand(box, to_bg(in.focus.start));
     bg::expand(box, to_bg(in.focus.goal));
   }
   Vec2 lo(0.0, 0.0), hi(0.0, 0.0);
   if (box.min_corner().x() <= box.max_corner().x()) lo = to_eigen(box.min_corner()), hi = to_eigen(box.max_corner());
-  BgMultiPolygon local = zones_;
-  double extent = 1.0;
-  for (BgPolygon& poly : local) {
-    bg::correct(poly);
-    auto shift = [&](auto& ring) {
-      for (BgPoint& pt : ring) {
-        pt = to_bg(to_eigen(pt) - origin_);
-        extent = std::max({extent, std::abs(pt.x()), std::abs(pt.y())});
-      }
-    };
-    shift(poly.outer());
-    for (auto& inner : poly.inners()) shift(inner);
-  }
-  polygons_ = std::make_unique<PolygonVisibility>(std::move(local), 1e-9 * extent);
   const auto [area_lo, area_hi] = widened(lo - origin_, hi - origin_);
   triangulate(area_lo, area_hi);
 }

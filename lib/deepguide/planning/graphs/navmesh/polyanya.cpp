@@ -124,8 +124,8 @@ class Search {
   // The node for the part [lo, hi] of edge (P, Q) (P on the right), seen
   // from `root`, into the face across it; nothing when the part is a point
   // or lies on a line through the root.
-  void make(const Node& from, std::int32_t parent, const Vec2& root, std::int32_t root_id, double g, std::int32_t face,
-            int e, const Range& part) {
+  void make(std::int32_t parent, const Vec2& root, std::int32_t root_id, double g, std::int32_t face, int e,
+            const Range& part) {
     const NavMesh::Face& f = mesh_.faces()[face];
     const std::int32_t across = f.next[e];
     if (across == NavMesh::kNone || part.empty()) return;
@@ -156,13 +156,12 @@ class Search {
     n.g = g;
     n.f = g + (heuristic_ ? heuristic(root, n.left, n.right, goal_) : 0.0);
     n.parent = parent;
-    (void)from;
     push(n);
   }
 
   void start_successors(const Vec2& start, std::int32_t face) {
     // From inside a face its edges, anticlockwise, run from right to left.
-    for (int e = 0; e < 3; ++e) make(Node{}, -1, start, kStartRoot, 0.0, face, e, Range{0.0, 1.0});
+    for (int e = 0; e < 3; ++e) make(-1, start, kStartRoot, 0.0, face, e, Range{0.0, 1.0});
   }
 
   // A turn round the interval's end `v` (a mesh vertex or none): its g, or
@@ -181,7 +180,7 @@ class Search {
       // The root is a corner of this face: every far edge is seen whole (the
       // next edge round the root fans on; the way back is not taken again).
       for (int e = 0; e < 3; ++e) {
-        if (e != n.edge) make(n, id, n.root, n.root_id, n.g, n.face, e, Range{0.0, 1.0});
+        if (e != n.edge) make(id, n.root, n.root_id, n.g, n.face, e, Range{0.0, 1.0});
       }
       if (holds_goal(n.face)) finals(id, n, kInf, kInf);
       return;
@@ -202,9 +201,9 @@ class Search {
       const double al = cross(to_left, P - r), bl = cross(to_left, Q - P);
       const Range right_of_left = where_not_negative(-al, -bl, eps_l);
       const Range left_of_right = where_not_negative(ar, br, eps_r);
-      make(n, id, r, n.root_id, n.g, n.face, e, both(left_of_right, right_of_left));
-      if (g_right < kInf) make(n, id, n.right, n.right_vertex, g_right, n.face, e, where_not_negative(-ar, -br, eps_r));
-      if (g_left < kInf) make(n, id, n.left, n.left_vertex, g_left, n.face, e, where_not_negative(al, bl, eps_l));
+      make(id, r, n.root_id, n.g, n.face, e, both(left_of_right, right_of_left));
+      if (g_right < kInf) make(id, n.right, n.right_vertex, g_right, n.face, e, where_not_negative(-ar, -br, eps_r));
+      if (g_left < kInf) make(id, n.left, n.left_vertex, g_left, n.face, e, where_not_negative(al, bl, eps_l));
     }
     if (holds_goal(n.face)) finals(id, n, g_right, g_left);
   }

@@ -203,28 +203,10 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
                                  const WaypointGrid& grid)
     : variant_(variant) {
   const auto t0 = std::chrono::steady_clock::now();
-  // Work around an origin inside the area: UTM coordinates are ~1e6 m, and
-  // orientation tests lose six digits on them.
-  BgBox box;
-  bg::envelope(zones, box);
-  origin_ = zones.empty() ? Vec2::Zero()
-                          : Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()),
-                                 0.5 * (box.min_corner().y() + box.max_corner().y()));
+  CentredVisibility centred = centred_visibility(zones);
+  origin_ = centred.origin;
   focus_ = focus.shifted(origin_);
-  BgMultiPolygon local = zones;
-  double extent = 1.0;
-  for (BgPolygon& poly : local) {
-    bg::correct(poly);
-    auto shift = [&](auto& ring) {
-      for (BgPoint& pt : ring) {
-        pt = to_bg(to_eigen(pt) - origin_);
-        extent = std::max({extent, std::abs(pt.x()), std::abs(pt.y())});
-      }
-    };
-    shift(poly.outer());
-    for (auto& inner : poly.inners()) shift(inner);
-  }
-  visibility_ = std::make_unique<PolygonVisibility>(std::move(local), 1e-9 * extent);
+  visibility_ = std::move(centred.visibility);
 
   // Corners of every ring. Boost rings run clockwise around the polygon's
   // interior (holes anticlockwise), so the obstacle is always on the right.
