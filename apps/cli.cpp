@@ -130,6 +130,7 @@ const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter
     {"goal", "--to"},
     {"goal_heading", "--to-heading"},
     {"graph", "--graph"},
+    {"graphs", "--graphs"},
     {"local_crs", "--crs"},
     {"margin", "--margin"},
     {"margin_m", "--margin"},

@@ -40,7 +40,8 @@ double quantile(std::vector<double> v, double q) {
 struct Run {
   std::string graph;
   double build_ms = 0.0, rss_mb = 0.0;
-  std::vector<double> solve_ms, lengths;
+  std::vector<double> solve_ms, search_ms, lengths;
+  std::vector<double> expanded;
   int found = 0;
 };
 
@@ -58,6 +59,8 @@ Run run(const ObstacleSet& obstacles, const GraphKind& kind, const std::vector<s
     const PlanOutcome out = planner.solve({s, g});
     r.solve_ms.push_back(ms_since(q0));
     r.lengths.push_back(out.result.found ? out.result.route.length() : -1.0);
+    r.search_ms.push_back(out.result.stats.query_ms);
+    r.expanded.push_back(static_cast<double>(out.result.stats.expanded));
     r.found += out.result.found && out.check.safe ? 1 : 0;
     if (out.result.found && !out.check.safe) {
       std::printf("unsafe: %s from (%.17g, %.17g) to (%.17g, %.17g): %s\n", kind.name.c_str(), s.x(), s.y(), g.x(),
@@ -108,16 +111,19 @@ int main(int argc, char** argv) {
   std::printf("# bench_navmesh: %s at %g m\n\n", chart.c_str(), depth);
   std::printf(
       "%zu obstacles, read and made no-go in %.0f ms; %d random pairs of free points (seed %u), margin 5 m. "
-      "`solve` is the whole Planner::solve (route check included), ms.\n\n",
+      "`solve` is the whole Planner::solve (route check included), `search` the graph's own query, ms.\n\n",
       no_go.obstacles.size(), read_ms, queries, seed);
   std::vector<Run> runs{run(no_go.obstacles, GraphKind{"navmesh"}, pairs)};
   if (visibility) runs.push_back(run(no_go.obstacles, GraphKind::visibility, pairs));
-  std::printf("| graph | build ms | peak RSS MB | found and safe | solve median | p90 | p99 | max |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf(
+      "| graph | build ms | peak RSS MB | found and safe | solve median | p90 | p99 | max | search median | search p99 "
+      "| expanded p99 |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const Run& r : runs) {
-    std::printf("| %s | %.1f | %.0f | %d/%d | %.3f | %.3f | %.3f | %.3f |\n", r.graph.c_str(), r.build_ms, r.rss_mb,
-                r.found, queries, quantile(r.solve_ms, 0.5), quantile(r.solve_ms, 0.9), quantile(r.solve_ms, 0.99),
-                quantile(r.solve_ms, 1.0));
+    std::printf("| %s | %.1f | %.0f | %d/%d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f |\n", r.graph.c_str(),
+                r.build_ms, r.rss_mb, r.found, queries, quantile(r.solve_ms, 0.5), quantile(r.solve_ms, 0.9),
+                quantile(r.solve_ms, 0.99), quantile(r.solve_ms, 1.0), quantile(r.search_ms, 0.5),
+                quantile(r.search_ms, 0.99), quantile(r.expanded, 0.99));
   }
   if (runs.size() == 2) {
     int same = 0;

@@ -7,16 +7,23 @@
 // navmesh route passes the independent checker. DEEPGUIDE_NAVMESH_PAIRS sets
 // the pairs per chart (default 20; scripts/navmesh_charts.sh runs 200);
 // DEEPGUIDE_ENC_SEED shifts the seeds.
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
+#include <ogrsf_frmts.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {
@@ -90,6 +97,73 @@ TEST(EncNavMesh, KeyWestRoutesEqualTheVisibilityGraphs) {
   compare_on_chart("noaa-enc-US5FL4DQ/US5FL4DQ.000", 1.0, 2.0, 42);
 }
 TEST(EncNavMesh, KachemakRoutesEqualTheVisibilityGraphs) { compare_on_chart("noaa-enc-kachemak", 5.0, 20.0, 43); }
+
+// `chart prepare` keeps the navmesh in the GeoPackage and `plan` loads it:
+// the same route as from the cell, "(prepared)" said, and the mesh rebuilt
+// (not taken) for another margin. A table someone damaged is a one-line
+// error naming the file; `--graphs none` keeps none; a graph that cannot be
+// kept is refused before any cell is read.
+TEST(PreparedNavMesh, PlanLoadsTheKeptMeshAndPlansTheSameRoute) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(cell, "noaa-enc-US4MD81M/US4MD81M.000");
+  test::ScratchDir tmp;
+  const std::string gpkg = tmp.file("bay.gpkg");
+  const test::RunResult prepared = test::run_cli("chart prepare '" + cell + "' --depth 5 -o '" + gpkg + "'");
+  ASSERT_EQ(prepared.exit_code, 0) << prepared.err;
+  EXPECT_NE(prepared.out.find("graph            navmesh: margin 5 m, "), std::string::npos) << prepared.out;
+  const std::string trip = " --depth 5 --from -76.41,38.87 --to -76.35,38.60 --graph navmesh --json -o ";
+  const test::RunResult from_cell =
+      test::run_cli("plan --chart '" + cell + "'" + trip + "'" + tmp.file("a.geojson") + "'");
+  const test::RunResult from_gpkg =
+      test::run_cli("plan --chart '" + gpkg + "'" + trip + "'" + tmp.file("b.geojson") + "'");
+  ASSERT_EQ(from_cell.exit_code, 0) << from_cell.err;
+  ASSERT_EQ(from_gpkg.exit_code, 0) << from_gpkg.err;
+  const auto a = nlohmann::json::parse(from_cell.out), b = nlohmann::json::parse(from_gpkg.out);
+  EXPECT_FALSE(a["graph_prepared"].get<bool>());
+  EXPECT_TRUE(b["graph_prepared"].get<bool>());
+  // The GeoPackage keeps lon/lat: the obstacles come back within a micrometre, not bit for bit.
+  EXPECT_NEAR(b["length_m"].get<double>(), a["length_m"].get<double>(), 1e-3);
+  EXPECT_GT(b["length_m"].get<double>(), 1.01 * 30000.0);
+  const test::RunResult text =
+      test::run_cli("plan --chart '" + gpkg + "' --depth 5 --from -76.41,38.87 --to -76.35,38.60 --graph navmesh -o '" +
+                    tmp.file("c.geojson") + "'");
+  EXPECT_NE(text.out.find("graph            navmesh (prepared) over "), std::string::npos) << text.out;
+  const test::RunResult wider =
+      test::run_cli("plan --chart '" + gpkg + "'" + trip + "'" + tmp.file("d.geojson") + "' --margin 6");
+  ASSERT_EQ(wider.exit_code, 0) << wider.err;
+  EXPECT_FALSE(nlohmann::json::parse(wider.out)["graph_prepared"].get<bool>());
+
+  // Damage the kept bytes (GDAL, as any GeoPackage tool could).
+  {
+    GDALAllRegister();
+    GDALDatasetUniquePtr ds(GDALDataset::Open(gpkg.c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE));
+    ASSERT_TRUE(ds);
+    OGRLayer* graphs = ds->GetLayerByName("deepguide_graphs");
+    ASSERT_NE(graphs, nullptr);
+    std::unique_ptr<OGRFeature> row(graphs->GetNextFeature());
+    ASSERT_TRUE(row);
+    const GByte junk[12] = {'D', 'G', 'N', 'A', 'V', 'M', 'S', 'H', 1, 0, 0, 0};
+    row->SetField(row->GetFieldIndex("data"), 12, junk);
+    ASSERT_EQ(graphs->SetFeature(row.get()), OGRERR_NONE);
+  }
+  const test::RunResult damaged =
+      test::run_cli("plan --chart '" + gpkg + "'" + trip + "'" + tmp.file("e.geojson") + "'");
+  EXPECT_NE(damaged.exit_code, 0);
+  EXPECT_NE(damaged.err.find("bay.gpkg: table deepguide_graphs, graph 'navmesh': navigation mesh, byte 12: expected "
+                             "the origin, got the end of the data"),
+            std::string::npos)
+      << damaged.err;
+  EXPECT_EQ(std::count(damaged.err.begin(), damaged.err.end(), '\n'), 1) << damaged.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("e.geojson")));
+
+  const std::string bare = tmp.file("bare.gpkg");
+  ASSERT_EQ(test::run_cli("chart prepare '" + cell + "' --depth 5 --graphs none -o '" + bare + "'").exit_code, 0);
+  EXPECT_TRUE(read_prepared_graphs(bare).empty());
+  const test::RunResult refused =
+      test::run_cli("chart prepare '" + cell + "' --depth 5 --graphs quadtree -o '" + tmp.file("q.gpkg") + "'");
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.err.find("--graphs quadtree: expected navmesh"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("q.gpkg")));
+}
 
 }  // namespace
 }  // namespace deepguide

@@ -10,6 +10,7 @@
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/fnv1a.hpp"
 #include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/simulation/scenario_writer.hpp"
@@ -65,59 +66,38 @@ MonteCarloParams read_generator(const Mapping& root) {
   return p;
 }
 
-// 64-bit FNV-1a, fed piece by piece; each piece is preceded by its length so
-// that no two different sequences of pieces hash the same bytes.
-struct Fnv1a {
-  std::uint64_t h = 14695981039346656037ull;
-  void raw(const char* data, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      h ^= static_cast<unsigned char>(data[i]);
-      h *= 1099511628211ull;
-    }
+// A file as one piece of `h`, read in chunks; one the scenario reader would
+// refuse for its size (over 4 MiB) by its size alone, an unreadable one by a
+// tag piece of its own.
+void hash_file(Fnv1a& h, const std::string& path) {
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  std::ifstream in(path, std::ios::binary);
+  if (ec || !in) {
+    h.piece("unreadable");
+    return;
   }
-  void piece(const std::string& s) {
-    const std::string length = std::to_string(s.size()) + ":";
-    raw(length.data(), length.size());
-    raw(s.data(), s.size());
+  if (size > kMaxScenarioFileBytes) {
+    h.piece("over 4 MiB: " + std::to_string(size));
+    return;
   }
-  // A file as one piece, read in chunks; one the scenario reader would refuse
-  // for its size (over 4 MiB) by its size alone, an unreadable one by a tag
-  // piece of its own.
-  void file(const std::string& path) {
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(path, ec);
-    std::ifstream in(path, std::ios::binary);
-    if (ec || !in) {
-      piece("unreadable");
-      return;
-    }
-    if (size > kMaxScenarioFileBytes) {
-      piece("over 4 MiB: " + std::to_string(size));
-      return;
-    }
-    piece("file");
-    const std::string length = std::to_string(size) + ":";
-    raw(length.data(), length.size());
-    char buffer[1 << 16];
-    std::uintmax_t left = size;  // what the size promised, even if the file grows meanwhile
-    while (left > 0 && in.read(buffer, static_cast<std::streamsize>(std::min<std::uintmax_t>(left, sizeof buffer)))) {
-      raw(buffer, static_cast<std::size_t>(in.gcount()));
-      left -= static_cast<std::uintmax_t>(in.gcount());
-    }
-    if (left > 0) piece("shorter than its size");
+  h.piece("file");
+  const std::string length = std::to_string(size) + ":";
+  h.raw(length.data(), length.size());
+  char buffer[1 << 16];
+  std::uintmax_t left = size;  // what the size promised, even if the file grows meanwhile
+  while (left > 0 && in.read(buffer, static_cast<std::streamsize>(std::min<std::uintmax_t>(left, sizeof buffer)))) {
+    h.raw(buffer, static_cast<std::size_t>(in.gcount()));
+    left -= static_cast<std::uintmax_t>(in.gcount());
   }
-  std::string text() const {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "fnv1a64:%016llx", static_cast<unsigned long long>(h));
-    return buf;
-  }
-};
+  if (left > 0) h.piece("shorter than its size");
+}
 
 std::string fingerprint_of(const Suite& suite) {
   Fnv1a f;
   for (const SuiteScenario& s : suite.scenarios) {
     f.piece(s.id);
-    if (!s.path.empty()) f.file(s.path);
+    if (!s.path.empty()) hash_file(f, s.path);
   }
   if (!suite.scenarios.empty() && suite.scenarios.front().path.empty() && suite.generator) {
     // Every setting at full precision (suite_yaml writes them exactly), and

@@ -20,6 +20,7 @@
 // obstacles in the plane: its entry names it and has no build function, and
 // callers send it there.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -48,6 +49,9 @@ struct GraphBuild {
   /// The margin the graph plans with: options.margin, but never below a
   /// micrometre or a ten-billionth of the largest coordinate (planner.cpp says why).
   double margin = 0.0;
+  /// Bytes the entry's `save` wrote for the same obstacles and options
+  /// (prepared_graphs.hpp): the graph is read from them, not built. Null: build.
+  const std::vector<std::uint8_t>* prepared = nullptr;
 };
 
 struct GraphCapabilities {
@@ -76,6 +80,9 @@ struct GraphEntry {
   GraphCapabilities can;
   /// Builds the graph; null only for a graph that plans in depth.
   std::function<std::unique_ptr<RouteGraph>(const GraphBuild&)> build;
+  /// The graph as bytes its `build` reads back (GraphBuild::prepared), for
+  /// `chart prepare --graphs`; null when the graph cannot be kept.
+  std::function<std::vector<std::uint8_t>(const RouteGraph&)> save = {};
 };
 
 /// Adds a graph kind. Throws InputError for an empty name, one with a comma

@@ -10,6 +10,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/prepared_graphs.hpp"
 #include "deepguide/planning/route_finishing.hpp"
 #include "deepguide/planning/turn_rounding.hpp"
 
@@ -43,6 +44,8 @@ struct Planner::Impl {
   GraphCapabilities can;
   std::unique_ptr<RouteGraph> graph;
   double build_ms = 0.0;
+  double graph_margin = 0.0;  // GraphBuild::margin
+  bool prepared = false;      // the graph was read from PlannerOptions::prepared
   // With a turning radius: the tangent graph without it, built when no route
   // is found, to say where the radius closes the way.
   std::unique_ptr<RouteGraph> plain;
@@ -97,8 +100,23 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   const auto started = std::chrono::steady_clock::now();
   // The field's own copy of the obstacles: a graph may keep a reference to it.
   const ObstacleSet& kept = impl_->field.obstacles();
-  impl_->graph =
-      entry.build(GraphBuild{kept, impl_->field, options, focus, std::max(options.margin, min_graph_margin(kept))});
+  impl_->graph_margin = std::max(options.margin, min_graph_margin(kept));
+  GraphBuild build{kept, impl_->field, options, focus, impl_->graph_margin};
+  const PreparedGraphRecord* kept_graph = options.prepared && entry.save
+                                              ? find_prepared(*options.prepared, entry.name, prepared_graph_key(build))
+                                              : nullptr;
+  if (kept_graph != nullptr) {
+    build.prepared = &kept_graph->data;
+    try {
+      impl_->graph = entry.build(build);
+    } catch (const InputError& e) {
+      throw InputError(printable(kept_graph->source, 240) + ": table deepguide_graphs, graph '" + entry.name +
+                       "': " + e.what());
+    }
+    impl_->prepared = true;
+  } else {
+    impl_->graph = entry.build(build);
+  }
   if (!impl_->graph) throw InputError("graph '" + entry.name + "': its build function returned no graph");
   impl_->build_ms = elapsed_ms(started);
 }
@@ -108,6 +126,16 @@ Planner::Planner(Planner&&) noexcept = default;
 Planner& Planner::operator=(Planner&&) noexcept = default;
 
 const ObstacleField& Planner::field() const { return impl_->field; }
+
+PreparedGraphRecord Planner::save_graph() const {
+  const GraphEntry& entry = graph_entry(options_.graph);
+  if (!entry.save) {
+    throw InputError("graph '" + entry.name + "': cannot be prepared (expected " +
+                     graph_names_text([](const GraphEntry& e) { return static_cast<bool>(e.save); }) + ")");
+  }
+  const GraphBuild build{impl_->field.obstacles(), impl_->field, options_, QueryFocus{}, impl_->graph_margin};
+  return {entry.name, prepared_graph_key(build), "", entry.save(*impl_->graph), ""};
+}
 RouteGraph& Planner::graph() { return *impl_->graph; }
 const RouteGraph& Planner::graph() const { return *impl_->graph; }
 
@@ -254,6 +282,7 @@ PlanOutcome Planner::solve(const PlanningProblem& problem) {
   const auto started = std::chrono::steady_clock::now();
   out.result = impl_->graph->solve(problem, options_.search, options_.cost.get(), options_.budget);
   out.result.stats.build_ms = impl_->build_ms;
+  out.result.stats.prepared = impl_->prepared;
   out.result.stats.query_ms = elapsed_ms(started);
   bool rounding_failed = impl_->can.finished_by_planner && !refine_and_round(out.result, impl_->field, options_);
   out.check = check_route(out.result.found ? out.result.route.points : std::vector<Vec2>{problem.start}, impl_->field);

@@ -55,6 +55,10 @@ class Planner {
   /// The graph; its extras by type: `graph().as<QuadtreeGraph>()`.
   RouteGraph& graph();
   const RouteGraph& graph() const;
+  /// The graph as a prepared chart keeps it (GraphEntry::save), under the key
+  /// of these obstacles and options (prepared_graphs.hpp); `about` is left to
+  /// the caller. InputError when the graph's entry cannot save.
+  PreparedGraphRecord save_graph() const;
   /// The graph's edges, for drawings.
   std::vector<std::pair<Vec2, Vec2>> graph_edges() const { return graph().edges(); }
 

@@ -12,6 +12,7 @@
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/graphs/quadtree/quadtree_options.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
+#include "deepguide/world/prepared_graph_record.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -68,6 +69,10 @@ struct PlannerOptions {
   /// are refined off the graph's vertices to the continuous optimum near
   /// them (route_refinement.hpp). Off: the graph's own optimum.
   bool refine = true;
+  /// Graphs built earlier (a prepared chart's, `chart prepare --graphs`): the
+  /// Planner loads the one of its graph kind whose key fits the obstacles and
+  /// these options (prepared_graphs.hpp) instead of building it.
+  std::shared_ptr<const std::vector<PreparedGraphRecord>> prepared = nullptr;
 };
 
 /// A registered graph's name (graph_registry.hpp) / "astar", "dijkstra"; InputError otherwise.

@@ -83,6 +83,7 @@ struct PlanStats {
   std::size_t expanded = 0;               ///< vertices the search examined
   SearchStop stopped = SearchStop::none;  ///< the search's budget ran out, or it was cancelled (PlannerOptions::budget)
   double build_ms = 0.0;                  ///< building the environment's graph (once per environment)
+  bool prepared = false;                  ///< the graph was read from a prepared chart, not built
   double query_ms = 0.0;                  ///< attaching start and goal plus the search
   /// Continuous refinement of a time or energy route (route_refinement.hpp).
   std::size_t refine_sweeps = 0;

@@ -228,6 +228,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
     options.turn_radius_m = route_turn_radius(report.vehicle, model.speed_mps, model.max_current_mps);
   }
   if (r.waypoint_grid_m) options.grid = waypoint_grid_for(r.problem.start, r.problem.goal, *r.waypoint_grid_m);
+  options.prepared = charted.prepared_graphs;
 
   report.plan = plan_single_query(report.obstacles, r.problem, options);
   const PlanOutcome& out = report.plan.outcome;
@@ -285,6 +286,7 @@ nlohmann::json RoutePlanReport::route_properties() const {
                       {"search", to_string(request.search)},
                       {"graph_vertices", stats.graph_vertices},
                       {"graph_edges", stats.graph_edges},
+                      {"graph_prepared", stats.prepared},
                       {"open_water_vertices", stats.open_water_vertices},
                       {"refine_sweeps", stats.refine_sweeps},
                       {"refine_gain", stats.refine_gain},
@@ -420,9 +422,9 @@ std::string RoutePlanReport::to_text() const {
                                    " m, leaves obstacle '" + printable(out.escaped_from) +
                                    "''s zone from inside it; the clearance is the rest's");
   }
-  t += report_line("graph", to_string(request.graph) + " over " + std::to_string(plan.obstacles_used) + " of " +
-                                std::to_string(plan.obstacles_total) + " obstacles, " +
-                                std::to_string(stats.graph_vertices) + " vertices, " +
+  t += report_line("graph", to_string(request.graph) + (stats.prepared ? " (prepared)" : "") + " over " +
+                                std::to_string(plan.obstacles_used) + " of " + std::to_string(plan.obstacles_total) +
+                                " obstacles, " + std::to_string(stats.graph_vertices) + " vertices, " +
                                 std::to_string(stats.graph_edges) + " edges; " + to_string(request.search) +
                                 " expanded " + std::to_string(stats.expanded));
   if (stats.open_water_vertices > 0) {

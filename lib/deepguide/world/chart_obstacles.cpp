@@ -69,6 +69,11 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
     o.operating_depth_m = options.depth_m;
     o.vertical_clearance_m = options.clearance_m;
     EncNoGo no_go = chart_no_go(enc, frame, o);
+    if (no_go.cells.empty()) {  // one prepared chart (chart_no_go refuses more)
+      auto graphs = read_prepared_graphs(enc.front());
+      if (!graphs.empty())
+        out.prepared_graphs = std::make_shared<const std::vector<PreparedGraphRecord>>(std::move(graphs));
+    }
     // One row for the cells read together.
     ChartFileObstacles file{no_go.cells.empty()       ? enc.front()
                             : no_go.cells.size() == 1 ? no_go.cells.front().path

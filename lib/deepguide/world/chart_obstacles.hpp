@@ -24,6 +24,7 @@
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
+#include "deepguide/world/prepared_graph_record.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -53,6 +54,8 @@ struct ChartObstacles {
   std::vector<ChartFileObstacles> files;
   /// The S-57 cells' no-go, feature by feature (null without cells): what names a crossing.
   std::shared_ptr<const EncNoGo> enc;
+  /// The graphs a prepared chart keeps (prepared_graph_record.hpp; null when none).
+  std::shared_ptr<const std::vector<PreparedGraphRecord>> prepared_graphs;
   /// Where the bathymetry rasters know the depth (their outlines, local frame;
   /// empty without rasters). A route must stay inside: route_leaves_coverage.
   BgMultiPolygon raster_coverage;

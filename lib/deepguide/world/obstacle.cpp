@@ -6,6 +6,7 @@
 #include <string>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/fnv1a.hpp"
 
 namespace deepguide {
 
@@ -34,6 +35,27 @@ std::pair<Vec2, Vec2> footprint_box(const ObstacleSet& obstacles) {
     for (const BgPoint& pt : p.footprint.outer()) lo = lo.cwiseMin(to_eigen(pt)), hi = hi.cwiseMax(to_eigen(pt));
   }
   return {lo, hi};
+}
+
+std::string footprint_fingerprint(const ObstacleSet& obstacles) {
+  Fnv1a h;
+  h.number(static_cast<std::uint64_t>(obstacles.ellipses.size()));
+  for (const EllipticCylinder& e : obstacles.ellipses) {
+    for (const double x :
+         {e.footprint.centre.x(), e.footprint.centre.y(), e.footprint.a, e.footprint.b, e.footprint.theta})
+      h.number(x);
+  }
+  const auto ring = [&h](const BgPolygon::ring_type& r) {
+    h.number(static_cast<std::uint64_t>(r.size()));
+    for (const BgPoint& p : r) h.number(p.x()), h.number(p.y());
+  };
+  h.number(static_cast<std::uint64_t>(obstacles.polygons.size()));
+  for (const PolygonObstacle& p : obstacles.polygons) {
+    ring(p.footprint.outer());
+    h.number(static_cast<std::uint64_t>(p.footprint.inners().size()));
+    for (const BgPolygon::ring_type& inner : p.footprint.inners()) ring(inner);
+  }
+  return h.text();
 }
 
 }  // namespace deepguide

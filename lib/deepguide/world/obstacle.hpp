@@ -49,4 +49,9 @@ std::pair<Vec2, Vec2> footprint_box(const ObstacleSet& obstacles);
 /// InputError for a negative or non-finite depth or clearance.
 std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double vertical_clearance_m);
 
+/// The footprints' fingerprint ("fnv1a64:" and 16 hex digits), in order and
+/// bit for bit: a graph prepared over these obstacles (prepared_graphs.hpp)
+/// is taken only for the same obstacles read the same way.
+std::string footprint_fingerprint(const ObstacleSet& obstacles);
+
 }  // namespace deepguide

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
@@ -23,6 +24,8 @@ constexpr const char* kFormat = "deepguide prepared chart 2";
 constexpr const char* kFormat1 = "deepguide prepared chart 1";
 constexpr const char* kMetaLayer = "deepguide_chart";
 constexpr const char* kFeatureLayer = "no_go_features";
+constexpr const char* kGraphLayer = "deepguide_graphs";
+constexpr const char* kGraphColumns[] = {"graph", "key", "about"};
 
 std::string shown(const std::string& path) { return printable(path, 240); }
 
@@ -193,6 +196,27 @@ void write_meta(GDALDataset& ds, const EncNoGo& no_go, const EncNoGoOptions& o, 
   if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write the deepguide_chart row");
 }
 
+void write_graphs(GDALDataset& ds, const std::vector<PreparedGraphRecord>& graphs, const std::string& path) {
+  OGRLayer* layer = ds.CreateLayer(kGraphLayer, nullptr, wkbNone, nullptr);
+  if (layer == nullptr) fail_write(path, "create the deepguide_graphs table");
+  for (const char* name : kGraphColumns) {
+    OGRFieldDefn fd(name, OFTString);
+    if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
+  }
+  OGRFieldDefn blob("data", OFTBinary);
+  if (layer->CreateField(&blob) != OGRERR_NONE) fail_write(path, "create field data");
+  for (const PreparedGraphRecord& g : graphs) {
+    OGRFeature f(layer->GetLayerDefn());
+    f.SetField("graph", g.graph.c_str());
+    f.SetField("key", g.key.c_str());
+    f.SetField("about", g.about.c_str());
+    if (g.data.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      fail_write(path, "store graph '" + g.graph + "' of " + std::to_string(g.data.size()) + " bytes (2 GiB at most)");
+    f.SetField(layer->GetLayerDefn()->GetFieldIndex("data"), static_cast<int>(g.data.size()), g.data.data());
+    if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write graph '" + g.graph + "'");
+  }
+}
+
 GDALDatasetUniquePtr open_gpkg(const std::string& path) {
   gdal::ensure_registered();
   const char* drivers[] = {"GPKG", nullptr};
@@ -209,7 +233,8 @@ bool is_prepared_chart(const std::string& path) {
   return ds && ds->GetLayerByName(kMetaLayer) != nullptr;
 }
 
-void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace) {
+void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace,
+                          const PreparedGraphsMaker& graphs) {
   if (ascii_lower(fs::path(path).extension().string()) != ".gpkg") {
     throw InputError(shown(path) + ": expected a GeoPackage name (*.gpkg) for a prepared chart");
   }
@@ -231,6 +256,22 @@ void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const E
     write_meta(*ds, no_go, options, path);
     if (ds->CommitTransaction() != OGRERR_NONE) fail_write(path, "commit the GeoPackage");
     ds.reset();  // closes (flushes) before the rename
+    if (!gdal::QuietErrors::last_message().empty()) fail_write(path, "finish the file");
+  }
+  if (graphs) {
+    // The obstacles exactly as `plan --chart` will read them (a lon/lat round
+    // trip changes their last bits): the graphs' key fingerprints them.
+    const std::vector<PreparedGraphRecord> made =
+        graphs(read_prepared_chart(out.temp_path().string(), no_go.frame, options.operating_depth_m,
+                                   options.vertical_clearance_m)
+                   .obstacles);
+    gdal::QuietErrors quiet;
+    GDALDatasetUniquePtr ds(GDALDataset::Open(out.temp_path().c_str(), GDAL_OF_VECTOR | GDAL_OF_UPDATE));
+    if (!ds) fail_write(path, "reopen the GeoPackage");
+    if (ds->StartTransaction() != OGRERR_NONE) fail_write(path, "start a transaction");
+    write_graphs(*ds, made, path);
+    if (ds->CommitTransaction() != OGRERR_NONE) fail_write(path, "commit the GeoPackage");
+    ds.reset();
     if (!gdal::QuietErrors::last_message().empty()) fail_write(path, "finish the file");
   }
   out.commit(replace);
@@ -319,6 +360,38 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
   return out;
 }
 
+std::vector<PreparedGraphRecord> read_prepared_graphs(const std::string& path) {
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_gpkg(path);
+  if (!ds) throw InputError(shown(path) + ": expected a prepared chart (chart prepare), got none");
+  OGRLayer* layer = ds->GetLayerByName(kGraphLayer);
+  std::vector<PreparedGraphRecord> out;
+  if (layer == nullptr) return out;
+  OGRFeatureDefn* defn = layer->GetLayerDefn();
+  for (const char* name : kGraphColumns) {
+    const int i = defn->GetFieldIndex(name);
+    if (i < 0 || defn->GetFieldDefn(i)->GetType() != OFTString)
+      throw InputError(shown(path) + ": table deepguide_graphs: expected a text field '" + name + "'");
+  }
+  const int data = defn->GetFieldIndex("data");
+  if (data < 0 || defn->GetFieldDefn(data)->GetType() != OFTBinary)
+    throw InputError(shown(path) + ": table deepguide_graphs: expected a BLOB field 'data'");
+  for (auto& f : *layer) {
+    PreparedGraphRecord r;
+    r.graph = f->GetFieldAsString("graph");
+    r.key = f->GetFieldAsString("key");
+    r.about = f->GetFieldAsString("about");
+    int n = 0;
+    const GByte* bytes = f->GetFieldAsBinary(data, &n);
+    if (bytes != nullptr && n > 0) r.data.assign(bytes, bytes + n);
+    r.source = path;
+    out.push_back(std::move(r));
+  }
+  if (const std::string why = gdal::QuietErrors::last_message(); !why.empty())
+    throw InputError(shown(path) + ": table deepguide_graphs: expected rows as written, got: " + why);
+  return out;
+}
+
 EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<LocalFrame>& frame,
                     const EncNoGoOptions& options) {
   std::size_t prepared = 0;
@@ -342,16 +415,33 @@ EncNoGo chart_no_go(const std::vector<std::string>& charts, const std::optional<
 }
 
 ChartPreparation prepare_chart(const std::vector<std::string>& charts, const std::string& local_crs,
-                               const EncNoGoOptions& options, const std::string& output, bool overwrite) {
+                               const EncNoGoOptions& options, const std::string& output, bool overwrite,
+                               const PreparedGraphsMaker& graphs) {
   const auto t0 = std::chrono::steady_clock::now();
   ChartPreparation p{
       output,
       enc_no_go(charts, local_crs.empty() ? std::nullopt : std::optional(LocalFrame::from_user_crs(local_crs)),
                 options),
-      options};
-  write_prepared_chart(output, p.no_go, options, overwrite);
+      options,
+      {},
+      0.0};
+  PreparedGraphsMaker keep_summaries;
+  if (graphs) {
+    keep_summaries = [&](const ObstacleSet& as_read) {
+      std::vector<PreparedGraphRecord> made = graphs(as_read);
+      for (const PreparedGraphRecord& r : made) p.graphs.push_back({r.graph, r.key, r.about, {}, output});
+      return made;
+    };
+  }
+  write_prepared_chart(output, p.no_go, options, overwrite, keep_summaries);
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return p;
+}
+
+nlohmann::json ChartPreparation::graphs_json() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (const PreparedGraphRecord& g : graphs) out.push_back({{"graph", g.graph}, {"key", g.key}, {"about", g.about}});
+  return out;
 }
 
 nlohmann::json ChartPreparation::to_json() const {
@@ -365,6 +455,7 @@ nlohmann::json ChartPreparation::to_json() const {
           {"polygons", no_go.obstacles.polygons.size()},
           {"discs", no_go.obstacles.ellipses.size()},
           {"vertices", no_go.vertices},
+          {"graphs", graphs_json()},
           {"seconds", seconds}};
 }
 
@@ -384,6 +475,8 @@ std::string ChartPreparation::to_text() const {
   t += printf_text("no-go            %zu features; for the planners %zu polygon(s), %zu corners, %zu disc(s)\n",
                    no_go.features.size(), no_go.obstacles.polygons.size(), no_go.vertices,
                    no_go.obstacles.ellipses.size());
+  for (const PreparedGraphRecord& g : graphs)
+    t += printf_text("graph            %s: %s\n", g.graph.c_str(), g.about.c_str());
   t += printf_text("time             %.2f s\n", seconds);
   t += printf_text("wrote            %s\n", output.c_str());
   return t;

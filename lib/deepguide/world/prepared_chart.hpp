@@ -13,7 +13,10 @@
 //  - "deepguide_chart": one row without geometry: the depth, clearance,
 //    required depth, options and cells it was prepared for, and the format
 //    version. A chart is used only at the depth and clearance it was
-//    prepared for: anything else is an error naming both.
+//    prepared for: anything else is an error naming both;
+//  - "deepguide_graphs" (optional): planning graphs built over the
+//    obstacles as read back from the file (prepared_graph_record.hpp), one
+//    row each: graph, key, about, and the graph's bytes as a BLOB.
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -22,6 +25,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/world/prepared_graph_record.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -39,8 +43,15 @@ struct PreparedChartInfo {
 bool is_prepared_chart(const std::string& path);
 
 /// Writes the no-go atomically (a failed write leaves no file; an existing
-/// file is replaced only with `replace`). Throws InputError naming the file.
-void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace);
+/// file is replaced only with `replace`). With `graphs`, the obstacles are
+/// read back from the written file as `plan --chart` reads them, and the
+/// graphs it makes of them are stored too. Throws InputError naming the file.
+void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace,
+                          const PreparedGraphsMaker& graphs = {});
+
+/// The graphs kept in a prepared chart (none when it has no such table).
+/// Throws InputError naming the file for a table that is not as written.
+std::vector<PreparedGraphRecord> read_prepared_graphs(const std::string& path);
 
 /// What `chart prepare` did: the cells judged, the no-go written and how
 /// long both took.
@@ -48,17 +59,20 @@ struct ChartPreparation {
   std::string output;
   EncNoGo no_go;
   EncNoGoOptions options;
+  std::vector<PreparedGraphRecord> graphs;  ///< their bytes dropped once written
   double seconds = 0.0;
 
   nlohmann::json to_json() const;
   std::string to_text() const;
+  nlohmann::json graphs_json() const;
 };
 
 /// Judges `charts` (cells and folders of cells) at the options' depth, in
 /// `local_crs` (empty: the first cell's UTM zone), and writes the prepared
-/// chart to `output` (write_prepared_chart).
+/// chart to `output` (write_prepared_chart), with `graphs` when given.
 ChartPreparation prepare_chart(const std::vector<std::string>& charts, const std::string& local_crs,
-                               const EncNoGoOptions& options, const std::string& output, bool overwrite);
+                               const EncNoGoOptions& options, const std::string& output, bool overwrite,
+                               const PreparedGraphsMaker& graphs = {});
 
 /// Reads a prepared chart into `frame` (or the frame it was prepared in) for
 /// `depth_m` and `vertical_clearance_m`; throws InputError naming the file

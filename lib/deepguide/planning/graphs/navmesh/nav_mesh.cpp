@@ -108,10 +108,7 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
       }
     }
   }
-  corner_.assign(vertices_.size(), 0);
   faces_.resize(face_id.size());
-  std::vector<Index::Item> boxes;
-  boxes.reserve(faces_.size());
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!water(cdt, f)) continue;
     const std::int32_t id = face_id.at(&*f);
@@ -123,12 +120,51 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
       const Cdt::Face_handle n = f->neighbor(opposite);
       const bool open = !cdt.is_constrained({f, opposite}) && water(cdt, n);
       out.next[k] = open ? face_id.at(&*n) : kNone;
-      if (!open) corner_[out.v[k]] = corner_[out.v[(k + 1) % 3]] = 1;
     }
+  }
+  find_corners();
+  index_faces();
+}
+
+NavMesh::NavMesh(std::vector<Vec2> vertices, std::vector<Face> faces, const Vec2& area_min, const Vec2& area_max)
+    : vertices_(std::move(vertices)),
+      faces_(std::move(faces)),
+      area_min_(area_min),
+      area_max_(area_max),
+      index_(std::make_unique<Index>()) {
+  find_corners();
+  index_faces();
+}
+
+void NavMesh::find_corners() {
+  // Per vertex: the water's angle (its faces' angles there) and the
+  // boundary edges that meet there (two where one wedge of water ends, more
+  // where the water touches itself).
+  std::vector<double> angle(vertices_.size(), 0.0);
+  std::vector<std::uint32_t> boundary(vertices_.size(), 0);
+  for (const Face& f : faces_) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec2& p = vertices_[f.v[k]];
+      const Vec2 a = vertices_[f.v[(k + 1) % 3]] - p, b = vertices_[f.v[(k + 2) % 3]] - p;
+      angle[f.v[k]] += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+      if (f.next[k] == kNone) ++boundary[f.v[k]], ++boundary[f.v[(k + 1) % 3]];
+    }
+  }
+  constexpr double kStraight = 3.14159265358979323846 - 1e-9;
+  corner_.assign(vertices_.size(), 0);
+  for (std::size_t v = 0; v < vertices_.size(); ++v) {
+    corner_[v] = boundary[v] > 2 || (boundary[v] == 2 && angle[v] > kStraight) ? 1 : 0;
+  }
+}
+
+void NavMesh::index_faces() {
+  std::vector<Index::Item> boxes;
+  boxes.reserve(faces_.size());
+  for (std::size_t id = 0; id < faces_.size(); ++id) {
     BgBox b;
     bg::assign_inverse(b);
-    for (const std::uint32_t v : out.v) bg::expand(b, to_bg(vertices_[v]));
-    boxes.emplace_back(b, id);
+    for (const std::uint32_t v : faces_[id].v) bg::expand(b, to_bg(vertices_[v]));
+    boxes.emplace_back(b, static_cast<std::int32_t>(id));
   }
   index_->faces = bgi::rtree<Index::Item, bgi::rstar<16>>(boxes.begin(), boxes.end());
 }

@@ -5,9 +5,14 @@
 //
 // Faces are triangles with their corners anticlockwise and, across each
 // edge, the face on the other side, or none where the edge bounds the water
-// (a no-go ring or the area's edge). A vertex on such an edge is a corner:
-// the only places a shortest route can turn (a taut string bends only round
-// an obstacle), which is what Polyanya (polyanya.hpp) needs to know of it.
+// (a no-go ring or the area's edge). A vertex on such edges where the water
+// is wider than a straight angle (an obstacle's convex corner) is a
+// *corner*: the only places a shortest route can turn (a taut string bends
+// only round an obstacle's convex corner), which is what Polyanya
+// (polyanya.hpp) needs to know of it. Vertices within 1e-9 rad of straight,
+// and those where the water touches itself (two wedges of water at one
+// vertex), count as corners too: an extra corner costs search nodes, a
+// missing one the shortest route.
 //
 // Which triangles are water: a flood from outside the area that flips at
 // every constraint edge (outside the area, in it, in a no-go polygon, in a
@@ -41,6 +46,9 @@ class NavMesh {
   /// must lie strictly inside it. Throws InputError for an empty or
   /// non-finite box.
   NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& area_max);
+  /// A mesh kept earlier (nav_mesh_file.hpp), from its parts as the accessors
+  /// give them; the corners are found again. Checks nothing: its reader has.
+  NavMesh(std::vector<Vec2> vertices, std::vector<Face> faces, const Vec2& area_min, const Vec2& area_max);
   ~NavMesh();
   NavMesh(NavMesh&&) noexcept;
   NavMesh& operator=(NavMesh&&) noexcept;
@@ -64,6 +72,8 @@ class NavMesh {
   std::vector<Face> faces_;
   Vec2 area_min_, area_max_;
   struct Index;  // R-tree of the faces' boxes
+  void index_faces();
+  void find_corners();
   std::unique_ptr<Index> index_;
 };
 

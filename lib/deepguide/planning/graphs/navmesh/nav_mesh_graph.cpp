@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <boost/geometry.hpp>
 
+#include "deepguide/core/error.hpp"
 #include "deepguide/planning/graph_zones.hpp"
+#include "deepguide/planning/graphs/navmesh/nav_mesh_file.hpp"
 #include "deepguide/planning/graphs/navmesh/polyanya.hpp"
 
 namespace deepguide {
@@ -19,12 +21,25 @@ std::pair<Vec2, Vec2> widened(const Vec2& lo, const Vec2& hi) {
 
 }  // namespace
 
-NavMeshGraph::NavMeshGraph(const GraphBuild& in) : zones_(graph_zone_polygons(in)) {
+NavMeshGraph::NavMeshGraph(const GraphBuild& in) {
+  KeptNavMesh kept;
+  if (in.prepared != nullptr) {
+    kept = read_nav_mesh(*in.prepared);
+    zones_ = std::move(kept.zones);
+  } else {
+    zones_ = graph_zone_polygons(in);
+  }
   // The visibility graph's frame and band test (centred_visibility), so a
   // start in the band steps to the same point for both.
   CentredVisibility centred = centred_visibility(zones_);
   origin_ = centred.origin;
   polygons_ = std::move(centred.visibility);
+  if (kept.mesh) {
+    if (kept.origin != origin_) throw InputError("navigation mesh: expected the origin its zones give");
+    mesh_ = std::move(kept.mesh);
+    edge_count_ = mesh_->edges().size();
+    return;
+  }
   BgBox box;
   bg::assign_inverse(box);
   if (!zones_.empty()) bg::envelope(zones_, box);
@@ -81,6 +96,8 @@ PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm s
   return result;
 }
 
+std::vector<std::uint8_t> NavMeshGraph::save() const { return write_nav_mesh(zones_, origin_, *mesh_); }
+
 std::vector<std::pair<Vec2, Vec2>> NavMeshGraph::edges() const {
   std::vector<std::pair<Vec2, Vec2>> out = mesh_->edges();
   for (auto& [a, b] : out) a += origin_, b += origin_;
@@ -93,6 +110,7 @@ GraphEntry nav_mesh_graph_entry() {
   e.help = "Polyanya on a navigation mesh, exact among the zone polygons";
   e.can = {.turn_radius = true, .finished_by_planner = true, .covers_area = true};
   e.build = [](const GraphBuild& in) -> std::unique_ptr<RouteGraph> { return std::make_unique<NavMeshGraph>(in); };
+  e.save = [](const RouteGraph& g) { return g.as<NavMeshGraph>()->save(); };
   return e;
 }
 

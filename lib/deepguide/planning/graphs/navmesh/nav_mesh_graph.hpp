@@ -12,8 +12,13 @@
 // goal lies outside it widens it and triangulates again. Coordinates are
 // taken about the box's centre (UTM's millions of metres cost orientation
 // tests six digits).
+//
+// Built from a prepared chart's bytes (GraphBuild::prepared), it reads its
+// zones and mesh back instead: the same graph, without the zones' union and
+// the triangulation, which are most of its build.
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -41,6 +46,8 @@ class NavMeshGraph : public RouteGraph {
   /// Where the mesh's coordinates have their origin, in the planning frame.
   Vec2 origin() const { return origin_; }
   const BgMultiPolygon& zones() const { return zones_; }
+  /// The zones and the mesh as bytes (nav_mesh_file.hpp): the entry's `save`.
+  std::vector<std::uint8_t> save() const;
 
  private:
   void triangulate(const Vec2& lo, const Vec2& hi);  // the area, in the mesh's coordinates

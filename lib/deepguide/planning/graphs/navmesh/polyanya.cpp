@@ -101,8 +101,7 @@ class Search {
         out.stopped = SearchStop::cancelled;
         break;
       }
-      ++out.expanded;
-      expand(id, n);
+      expand(id, n, out.expanded);
     }
     out.generated = nodes_.size();
     return out;
@@ -115,11 +114,11 @@ class Search {
     return std::find(goal_faces_.begin(), goal_faces_.end(), face) != goal_faces_.end();
   }
 
-  void push(Node n) {
-    const auto id = static_cast<std::int32_t>(nodes_.size());
+  std::int32_t store(const Node& n) {
     nodes_.push_back(n);
-    open_.push({{n.f, -n.g}, id});
+    return static_cast<std::int32_t>(nodes_.size() - 1);
   }
+  void push(const Node& n) { open_.push({{n.f, -n.g}, store(n)}); }
 
   // The node for the part [lo, hi] of edge (P, Q) (P on the right), seen
   // from `root`, into the face across it; nothing when the part is a point
@@ -156,12 +155,14 @@ class Search {
     n.g = g;
     n.f = g + (heuristic_ ? heuristic(root, n.left, n.right, goal_) : 0.0);
     n.parent = parent;
-    push(n);
+    fresh_.push_back(n);
   }
 
   void start_successors(const Vec2& start, std::int32_t face) {
     // From inside a face its edges, anticlockwise, run from right to left.
+    fresh_.clear();
     for (int e = 0; e < 3; ++e) make(-1, start, kStartRoot, 0.0, face, e, Range{0.0, 1.0});
+    for (const Node& n : fresh_) push(n);
   }
 
   // A turn round the interval's end `v` (a mesh vertex or none): its g, or
@@ -174,7 +175,25 @@ class Search {
     return g;
   }
 
-  void expand(std::int32_t id, const Node& n) {
+  // Intermediate pruning (the paper's): a node with one successor, not at
+  // the goal's face, leads nowhere else, so that successor is expanded at
+  // once instead of passing through the open list (its f is no lower).
+  void expand(std::int32_t id, Node n, std::size_t& expanded) {
+    for (;;) {
+      ++expanded;
+      fresh_.clear();
+      successors(id, n);
+      if (fresh_.size() != 1 || fresh_[0].face == kFinal || holds_goal(fresh_[0].face) ||
+          (budget_.max_expansions > 0 && expanded >= budget_.max_expansions)) {
+        break;
+      }
+      n = fresh_[0];
+      id = store(n);
+    }
+    for (const Node& s : fresh_) push(s);
+  }
+
+  void successors(std::int32_t id, const Node& n) {
     const NavMesh::Face& f = mesh_.faces()[n.face];
     if (n.fan) {
       // The root is a corner of this face: every far edge is seen whole (the
@@ -228,7 +247,7 @@ class Search {
     } else {
       return;
     }
-    push(last);
+    fresh_.push_back(last);
   }
 
   PolyanyaResult& finish(std::int32_t id, PolyanyaResult& out) {
@@ -253,6 +272,7 @@ class Search {
   std::vector<double> best_;  // the shortest way found to each corner used as a root
   std::vector<std::int32_t> goal_faces_;
   std::vector<Node> nodes_;
+  std::vector<Node> fresh_;                                          // the successors of the node being expanded
   using Entry = std::pair<std::pair<double, double>, std::int32_t>;  // (f, -g), node: least f, then most g
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
 };
