@@ -110,6 +110,14 @@ TEST(PreparedNavMesh, PlanLoadsTheKeptMeshAndPlansTheSameRoute) {
   const test::RunResult prepared = test::run_cli("chart prepare '" + cell + "' --depth 5 -o '" + gpkg + "'");
   ASSERT_EQ(prepared.exit_code, 0) << prepared.err;
   EXPECT_NE(prepared.out.find("graph            navmesh: margin 5 m, "), std::string::npos) << prepared.out;
+  // `chart info` describes it (it once read every layer as hazards and
+  // stopped at the first disc of no_go_features).
+  const test::RunResult info = test::run_cli("chart info '" + gpkg + "' --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const auto described = nlohmann::json::parse(info.out);
+  EXPECT_EQ(described[0]["hazards"].get<std::size_t>(),
+            read_prepared_chart(gpkg, std::nullopt, 5.0, 2.0).obstacles.size());
+  EXPECT_NE(info.out.find("deepguide_graphs"), std::string::npos) << info.out;
   const std::string trip = " --depth 5 --from -76.41,38.87 --to -76.35,38.60 --graph navmesh --json -o ";
   const test::RunResult from_cell =
       test::run_cli("plan --chart '" + cell + "'" + trip + "'" + tmp.file("a.geojson") + "'");

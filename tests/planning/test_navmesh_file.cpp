@@ -76,8 +76,8 @@ TEST(NavMeshFile, TheRoundTripGivesBackTheSameMeshAndRoutes) {
   // A Planner given the record reads it (stats.prepared) and plans the same
   // routes, point for point, as the one that built its mesh.
   PlannerOptions o = navmesh_options();
-  o.prepared = std::make_shared<const std::vector<PreparedGraphRecord>>(
-      std::vector<PreparedGraphRecord>{built.save_graph()});
+  o.prepared =
+      std::make_shared<const std::vector<PreparedGraphRecord>>(std::vector<PreparedGraphRecord>{built.save_graph()});
   Planner loaded(set, o);
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> x(-100, 600), y(-150, 400);
@@ -132,8 +132,11 @@ TEST(PreparedGraphs, AKeptGraphIsTakenOnlyForTheObstaclesAndOptionsItWasBuiltFor
   o.graph = GraphKind::visibility;
   EXPECT_FALSE(taken(set, o));
   // A graph that cannot be kept says so, naming those that can.
-  test::expect_one_line_error([&] { Planner(set, {5.0, 0.5, GraphKind::tangent, SearchAlgorithm::astar}).save_graph(); },
-                              "expected navmesh");
+  test::expect_one_line_error(
+      [&] {
+        Planner(set, {5.0, 0.5, GraphKind::tangent, SearchAlgorithm::astar}).save_graph();
+      },
+      "expected navmesh");
   test::expect_one_line_error([&] { graph_preparer({GraphKind::quadtree}, navmesh_options()); },
                               "the quadtree graph cannot be kept");
 }

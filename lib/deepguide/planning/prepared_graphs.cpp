@@ -27,8 +27,8 @@ PreparedGraphsMaker graph_preparer(const std::vector<GraphKind>& graphs, const P
   for (const GraphKind& kind : graphs) {
     if (!graph_entry(kind).save) {
       throw InputError("`graphs` " + kind.name + ": expected " +
-                       graph_names_text([](const GraphEntry& e) { return static_cast<bool>(e.save); }) +
-                       " (the " + kind.name + " graph cannot be kept in a prepared chart)");
+                       graph_names_text([](const GraphEntry& e) { return static_cast<bool>(e.save); }) + " (the " +
+                       kind.name + " graph cannot be kept in a prepared chart)");
     }
   }
   return [graphs, options](const ObstacleSet& as_read) {

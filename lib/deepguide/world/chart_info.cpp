@@ -222,7 +222,14 @@ void vector_info(ChartInfo& info, GDALDataset& ds, const ChartInfoOptions& o) {
     info.layers.push_back({layer->GetName(), static_cast<std::size_t>(std::max<GIntBig>(0, layer->GetFeatureCount())),
                            OGRGeometryTypeToName(layer->GetGeomType())});
   }
-  LoadedObstacles loaded = load_obstacles({info.path}, {o.local_crs, o.source_crs});
+  ObstacleReadOptions read{o.local_crs, o.source_crs};
+  if (ds.GetLayerByName("deepguide_chart") != nullptr) {
+    // A prepared chart (prepared_chart.hpp): its obstacles are what the
+    // planners take; the other layers name the no-go and are not hazards.
+    read.layers = {"obstacles"};
+    read.repair_polygons = true;
+  }
+  LoadedObstacles loaded = load_obstacles({info.path}, read);
   const ObstacleSummary sum = summarize(loaded);
   info.crs = loaded.sources.empty() ? std::string() : loaded.sources.front().crs;
   info.local_crs = loaded.frame.id();

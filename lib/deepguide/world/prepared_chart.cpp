@@ -19,7 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kFormat = "deepguide prepared chart 2";
+constexpr const char* kFormat = "deepguide prepared chart 3";
+// Format 2 kept no_go_features and the areas in lon/lat (format 3: in the
+// frame it was prepared in); read the same way, through their layers' CRS.
+constexpr const char* kFormat2 = "deepguide prepared chart 2";
 // Format 1 had one zone_of_confidence flag (discs unclipped): read as strict or none.
 constexpr const char* kFormat1 = "deepguide prepared chart 1";
 constexpr const char* kMetaLayer = "deepguide_chart";
@@ -34,17 +37,15 @@ std::string shown(const std::string& path) { return printable(path, 240); }
   throw InputError(shown(path) + ": could not " + what + (why.empty() ? std::string() : ": " + why));
 }
 
-// An area in the frame as a lon/lat multipolygon, and back.
-OGRMultiPolygon to_lonlat(const BgMultiPolygon& area, const LocalFrame& frame) {
+// An area in the frame as an OGR multipolygon (in the frame: the layers
+// carry its CRS), and back.
+OGRMultiPolygon to_ogr(const BgMultiPolygon& area) {
   OGRMultiPolygon mp;
   for (const BgPolygon& poly : area) {
     OGRPolygon op;
     auto ring = [&](const auto& r) {
       OGRLinearRing lr;
-      for (const BgPoint& q : r) {
-        const Vec2 p = frame.to_lonlat(to_eigen(q));
-        lr.addPoint(p.x(), p.y());
-      }
+      for (const BgPoint& q : r) lr.addPoint(q.x(), q.y());
       op.addRing(&lr);
     };
     ring(poly.outer());
@@ -74,8 +75,8 @@ constexpr const char* kAreaLayers[] = {"cell_areas", "depth_areas", "zones"};
 
 void write_areas(GDALDataset& ds, const char* name, const std::vector<EncChartArea>& areas, const LocalFrame& frame,
                  const std::string& path) {
-  const auto geo = gdal::wgs84();
-  OGRLayer* layer = ds.CreateLayer(name, geo.get(), wkbMultiPolygon, nullptr);
+  const auto srs = gdal::srs_from_user_input(frame.wkt());
+  OGRLayer* layer = ds.CreateLayer(name, srs.get(), wkbMultiPolygon, nullptr);
   if (layer == nullptr) fail_write(path, std::string("create the ") + name + " layer");
   for (const auto& [field, type] : std::initializer_list<std::pair<const char*, OGRFieldType>>{
            {"id", OFTString}, {"cell", OFTString}, {"depth_m", OFTReal}, {"catzoc", OFTInteger}}) {
@@ -88,17 +89,39 @@ void write_areas(GDALDataset& ds, const char* name, const std::vector<EncChartAr
     out.SetField("cell", a.cell.c_str());
     if (std::isfinite(a.depth_m)) out.SetField("depth_m", a.depth_m);
     out.SetField("catzoc", a.catzoc);
-    OGRMultiPolygon mp = to_lonlat(a.area, frame);
+    OGRMultiPolygon mp = to_ogr(a.area);
     out.SetGeometry(&mp);
     if (layer->CreateFeature(&out) != OGRERR_NONE) fail_write(path, std::string("write a row of ") + name);
   }
 }
 
-std::vector<EncChartArea> read_areas(GDALDataset& ds, const char* name, OGRCoordinateTransformation& ct,
+// A layer's geometry into the frame: nothing to do when the layer is in the
+// frame's CRS (what chart prepare writes, read in the frame it prepared in),
+// else a transformation from the layer's CRS (lon/lat before format 3).
+class IntoFrame {
+ public:
+  IntoFrame(OGRLayer& layer, const OGRSpatialReference& frame, const std::string& path) : ct_(nullptr, nullptr) {
+    const OGRSpatialReference* from = layer.GetSpatialRef();
+    if (from != nullptr && from->IsSame(&frame)) return;
+    std::unique_ptr<OGRSpatialReference> geo;
+    if (from == nullptr) geo = gdal::wgs84();
+    ct_ = gdal::make_transform(from != nullptr ? *from : *geo, frame);
+    if (!ct_) {
+      throw InputError(shown(path) + ": layer " + layer.GetName() + ": no transformation from its CRS to the frame");
+    }
+  }
+  bool apply(OGRGeometry& g) const { return !ct_ || g.transform(ct_.get()) == OGRERR_NONE; }
+
+ private:
+  gdal::TransformPtr ct_;
+};
+
+std::vector<EncChartArea> read_areas(GDALDataset& ds, const char* name, const OGRSpatialReference& frame,
                                      const std::string& path) {
   std::vector<EncChartArea> out;
   OGRLayer* layer = ds.GetLayerByName(name);
   if (layer == nullptr) return out;  // a chart prepared before they were kept
+  const IntoFrame into_frame(*layer, frame, path);
   for (auto& f : *layer) {
     EncChartArea a;
     a.id = f->GetFieldAsString("id");
@@ -107,7 +130,7 @@ std::vector<EncChartArea> read_areas(GDALDataset& ds, const char* name, OGRCoord
     a.depth_m = di >= 0 && f->IsFieldSetAndNotNull(di) ? f->GetFieldAsDouble(di) : std::nan("");
     a.catzoc = f->GetFieldAsInteger("catzoc");
     OGRGeometry* g = f->GetGeometryRef();
-    if (g == nullptr || wkbFlatten(g->getGeometryType()) != wkbMultiPolygon || g->transform(&ct) != OGRERR_NONE) {
+    if (g == nullptr || wkbFlatten(g->getGeometryType()) != wkbMultiPolygon || !into_frame.apply(*g)) {
       throw InputError(shown(path) + ": layer " + name + ", feature '" + printable(a.id) +
                        "': expected a multipolygon in the frame's area");
     }
@@ -118,8 +141,8 @@ std::vector<EncChartArea> read_areas(GDALDataset& ds, const char* name, OGRCoord
 }
 
 void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& path) {
-  const auto geo = gdal::wgs84();
-  OGRLayer* layer = ds.CreateLayer(kFeatureLayer, geo.get(), wkbUnknown, nullptr);
+  const auto srs = gdal::srs_from_user_input(no_go.frame.wkt());
+  OGRLayer* layer = ds.CreateLayer(kFeatureLayer, srs.get(), wkbUnknown, nullptr);
   if (layer == nullptr) fail_write(path, "create the no_go_features layer");
   for (const auto& [name, type] :
        std::initializer_list<std::pair<const char*, OGRFieldType>>{{"id", OFTString},
@@ -132,7 +155,6 @@ void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& pa
     OGRFieldDefn fd(name, type);
     if (layer->CreateField(&fd) != OGRERR_NONE) fail_write(path, std::string("create field ") + name);
   }
-  auto ll = [&](const Vec2& p) { return no_go.frame.to_lonlat(p); };
   for (const EncNoGoFeature& f : no_go.features) {
     OGRFeature out(layer->GetLayerDefn());
     out.SetField("id", f.id.c_str());
@@ -142,12 +164,11 @@ void write_features(GDALDataset& ds, const EncNoGo& no_go, const std::string& pa
     out.SetField("reason", f.reason.c_str());
     if (std::isfinite(f.charted_depth_m)) out.SetField("charted_depth_m", f.charted_depth_m);
     if (f.point) {
-      const Vec2 p = ll(*f.point);
-      OGRPoint pt(p.x(), p.y());
+      OGRPoint pt(f.point->x(), f.point->y());
       out.SetGeometry(&pt);
       out.SetField("radius_m", f.radius_m);
     } else {
-      OGRMultiPolygon mp = to_lonlat(f.area, no_go.frame);
+      OGRMultiPolygon mp = to_ogr(f.area);
       out.SetGeometry(&mp);
     }
     if (layer->CreateFeature(&out) != OGRERR_NONE) fail_write(path, "write feature '" + f.id + "'");
@@ -285,7 +306,7 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
   if (meta == nullptr) throw InputError(shown(path) + ": expected a prepared chart (chart prepare), got none");
   std::unique_ptr<OGRFeature> row(meta->GetNextFeature());
   const std::string format = row ? row->GetFieldAsString("format") : "";
-  if (format != kFormat && format != kFormat1) {
+  if (format != kFormat && format != kFormat2 && format != kFormat1) {
     throw InputError(shown(path) + ": table deepguide_chart: expected format '" + kFormat + "'");
   }
   PreparedChartInfo p;
@@ -324,10 +345,8 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
 
   OGRLayer* features = ds->GetLayerByName(kFeatureLayer);
   if (features == nullptr) throw InputError(shown(path) + ": expected a no_go_features layer, found none");
-  const auto geo = gdal::wgs84();
   const auto srs = gdal::srs_from_user_input(use.wkt());
-  const auto ct = gdal::make_transform(*geo, *srs);
-  if (!ct) throw InputError(shown(path) + ": no transformation from WGS 84 to " + use.id());
+  const IntoFrame into_frame(*features, *srs, path);
   for (auto& f : *features) {
     EncNoGoFeature n;
     n.id = f->GetFieldAsString("id");
@@ -338,7 +357,7 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
     const int di = f->GetFieldIndex("charted_depth_m");
     n.charted_depth_m = f->IsFieldSetAndNotNull(di) ? f->GetFieldAsDouble(di) : std::nan("");
     OGRGeometry* g = f->GetGeometryRef();
-    if (g == nullptr || g->transform(ct.get()) != OGRERR_NONE) {
+    if (g == nullptr || !into_frame.apply(*g)) {
       throw InputError(shown(path) + ": layer no_go_features, feature '" + printable(n.id) +
                        "': expected a geometry in the frame's area");
     }
@@ -351,9 +370,9 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
     if (n.cls != "M_COVR") ++out.no_go_by_class[n.cls];
     out.features.push_back(std::move(n));
   }
-  out.cell_areas = read_areas(*ds, kAreaLayers[0], *ct, path);
-  out.depth_areas = read_areas(*ds, kAreaLayers[1], *ct, path);
-  out.zones = read_areas(*ds, kAreaLayers[2], *ct, path);
+  out.cell_areas = read_areas(*ds, kAreaLayers[0], *srs, path);
+  out.depth_areas = read_areas(*ds, kAreaLayers[1], *srs, path);
+  out.zones = read_areas(*ds, kAreaLayers[2], *srs, path);
   if (const std::string why = gdal::QuietErrors::last_message(); !why.empty()) {
     throw InputError(shown(path) + ": expected a complete prepared chart, got: " + why);
   }

@@ -3,13 +3,17 @@
 // a GeoPackage (`chart prepare`), so that `plan --chart area.gpkg` and
 // `check route --chart area.gpkg` skip reading and judging the cells.
 //
-// Layers (all lon/lat WGS 84):
+// Layers:
 //  - "obstacles": what the planners take (EncNoGo::obstacles: the merged,
 //    simplified no-go polygons and the discs outside them), in the obstacle
-//    file format (obstacle_io.hpp), so any obstacle reader takes it too;
+//    file format (obstacle_io.hpp, lon/lat), so any obstacle reader takes it too;
 //  - "no_go_features": every no-go feature with its id, cell, class, RCID,
 //    reason and charted depth (what names a crossing); discs as points with
-//    radius_m;
+//    radius_m. In the frame's CRS it was prepared in (format 3; lon/lat
+//    before), so reading it in that frame reprojects nothing: on the Kachemak
+//    set that was half of `plan --chart area.gpkg`;
+//  - "cell_areas", "depth_areas", "zones": what a route's quality is
+//    measured on, in the frame's CRS as well;
 //  - "deepguide_chart": one row without geometry: the depth, clearance,
 //    required depth, options and cells it was prepared for, and the format
 //    version. A chart is used only at the depth and clearance it was

@@ -24,7 +24,8 @@ struct Writer {
   }
   void put(const Vec2& p) { put(p.x()), put(p.y()); }
   void count(std::size_t n) {
-    if (n > 0xffffffffu) throw InputError("navigation mesh: expected at most 2^32 - 1 items to keep, got " + std::to_string(n));
+    if (n > 0xffffffffu)
+      throw InputError("navigation mesh: expected at most 2^32 - 1 items to keep, got " + std::to_string(n));
     put(static_cast<std::uint32_t>(n));
   }
 };
@@ -138,14 +139,14 @@ KeptNavMesh read_nav_mesh(const std::vector<std::uint8_t>& bytes) {
     const NavMesh::Face& f = faces[id];
     const std::string face = "face " + std::to_string(id);
     const Vec2 ab = vertices[f.v[1]] - vertices[f.v[0]], ac = vertices[f.v[2]] - vertices[f.v[0]];
-    if (!(cross(ab, ac) > 0.0))
-      throw InputError("navigation mesh, " + face + ": expected an anticlockwise triangle");
+    if (!(cross(ab, ac) > 0.0)) throw InputError("navigation mesh, " + face + ": expected an anticlockwise triangle");
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = f.v[k], b = f.v[(k + 1) % 3];
       if (f.next[k] == NavMesh::kNone) continue;
       const NavMesh::Face& g = faces[static_cast<std::size_t>(f.next[k])];
       bool back = false;
-      for (int j = 0; j < 3; ++j) back = back || (g.v[j] == b && g.v[(j + 1) % 3] == a && g.next[j] == static_cast<std::int32_t>(id));
+      for (int j = 0; j < 3; ++j)
+        back = back || (g.v[j] == b && g.v[(j + 1) % 3] == a && g.next[j] == static_cast<std::int32_t>(id));
       if (!back)
         throw InputError("navigation mesh, " + face + ": expected face " + std::to_string(f.next[k]) +
                          " to name it back across their shared edge");

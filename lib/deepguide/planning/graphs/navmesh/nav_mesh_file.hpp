@@ -16,8 +16,8 @@
 // finite, every index in range, every triangle anticlockwise, every
 // neighbour naming the face back across the same edge, the triangles'
 // areas adding up to the water's, and nothing left over. The corners are
-// found again from the triangles (NavMesh), not trusted to the bytes. What fails is an InputError saying what was expected and where; a
-// damaged table never reaches the search.
+// found again from the triangles (NavMesh), not trusted to the bytes. What fails is an InputError saying what was
+// expected and where; a damaged table never reaches the search.
 
 #include <cstdint>
 #include <memory>
