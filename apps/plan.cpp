@@ -39,7 +39,10 @@ void register_plan(CLI::App& app) {
       "--depth", r.depth_m,
       "Operating depth (m); obstacles whose top_depth_m lies deeper than depth + --vertical-clearance are passed over");
   add_chart_options(*cmd, r.chart, &r.vertical_clearance_m);
-  CLI::Option* graph = cmd->add_option("--graph", c->graph, graph_help_text())->capture_default_str();
+  cmd->add_option("--graph", c->graph,
+                  graph_help_text() +
+                      ". Default: navmesh for a route by length on S-57 charts (without --waypoint-grid), tangent "
+                      "with a heading, else visibility");
   cmd->add_option("--search", c->search, "astar or dijkstra")->capture_default_str();
   cmd->add_option("--max-expansions", r.max_expansions,
                   "The search's budget: at most this many vertices examined per search (0: none); a search that "
@@ -78,11 +81,7 @@ void register_plan(CLI::App& app) {
                   "each repaired route (ROUTE_repair_K.geojson)");
   cmd->add_option("--depart", c->depart,
                   "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
-  cmd->callback([c, graph] {
-    // Dubins ends are planned by the tangent graph alone: it is the default then.
-    if ((c->from_heading || c->to_heading) && graph->count() == 0) c->graph = "tangent";
-    run_plan(*c);
-  });
+  cmd->callback([c] { run_plan(*c); });
 }
 
 }  // namespace deepguide::app

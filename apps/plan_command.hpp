@@ -37,7 +37,7 @@ void run_plan_in_depth(const LocalFrame& frame, const RoutePlanRequest& shared, 
 struct PlanCommand {
   RoutePlanRequest request;  ///< most flags land here directly
   std::vector<std::string> obstacles;
-  std::string from, to, graph = "visibility", search = "astar", cost = "length";
+  std::string from, to, graph, search = "astar", cost = "length";  // graph: empty = default_plan_graph
   std::string current_const, depart;
   std::optional<double> from_heading, to_heading;  ///< deg, clockwise from true north
   bool no_refine = false, render_graph = false;

@@ -39,7 +39,9 @@ LocalFrame read_frame_and_ends(PlanCommand& c) {
 
 void run_plan(PlanCommand& c) {
   RoutePlanRequest& r = c.request;
-  r.graph = parse_graph_kind(c.graph);
+  r.graph = c.graph.empty() ? default_plan_graph(r.charts, parse_cost_kind(c.cost), r.waypoint_grid_m.has_value(),
+                                                 c.from_heading || c.to_heading)
+                            : parse_graph_kind(c.graph);
   const bool in_depth = graph_entry(r.graph).can.in_depth;
   check_depth_flags(in_depth, c.depth,
                     c.cost != "length" || !r.current_file.empty() || !c.current_const.empty() || r.waypoint_grid_m ||

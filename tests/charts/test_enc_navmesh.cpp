@@ -21,6 +21,7 @@
 #include <string>
 
 #include "deepguide/planning/planner.hpp"
+#include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/prepared_chart.hpp"
@@ -171,6 +172,30 @@ TEST(PreparedNavMesh, PlanLoadsTheKeptMeshAndPlansTheSameRoute) {
   EXPECT_NE(refused.exit_code, 0);
   EXPECT_NE(refused.err.find("--graphs quadtree: expected navmesh"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(tmp.file("q.gpkg")));
+}
+
+// What `plan` takes without --graph: the navmesh for routes by length on
+// S-57 charts, else the visibility graph, the tangent graph with a heading.
+TEST(DefaultPlanGraph, TheNavmeshForRoutesByLengthOnS57Charts) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(cell, "noaa-enc-US4MD81M/US4MD81M.000");
+  const std::string raster = test::source_file("charts/sample_chart.tif");
+  const std::string hazards = test::source_file("charts/sample_chart_hazards.gpkg");
+  const GraphKind navmesh{"navmesh"};
+  EXPECT_EQ(default_plan_graph({cell}, CostKind::length, false, false), navmesh);
+  EXPECT_EQ(default_plan_graph({hazards, cell}, CostKind::length, false, false), navmesh);
+  EXPECT_EQ(default_plan_graph({cell}, CostKind::time, false, false), GraphKind::visibility);
+  EXPECT_EQ(default_plan_graph({cell}, CostKind::energy, false, false), GraphKind::visibility);
+  EXPECT_EQ(default_plan_graph({cell}, CostKind::length, true, false), GraphKind::visibility);
+  EXPECT_EQ(default_plan_graph({cell}, CostKind::length, false, true), GraphKind::tangent);
+  EXPECT_EQ(default_plan_graph({raster, hazards}, CostKind::length, false, false), GraphKind::visibility);
+  EXPECT_EQ(default_plan_graph({}, CostKind::length, false, false), GraphKind::visibility);
+  // The CLI says which it took.
+  test::ScratchDir tmp;
+  const test::RunResult planned =
+      test::run_cli("plan --chart '" + cell + "' --depth 5 --from -76.41,38.87 --to -76.35,38.60 --json -o '" +
+                    tmp.file("r.geojson") + "'");
+  ASSERT_EQ(planned.exit_code, 0) << planned.err;
+  EXPECT_EQ(nlohmann::json::parse(planned.out)["graph"], "navmesh");
 }
 
 }  // namespace

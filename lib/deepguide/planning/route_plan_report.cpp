@@ -500,4 +500,11 @@ std::string RoutePlanReport::to_text() const {
   return t;
 }
 
+GraphKind default_plan_graph(const std::vector<std::string>& charts, CostKind cost, bool waypoint_grid, bool heading) {
+  if (heading) return GraphKind::tangent;
+  if (cost == CostKind::length && !waypoint_grid && std::any_of(charts.begin(), charts.end(), reads_as_enc))
+    return GraphKind{"navmesh"};
+  return GraphKind::visibility;
+}
+
 }  // namespace deepguide

@@ -110,6 +110,14 @@ struct RoutePlanReport {
 /// in `frame`, where the charts are read.
 RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanRequest& request);
 
+/// The graph `plan` takes when none is named: the tangent graph when a
+/// heading is asked for (the one graph with Dubins ends); the navmesh for a
+/// route by length on S-57 charts (cells, exchange sets or a prepared chart:
+/// the exact shortest route, from the prepared chart's mesh when it keeps
+/// one) without a waypoint grid; else the reduced visibility graph (time and
+/// energy, rasters and obstacle files, which it plans in focused rounds).
+GraphKind default_plan_graph(const std::vector<std::string>& charts, CostKind cost, bool waypoint_grid, bool heading);
+
 /// ROUTE.gpx -> ROUTE_repair_K.gpx
 std::string repair_file_name(const std::string& route_file, std::size_t k);
 

@@ -23,6 +23,10 @@ void append(ObstacleSet& to, ObstacleSet from) {
 
 }  // namespace
 
+bool reads_as_enc(const std::string& path) {
+  return names_enc(path) || is_prepared_chart(path) || chart_kind(path) == ChartKind::s57;
+}
+
 ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const LocalFrame& frame,
                                const ChartObstacleOptions& options) {
   const bool has_depth = !std::isnan(options.depth_m);
@@ -30,7 +34,7 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
   // S-57 cells (and folders of them) are read together: where they overlap the better scale wins.
   std::vector<std::string> enc;
   for (const std::string& path : paths) {
-    if (names_enc(path) || is_prepared_chart(path) || chart_kind(path) == ChartKind::s57) {
+    if (reads_as_enc(path)) {
       enc.push_back(path);
       continue;
     }

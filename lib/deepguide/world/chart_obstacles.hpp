@@ -71,6 +71,10 @@ struct CoverageExit {
 };
 std::optional<CoverageExit> route_leaves_coverage(const std::vector<Vec2>& route, const BgMultiPolygon& coverage);
 
+/// True when `path` is read as S-57 (a cell, a folder of cells, an exchange
+/// set's catalogue, or a prepared chart), not as a raster or a hazard file.
+bool reads_as_enc(const std::string& path);
+
 /// Reads every chart into `frame`. Throws InputError (one line naming the
 /// file, or the option) for an unreadable chart, or a raster without depth_m.
 ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const LocalFrame& frame,
