@@ -2,8 +2,10 @@
 # Transits across an exchange set, as the user runs them (issue 42): seeded
 # start/goal pairs 20 to 150 km apart in the Kachemak set
 # (../shared/data/real/noaa-enc-kachemak, 11 cells in 3 bands), each planned
-# from the cells and from a prepared GeoPackage, a fresh process each; per
-# run the exit code, time and peak RSS. The ends are drawn by GDAL's Python
+# from the cells and from a prepared GeoPackage with plan's default graph (the
+# navmesh on charts, read from the GeoPackage's kept mesh), and from the
+# GeoPackage with the reduced visibility graph for comparison; a fresh
+# process each; per run the exit code, time and peak RSS. The ends are drawn by GDAL's Python
 # bindings alone (points in depth areas of the band-3 cell at least 20 m
 # deep), not by the library. Prints markdown for docs/PERFORMANCE.md.
 #   bench/kachemak_transits.sh [BUILD_DIR] [PAIRS] [SEED] [DEPTH]
@@ -56,9 +58,9 @@ timed() {  # runs "$@"; prints "exit seconds peak_kib"
 prep=$(timed "$cli" chart prepare "$set_dir" --depth "$depth" -o "$tmp/set.gpkg")
 echo "chart prepare at $depth m: $(echo "$prep" | cut -d' ' -f2) s, peak $(( $(echo "$prep" | cut -d' ' -f3) / 1024 )) MiB"
 echo
-echo "| pair | km | from cells: exit | s | MiB | from GeoPackage: exit | s | MiB | route km |"
-echo "|---|---|---|---|---|---|---|---|---|"
-: >"$tmp/cold"; : >"$tmp/warm"; internal=0; k=0
+echo "| pair | km | from cells: exit | s | MiB | from GeoPackage: exit | s | MiB | route km | GeoPackage, visibility: exit | s | route km |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+: >"$tmp/cold"; : >"$tmp/warm"; : >"$tmp/vis"; internal=0; k=0
 while read -r from to dist; do
   k=$((k + 1))
   cold=$(timed "$cli" plan --chart "$set_dir" --depth "$depth" --from "$from" --to "$to" -o "$tmp/r.geojson" --json)
@@ -68,10 +70,17 @@ while read -r from to dist; do
     'import json,sys; print("%.1f" % (json.load(open(sys.argv[1]))["length_m"] / 1000))' "$tmp/out")
   warm=$(timed "$cli" plan --chart "$tmp/set.gpkg" --depth "$depth" --from "$from" --to "$to" -o "$tmp/r2.geojson")
   grep -q "internal error" "$tmp/err" && internal=$((internal + 1))
-  echo "$cold" >>"$tmp/cold"; echo "$warm" >>"$tmp/warm"
-  printf "| %d | %s | %s | %s | %d | %s | %s | %d | %s |\n" "$k" "$dist" "$(echo "$cold" | cut -d' ' -f1)" \
+  vis=$(timed "$cli" plan --chart "$tmp/set.gpkg" --depth "$depth" --from "$from" --to "$to" -o "$tmp/r3.geojson" \
+    --graph visibility --json)
+  grep -q "internal error" "$tmp/err" && internal=$((internal + 1))
+  vis_length=-
+  [ "$(echo "$vis" | cut -d' ' -f1)" = 0 ] && vis_length=$(/usr/bin/python3 -c \
+    'import json,sys; print("%.1f" % (json.load(open(sys.argv[1]))["length_m"] / 1000))' "$tmp/out")
+  echo "$cold" >>"$tmp/cold"; echo "$warm" >>"$tmp/warm"; echo "$vis" >>"$tmp/vis"
+  printf "| %d | %s | %s | %s | %d | %s | %s | %d | %s | %s | %s | %s |\n" "$k" "$dist" "$(echo "$cold" | cut -d' ' -f1)" \
     "$(echo "$cold" | cut -d' ' -f2)" "$(( $(echo "$cold" | cut -d' ' -f3) / 1024 ))" "$(echo "$warm" | cut -d' ' -f1)" \
-    "$(echo "$warm" | cut -d' ' -f2)" "$(( $(echo "$warm" | cut -d' ' -f3) / 1024 ))" "$length"
+    "$(echo "$warm" | cut -d' ' -f2)" "$(( $(echo "$warm" | cut -d' ' -f3) / 1024 ))" "$length" \
+    "$(echo "$vis" | cut -d' ' -f1)" "$(echo "$vis" | cut -d' ' -f2)" "$vis_length"
 done <"$tmp/pairs"
 stats() {  # file -> "median s, worst s, peak MiB, exits"
   local m w r
@@ -83,4 +92,7 @@ stats() {  # file -> "median s, worst s, peak MiB, exits"
 echo
 echo "from the cells:      $(stats "$tmp/cold")"
 echo "from the GeoPackage: $(stats "$tmp/warm")"
+echo "GeoPackage, --graph visibility: $(stats "$tmp/vis")"
+median() { cut -d' ' -f2 "$1" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+echo "default / visibility, medians from the GeoPackage: $(echo "scale=3; $(median "$tmp/warm") / $(median "$tmp/vis")" | bc)"
 echo "internal errors:     $internal"
