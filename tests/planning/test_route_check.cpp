@@ -26,6 +26,7 @@
 #include <boost/geometry/algorithms/correct.hpp>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
@@ -241,4 +242,78 @@ TEST(RouteCheck, HundredThousandObstacles) {
     if (lower <= brute) brute = std::min(brute, field.segment_distance_to(i, a, b).distance);
   }
   EXPECT_EQ(c.min_clearance_m, brute);
+}
+
+// ------------------------------------------------------------ lines and arcs
+
+namespace {
+
+// An arc round `core` grown by `offset`, anticlockwise from normal angle phi0 to phi1.
+RouteLeg arc_round(const Ellipse& core, double offset, double phi0, double phi1) {
+  RouteLeg leg;
+  leg.kind = RouteLeg::Kind::arc;
+  leg.core = core;
+  leg.offset_m = offset;
+  leg.phi_from = phi0;
+  leg.phi_to = phi1;
+  leg.turn = phi1 > phi0 ? 1 : -1;
+  leg.obstacle = "rock";
+  leg.from = arc_point(leg, phi0);
+  leg.to = arc_point(leg, phi1);
+  return leg;
+}
+
+// The least distance from the arc to `e`, by 200,001 points along it.
+double sampled_distance(const RouteLeg& leg, const Ellipse& e) {
+  double best = kInf;
+  for (int i = 0; i <= 200000; ++i) {
+    const double phi = leg.phi_from + (leg.phi_to - leg.phi_from) * i / 200000.0;
+    best = std::min(best, signed_distance(e, arc_point(leg, phi)));
+  }
+  return best;
+}
+
+}  // namespace
+
+// An arc on its own obstacle's zone is judged by that obstacle's exact
+// clearance along it (the offset) and by the others' chords; a second
+// obstacle that comes within the margin of it, or an arc grown by less than
+// the margin, is unsafe, by the distance a dense sampling finds.
+TEST(RouteCheckLegs, AnArcOnItsOwnZoneIsJudgedAgainstEveryOtherObstacle) {
+  const Ellipse rock{{0.0, 0.0}, 30.0, 12.0, 0.4};
+  ObstacleSet set;
+  add_ellipse(set, "rock", rock);
+  const ObstacleField alone(set, kMargin);
+  const RouteLeg on_zone = arc_round(rock, kMargin, -0.3, 1.9);
+  const RouteCheck safe = check_route_legs({on_zone}, alone);
+  EXPECT_TRUE(safe.safe) << safe.describe();
+  EXPECT_NEAR(safe.min_clearance_m, kMargin, 1e-9);
+
+  const RouteLeg inside = arc_round(rock, kMargin - 0.5, -0.3, 1.9);
+  const RouteCheck shallow = check_route_legs({inside}, alone);
+  EXPECT_FALSE(shallow.safe);
+  EXPECT_NEAR(shallow.min_clearance_m, kMargin - 0.5, 1e-9);
+
+  // A buoy 3 m off the arc's middle: within the margin.
+  const Vec2 mid = arc_point(on_zone, 0.8);
+  const Vec2 out(std::cos(0.8), std::sin(0.8));  // the arc's outward normal there
+  const Ellipse buoy{mid + 5.0 * out, 2.0, 2.0, 0.0};
+  add_ellipse(set, "buoy", buoy);
+  const ObstacleField both(set, kMargin);
+  const RouteCheck near_buoy = check_route_legs({on_zone}, both);
+  EXPECT_FALSE(near_buoy.safe);
+  EXPECT_EQ(near_buoy.worst_obstacle, "buoy");
+  const double truth = sampled_distance(on_zone, buoy);
+  EXPECT_NEAR(truth, 3.0, 1e-3);
+  EXPECT_LE(near_buoy.min_clearance_m, truth + 1e-9);
+  EXPECT_GE(near_buoy.min_clearance_m, truth - 1e-6);
+
+  // A core one nanometre off the obstacle is not its own: judged by chords
+  // against it too, and found safe all the same.
+  Ellipse moved = rock;
+  moved.centre.x() += 1e-9;
+  const RouteCheck shifted = check_route_legs({arc_round(moved, kMargin + 1e-6, -0.3, 1.9)}, alone);
+  EXPECT_TRUE(shifted.safe) << shifted.describe();
+  EXPECT_GE(shifted.min_clearance_m, kMargin - 1e-6);
+  EXPECT_LE(shifted.min_clearance_m, kMargin + 1e-6);
 }

@@ -325,10 +325,11 @@ double ObstacleField::clearance(const Vec2& p) const {
 
 bool ObstacleField::is_free(const Vec2& p, std::size_t skip) const { return segment_free(p, p, skip); }
 
-ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec2& b) const {
+ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec2& b, std::size_t skip) const {
   Nearest best{kInf, 0, a};
   const auto visit = [&](std::size_t i, double lower_bound) {
     if (lower_bound > best.distance) return false;
+    if (i == skip) return true;
     const SegmentDistance d = segment_distance_to(i, a, b);
     if (d.distance < best.distance) best = {d.distance, i, d.point_on_segment};
     return true;
@@ -340,6 +341,18 @@ ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec
     by_box_distance(tree_, BgSegment(to_bg(a), to_bg(b)), visit);
   }
   return best;
+}
+
+std::size_t ObstacleField::ellipse_index(const Ellipse& footprint) const {
+  const std::size_t n_ellipses = obstacles_.ellipses.size();
+  for (auto it = tree_.qbegin(bgi::intersects(to_bg(footprint.centre))); it != tree_.qend(); ++it) {
+    const std::size_t i = it->second;
+    if (i >= n_ellipses) continue;
+    const Ellipse& e = obstacles_.ellipses[i].footprint;
+    if (e.centre == footprint.centre && e.a == footprint.a && e.b == footprint.b && e.theta == footprint.theta)
+      return i;
+  }
+  return kNone;
 }
 
 bool ObstacleField::segment_free(const Vec2& a, const Vec2& b, std::size_t skip_a, std::size_t skip_b) const {

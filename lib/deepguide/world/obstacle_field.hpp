@@ -95,8 +95,11 @@ class ObstacleField {
 
   /// Smallest signed distance between the closed segment [a, b] and any
   /// obstacle footprint, which obstacle and where. Ties go to the obstacle found
-  /// first; a degenerate segment (a == b) is the point a.
-  Nearest segment_clearance(const Vec2& a, const Vec2& b) const;
+  /// first; a degenerate segment (a == b) is the point a. Obstacle `skip` is
+  /// not looked at (one whose distance the caller knows exactly).
+  Nearest segment_clearance(const Vec2& a, const Vec2& b, std::size_t skip = kNone) const;
+  /// The ellipse obstacle whose footprint is `footprint`, bit for bit; kNone when there is none.
+  std::size_t ellipse_index(const Ellipse& footprint) const;
   /// segment_clearance(a, b).distance >= margin, stopping at the first obstacle
   /// closer than the margin and never looking at boxes farther than it.
   /// Obstacles skip_a and skip_b are not looked at: a planner passes the
