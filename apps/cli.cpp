@@ -158,6 +158,7 @@ const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter
     {"vertical_clearance_m", "--vertical-clearance"},
     {"waypoint_grid", "--waypoint-grid"},
     {"width_px", "--width"},
+    {"zone_tolerance", "--zone-tolerance"},
 };
 
 }  // namespace

@@ -176,6 +176,13 @@ TEST(PreparedNavMesh, PlanLoadsTheKeptMeshAndPlansTheSameRoute) {
   EXPECT_NE(refused.exit_code, 0);
   EXPECT_NE(refused.err.find("--graphs quadtree: expected navmesh"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(tmp.file("q.gpkg")));
+  // Its zone tolerance is named by its own flag, not chart prepare's --tolerance (the no-go's).
+  const test::RunResult flat =
+      test::run_cli("chart prepare '" + cell + "' --depth 5 --zone-tolerance 0 -o '" + tmp.file("z.gpkg") + "'");
+  EXPECT_NE(flat.exit_code, 0);
+  EXPECT_NE(flat.err.find("--zone-tolerance: expected a zone polygon tolerance > 0 m, got 0"), std::string::npos)
+      << flat.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("z.gpkg")));
 }
 
 // What `plan` takes without --graph: the navmesh for routes by length on

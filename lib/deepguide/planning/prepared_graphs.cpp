@@ -1,6 +1,7 @@
 #include "deepguide/planning/prepared_graphs.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
@@ -24,6 +25,11 @@ const PreparedGraphRecord* find_prepared(const std::vector<PreparedGraphRecord>&
 }
 
 PreparedGraphsMaker graph_preparer(const std::vector<GraphKind>& graphs, const PlannerOptions& options) {
+  // Named apart from the Planner's `tolerance`: beside chart prepare's own
+  // --tolerance (the no-go's simplification), that name would point at the wrong flag.
+  if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
+    throw InputError("`zone_tolerance`: expected a zone polygon tolerance > 0 m, got " + general(options.tolerance));
+  }
   for (const GraphKind& kind : graphs) {
     if (!graph_entry(kind).save) {
       throw InputError("`graphs` " + kind.name + ": expected " +
