@@ -4,6 +4,9 @@
 if(NOT DEFINED STRICT_HEADERS)
   set(STRICT_HEADERS OFF)
 endif()
+if(NOT DEFINED LIBRARY_SOURCES)
+  set(LIBRARY_SOURCES "")
+endif()
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -12,7 +15,7 @@ if(rc)
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}/build
                         -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
-                        -DSTRICT_HEADERS=${STRICT_HEADERS}
+                        -DSTRICT_HEADERS=${STRICT_HEADERS} -DLIBRARY_SOURCES=${LIBRARY_SOURCES}
                 RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "configure of the consumer failed: ${rc}")
