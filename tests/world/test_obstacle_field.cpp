@@ -37,6 +37,7 @@
 #include <vector>
 
 #include <boost/geometry/algorithms/correct.hpp>
+#include <boost/geometry/algorithms/within.hpp>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse_segment.hpp"
@@ -507,4 +508,61 @@ TEST(ObstacleField, RTreePruningMatchesBruteForce) {
   // Both regimes must be exercised for the comparison to mean something.
   EXPECT_GE(negative, test::cases(20));
   EXPECT_GE(positive, test::cases(40));
+}
+
+// A polygon of many vertices (a coastline) is answered from an edge R-tree
+// and a crossing number when the query keeps clear of its rings
+// (ObstacleField::segment_distance_to); the free functions scan every edge.
+// Both must give the same distance, sign included, for segments and points
+// outside, inside, in the hole, crossing and skimming the rings, on two
+// ragged rings of 600 and 200 vertices in UTM-sized coordinates.
+TEST(ObstacleField, ManyVertexPolygonsAgreeWithTheWholeRingScan) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Vec2 centre(512345.0, 6543210.0);
+  const auto ring = [&](double radius, double wiggle, int n, bool hole) {
+    std::vector<BgPoint> out;
+    for (int i = 0; i < n; ++i) {
+      const double phi = (hole ? -1.0 : 1.0) * 2.0 * kPi * i / n;
+      const double r = radius * (1.0 + wiggle * (unit(rng) - 0.5));
+      out.push_back(to_bg(centre + r * Vec2(std::cos(phi), std::sin(phi))));
+    }
+    out.push_back(out.front());
+    return out;
+  };
+  BgPolygon poly;
+  const auto hole = ring(300.0, 0.3, 200, true);
+  const auto outer = ring(1000.0, 0.4, 600, false);
+  poly.outer().assign(outer.begin(), outer.end());
+  poly.inners().emplace_back(hole.begin(), hole.end());
+  boost::geometry::correct(poly);
+  ObstacleSet set;
+  set.polygons.push_back({"coast", poly, std::nullopt, std::nullopt});
+  const ObstacleField field(set, 5.0);
+  int outside = 0, inside = 0, in_hole = 0, crossing = 0;
+  for (int k = 0; k < test::cases(2000); ++k) {
+    const double r0 = 1500.0 * unit(rng);
+    const double phi = 2.0 * kPi * unit(rng);
+    const Vec2 a = centre + r0 * Vec2(std::cos(phi), std::sin(phi));
+    const double len = k % 7 == 0 ? 0.0 : 400.0 * unit(rng) * unit(rng);
+    const double psi = 2.0 * kPi * unit(rng);
+    const Vec2 b = a + len * Vec2(std::cos(psi), std::sin(psi));
+    const SegmentDistance whole = segment_signed_distance(poly, a, b);
+    const SegmentDistance indexed = field.segment_distance_to(0, a, b);
+    ASSERT_NEAR(indexed.distance, whole.distance, 1e-9) << "segment " << k;
+    ASSERT_EQ(indexed.distance < 0.0, whole.distance < 0.0) << "segment " << k;
+    if (whole.distance > 0.0) {
+      // The reported point is on the segment and that far from the polygon.
+      ASSERT_NEAR(signed_distance(poly, indexed.point_on_segment), whole.distance, 1e-6) << "segment " << k;
+      const double r_a = (a - centre).norm();
+      (r_a < 450.0 ? in_hole : outside) += 1;
+    } else {
+      ASSERT_NEAR(field.distance_to(0, a), signed_distance(poly, a), 1e-9) << "point " << k;
+      (boost::geometry::within(to_bg(a), poly) && boost::geometry::within(to_bg(b), poly) ? inside : crossing) += 1;
+    }
+  }
+  EXPECT_GE(outside, test::cases(200));
+  EXPECT_GE(inside, test::cases(200));
+  EXPECT_GE(in_hole, test::cases(20));
+  EXPECT_GE(crossing, test::cases(100));
 }

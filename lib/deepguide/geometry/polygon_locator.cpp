@@ -68,4 +68,17 @@ double PolygonLocator::distance_to_edges(const Vec2& p) const {
   return bg::distance(to_bg(p), nearest.front().first);
 }
 
+PolygonLocator::NearestEdge PolygonLocator::nearest_edge(const Vec2& a, const Vec2& b) const {
+  std::vector<Item> nearest;
+  if (a == b) {
+    edges_.query(bgi::nearest(to_bg(a), 1), std::back_inserter(nearest));
+  } else {
+    edges_.query(bgi::nearest(Segment(to_bg(a), to_bg(b)), 1), std::back_inserter(nearest));
+  }
+  if (nearest.empty()) return {std::numeric_limits<double>::infinity(), a, a};
+  const Segment& e = nearest.front().first;
+  const double d = a == b ? bg::distance(to_bg(a), e) : bg::distance(Segment(to_bg(a), to_bg(b)), e);
+  return {d, to_eigen(e.first), to_eigen(e.second)};
+}
+
 }  // namespace deepguide

@@ -9,7 +9,9 @@
 // (the half-open rule, so a ray through a vertex counts once). Points on an
 // edge count as inside (covered). Only polygons whose box holds the point are
 // tested, each with the ray cut at its box; the edges the ray can cross are
-// those whose box meets the ray's box, found by the R-tree.
+// those whose box meets the ray's box, found by the R-tree. The nearest edge
+// to a point or a segment is the R-tree's nearest query, which measures the
+// exact distance to its segments (Boost.Geometry's segment distances).
 
 #include <boost/geometry/geometries/segment.hpp>
 #include <boost/geometry/index/rtree.hpp>
@@ -30,6 +32,14 @@ class PolygonLocator {
   std::vector<std::size_t> covering(const Vec2& p) const;
   /// Distance from p to the nearest edge of any polygon (infinite without polygons).
   double distance_to_edges(const Vec2& p) const;
+
+  /// The edge nearest to the segment [a, b] (a point when a == b), and its
+  /// distance: 0 when the segment meets it. Infinite without polygons.
+  struct NearestEdge {
+    double distance;
+    Vec2 from, to;
+  };
+  NearestEdge nearest_edge(const Vec2& a, const Vec2& b) const;
 
  private:
   using Segment = boost::geometry::model::segment<BgPoint>;

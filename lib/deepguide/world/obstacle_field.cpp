@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <iterator>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include <boost/geometry/algorithms/distance.hpp>
@@ -60,6 +62,22 @@ BgBox ellipse_box(const Ellipse& e) {
       16.0 * std::numeric_limits<double>::epsilon() * (e.a + std::abs(e.centre.x()) + std::abs(e.centre.y()));
   return {BgPoint(e.centre.x() - hx - pad, e.centre.y() - hy - pad),
           BgPoint(e.centre.x() + hx + pad, e.centre.y() + hy + pad)};
+}
+
+// The point of segment [a, b] closest to the disjoint edge [e0, e1]: for two
+// disjoint segments the closest pair includes an endpoint of one of them.
+Vec2 closest_to_edge(const Vec2& a, const Vec2& b, const Vec2& e0, const Vec2& e1) {
+  const BgSegment edge(to_bg(e0), to_bg(e1));
+  Vec2 point = a;
+  double point_distance = kInf;
+  for (const Vec2& c : {a, b, foot_on_segment(a, b, e0), foot_on_segment(a, b, e1)}) {
+    const double dist = bg::distance(to_bg(c), edge);
+    if (dist < point_distance) {
+      point_distance = dist;
+      point = c;
+    }
+  }
+  return point;
 }
 
 bool finite(const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
@@ -199,8 +217,7 @@ SegmentDistance segment_signed_distance(const BgPolygon& polygon, const Vec2& a,
   if (a == b) return {signed_distance(polygon, a), a};
   const BgSegment seg(to_bg(a), to_bg(b));
   if (!bg::intersects(seg, polygon)) {
-    // Disjoint: the closest pair lies on a ring edge and, for two disjoint
-    // segments, includes an endpoint of one of them.
+    // Disjoint: the closest pair lies on a ring edge.
     double best = kInf;
     Vec2 e0 = a;
     Vec2 e1 = a;
@@ -212,17 +229,7 @@ SegmentDistance segment_signed_distance(const BgPolygon& polygon, const Vec2& a,
         e1 = to_eigen(edge.second);
       }
     });
-    const BgSegment edge(to_bg(e0), to_bg(e1));
-    Vec2 point = a;
-    double point_distance = kInf;
-    for (const Vec2& c : {a, b, foot_on_segment(a, b, e0), foot_on_segment(a, b, e1)}) {
-      const double dist = bg::distance(to_bg(c), edge);
-      if (dist < point_distance) {
-        point_distance = dist;
-        point = c;
-      }
-    }
-    return {best, point};
+    return {best, closest_to_edge(a, b, e0, e1)};
   }
   // Meeting: minimise the signed distance over each piece of the segment inside
   // the polygon. For a convex polygon the function is convex along the segment
@@ -299,18 +306,51 @@ ObstacleField::ObstacleField(ObstacleSet obstacles, double margin, double slack)
     entries.emplace_back(bg::return_envelope<BgBox>(poly), n_ellipses + j);
   }
   tree_ = Tree(entries.begin(), entries.end());  // packing (bulk) construction
+  edge_indexes_ = std::make_shared<EdgeIndexes>(obstacles_.polygons.size());
+}
+
+ObstacleField::EdgeIndexes::EdgeIndexes(std::size_t polygons) : built(polygons), locators(polygons) {}
+
+const PolygonLocator* ObstacleField::edge_index(std::size_t polygon) const {
+  const BgPolygon& poly = obstacles_.polygons[polygon].footprint;
+  std::size_t points = poly.outer().size();
+  for (const auto& inner : poly.inners()) points += inner.size();
+  if (points < kIndexedPoints) return nullptr;
+  std::call_once(edge_indexes_->built[polygon], [&] {
+    edge_indexes_->locators[polygon] = std::make_unique<PolygonLocator>(std::vector<const BgPolygon*>{&poly});
+  });
+  return edge_indexes_->locators[polygon].get();
 }
 
 double ObstacleField::distance_to(std::size_t obstacle, const Vec2& p) const {
-  const std::size_t n_ellipses = obstacles_.ellipses.size();
-  return obstacle < n_ellipses ? signed_distance(obstacles_.ellipses[obstacle].footprint, p)
-                               : signed_distance(obstacles_.polygons.at(obstacle - n_ellipses).footprint, p);
+  return segment_distance_to(obstacle, p, p).distance;
 }
 
 SegmentDistance ObstacleField::segment_distance_to(std::size_t obstacle, const Vec2& a, const Vec2& b) const {
   const std::size_t n_ellipses = obstacles_.ellipses.size();
-  return obstacle < n_ellipses ? segment_signed_distance(obstacles_.ellipses[obstacle].footprint, a, b)
-                               : segment_signed_distance(obstacles_.polygons.at(obstacle - n_ellipses).footprint, a, b);
+  if (obstacle < n_ellipses) {
+    const Ellipse& e = obstacles_.ellipses[obstacle].footprint;
+    return a == b ? SegmentDistance{signed_distance(e, a), a} : segment_signed_distance(e, a, b);
+  }
+  const std::size_t j = obstacle - n_ellipses;
+  const BgPolygon& poly = obstacles_.polygons.at(j).footprint;
+  // A polygon of many vertices (a chart's coastline): its nearest edge from
+  // the R-tree, and the side from the crossing number. Only a segment clear
+  // of every ring by more than a billionth of the coordinates is answered so:
+  // there the side tests cannot be misjudged (PolygonLocator), and the
+  // distance is the exact distance to the nearest edge, as below. Touching,
+  // crossing and lying inside are left to the full computation.
+  if (const PolygonLocator* index = edge_index(j)) {
+    const PolygonLocator::NearestEdge near = index->nearest_edge(a, b);
+    const double scale = 1.0 + a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
+    if (near.distance > 1e-9 * scale) {
+      const bool inside = !index->covering(a).empty();
+      const Vec2 point = a == b ? a : closest_to_edge(a, b, near.from, near.to);
+      if (!inside) return {near.distance, point};
+      if (a == b) return {-near.distance, a};
+    }
+  }
+  return a == b ? SegmentDistance{signed_distance(poly, a), a} : segment_signed_distance(poly, a, b);
 }
 
 double ObstacleField::clearance(const Vec2& p) const {

@@ -27,6 +27,8 @@
 // depth-aware planners later.
 
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +38,7 @@
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/geometry/polygon.hpp"
+#include "deepguide/geometry/polygon_locator.hpp"
 #include "deepguide/world/obstacle.hpp"
 
 namespace DEEPGUIDE_API deepguide {
@@ -129,6 +132,19 @@ class ObstacleField {
   double threshold_;  // margin - slack
   Tree tree_;
   std::vector<Vec2> axes_;  // major-axis directions of the ellipses, cached
+
+  // Edge R-trees of the polygons with at least kIndexedPoints ring points,
+  // each built on its first query (a chart's field has hundreds of polygons,
+  // and a query meets few), once even when threads share the field; copies
+  // of the field share them.
+  static constexpr std::size_t kIndexedPoints = 32;
+  struct EdgeIndexes {
+    explicit EdgeIndexes(std::size_t polygons);
+    std::vector<std::once_flag> built;
+    std::vector<std::unique_ptr<PolygonLocator>> locators;
+  };
+  std::shared_ptr<EdgeIndexes> edge_indexes_;
+  const PolygonLocator* edge_index(std::size_t polygon) const;  // null for a small polygon
 };
 
 }  // namespace deepguide
