@@ -131,17 +131,17 @@ bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
   return true;
 }
 
-CentredVisibility centred_visibility(const BgMultiPolygon& polygons) {
-  CentredVisibility out;
+CentredPolygons centred_polygons(const BgMultiPolygon& polygons) {
+  CentredPolygons out;
   if (!polygons.empty()) {
     BgBox box;
     bg::envelope(polygons, box);
     out.origin =
         Vec2(0.5 * (box.min_corner().x() + box.max_corner().x()), 0.5 * (box.min_corner().y() + box.max_corner().y()));
   }
-  BgMultiPolygon local = polygons;
+  out.polygons = polygons;
   double extent = 1.0;
-  for (BgPolygon& poly : local) {
+  for (BgPolygon& poly : out.polygons) {
     bg::correct(poly);
     auto shift = [&](auto& ring) {
       for (BgPoint& pt : ring) {
@@ -152,8 +152,13 @@ CentredVisibility centred_visibility(const BgMultiPolygon& polygons) {
     shift(poly.outer());
     for (auto& inner : poly.inners()) shift(inner);
   }
-  out.visibility = std::make_unique<PolygonVisibility>(std::move(local), 1e-9 * extent);
+  out.eps = 1e-9 * extent;
   return out;
+}
+
+CentredVisibility centred_visibility(const BgMultiPolygon& polygons) {
+  CentredPolygons local = centred_polygons(polygons);
+  return {local.origin, std::make_unique<PolygonVisibility>(std::move(local.polygons), local.eps)};
 }
 
 }  // namespace deepguide

@@ -67,6 +67,13 @@ class PolygonVisibility {
 /// their box, for UTM's millions of metres cost orientation tests six
 /// digits, and their visibility with eps a billionth of their extent from it
 /// (at least 1 m). The origin is zero for no polygons.
+struct CentredPolygons {
+  Vec2 origin{0.0, 0.0};
+  BgMultiPolygon polygons;  ///< corrected, about `origin`
+  double eps = 1e-9;        ///< a billionth of their extent, at least 1 m's
+};
+CentredPolygons centred_polygons(const BgMultiPolygon& polygons);
+
 struct CentredVisibility {
   Vec2 origin{0.0, 0.0};
   std::unique_ptr<PolygonVisibility> visibility;

@@ -65,6 +65,8 @@ class NavMesh {
   /// Each edge between two water faces once, and each edge of the water's
   /// boundary: for drawings and the graph's size.
   std::vector<std::pair<Vec2, Vec2>> edges() const;
+  /// edges().size(), without making them.
+  std::size_t edge_count() const;
 
  private:
   std::vector<Vec2> vertices_;

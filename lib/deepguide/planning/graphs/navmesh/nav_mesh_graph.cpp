@@ -29,15 +29,14 @@ NavMeshGraph::NavMeshGraph(const GraphBuild& in) {
   } else {
     zones_ = graph_zone_polygons(in);
   }
-  // The visibility graph's frame and band test (centred_visibility), so a
+  // The visibility graph's frame and band test (centred_polygons), so a
   // start in the band steps to the same point for both.
-  CentredVisibility centred = centred_visibility(zones_);
-  origin_ = centred.origin;
-  polygons_ = std::move(centred.visibility);
+  local_ = centred_polygons(zones_);
+  origin_ = local_.origin;
   if (kept.mesh) {
     if (kept.origin != origin_) throw InputError("navigation mesh: expected the origin its zones give");
     mesh_ = std::move(kept.mesh);
-    edge_count_ = mesh_->edges().size();
+    edge_count_ = mesh_->edge_count();
     return;
   }
   BgBox box;
@@ -56,8 +55,13 @@ NavMeshGraph::NavMeshGraph(const GraphBuild& in) {
 NavMeshGraph::~NavMeshGraph() = default;
 
 void NavMeshGraph::triangulate(const Vec2& lo, const Vec2& hi) {
-  mesh_ = std::make_unique<NavMesh>(polygons_->polygons(), lo, hi);
-  edge_count_ = mesh_->edges().size();
+  mesh_ = std::make_unique<NavMesh>(local_.polygons, lo, hi);
+  edge_count_ = mesh_->edge_count();
+}
+
+const PolygonVisibility& NavMeshGraph::band() const {
+  std::call_once(band_built_, [&] { band_ = std::make_unique<PolygonVisibility>(local_.polygons, local_.eps); });
+  return *band_;
 }
 
 PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm search, const CostModel*,
@@ -70,8 +74,10 @@ PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm s
   }
   PolyanyaResult found;
   PlanResult result = solve_from_zone_boundary(
-      problem, [&](const Vec2& p) { return polygons_->strictly_inside(p - origin_); },
-      [&](const Vec2& p) -> Vec2 { return polygons_->closest_boundary_point(p - origin_) + origin_; },
+      problem,
+      // In a water face (to a nanometre) is never strictly inside a zone.
+      [&](const Vec2& p) { return mesh_->faces_at(p - origin_).empty() && band().strictly_inside(p - origin_); },
+      [&](const Vec2& p) -> Vec2 { return band().closest_boundary_point(p - origin_) + origin_; },
       [&](const PlanningProblem& banded) {
         found =
             polyanya(*mesh_, banded.start - origin_, banded.goal - origin_, budget, search == SearchAlgorithm::astar);

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -52,9 +53,16 @@ class NavMeshGraph : public RouteGraph {
  private:
   void triangulate(const Vec2& lo, const Vec2& hi);  // the area, in the mesh's coordinates
 
+  // The band round the zones (a start or goal in no water face), built on
+  // the first query that needs it: most queries start and end in water, and
+  // the visibility's indexes cost as much as a tenth of the graph's build.
+  const PolygonVisibility& band() const;
+
   BgMultiPolygon zones_;
   Vec2 origin_{0.0, 0.0};
-  std::unique_ptr<PolygonVisibility> polygons_;  // the zones about origin_: the band round them
+  CentredPolygons local_;  // the zones about origin_
+  mutable std::once_flag band_built_;
+  mutable std::unique_ptr<PolygonVisibility> band_;
   std::unique_ptr<NavMesh> mesh_;
   std::size_t edge_count_ = 0;
 };
