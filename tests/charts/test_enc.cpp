@@ -28,6 +28,7 @@
 #include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/enc_sea_floor.hpp"
 #include "deepguide/world/iso8211_check.hpp"
+#include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
@@ -683,6 +684,29 @@ TEST(PreparedChart, PrepareChartReportsWhatItWrote) {
   // The output exists now: a second call is refused and leaves it.
   EXPECT_THROW(prepare_chart({path}, "", at_depth(3.0), gpkg, false), InputError);
   EXPECT_TRUE(is_prepared_chart(gpkg));
+}
+
+// is_prepared_chart keeps its answer per file (a plan asks several times):
+// the same path holding another file must get that file's answer.
+TEST(PreparedChart, IsPreparedChartFollowsTheFileAtThePath) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(path, kKeyWest);
+  ScratchDir tmp;
+  const EncNoGoOptions o = at_depth(3.0);
+  const EncNoGo made = enc_no_go({path}, std::nullopt, o);
+  const std::string gpkg = tmp.file("area.gpkg");
+  const std::string prepared = tmp.file("prepared.gpkg");
+  const std::string plain = tmp.file("plain.gpkg");
+  write_prepared_chart(prepared, made, o, false);
+  write_obstacles(plain, made.obstacles, made.frame);
+  std::filesystem::copy_file(prepared, gpkg);
+  EXPECT_TRUE(is_prepared_chart(gpkg));
+  std::filesystem::copy_file(plain, gpkg, std::filesystem::copy_options::overwrite_existing);
+  EXPECT_FALSE(is_prepared_chart(gpkg));  // a GeoPackage of obstacles only
+  std::ofstream(gpkg, std::ios::trunc) << "not a database";
+  EXPECT_FALSE(is_prepared_chart(gpkg));
+  std::filesystem::copy_file(prepared, gpkg, std::filesystem::copy_options::overwrite_existing);
+  EXPECT_TRUE(is_prepared_chart(gpkg));
+  EXPECT_FALSE(is_prepared_chart(tmp.file("absent.gpkg")));
 }
 
 TEST(PreparedChart, RoundTripKeepsTheNoGoAndRefusesAnotherDepth) {

@@ -5,8 +5,12 @@
 #include <boost/geometry/algorithms/correct.hpp>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <map>
+#include <mutex>
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
@@ -249,9 +253,30 @@ GDALDatasetUniquePtr open_gpkg(const std::string& path) {
 bool is_prepared_chart(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return false;
+  // A GeoPackage is an SQLite file: anything else is told without GDAL.
+  {
+    std::ifstream in(path, std::ios::binary);
+    char magic[16] = {};
+    if (!in.read(magic, sizeof magic) || std::memcmp(magic, "SQLite format 3", 16) != 0) return false;
+  }
+  // One `plan` asks several times (the default graph, the chart reader, the
+  // no-go); opening the GeoPackage costs tens of milliseconds each time. The
+  // answer is kept per file, size and modification time.
+  const auto size = fs::file_size(path, ec);
+  const auto mtime = fs::last_write_time(path, ec).time_since_epoch().count();
+  const std::string key = fs::absolute(path, ec).string() + '\n' + std::to_string(size) + '\n' + std::to_string(mtime);
+  static std::mutex mutex;
+  static std::map<std::string, bool> known;
+  {
+    const std::lock_guard lock(mutex);
+    if (const auto it = known.find(key); it != known.end()) return it->second;
+  }
   gdal::QuietErrors quiet;
   GDALDatasetUniquePtr ds = open_gpkg(path);
-  return ds && ds->GetLayerByName(kMetaLayer) != nullptr;
+  const bool prepared = ds && ds->GetLayerByName(kMetaLayer) != nullptr;
+  const std::lock_guard lock(mutex);
+  known[key] = prepared;
+  return prepared;
 }
 
 void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const EncNoGoOptions& options, bool replace,
