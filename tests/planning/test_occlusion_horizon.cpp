@@ -217,38 +217,42 @@ TEST(OcclusionHorizon, ReducedGraphEqualsTheAllPairsGraph) {
   if (deepguide::test::kCaseDivisor > 1) fields.pop_back();
   for (const Field& f : fields) {
     const BgMultiPolygon zones = random_zones(rng, f.count, f.w, f.h, 0.5, f.harbour);
-    const VisibilityGraph graph(zones, VisibilityVariant::reduced);
-    // Reference: every pair of convex corners, supporting at both ends and
-    // visible by the exact test. The graph works around the box's centre, so
-    // its eps is 1e-9 of the largest local coordinate.
-    BgBox box;
-    bg::envelope(zones, box);
-    const double extent = std::max({1.0, 0.5 * (box.max_corner().x() - box.min_corner().x()),
-                                    0.5 * (box.max_corner().y() - box.min_corner().y())});
-    const double eps = 1e-9 * extent;
-    const PolygonVisibility visibility(zones, eps);
-    const std::vector<Corner> corners = convex_corners(zones);
-    std::set<std::pair<Key, Key>> expected;
-    for (std::size_t i = 0; i < corners.size(); ++i) {
-      for (std::size_t j = i + 1; j < corners.size(); ++j) {
-        const Corner& a = corners[i];
-        const Corner& b = corners[j];
-        if (!supporting(a, b.p, eps) || !supporting(b, a.p, eps)) continue;
-        if (!visibility.segment_visible(a.p, b.p)) continue;
-        expected.insert(std::minmax(key(a.p), key(b.p)));
+    // Each way of pairing the corners, whatever the field's size chooses.
+    for (const CornerPairs pairs : {CornerPairs::horizons, CornerPairs::all_pairs, CornerPairs::automatic}) {
+      const VisibilityGraph graph(zones, VisibilityVariant::reduced, {}, {}, pairs);
+      // Reference: every pair of convex corners, supporting at both ends and
+      // visible by the exact test. The graph works around the box's centre, so
+      // its eps is 1e-9 of the largest local coordinate.
+      BgBox box;
+      bg::envelope(zones, box);
+      const double extent = std::max({1.0, 0.5 * (box.max_corner().x() - box.min_corner().x()),
+                                      0.5 * (box.max_corner().y() - box.min_corner().y())});
+      const double eps = 1e-9 * extent;
+      const PolygonVisibility visibility(zones, eps);
+      const std::vector<Corner> corners = convex_corners(zones);
+      std::set<std::pair<Key, Key>> expected;
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        for (std::size_t j = i + 1; j < corners.size(); ++j) {
+          const Corner& a = corners[i];
+          const Corner& b = corners[j];
+          if (!supporting(a, b.p, eps) || !supporting(b, a.p, eps)) continue;
+          if (!visibility.segment_visible(a.p, b.p)) continue;
+          expected.insert(std::minmax(key(a.p), key(b.p)));
+        }
       }
-    }
-    std::set<std::pair<Key, Key>> built;
-    for (const auto& [a, b] : graph.edges()) built.insert(std::minmax(key(a), key(b)));
-    std::vector<std::pair<Key, Key>> missing, extra;
-    std::set_difference(expected.begin(), expected.end(), built.begin(), built.end(), std::back_inserter(missing));
-    std::set_difference(built.begin(), built.end(), expected.begin(), expected.end(), std::back_inserter(extra));
-    EXPECT_TRUE(missing.empty() && extra.empty())
-        << f.count << " obstacles, " << corners.size() << " convex corners: " << expected.size() << " edges expected, "
-        << missing.size() << " missing, " << extra.size() << " extra";
-    EXPECT_GT(expected.size(), corners.size());
-    if (f.count == 400) {
-      EXPECT_GT(corners.size(), 4000u);
+      std::set<std::pair<Key, Key>> built;
+      for (const auto& [a, b] : graph.edges()) built.insert(std::minmax(key(a), key(b)));
+      std::vector<std::pair<Key, Key>> missing, extra;
+      std::set_difference(expected.begin(), expected.end(), built.begin(), built.end(), std::back_inserter(missing));
+      std::set_difference(built.begin(), built.end(), expected.begin(), expected.end(), std::back_inserter(extra));
+      EXPECT_TRUE(missing.empty() && extra.empty())
+          << f.count << " obstacles, pairs " << static_cast<int>(pairs) << ", " << corners.size()
+          << " convex corners: " << expected.size() << " edges expected, " << missing.size() << " missing, "
+          << extra.size() << " extra";
+      EXPECT_GT(expected.size(), corners.size());
+      if (f.count == 400) {
+        EXPECT_GT(corners.size(), 4000u);
+      }
     }
   }
 }

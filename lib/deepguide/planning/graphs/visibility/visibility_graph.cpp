@@ -65,6 +65,11 @@ BearingSet supporting_bearings(const Vec2& to_prev, const Vec2& to_next, double 
 // corner's supporting bearings within a few hundred metres, a few hundred
 // pieces; past that the bearings still open are tested pair by pair.
 constexpr std::size_t kHorizonPieces = 256;
+// Usable corners from which the reduced graph looks for pairs within the
+// occlusion horizons. Below it the all-pairs loop, whose supporting test
+// rejects most pairs in a few cross products, is quicker than setting the
+// horizons up; both find the same edges (bench_planning, docs/PERFORMANCE.md).
+constexpr std::size_t kHorizonCorners = 6000;
 // Corner pairs the bearing test may take where corners look out at open
 // water (each is tried with every later corner): about the old all-pairs
 // limit, 10 s on the 2-core reference machine.
@@ -200,7 +205,7 @@ std::vector<Link> all_pairs(std::size_t m, TestPair test) {
 }  // namespace
 
 VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus,
-                                 const WaypointGrid& grid)
+                                 const WaypointGrid& grid, CornerPairs pairs)
     : variant_(variant) {
   const auto t0 = std::chrono::steady_clock::now();
   CentredVisibility centred = centred_visibility(zones);
@@ -280,7 +285,9 @@ VisibilityGraph::VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant 
     return visibility_->segment_visible(corners_[i].p, corners_[j].p) ? w : -1.0;
   };
   std::vector<Link> links;
-  if (reduced) {
+  const bool horizons =
+      reduced && (pairs == CornerPairs::horizons || (pairs == CornerPairs::automatic && m >= kHorizonCorners));
+  if (horizons) {
     std::vector<Vec2> points(m);
     for (std::size_t u = 0; u < m; ++u) points[u] = corners_[usable[u]].p;
     links = pairs_within_horizons(points, to_prev, to_next, *visibility_, test_pair);

@@ -30,6 +30,12 @@ namespace DEEPGUIDE_API deepguide {
 
 enum class VisibilityVariant { full, reduced };
 
+/// How the reduced graph finds its pairs of corners: every pair (few
+/// corners), or each corner's neighbours within its occlusion horizon (many);
+/// `automatic` chooses by the count. Both give the same edges; the choice is
+/// open so that tests can run each path on any field.
+enum class CornerPairs { automatic, all_pairs, horizons };
+
 class VisibilityGraph {
  public:
   /// `zones`: polygons enclosing the safety zones, in the local frame. Throws
@@ -42,7 +48,7 @@ class VisibilityGraph {
   /// With an active `grid`, its lattice points outside the zone polygons
   /// (and within the focus) are vertices too (waypoint_grid.hpp).
   VisibilityGraph(const BgMultiPolygon& zones, VisibilityVariant variant, const QueryFocus& focus = {},
-                  const WaypointGrid& grid = {});
+                  const WaypointGrid& grid = {}, CornerPairs pairs = CornerPairs::automatic);
   static std::size_t max_corners(VisibilityVariant variant);
 
   /// Cheapest route from start to goal in this graph: shortest, or by `cost`
