@@ -116,8 +116,15 @@ bool PolygonVisibility::segment_visible(const Vec2& p, const Vec2& q) const {
     const bool straddle_pq = (sa > eps_ && sb < -eps_) || (sa < -eps_ && sb > eps_);
     const bool straddle_ab = (sp > eps_ && sq < -eps_) || (sp < -eps_ && sq > eps_);
     if (straddle_pq && straddle_ab) return false;
-    for (const auto& [x, s] : {std::pair{a, sa}, std::pair{b, sb}}) {
-      if (std::abs(s) > eps_) continue;
+    // Every end of a candidate edge splits PQ where it projects, not only
+    // those on it: a piece then has no corner beside it, its depth inside a
+    // polygon is concave along it, and a midpoint within eps of a ring bounds
+    // the whole piece's depth by 2 eps. Split only at corners on PQ, a piece
+    // that entered a zone through a corner it starts at and ran on just
+    // inside an edge to its end passed on its shallow midpoint however deep
+    // its first part went (0.6 m, NavMeshGraph.DenseFields... with seed
+    // shift 4242).
+    for (const Vec2& x : {a, b}) {
       const double t = (x - p).dot(q - p) / (len * len);
       if (t * len > eps_ && (1.0 - t) * len > eps_) breaks.push_back(t);
     }

@@ -6,9 +6,9 @@
 // over the edges and the polygons.
 //
 // Test for segment PQ: (1) no candidate edge crosses it properly (both pairs
-// of endpoints strictly on opposite sides, beyond eps); (2) split PQ at every
-// polygon vertex lying on it; no piece's midpoint is strictly inside a polygon
-// (more than eps from every edge). Together these reject a segment entering an
+// of endpoints strictly on opposite sides, beyond eps); (2) split PQ where
+// every vertex of the edges it meets projects onto it; no piece's midpoint is
+// strictly inside a polygon (more than eps from every edge). Together these reject a segment entering an
 // interior through a vertex or leaving its start into the interior, and accept
 // grazing and collinear runs: the cases that break naive visibility graphs.
 

@@ -110,6 +110,10 @@ class Search {
  private:
   static double tie(double g) { return 1e-12 * std::max(g, 1.0); }
 
+  static int open_edges(const NavMesh::Face& f) {
+    return (f.next[0] != NavMesh::kNone) + (f.next[1] != NavMesh::kNone) + (f.next[2] != NavMesh::kNone);
+  }
+
   bool holds_goal(std::int32_t face) const {
     return std::find(goal_faces_.begin(), goal_faces_.end(), face) != goal_faces_.end();
   }
@@ -147,8 +151,12 @@ class Search {
     n.left = part.hi == 1.0 ? Q : Vec2(P + part.hi * (Q - P));
     n.right_vertex = part.lo == 0.0 ? static_cast<std::int32_t>(p) : kNoVertex;
     n.left_vertex = part.hi == 1.0 ? static_cast<std::int32_t>(q) : kNoVertex;
-    n.face = across;
     const NavMesh::Face& beyond = mesh_.faces()[across];
+    // Dead-end pruning (the paper's): a face whose only open edge is the one
+    // crossed leads back only, so nothing shorter passes through it; unless
+    // the goal lies in it.
+    if (open_edges(beyond) == 1 && !holds_goal(across)) return;
+    n.face = across;
     n.edge = 0;
     while (n.edge < 3 && !(beyond.v[n.edge] == q && beyond.v[(n.edge + 1) % 3] == p)) ++n.edge;
     if (n.edge == 3) return;  // not the shared edge: cannot happen in a valid mesh
