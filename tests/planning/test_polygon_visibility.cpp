@@ -26,16 +26,16 @@ constexpr double kEps = 1e-6;
 BgPolygon notched_wall(double d) {
   BgPolygon poly;
   for (const auto& [x, y] : std::vector<std::pair<double, double>>{{-10, -10},
-                                                                    {20, -10},
-                                                                    {20, 0},
-                                                                    {1, d},
-                                                                    {20, 1},
-                                                                    {20, 10},
-                                                                    {-10, 10},
-                                                                    {-10, 1},
-                                                                    {0, 0},
-                                                                    {-10, -1},
-                                                                    {-10, -10}}) {
+                                                                   {20, -10},
+                                                                   {20, 0},
+                                                                   {1, d},
+                                                                   {20, 1},
+                                                                   {20, 10},
+                                                                   {-10, 10},
+                                                                   {-10, 1},
+                                                                   {0, 0},
+                                                                   {-10, -1},
+                                                                   {-10, -10}}) {
     poly.outer().push_back(BgPoint(x, y));
   }
   boost::geometry::correct(poly);
@@ -47,8 +47,8 @@ BgPolygon notched_wall(double d) {
 TEST(PolygonVisibility, ASegmentIntoAWallPastACornerJustBesideItIsBlocked) {
   const double d = 1.5 * kEps;
   const PolygonVisibility vis(BgMultiPolygon{notched_wall(d)}, kEps);
-  EXPECT_TRUE(vis.strictly_inside({0.5, 0.0}));      // the wall
-  EXPECT_FALSE(vis.strictly_inside({10.0, 0.0}));    // 0.79 eps under the notch's edge
+  EXPECT_TRUE(vis.strictly_inside({0.5, 0.0}));    // the wall
+  EXPECT_FALSE(vis.strictly_inside({10.0, 0.0}));  // 0.79 eps under the notch's edge
   EXPECT_FALSE(vis.segment_visible({0.0, 0.0}, {20.0, 0.0}));
   EXPECT_FALSE(vis.segment_visible({20.0, 0.0}, {0.0, 0.0}));
   // What stays open: along the notch's edge, into the notches, and the
