@@ -140,4 +140,25 @@ BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOpti
   return merged;
 }
 
+void add_zone_polygons(BgMultiPolygon& merged, const BgMultiPolygon& added) {
+  for (const BgPolygon& zone : added) {
+    const BgBox box = bg::return_envelope<BgBox>(zone);
+    std::vector<const BgPolygon*> parts{&zone};
+    std::vector<std::size_t> met;
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+      if (bg::intersects(box, bg::return_envelope<BgBox>(merged[i])) && bg::intersects(zone, merged[i])) {
+        met.push_back(i);
+        parts.push_back(&merged[i]);
+      }
+    }
+    if (met.empty()) {
+      merged.push_back(zone);
+      continue;
+    }
+    std::vector<BgPolygon> united = union_no_go({}, parts);
+    for (std::size_t k = met.size(); k-- > 0;) merged.erase(merged.begin() + static_cast<std::ptrdiff_t>(met[k]));
+    for (BgPolygon& part : united) merged.push_back(std::move(part));
+  }
+}
+
 }  // namespace deepguide

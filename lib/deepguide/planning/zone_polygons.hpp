@@ -31,4 +31,10 @@ BgMultiPolygon polygon_zone(const BgPolygon& footprint, const ZoneOptions& optio
 /// Enclosing polygons of every obstacle's zone, overlapping ones merged.
 BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOptions& options);
 
+/// Adds zone polygons found later (a detection's) to merged ones: each is
+/// united (GEOS, world/no_go_union.hpp) with the polygons it meets, and the
+/// rest are left as they are, so `merged` stays a set of polygons that do
+/// not overlap.
+void add_zone_polygons(BgMultiPolygon& merged, const BgMultiPolygon& added);
+
 }  // namespace deepguide

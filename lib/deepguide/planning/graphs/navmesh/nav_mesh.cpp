@@ -5,6 +5,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
@@ -21,9 +22,13 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 struct FaceInfo {
-  int depth = -1;  // constraint edges crossed from outside the area; -1: not reached yet
+  int depth = -1;        // constraint edges crossed from outside the area (insert: its region); -1: not reached yet
+  std::int32_t id = -1;  // insert: the new face's number; -1: no water
 };
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::int64_t, K>;
+struct VertexInfo {
+  std::int64_t id = -1;  // the mesh's vertex; -1: none yet
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
 using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
@@ -113,13 +118,12 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
   // Number the water's faces and the vertices they use.
   std::unordered_map<const void*, std::int32_t> face_id;
   std::int64_t next_vertex = 0;
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info() = -1;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!water(cdt, f)) continue;
     face_id.emplace(&*f, static_cast<std::int32_t>(face_id.size()));
     for (int i = 0; i < 3; ++i) {
-      if (f->vertex(i)->info() == -1) {
-        f->vertex(i)->info() = next_vertex++;
+      if (f->vertex(i)->info().id == -1) {
+        f->vertex(i)->info().id = next_vertex++;
         vertices_.emplace_back(f->vertex(i)->point().x(), f->vertex(i)->point().y());
       }
     }
@@ -129,7 +133,7 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
     if (!water(cdt, f)) continue;
     const std::int32_t id = face_id.at(&*f);
     Face& out = faces_[id];
-    for (int k = 0; k < 3; ++k) out.v[k] = static_cast<std::uint32_t>(f->vertex(k)->info());
+    for (int k = 0; k < 3; ++k) out.v[k] = static_cast<std::uint32_t>(f->vertex(k)->info().id);
     for (int k = 0; k < 3; ++k) {
       // Edge (v[k], v[k+1]) lies opposite CGAL's vertex k + 2.
       const int opposite = (k + 2) % 3;
@@ -153,24 +157,29 @@ NavMesh::NavMesh(std::vector<Vec2> vertices, std::vector<Face> faces, const Vec2
 }
 
 void NavMesh::find_corners() {
-  // Per vertex: the water's angle (its faces' angles there) and the
-  // boundary edges that meet there (two where one wedge of water ends, more
-  // where the water touches itself).
-  std::vector<double> angle(vertices_.size(), 0.0);
-  std::vector<std::uint32_t> boundary(vertices_.size(), 0);
-  for (const Face& f : faces_) {
-    for (int k = 0; k < 3; ++k) {
-      const Vec2& p = vertices_[f.v[k]];
-      const Vec2 a = vertices_[f.v[(k + 1) % 3]] - p, b = vertices_[f.v[(k + 2) % 3]] - p;
-      angle[f.v[k]] += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-      if (f.next[k] == kNone) ++boundary[f.v[k]], ++boundary[f.v[(k + 1) % 3]];
-    }
-  }
-  constexpr double kStraight = 3.14159265358979323846 - 1e-9;
+  angle_.assign(vertices_.size(), 0.0);
+  boundary_.assign(vertices_.size(), 0);
   corner_.assign(vertices_.size(), 0);
-  for (std::size_t v = 0; v < vertices_.size(); ++v) {
-    corner_[v] = boundary[v] > 2 || (boundary[v] == 2 && angle[v] > kStraight) ? 1 : 0;
+  for (std::size_t id = 0; id < faces_.size(); ++id) count_face(id, 1);
+  for (std::uint32_t v = 0; v < vertices_.size(); ++v) mark_corner(v);
+}
+
+void NavMesh::count_face(std::size_t id, int sign) {
+  const Face& f = faces_[id];
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& p = vertices_[f.v[k]];
+    const Vec2 a = vertices_[f.v[(k + 1) % 3]] - p, b = vertices_[f.v[(k + 2) % 3]] - p;
+    angle_[f.v[k]] += sign * std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    if (f.next[k] == kNone) boundary_[f.v[k]] += sign, boundary_[f.v[(k + 1) % 3]] += sign;
   }
+}
+
+void NavMesh::mark_corner(std::uint32_t v) {
+  // Two boundary edges where one wedge of water ends, more where the water
+  // touches itself. Sums kept face by face drift by rounding, far below the
+  // 1e-9 rad that separates a straight vertex (a corner too) from a convex one.
+  constexpr double kStraight = 3.14159265358979323846 - 1e-9;
+  corner_[v] = boundary_[v] > 2 || (boundary_[v] == 2 && angle_[v] > kStraight) ? 1 : 0;
 }
 
 void NavMesh::index_faces() {
@@ -231,6 +240,215 @@ std::size_t NavMesh::edge_count() const {
     for (const std::int32_t n : faces_[id].next) count += n == kNone || static_cast<std::size_t>(n) > id ? 1 : 0;
   }
   return count;
+}
+
+}  // namespace deepguide
+
+namespace deepguide {
+
+NavMesh::Repair NavMesh::insert(const BgMultiPolygon& no_go) {
+  Repair total;
+  for (const BgPolygon& polygon : no_go) {
+    const Repair r = insert(polygon);
+    total.removed += r.removed;
+    total.added += r.added;
+  }
+  return total;
+}
+
+NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
+  Repair out;
+  if (no_go.outer().size() < 4) return out;
+  BgBox box;
+  bg::envelope(no_go, box);
+  std::vector<Index::Item> hit;
+  index_->faces.query(bgi::intersects(box), std::back_inserter(hit));
+  if (hit.empty()) return out;  // it lies in no water: nothing changes
+  std::vector<std::int32_t> taken;
+  for (const auto& item : hit) taken.push_back(item.second);
+  std::sort(taken.begin(), taken.end());
+  const auto is_taken = [&](std::int32_t id) { return std::binary_search(taken.begin(), taken.end(), id); };
+
+  // The region the taken faces cover, triangulated anew: its boundary (their
+  // edges with no taken face across) and the polygon's rings as constraints.
+  // The rings may cross the region's boundary only where no water lies
+  // beyond it (a face left in place has its box clear of the polygon's), so
+  // every edge shared with a face left in place comes out whole. Where the
+  // rings cross each other or the boundary, CGAL splits them at the crossing.
+  Cdt cdt;
+  std::unordered_map<std::uint32_t, Cdt::Vertex_handle> local;
+  const auto mesh_vertex = [&](std::uint32_t v) {
+    auto [at, fresh] = local.try_emplace(v);
+    if (fresh) {
+      at->second = cdt.insert(K::Point_2(vertices_[v].x(), vertices_[v].y()));
+      at->second->info().id = v;
+    }
+    return at->second;
+  };
+  // A face left in place across the region's boundary, and its edge there:
+  // keyed by the taken face's edge a -> b, which the new face on the same
+  // side has in the same direction.
+  struct Across {
+    std::int32_t face;
+    int edge;
+  };
+  const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
+  std::unordered_map<std::uint64_t, Across> across;
+  std::vector<std::int32_t> neighbours;  // the faces left in place across the boundary
+  std::vector<std::uint32_t> touched;    // vertices whose corners may change
+  for (const std::int32_t id : taken) {
+    const Face& f = faces_[id];
+    for (int k = 0; k < 3; ++k) {
+      touched.push_back(f.v[k]);
+      const std::int32_t n = f.next[k];
+      if (n != kNone && is_taken(n)) continue;
+      const std::uint32_t a = f.v[k], b = f.v[(k + 1) % 3];
+      cdt.insert_constraint(mesh_vertex(a), mesh_vertex(b));
+      if (n == kNone) continue;
+      const Face& m = faces_[n];
+      const int back = m.next[0] == id ? 0 : m.next[1] == id ? 1 : 2;
+      across.emplace(key(a, b), Across{n, back});
+      neighbours.push_back(n);
+    }
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  const auto add_ring = [&](const auto& ring) {
+    std::vector<Cdt::Vertex_handle> hs;
+    for (const BgPoint& p : ring) {
+      const Cdt::Vertex_handle h = cdt.insert(K::Point_2(p.x(), p.y()));
+      if (hs.empty() || hs.back() != h) hs.push_back(h);
+    }
+    while (hs.size() > 1 && hs.front() == hs.back()) hs.pop_back();
+    if (hs.size() < 3) return;
+    for (std::size_t i = 0; i < hs.size(); ++i) cdt.insert_constraint(hs[i], hs[(i + 1) % hs.size()]);
+  };
+  add_ring(no_go.outer());
+  for (const auto& inner : no_go.inners()) add_ring(inner);
+
+  // Which new faces are water. Faces joined across edges that are no
+  // constraint lie all in the region or all out of it, all in the polygon or
+  // all out: one point inside the largest of them answers for every one.
+  // In the region: in a taken face (exact orientation tests); not in the
+  // polygon: strictly outside it, holes being water.
+  const auto in_region = [&](const K::Point_2& c) {
+    for (const std::int32_t id : taken) {
+      const Face& f = faces_[id];
+      bool inside = true;
+      for (int k = 0; k < 3 && inside; ++k) {
+        const Vec2& a = vertices_[f.v[k]];
+        const Vec2& b = vertices_[f.v[(k + 1) % 3]];
+        inside = CGAL::orientation(K::Point_2(a.x(), a.y()), K::Point_2(b.x(), b.y()), c) != CGAL::RIGHT_TURN;
+      }
+      if (inside) return true;
+    }
+    return false;
+  };
+  std::vector<char> component_water;
+  for (auto start = cdt.finite_faces_begin(); start != cdt.finite_faces_end(); ++start) {
+    if (start->info().depth != -1) continue;
+    const int component = static_cast<int>(component_water.size());
+    Cdt::Face_handle largest = start;
+    double largest_area = -1.0;
+    std::deque<Cdt::Face_handle> flood{start};
+    start->info().depth = component;
+    while (!flood.empty()) {
+      const Cdt::Face_handle f = flood.front();
+      flood.pop_front();
+      const double area = std::abs(cdt.triangle(f).area());
+      if (area > largest_area) largest_area = area, largest = f;
+      for (int i = 0; i < 3; ++i) {
+        const Cdt::Face_handle n = f->neighbor(i);
+        if (cdt.is_infinite(n) || n->info().depth != -1 || cdt.is_constrained({f, i})) continue;
+        n->info().depth = component;
+        flood.push_back(n);
+      }
+    }
+    const K::Point_2 c = CGAL::centroid(cdt.triangle(largest));
+    component_water.push_back(in_region(c) && !bg::within(BgPoint(c.x(), c.y()), no_go) ? 1 : 0);
+  }
+
+  // Out with the taken faces: their part of the corners' sums, their boxes,
+  // and the links to them from across the boundary.
+  const auto face_box = [&](std::int32_t id) {
+    BgBox b;
+    bg::assign_inverse(b);
+    for (const std::uint32_t v : faces_[id].v) bg::expand(b, to_bg(vertices_[v]));
+    return b;
+  };
+  for (const std::int32_t id : taken) {
+    count_face(id, -1);
+    index_->faces.remove(Index::Item(face_box(id), id));
+  }
+  for (const std::int32_t n : neighbours) count_face(n, -1);
+  for (const auto& [edge, a] : across) faces_[a.face].next[a.edge] = kNone;
+
+  // In with the water's new faces: the taken faces' numbers first, then new ones.
+  std::vector<Cdt::Face_handle> made;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!component_water[f->info().depth]) continue;
+    f->info().id = made.size() < taken.size() ? taken[made.size()]
+                                              : static_cast<std::int32_t>(faces_.size() + made.size() - taken.size());
+    made.push_back(f);
+  }
+  if (made.size() > taken.size()) faces_.resize(faces_.size() + made.size() - taken.size());
+  for (const Cdt::Face_handle& f : made) {
+    for (int i = 0; i < 3; ++i) {
+      VertexInfo& v = f->vertex(i)->info();
+      if (v.id != -1) continue;
+      v.id = static_cast<std::int64_t>(vertices_.size());
+      vertices_.emplace_back(f->vertex(i)->point().x(), f->vertex(i)->point().y());
+      corner_.push_back(0);
+      angle_.push_back(0.0);
+      boundary_.push_back(0);
+    }
+  }
+  for (const Cdt::Face_handle& f : made) {
+    const std::int32_t id = f->info().id;
+    Face& face = faces_[id];
+    for (int k = 0; k < 3; ++k) face.v[k] = static_cast<std::uint32_t>(f->vertex(k)->info().id);
+    for (int k = 0; k < 3; ++k) {
+      const int opposite = (k + 2) % 3;  // edge (v[k], v[k+1]) lies opposite CGAL's vertex k + 2
+      const Cdt::Face_handle n = f->neighbor(opposite);
+      face.next[k] = kNone;
+      if (!cdt.is_constrained({f, opposite})) {
+        if (!cdt.is_infinite(n)) face.next[k] = n->info().id;
+        continue;
+      }
+      const auto found = across.find(key(face.v[k], face.v[(k + 1) % 3]));
+      if (found == across.end()) continue;
+      face.next[k] = found->second.face;
+      faces_[found->second.face].next[found->second.edge] = id;
+    }
+    count_face(static_cast<std::size_t>(id), 1);
+    for (const std::uint32_t v : face.v) touched.push_back(v);
+    index_->faces.insert(Index::Item(face_box(id), id));
+  }
+  for (const std::int32_t n : neighbours) {
+    count_face(n, 1);
+    for (const std::uint32_t v : faces_[n].v) touched.push_back(v);
+  }
+  for (const std::uint32_t v : touched) mark_corner(v);
+
+  // Taken numbers no new face took: the last face moves into each, largest
+  // first, so the last is never one of them.
+  for (std::size_t i = taken.size(); i-- > made.size();) {
+    const std::int32_t hole = taken[i];
+    const std::int32_t last = static_cast<std::int32_t>(faces_.size()) - 1;
+    if (hole != last) {
+      index_->faces.remove(Index::Item(face_box(last), last));
+      faces_[hole] = faces_[last];
+      for (const std::int32_t n : faces_[hole].next) {
+        if (n == kNone) continue;
+        for (std::int32_t& back : faces_[n].next) back = back == last ? hole : back;
+      }
+      index_->faces.insert(Index::Item(face_box(hole), hole));
+    }
+    faces_.pop_back();
+  }
+  out.removed = taken.size();
+  out.added = made.size();
+  return out;
 }
 
 }  // namespace deepguide

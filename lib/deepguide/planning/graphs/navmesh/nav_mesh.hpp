@@ -20,6 +20,14 @@
 // zone polygons (zone_polygons.hpp) do not. Triangles are kept as they are
 // (not merged into larger convex polygons): a few more search nodes, one
 // simple projection step.
+//
+// A no-go polygon found later (a sonar detection) goes in without
+// triangulating the rest again (insert): the faces whose boxes meet its box
+// are taken out, the region they cover is triangulated anew with its
+// boundary and the polygon's rings as constraints, and the new faces are
+// stitched to the old ones across the region's boundary. That boundary
+// survives as it was: a face left in place has a box clear of the polygon's,
+// so the polygon cannot cross an edge it shares with a face taken out.
 
 #include <array>
 #include <cstddef>
@@ -68,14 +76,32 @@ class NavMesh {
   /// edges().size(), without making them.
   std::size_t edge_count() const;
 
+  struct Repair {
+    std::size_t removed = 0;  ///< faces taken out
+    std::size_t added = 0;    ///< water faces made in their place
+  };
+  /// Takes the polygons (mesh coordinates; they may overlap the no-go the
+  /// mesh was made round, or each other, and reach beyond the area) out of
+  /// the water, re-triangulating only round them. The mesh is then what a
+  /// mesh made round the union would be, up to the triangles' shapes: the
+  /// same water, so the same shortest routes. Not safe while a search runs.
+  Repair insert(const BgMultiPolygon& no_go);
+
  private:
+  Repair insert(const BgPolygon& no_go);
   std::vector<Vec2> vertices_;
   std::vector<std::uint8_t> corner_;
+  // Per vertex: the water's angle there (its faces' angles) and the boundary
+  // edges that meet there; kept so insert can update them face by face.
+  std::vector<double> angle_;
+  std::vector<std::int32_t> boundary_;
   std::vector<Face> faces_;
   Vec2 area_min_, area_max_;
   struct Index;  // R-tree of the faces' boxes
   void index_faces();
   void find_corners();
+  void count_face(std::size_t id, int sign);  // adds (sign 1) or takes back (-1) a face's angles and boundary edges
+  void mark_corner(std::uint32_t v);
   std::unique_ptr<Index> index_;
 };
 

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <boost/geometry.hpp>
+#include <stdexcept>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/graph_zones.hpp"
 #include "deepguide/planning/graphs/navmesh/nav_mesh_file.hpp"
 #include "deepguide/planning/graphs/navmesh/polyanya.hpp"
+#include "deepguide/planning/turn_rounding.hpp"
+#include "deepguide/planning/zone_polygons.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
@@ -21,7 +24,8 @@ std::pair<Vec2, Vec2> widened(const Vec2& lo, const Vec2& hi) {
 
 }  // namespace
 
-NavMeshGraph::NavMeshGraph(const GraphBuild& in) {
+NavMeshGraph::NavMeshGraph(const GraphBuild& in)
+    : margin_(in.margin), tolerance_(in.options.tolerance), turn_radius_(in.options.turn_radius_m) {
   KeptNavMesh kept;
   if (in.prepared != nullptr) {
     kept = read_nav_mesh(*in.prepared);
@@ -55,13 +59,64 @@ NavMeshGraph::NavMeshGraph(const GraphBuild& in) {
 NavMeshGraph::~NavMeshGraph() = default;
 
 void NavMeshGraph::triangulate(const Vec2& lo, const Vec2& hi) {
+  {
+    const std::lock_guard<std::mutex> hold(band_lock_);
+    add_zone_polygons(local_.polygons, inserted_);
+    inserted_.clear();
+  }
   mesh_ = std::make_unique<NavMesh>(local_.polygons, lo, hi);
   edge_count_ = mesh_->edge_count();
 }
 
 const PolygonVisibility& NavMeshGraph::band() const {
-  std::call_once(band_built_, [&] { band_ = std::make_unique<PolygonVisibility>(local_.polygons, local_.eps); });
+  const std::lock_guard<std::mutex> hold(band_lock_);
+  if (!band_) {
+    add_zone_polygons(local_.polygons, inserted_);
+    inserted_.clear();
+    band_ = std::make_unique<PolygonVisibility>(local_.polygons, local_.eps);
+  }
   return *band_;
+}
+
+NavMesh::Repair NavMeshGraph::insert(const ObstacleSet& found) {
+  BgMultiPolygon zones = merged_zone_polygons(found, {margin_, tolerance_});
+  if (turn_radius_ > 0.0) zones = rounded_zone_polygons(zones, found, margin_, turn_radius_, tolerance_);
+  BgMultiPolygon local;
+  for (const BgPolygon& zone : zones) {
+    BgPolygon moved;
+    bg::transform(zone, moved,
+                  bg::strategy::transform::translate_transformer<double, 2, 2>(-origin_.x(), -origin_.y()));
+    local.push_back(std::move(moved));
+  }
+  // A zone reaching the area's edge can send the shortest route round it
+  // outside the area: the area widens, and the mesh is made again.
+  BgBox box;
+  bg::assign_inverse(box);
+  if (!local.empty()) bg::envelope(local, box);
+  const Vec2 lo = to_eigen(box.min_corner()), hi = to_eigen(box.max_corner());
+  if (!local.empty() &&
+      ((lo.array() <= mesh_->area_min().array()).any() || (hi.array() >= mesh_->area_max().array()).any())) {
+    const std::size_t before = mesh_->faces().size();
+    {
+      const std::lock_guard<std::mutex> hold(band_lock_);
+      inserted_.insert(inserted_.end(), local.begin(), local.end());
+      band_.reset();
+      ever_inserted_ = true;
+    }
+    const auto [area_lo, area_hi] = widened(lo.cwiseMin(mesh_->area_min()), hi.cwiseMax(mesh_->area_max()));
+    triangulate(area_lo, area_hi);
+    return {before, mesh_->faces().size()};
+  }
+  const NavMesh::Repair repair = mesh_->insert(local);
+  edge_count_ = mesh_->edge_count();
+  // The zone polygons matter again only for a start or goal in no water
+  // face (the band test): they are joined there, once per batch of inserts
+  // (joining them to a chart's coast costs more than the insert).
+  const std::lock_guard<std::mutex> hold(band_lock_);
+  inserted_.insert(inserted_.end(), local.begin(), local.end());
+  band_.reset();
+  ever_inserted_ = true;
+  return repair;
 }
 
 PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm search, const CostModel*,
@@ -102,7 +157,10 @@ PlanResult NavMeshGraph::solve(const PlanningProblem& problem, SearchAlgorithm s
   return result;
 }
 
-std::vector<std::uint8_t> NavMeshGraph::save() const { return write_nav_mesh(zones_, origin_, *mesh_); }
+std::vector<std::uint8_t> NavMeshGraph::save() const {
+  if (ever_inserted_) throw std::logic_error("navigation mesh: a mesh obstacles were inserted into is not kept");
+  return write_nav_mesh(zones_, origin_, *mesh_);
+}
 
 std::vector<std::pair<Vec2, Vec2>> NavMeshGraph::edges() const {
   std::vector<std::pair<Vec2, Vec2>> out = mesh_->edges();

@@ -16,6 +16,13 @@
 // Built from a prepared chart's bytes (GraphBuild::prepared), it reads its
 // zones and mesh back instead: the same graph, without the zones' union and
 // the triangulation, which are most of its build.
+//
+// Obstacles found later (a sonar detection) go in without a rebuild
+// (insert): their zones, at the margin and tolerance the graph was built
+// with, are cut out of the mesh round them (NavMesh::insert), and joined to
+// the zone polygons for the band test when a query next needs it. A zone
+// that reaches the work area's edge widens the area (the shortest route may
+// pass round it outside), and that is a new triangulation.
 
 #include <cstddef>
 #include <cstdint>
@@ -46,9 +53,19 @@ class NavMeshGraph : public RouteGraph {
   const NavMesh& mesh() const { return *mesh_; }
   /// Where the mesh's coordinates have their origin, in the planning frame.
   Vec2 origin() const { return origin_; }
+  /// The zone polygons it was built round (not those inserted since).
   const BgMultiPolygon& zones() const { return zones_; }
   /// The zones and the mesh as bytes (nav_mesh_file.hpp): the entry's `save`.
+  /// A mesh obstacles were inserted into is not kept (std::logic_error):
+  /// its zones no longer give the origin its coordinates are about.
   std::vector<std::uint8_t> save() const;
+
+  /// Takes obstacles found after the build out of the water (see above).
+  /// With a turning radius, their zones are widened for their own turning
+  /// circles only (not for circles between them and the older obstacles);
+  /// the Planner's finishing and the route checker judge the rest. Not safe
+  /// while another thread queries the graph.
+  NavMesh::Repair insert(const ObstacleSet& found);
 
  private:
   void triangulate(const Vec2& lo, const Vec2& hi);  // the area, in the mesh's coordinates
@@ -60,9 +77,12 @@ class NavMeshGraph : public RouteGraph {
 
   BgMultiPolygon zones_;
   Vec2 origin_{0.0, 0.0};
-  CentredPolygons local_;  // the zones about origin_
-  mutable std::once_flag band_built_;
+  mutable CentredPolygons local_;  // the zones about origin_ (band() joins the inserted ones)
+  mutable std::mutex band_lock_;
   mutable std::unique_ptr<PolygonVisibility> band_;
+  mutable BgMultiPolygon inserted_;  // zones inserted since the band was last built, about origin_
+  bool ever_inserted_ = false;
+  double margin_ = 0.0, tolerance_ = 0.0, turn_radius_ = 0.0;  // what insert makes zones with
   std::unique_ptr<NavMesh> mesh_;
   std::size_t edge_count_ = 0;
 };
