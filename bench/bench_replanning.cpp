@@ -4,6 +4,9 @@
 // event: the D* Lite repair (blocking the edges and resuming the search)
 // against A* from scratch from the vehicle's cell on the same changed graph,
 // and against rebuilding the quadtree with the rock and planning again.
+// And the navigation mesh's repair on the same events: the rock inserted
+// into a mesh built over the same obstacles (NavMeshGraph::insert) and the
+// exact route found again from the same vehicle position.
 //
 //   build/bench/bench_replanning [--scenarios N]
 
@@ -18,8 +21,11 @@
 
 #include "bench_options.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/graphs/navmesh/nav_mesh_graph.hpp"
 #include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
+#include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
+#include "deepguide/planning/route_check.hpp"
 
 using namespace deepguide;
 
@@ -46,6 +52,8 @@ int main(int argc, char** argv) {
   std::mt19937 rng(20021);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<double> build, repair, scratch, rebuild, ratio, rebuild_ratio, leaves, expanded_repair, expanded_scratch;
+  std::vector<double> mesh_repair, mesh_ratio, length_ratio;
+  int mesh_unsafe = 0;
   int events = 0, at_goal = 0;
   for (int sc = 0; sc < scenarios; ++sc) {
     ObstacleSet set;
@@ -84,6 +92,11 @@ int main(int argc, char** argv) {
     rock.id = "rock";
     rock.footprint = Ellipse{c, 12.5, 12.5, 0.0};
     d.obstacles.ellipses.push_back(rock);
+    PlannerOptions mesh_options;
+    mesh_options.margin = 5.0;
+    mesh_options.graph = GraphKind{"navmesh"};
+    Planner mesh_planner(set, mesh_options);
+    NavMeshGraph& mesh = *mesh_planner.graph().as<NavMeshGraph>();
     replay_detections(graph, problem, {d}, 5.0, [&](const Repair& r, GraphVertex at) {
       const GraphVertex goal = graph.goal_vertex();
       const auto t1 = std::chrono::steady_clock::now();
@@ -99,6 +112,11 @@ int main(int argc, char** argv) {
       QuadtreeGraph rebuilt(field2, q);
       (void)rebuilt.solve({r.vehicle, problem.goal}, SearchAlgorithm::astar);
       const double rebuild_ms = ms_since(t2);
+      // The mesh: the rock inserted, the exact route from the same place.
+      const auto t3 = std::chrono::steady_clock::now();
+      mesh.insert(d.obstacles);
+      const PlanResult exact = mesh.solve({r.vehicle, problem.goal}, SearchAlgorithm::astar, nullptr, {});
+      const double mesh_ms = ms_since(t3);
       if (!r.found || !s.found) return;
       // A route of one straight leg is sailed whole before the vehicle can
       // act (it acts at vertices): nothing is left to repair.
@@ -115,6 +133,15 @@ int main(int argc, char** argv) {
       expanded_repair.push_back(static_cast<double>(r.expanded));
       expanded_scratch.push_back(static_cast<double>(s.expanded));
       if (std::abs(r.cost - s.cost) > 1e-9 * s.cost) std::printf("MISMATCH %.9f vs %.9f\n", r.cost, s.cost);
+      ObstacleSet with_rock2 = set;
+      with_rock2.ellipses.push_back(rock);
+      if (!exact.found || !check_route(exact.route.points, ObstacleField(with_rock2, 5.0)).safe) {
+        ++mesh_unsafe;
+        return;
+      }
+      mesh_repair.push_back(mesh_ms);
+      mesh_ratio.push_back(mesh_ms / r.repair_ms);
+      length_ratio.push_back(r.cost / exact.route.length());
     });
   }
   std::printf(
@@ -138,5 +165,13 @@ int main(int argc, char** argv) {
               median(leaves), median(build), median(repair), median(scratch), at(0.5), at(0.1), at(0.0),
               total_scratch / total_repair, median(rebuild), median(rebuild_ratio), median(expanded_repair),
               median(expanded_scratch));
+  std::printf(
+      "\nThe navigation mesh on the same events (the rock inserted into a mesh of the same obstacles, then "
+      "Polyanya from the vehicle; %d not found or unsafe):\n\n"
+      "| navmesh insert + query ms | navmesh / D* Lite repair: median | D* Lite's cell route / the exact route, "
+      "length: median (max) |\n|---:|---:|---|\n",
+      mesh_unsafe);
+  std::printf("| %.3f | %.1f× | %.4f (%.4f) |\n", median(mesh_repair), median(mesh_ratio), median(length_ratio),
+              length_ratio.empty() ? NAN : *std::max_element(length_ratio.begin(), length_ratio.end()));
   return 0;
 }
