@@ -420,6 +420,46 @@ TEST(CliPlanQuadtree, BadOptionsAndAWalledInVehicle) {
   EXPECT_NE(walled.out.find("no route"), std::string::npos) << walled.out;
 }
 
+// The navigation mesh replays detections too: a rock reported on the exact
+// route 420 m out, reported 300 m out, is cut out of the mesh, the route
+// found again round it from where the vehicle is (longer than what was left),
+// written and checked; a ring closed round the goal stops the vehicle, exit 3
+// (a wall would not: the mesh's area widens round its ends).
+TEST(CliPlanNavMesh, ReplanningCutsEachReportOutOfTheMeshAndRoutesRoundIt) {
+  ScratchDir dir;
+  const std::string base = "plan --obstacles '" + kSample + "' --from 10.2405,54.4470 --to 10.2640,54.4560";
+  const std::string rock = dir.write("rock.csv",
+                                     "lon,lat,semi_major_m,semi_minor_m,orientation_deg,detected_at_m,id\n"
+                                     "10.24600,54.44902,20,20,0,300,new-rock\n");
+  const std::string route = dir.file("m.geojson");
+  const auto r = run_cli(base + " --graph navmesh --replan-events '" + rock + "' -o '" + route + "' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.at("repairs").size(), 1u);
+  EXPECT_TRUE(j.at("reached_goal").get<bool>());
+  const auto& repair = j.at("repairs").at(0);
+  EXPECT_GT(repair.at("remeshed_faces").get<int>(), 0);
+  EXPECT_NEAR(repair.at("along_m").get<double>(), 300.0, 1e-6);
+  const double initial = j.at("length_m").get<double>();
+  EXPECT_GT(300.0 + repair.at("length_m").get<double>(), initial + 1.0);  // the rock lies on the way
+  const std::string file = repair.at("file").get<std::string>();
+  ASSERT_TRUE(std::filesystem::exists(file)) << file;
+  // The repair keeps the margin from the chart's obstacles and from the rock (the reader's own check).
+  const auto ok = run_cli("check route '" + file + "' --obstacles '" + kSample + "' '" + rock + "' --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+  EXPECT_TRUE(nlohmann::json::parse(ok.out).at("safe").get<bool>());
+  const std::string wall =
+      dir.write("ring.geojson",
+                R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"id": "new-ring",
+      "detected_at_m": 100}, "geometry": {"type": "Polygon", "coordinates": [[[10.2620, 54.4548], [10.2660, 54.4548],
+      [10.2660, 54.4572], [10.2620, 54.4572], [10.2620, 54.4548]], [[10.2630, 54.4554], [10.2630, 54.4566],
+      [10.2650, 54.4566], [10.2650, 54.4554], [10.2630, 54.4554]]]}}]})");
+  const auto walled = run_cli(base + " --graph navmesh --replan-events '" + wall + "'");
+  EXPECT_EQ(walled.exit_code, 3) << walled.out << walled.err;
+  EXPECT_NE(walled.err.find("after report 1"), std::string::npos) << walled.err;
+  EXPECT_NE(walled.out.find("no route"), std::string::npos) << walled.out;
+}
+
 TEST(CliPlanOctree, ARouteInDepthOverTheSampleChart) {
   // Out of the harbour to the north-east over the sample chart's sea floor and
   // hazards: the route climbs over the shoal and passes over wreck-1.

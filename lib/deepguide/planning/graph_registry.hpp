@@ -65,8 +65,11 @@ struct GraphCapabilities {
   /// changing current, corners rounded within a turning radius
   /// (route_finishing.hpp). Otherwise the graph keeps the radius itself.
   bool finished_by_planner = false;
-  bool dubins_ends = false;   ///< plans a start or goal heading (PlanningProblem::start_heading)
-  bool dstar_repair = false;  ///< D* Lite repairs its route as the sonar finds obstacles (replanning.hpp)
+  bool dubins_ends = false;  ///< plans a start or goal heading (PlanningProblem::start_heading)
+  /// Repairs its route as the sonar finds obstacles, without a rebuild
+  /// (replanning.hpp): D* Lite on the quadtree's cells, the mesh cut round
+  /// them and searched again on the navmesh.
+  bool repairs = false;
   /// It covers a work area, not the ellipse round start and goal that a
   /// focus bounds: plan_single_query builds it once, over every obstacle,
   /// and the focus it is given only names the query (its area is sized for it).

@@ -54,8 +54,10 @@ std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFra
   return out;
 }
 
-Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections,
-                         double margin, const std::function<void(const Repair&, GraphVertex)>& after_repair) {
+namespace {
+
+// The detections in the order the vehicle meets them.
+void sort_detections(std::vector<ReplanEvent>& detections) {
   for (const ReplanEvent& d : detections) {
     if (!(d.along_m >= 0.0) || !std::isfinite(d.along_m)) {
       throw InputError("detection: along_m: expected a distance >= 0 m along the route");
@@ -63,6 +65,17 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
   }
   std::stable_sort(detections.begin(), detections.end(),
                    [](const ReplanEvent& a, const ReplanEvent& b) { return a.along_m < b.along_m; });
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections,
+                         double margin, const std::function<void(const Repair&, GraphVertex)>& after_repair) {
+  sort_detections(detections);
   graph.attach(problem);
   const GraphVertex goal = graph.goal_vertex();
   const auto h = [&graph](GraphVertex a, GraphVertex b) { return (graph.position(a) - graph.position(b)).norm(); };
@@ -114,7 +127,7 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
     r.found = dstar.compute();
     r.cost = dstar.cost();
     r.expanded = dstar.expanded() - before;
-    r.repair_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    r.repair_ms = ms_since(t0);
     if (r.found) r.route = positions(dstar.path());
     if (after_repair) after_repair(r, at);
     replay.repairs.push_back(std::move(r));
@@ -123,6 +136,64 @@ Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, s
   if (replay.repairs.empty() || replay.repairs.back().found) sail(std::numeric_limits<double>::infinity());
   replay.reached_goal = at == goal;
   graph.detach();
+  return replay;
+}
+
+Replay replay_detections(NavMeshGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections) {
+  sort_detections(detections);
+  const PlanResult first = graph.solve(problem, SearchAlgorithm::astar, nullptr, {});
+  if (!first.found) throw NoRouteError(first.message.empty() ? "no route from the start to the goal" : first.message);
+  Replay replay;
+  replay.initial_route = first.route.points;
+  replay.initial_cost = first.route.length();
+  replay.track = {problem.start};
+  std::vector<Vec2> route = first.route.points;  // what the vehicle sails now, from its last vertex
+  std::size_t next = 1;                          // the route's vertex it sails towards
+  Vec2 at = problem.start;
+  double sailed = 0.0;
+  // Sails on along the route until `until` metres, or to its end.
+  const auto sail = [&](double until) {
+    while (next < route.size()) {
+      const double leg = (route[next] - at).norm();
+      if (sailed + leg > until) {
+        at += (until - sailed) / leg * (route[next] - at);
+        sailed = until;
+        replay.track.push_back(at);
+        return;
+      }
+      sailed += leg;
+      at = route[next++];
+      replay.track.push_back(at);
+    }
+  };
+  for (const ReplanEvent& d : detections) {
+    sail(d.along_m);
+    Repair r;
+    r.along_m = sailed;
+    r.vehicle = at;
+    const auto t0 = std::chrono::steady_clock::now();
+    r.remeshed_faces = graph.insert(d.obstacles).removed;
+    if (at == problem.goal) {
+      // Reported when the vehicle has arrived: nothing is left to repair.
+      r.found = true;
+      r.route = {at};
+    } else {
+      const PlanResult again = graph.solve({at, problem.goal}, SearchAlgorithm::astar, nullptr, {});
+      r.found = again.found;
+      r.expanded = again.stats.expanded;
+      if (again.found) r.route = again.route.points;
+    }
+    r.cost = r.found ? Route{r.route}.length() : std::numeric_limits<double>::infinity();
+    r.repair_ms = ms_since(t0);
+    if (r.found && r.route.size() >= 2) {
+      route = r.route;
+      next = 1;
+    }
+    replay.repairs.push_back(std::move(r));
+    if (!replay.repairs.back().found) break;  // no way on: the vehicle stops here
+  }
+  if (replay.repairs.empty() || replay.repairs.back().found) sail(std::numeric_limits<double>::infinity());
+  replay.reached_goal = at == problem.goal;
   return replay;
 }
 

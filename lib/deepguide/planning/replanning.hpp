@@ -10,12 +10,18 @@
 // route; a report that comes during a leg is acted on at the leg's end, the
 // next decision point. Routes are weighed by length. The graph keeps the
 // blocked edges afterwards (it is the map as the vehicle knows it then).
+//
+// On the navigation mesh (`--graph navmesh`) the vehicle sails the exact
+// route and acts where the report reaches it: the obstacles' zones are cut
+// out of the mesh round them (NavMeshGraph::insert) and Polyanya finds the
+// shortest route again from there. The mesh keeps them afterwards.
 
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/planning/graphs/navmesh/nav_mesh_graph.hpp"
 #include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
@@ -31,22 +37,23 @@ struct ReplanEvent {
 };
 
 struct Repair {
-  double along_m = 0.0;           ///< distance sailed when the route was repaired (at a vertex)
-  Vec2 vehicle{0.0, 0.0};         ///< where the vehicle was
-  std::size_t blocked_edges = 0;  ///< directed edges the detection blocked (not blocked before)
+  double along_m = 0.0;            ///< distance sailed when the route was repaired (at a vertex)
+  Vec2 vehicle{0.0, 0.0};          ///< where the vehicle was
+  std::size_t blocked_edges = 0;   ///< quadtree: directed edges the detection blocked (not blocked before)
+  std::size_t remeshed_faces = 0;  ///< navmesh: faces taken out and triangulated anew
   bool found = false;
   std::vector<Vec2> route;   ///< from the vehicle to the goal
   double cost = 0.0;         ///< its length (+inf when none)
-  std::size_t expanded = 0;  ///< vertices D* Lite processed for this repair
-  double repair_ms = 0.0;    ///< blocking the edges and repairing
+  std::size_t expanded = 0;  ///< vertices D* Lite processed (navmesh: Polyanya's nodes) for this repair
+  double repair_ms = 0.0;    ///< blocking the edges and repairing (navmesh: inserting and searching)
 };
 
 struct Replay {
   std::vector<Vec2> initial_route;  ///< D* Lite's first route: the one the vehicle sails until a report
   double initial_cost = 0.0;
-  std::vector<Repair> repairs;  ///< one per detection, in order
-  std::vector<Vec2> track;      ///< every vertex the vehicle reached, start first
-  std::vector<GraphVertex> track_vertices;
+  std::vector<Repair> repairs;              ///< one per detection, in order
+  std::vector<Vec2> track;                  ///< every vertex the vehicle reached, start first
+  std::vector<GraphVertex> track_vertices;  ///< quadtree only
   bool reached_goal = false;
 };
 
@@ -67,5 +74,10 @@ std::vector<ReplanEvent> load_detections(const std::string& path, const LocalFra
 /// benchmarks compare with a search from scratch on the changed graph there.
 Replay replay_detections(QuadtreeGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections,
                          double margin, const std::function<void(const Repair&, GraphVertex)>& after_repair = {});
+
+/// The same replay on the navigation mesh (see above); the detections'
+/// zones are made at the margin the graph was built with. Throws as the
+/// quadtree's replay.
+Replay replay_detections(NavMeshGraph& graph, const PlanningProblem& problem, std::vector<ReplanEvent> detections);
 
 }  // namespace deepguide

@@ -9,6 +9,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
 #include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/graphs/navmesh/nav_mesh_graph.hpp"
 #include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
@@ -85,12 +86,13 @@ void check_request(const RoutePlanRequest& r) {
   if (r.turn_radius_m && (!std::isfinite(*r.turn_radius_m) || *r.turn_radius_m <= 0.0)) {
     throw InputError("`turn_radius_m`: expected a radius > 0 m, got " + general(*r.turn_radius_m));
   }
-  if (!r.replan_events.empty() &&
-      (!graph_entry(r.graph).can.dstar_repair || r.cost != CostKind::length || r.smooth || r.problem.escape)) {
+  if (!r.replan_events.empty() && (!graph_entry(r.graph).can.repairs || r.cost != CostKind::length || r.smooth ||
+                                   r.problem.escape || (r.graph.name == "navmesh" && r.turn_radius_m))) {
     throw InputError("`replan_events`: expected `graph` " +
-                     graph_names_text([](const GraphEntry& e) { return e.can.dstar_repair; }) +
-                     " with `cost` length, and neither `smooth` nor `escape` (D* Lite repairs the cell route by "
-                     "length from a start outside every zone)");
+                     graph_names_text([](const GraphEntry& e) { return e.can.repairs; }) +
+                     " with `cost` length, and neither `smooth` nor `escape` (nor a turning radius on navmesh): "
+                     "the repairs are routes by length from a start outside every zone, and the mesh's are not "
+                     "rounded");
   }
   if (r.smooth && !graph_entry(r.graph).can.steps) {
     throw InputError("`smooth`: expected `graph` " + graph_names_text([](const GraphEntry& e) { return e.can.steps; }) +
@@ -155,16 +157,40 @@ std::string time_axis_reason(const RoutePlanReport& report, const std::string& w
          ", arrives at " + format_utc(earliest) + " at the earliest; give a field that covers the voyage";
 }
 
-// The detections replayed along the route with D* Lite. The route the report
-// keeps is D* Lite's first (of equal length to A*'s, but on a cell grid ties
-// abound): the one the vehicle sails and detected_at_m is measured along.
+// The detections replayed along the route: with D* Lite on the quadtree
+// (the route the report keeps is D* Lite's first: of equal length to A*'s,
+// but on a cell grid ties abound, and detected_at_m is measured along the
+// one the vehicle sails), or cut out of the navigation mesh and searched
+// again. Every mesh repair is checked against the obstacles and every
+// detection so far (from where it leaves a detection's zone it started in).
 void replay(RoutePlanReport& report) {
   const RoutePlanRequest& r = report.request;
   report.detections = load_detections(r.replan_events, report.frame, r.src_crs);
-  QuadtreeGraph* cells = report.plan.planner->graph().as<QuadtreeGraph>();
-  if (cells == nullptr)
-    throw std::logic_error("replay: the plan's graph is no quadtree (check_request lets none else)");
-  report.replay = replay_detections(*cells, r.problem, report.detections, r.margin_m);
+  RouteGraph& graph = report.plan.planner->graph();
+  if (QuadtreeGraph* cells = graph.as<QuadtreeGraph>()) {
+    report.replay = replay_detections(*cells, r.problem, report.detections, r.margin_m);
+  } else if (NavMeshGraph* mesh = graph.as<NavMeshGraph>()) {
+    report.replay = replay_detections(*mesh, r.problem, report.detections);
+    ObstacleSet found;
+    for (std::size_t k = 0; k < report.replay->repairs.size(); ++k) {
+      const ReplanEvent& d = report.detections[k];
+      found.ellipses.insert(found.ellipses.end(), d.obstacles.ellipses.begin(), d.obstacles.ellipses.end());
+      found.polygons.insert(found.polygons.end(), d.obstacles.polygons.begin(), d.obstacles.polygons.end());
+      const Repair& repair = report.replay->repairs[k];
+      if (!repair.found || repair.route.size() < 2) continue;
+      const ObstacleField detected(found, r.margin_m);
+      const bool stepped_out = !detected.is_free(repair.route.front());
+      const std::vector<Vec2> judged(repair.route.begin() + (stepped_out ? 1 : 0), repair.route.end());
+      for (const ObstacleField* field : {&report.plan.planner->field(), &detected}) {
+        const RouteCheck check = check_route(judged, *field);
+        if (!check.safe)
+          throw std::runtime_error("repair " + std::to_string(k + 1) +
+                                   " failed the independent check: " + check.describe());
+      }
+    }
+  } else {
+    throw std::logic_error("replay: the plan's graph repairs no route (check_request lets none else)");
+  }
   for (std::size_t k = 0; k < report.replay->repairs.size(); ++k) {
     // A report that reaches the vehicle at the goal (reported past the route's
     // end) repairs nothing: no file (it once failed writing a one-point route).
@@ -360,6 +386,7 @@ nlohmann::json RoutePlanReport::to_json() const {
       const Repair& r = replay->repairs[k];
       nlohmann::json row = {{"repair", k + 1},  {"along_m", r.along_m},   {"blocked_edges", r.blocked_edges},
                             {"found", r.found}, {"expanded", r.expanded}, {"repair_ms", r.repair_ms}};
+      if (request.graph.name == "navmesh") row["remeshed_faces"] = r.remeshed_faces;
       if (r.found) row["length_m"] = r.cost;
       if (!repair_files[k].empty()) row["file"] = repair_files[k];
       repairs.push_back(row);
@@ -475,22 +502,25 @@ std::string RoutePlanReport::to_text() const {
     }
   }
   if (replay) {
+    const bool mesh = request.graph.name == "navmesh";
     t += report_line("replanning",
-                     std::to_string(replay->repairs.size()) + " detection(s) replayed with D* Lite; the vehicle " +
-                         (replay->reached_goal ? "reaches the goal" : "stops: no way on") +
+                     std::to_string(replay->repairs.size()) + " detection(s) replayed " +
+                         (mesh ? "on the navigation mesh (cut round each, searched again)" : "with D* Lite") +
+                         "; the vehicle " + (replay->reached_goal ? "reaches the goal" : "stops: no way on") +
                          (after_arrival(*replay) > 0 ? "; " + std::to_string(after_arrival(*replay)) +
                                                            " detection(s) reached it at the goal, nothing to repair"
                                                      : std::string()));
-    t += printf_text("%6s %10s %8s %10s %9s %10s\n", "repair", "along m", "blocked", "length m", "expanded",
-                     "repair ms");
+    t += printf_text("%6s %10s %8s %10s %9s %10s\n", "repair", "along m", mesh ? "remeshed" : "blocked", "length m",
+                     "expanded", "repair ms");
     for (std::size_t k = 0; k < replay->repairs.size(); ++k) {
       const Repair& r = replay->repairs[k];
+      const std::size_t changed = mesh ? r.remeshed_faces : r.blocked_edges;
       if (r.found) {
-        t += printf_text("%6zu %10.1f %8zu %10.2f %9zu %10.2f\n", k + 1, r.along_m, r.blocked_edges, r.cost, r.expanded,
+        t += printf_text("%6zu %10.1f %8zu %10.2f %9zu %10.2f\n", k + 1, r.along_m, changed, r.cost, r.expanded,
                          r.repair_ms);
       } else {
-        t += printf_text("%6zu %10.1f %8zu %10s %9zu %10.2f\n", k + 1, r.along_m, r.blocked_edges, "no route",
-                         r.expanded, r.repair_ms);
+        t += printf_text("%6zu %10.1f %8zu %10s %9zu %10.2f\n", k + 1, r.along_m, changed, "no route", r.expanded,
+                         r.repair_ms);
       }
     }
   }

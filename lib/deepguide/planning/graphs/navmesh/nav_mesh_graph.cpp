@@ -172,7 +172,7 @@ GraphEntry nav_mesh_graph_entry() {
   GraphEntry e;
   e.name = "navmesh";
   e.help = "Polyanya on a navigation mesh, exact among the zone polygons";
-  e.can = {.turn_radius = true, .finished_by_planner = true, .covers_area = true};
+  e.can = {.turn_radius = true, .finished_by_planner = true, .repairs = true, .covers_area = true};
   e.build = [](const GraphBuild& in) -> std::unique_ptr<RouteGraph> { return std::make_unique<NavMeshGraph>(in); };
   e.save = [](const RouteGraph& g) { return g.as<NavMeshGraph>()->save(); };
   return e;

@@ -70,7 +70,7 @@ GraphEntry quadtree_graph_entry() {
            .turn_radius = true,
            .steps = true,
            .finished_by_planner = true,
-           .dstar_repair = true,
+           .repairs = true,
            .covers_area = true};
   e.build = build_quadtree;
   return e;
