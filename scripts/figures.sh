@@ -54,6 +54,9 @@ mkdir -p docs/images
   --graph quadtree --min-cell 4 --render docs/images/quadtree_cells.png --render-graph >/dev/null
 "$DEEPGUIDE_CLI" plan --obstacles data/sample_obstacles.geojson --from 10.2405,54.4470 --to 10.2640,54.4560 \
   --graph quadtree --replan-events data/replan_events.csv --render docs/images/replanning_replay.png >/dev/null
+# The same on the navigation mesh: a rock reported on the exact route.
+"$DEEPGUIDE_CLI" plan --obstacles data/sample_obstacles.geojson --from 10.2405,54.4470 --to 10.2640,54.4560 \
+  --graph navmesh --replan-events data/replan_events_navmesh.csv --render docs/images/replanning_navmesh.png >/dev/null
 
 # A route in depth over the sample chart: its depth profile with the sea
 # floor, the hazards' tops and the octree's cells (docs/PLANNING.md).
