@@ -77,8 +77,8 @@ void register_plan(CLI::App& app) {
                 "Quadtree, octree: shortcut the cell-centre route where the straight line is free (and flyable)");
   add_depth_flags(*cmd, c->depth);
   cmd->add_option("--replan-events", r.replan_events,
-                  "Quadtree: replay sonar detections (an obstacle file with detected_at_m) with D* Lite and write "
-                  "each repaired route (ROUTE_repair_K.geojson)");
+                  "Quadtree or navmesh: replay sonar detections (an obstacle file with detected_at_m), repaired by "
+                  "D* Lite or cut out of the mesh, and write each repaired route (ROUTE_repair_K.geojson)");
   cmd->add_option("--depart", c->depart,
                   "Departure time (UTC, e.g. 2019-03-07T15:00:00Z); default: the current field's first time");
   cmd->callback([c] { run_plan(*c); });

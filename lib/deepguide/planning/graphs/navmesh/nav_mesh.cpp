@@ -186,10 +186,7 @@ void NavMesh::index_faces() {
   std::vector<Index::Item> boxes;
   boxes.reserve(faces_.size());
   for (std::size_t id = 0; id < faces_.size(); ++id) {
-    BgBox b;
-    bg::assign_inverse(b);
-    for (const std::uint32_t v : faces_[id].v) bg::expand(b, to_bg(vertices_[v]));
-    boxes.emplace_back(b, static_cast<std::int32_t>(id));
+    boxes.emplace_back(face_box(static_cast<std::int32_t>(id)), static_cast<std::int32_t>(id));
   }
   index_->faces = bgi::rtree<Index::Item, bgi::rstar<16>>(boxes.begin(), boxes.end());
 }
@@ -246,6 +243,122 @@ std::size_t NavMesh::edge_count() const {
 
 namespace deepguide {
 
+namespace {
+
+// A face left in place across the cut region's boundary, and its edge there.
+struct Across {
+  std::int32_t face;
+  int edge;
+};
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
+
+// The region the taken faces cover, triangulated anew: its boundary (their
+// edges with no taken face across) and the polygon's rings as constraints.
+// The rings may cross the region's boundary only where no water lies beyond
+// it (a face left in place has its box clear of the polygon's), so every
+// edge shared with a face left in place comes out whole; where the rings
+// cross each other or the boundary, CGAL splits them at the crossing.
+struct Cut {
+  Cdt cdt;
+  // The faces left in place across the boundary, keyed by the taken face's
+  // edge a -> b, which the new face on the same side has in the same direction.
+  std::unordered_map<std::uint64_t, Across> across;
+  std::vector<std::int32_t> neighbours;  // those faces, once each
+  std::vector<std::uint32_t> touched;    // vertices whose corners may change
+};
+
+void triangulate_region(Cut& cut, const NavMesh& mesh, const std::vector<std::int32_t>& taken, const BgPolygon& no_go) {
+  const auto is_taken = [&](std::int32_t id) { return std::binary_search(taken.begin(), taken.end(), id); };
+  std::unordered_map<std::uint32_t, Cdt::Vertex_handle> local;
+  const auto mesh_vertex = [&](std::uint32_t v) {
+    auto [at, fresh] = local.try_emplace(v);
+    if (fresh) {
+      at->second = cut.cdt.insert(K::Point_2(mesh.vertices()[v].x(), mesh.vertices()[v].y()));
+      at->second->info().id = v;
+    }
+    return at->second;
+  };
+  for (const std::int32_t id : taken) {
+    const NavMesh::Face& f = mesh.faces()[id];
+    for (int k = 0; k < 3; ++k) {
+      cut.touched.push_back(f.v[k]);
+      const std::int32_t n = f.next[k];
+      if (n != NavMesh::kNone && is_taken(n)) continue;
+      const std::uint32_t a = f.v[k], b = f.v[(k + 1) % 3];
+      cut.cdt.insert_constraint(mesh_vertex(a), mesh_vertex(b));
+      if (n == NavMesh::kNone) continue;
+      const NavMesh::Face& m = mesh.faces()[n];
+      const int back = m.next[0] == id ? 0 : m.next[1] == id ? 1 : 2;
+      cut.across.emplace(edge_key(a, b), Across{n, back});
+      cut.neighbours.push_back(n);
+    }
+  }
+  std::sort(cut.neighbours.begin(), cut.neighbours.end());
+  cut.neighbours.erase(std::unique(cut.neighbours.begin(), cut.neighbours.end()), cut.neighbours.end());
+  const auto add_ring = [&](const auto& ring) {
+    std::vector<Cdt::Vertex_handle> hs;
+    for (const BgPoint& p : ring) {
+      const Cdt::Vertex_handle h = cut.cdt.insert(K::Point_2(p.x(), p.y()));
+      if (hs.empty() || hs.back() != h) hs.push_back(h);
+    }
+    while (hs.size() > 1 && hs.front() == hs.back()) hs.pop_back();
+    if (hs.size() < 3) return;
+    for (std::size_t i = 0; i < hs.size(); ++i) cut.cdt.insert_constraint(hs[i], hs[(i + 1) % hs.size()]);
+  };
+  add_ring(no_go.outer());
+  for (const auto& inner : no_go.inners()) add_ring(inner);
+}
+
+// Which of the new faces are water, by piece (FaceInfo::depth numbers the
+// pieces). Faces joined across edges that are no constraint lie all in the
+// region or all out of it, all in the polygon or all out: one point inside
+// the largest of them answers for every one. In the region: in a taken face
+// (exact orientation tests); water: strictly outside the polygon (its holes
+// are water).
+std::vector<char> water_pieces(Cdt& cdt, const NavMesh& mesh, const std::vector<std::int32_t>& taken,
+                               const BgPolygon& no_go) {
+  const auto in_region = [&](const K::Point_2& c) {
+    for (const std::int32_t id : taken) {
+      const NavMesh::Face& f = mesh.faces()[id];
+      bool inside = true;
+      for (int k = 0; k < 3 && inside; ++k) {
+        const Vec2& a = mesh.vertices()[f.v[k]];
+        const Vec2& b = mesh.vertices()[f.v[(k + 1) % 3]];
+        inside = CGAL::orientation(K::Point_2(a.x(), a.y()), K::Point_2(b.x(), b.y()), c) != CGAL::RIGHT_TURN;
+      }
+      if (inside) return true;
+    }
+    return false;
+  };
+  std::vector<char> water;
+  for (auto start = cdt.finite_faces_begin(); start != cdt.finite_faces_end(); ++start) {
+    if (start->info().depth != -1) continue;
+    const int piece = static_cast<int>(water.size());
+    Cdt::Face_handle largest = start;
+    double largest_area = -1.0;
+    std::deque<Cdt::Face_handle> flood{start};
+    start->info().depth = piece;
+    while (!flood.empty()) {
+      const Cdt::Face_handle f = flood.front();
+      flood.pop_front();
+      const double area = std::abs(cdt.triangle(f).area());
+      if (area > largest_area) largest_area = area, largest = f;
+      for (int i = 0; i < 3; ++i) {
+        const Cdt::Face_handle n = f->neighbor(i);
+        if (cdt.is_infinite(n) || n->info().depth != -1 || cdt.is_constrained({f, i})) continue;
+        n->info().depth = piece;
+        flood.push_back(n);
+      }
+    }
+    const K::Point_2 c = CGAL::centroid(cdt.triangle(largest));
+    water.push_back(in_region(c) && !bg::within(BgPoint(c.x(), c.y()), no_go) ? 1 : 0);
+  }
+  return water;
+}
+
+}  // namespace
+
 NavMesh::Repair NavMesh::insert(const BgMultiPolygon& no_go) {
   Repair total;
   for (const BgPolygon& polygon : no_go) {
@@ -256,137 +369,40 @@ NavMesh::Repair NavMesh::insert(const BgMultiPolygon& no_go) {
   return total;
 }
 
+BgBox NavMesh::face_box(std::int32_t id) const {
+  BgBox b;
+  bg::assign_inverse(b);
+  for (const std::uint32_t v : faces_[id].v) bg::expand(b, to_bg(vertices_[v]));
+  return b;
+}
+
 NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
-  Repair out;
-  if (no_go.outer().size() < 4) return out;
+  if (no_go.outer().size() < 4) return {};
   BgBox box;
   bg::envelope(no_go, box);
   std::vector<Index::Item> hit;
   index_->faces.query(bgi::intersects(box), std::back_inserter(hit));
-  if (hit.empty()) return out;  // it lies in no water: nothing changes
+  if (hit.empty()) return {};  // it lies in no water: nothing changes
   std::vector<std::int32_t> taken;
   for (const auto& item : hit) taken.push_back(item.second);
   std::sort(taken.begin(), taken.end());
-  const auto is_taken = [&](std::int32_t id) { return std::binary_search(taken.begin(), taken.end(), id); };
-
-  // The region the taken faces cover, triangulated anew: its boundary (their
-  // edges with no taken face across) and the polygon's rings as constraints.
-  // The rings may cross the region's boundary only where no water lies
-  // beyond it (a face left in place has its box clear of the polygon's), so
-  // every edge shared with a face left in place comes out whole. Where the
-  // rings cross each other or the boundary, CGAL splits them at the crossing.
-  Cdt cdt;
-  std::unordered_map<std::uint32_t, Cdt::Vertex_handle> local;
-  const auto mesh_vertex = [&](std::uint32_t v) {
-    auto [at, fresh] = local.try_emplace(v);
-    if (fresh) {
-      at->second = cdt.insert(K::Point_2(vertices_[v].x(), vertices_[v].y()));
-      at->second->info().id = v;
-    }
-    return at->second;
-  };
-  // A face left in place across the region's boundary, and its edge there:
-  // keyed by the taken face's edge a -> b, which the new face on the same
-  // side has in the same direction.
-  struct Across {
-    std::int32_t face;
-    int edge;
-  };
-  const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
-  std::unordered_map<std::uint64_t, Across> across;
-  std::vector<std::int32_t> neighbours;  // the faces left in place across the boundary
-  std::vector<std::uint32_t> touched;    // vertices whose corners may change
-  for (const std::int32_t id : taken) {
-    const Face& f = faces_[id];
-    for (int k = 0; k < 3; ++k) {
-      touched.push_back(f.v[k]);
-      const std::int32_t n = f.next[k];
-      if (n != kNone && is_taken(n)) continue;
-      const std::uint32_t a = f.v[k], b = f.v[(k + 1) % 3];
-      cdt.insert_constraint(mesh_vertex(a), mesh_vertex(b));
-      if (n == kNone) continue;
-      const Face& m = faces_[n];
-      const int back = m.next[0] == id ? 0 : m.next[1] == id ? 1 : 2;
-      across.emplace(key(a, b), Across{n, back});
-      neighbours.push_back(n);
-    }
-  }
-  std::sort(neighbours.begin(), neighbours.end());
-  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-  const auto add_ring = [&](const auto& ring) {
-    std::vector<Cdt::Vertex_handle> hs;
-    for (const BgPoint& p : ring) {
-      const Cdt::Vertex_handle h = cdt.insert(K::Point_2(p.x(), p.y()));
-      if (hs.empty() || hs.back() != h) hs.push_back(h);
-    }
-    while (hs.size() > 1 && hs.front() == hs.back()) hs.pop_back();
-    if (hs.size() < 3) return;
-    for (std::size_t i = 0; i < hs.size(); ++i) cdt.insert_constraint(hs[i], hs[(i + 1) % hs.size()]);
-  };
-  add_ring(no_go.outer());
-  for (const auto& inner : no_go.inners()) add_ring(inner);
-
-  // Which new faces are water. Faces joined across edges that are no
-  // constraint lie all in the region or all out of it, all in the polygon or
-  // all out: one point inside the largest of them answers for every one.
-  // In the region: in a taken face (exact orientation tests); not in the
-  // polygon: strictly outside it, holes being water.
-  const auto in_region = [&](const K::Point_2& c) {
-    for (const std::int32_t id : taken) {
-      const Face& f = faces_[id];
-      bool inside = true;
-      for (int k = 0; k < 3 && inside; ++k) {
-        const Vec2& a = vertices_[f.v[k]];
-        const Vec2& b = vertices_[f.v[(k + 1) % 3]];
-        inside = CGAL::orientation(K::Point_2(a.x(), a.y()), K::Point_2(b.x(), b.y()), c) != CGAL::RIGHT_TURN;
-      }
-      if (inside) return true;
-    }
-    return false;
-  };
-  std::vector<char> component_water;
-  for (auto start = cdt.finite_faces_begin(); start != cdt.finite_faces_end(); ++start) {
-    if (start->info().depth != -1) continue;
-    const int component = static_cast<int>(component_water.size());
-    Cdt::Face_handle largest = start;
-    double largest_area = -1.0;
-    std::deque<Cdt::Face_handle> flood{start};
-    start->info().depth = component;
-    while (!flood.empty()) {
-      const Cdt::Face_handle f = flood.front();
-      flood.pop_front();
-      const double area = std::abs(cdt.triangle(f).area());
-      if (area > largest_area) largest_area = area, largest = f;
-      for (int i = 0; i < 3; ++i) {
-        const Cdt::Face_handle n = f->neighbor(i);
-        if (cdt.is_infinite(n) || n->info().depth != -1 || cdt.is_constrained({f, i})) continue;
-        n->info().depth = component;
-        flood.push_back(n);
-      }
-    }
-    const K::Point_2 c = CGAL::centroid(cdt.triangle(largest));
-    component_water.push_back(in_region(c) && !bg::within(BgPoint(c.x(), c.y()), no_go) ? 1 : 0);
-  }
+  Cut cut;
+  triangulate_region(cut, *this, taken, no_go);
+  const std::vector<char> water = water_pieces(cut.cdt, *this, taken, no_go);
 
   // Out with the taken faces: their part of the corners' sums, their boxes,
   // and the links to them from across the boundary.
-  const auto face_box = [&](std::int32_t id) {
-    BgBox b;
-    bg::assign_inverse(b);
-    for (const std::uint32_t v : faces_[id].v) bg::expand(b, to_bg(vertices_[v]));
-    return b;
-  };
   for (const std::int32_t id : taken) {
     count_face(id, -1);
     index_->faces.remove(Index::Item(face_box(id), id));
   }
-  for (const std::int32_t n : neighbours) count_face(n, -1);
-  for (const auto& [edge, a] : across) faces_[a.face].next[a.edge] = kNone;
+  for (const std::int32_t n : cut.neighbours) count_face(n, -1);
+  for (const auto& [edge, a] : cut.across) faces_[a.face].next[a.edge] = kNone;
 
   // In with the water's new faces: the taken faces' numbers first, then new ones.
   std::vector<Cdt::Face_handle> made;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if (!component_water[f->info().depth]) continue;
+  for (auto f = cut.cdt.finite_faces_begin(); f != cut.cdt.finite_faces_end(); ++f) {
+    if (!water[f->info().depth]) continue;
     f->info().id = made.size() < taken.size() ? taken[made.size()]
                                               : static_cast<std::int32_t>(faces_.size() + made.size() - taken.size());
     made.push_back(f);
@@ -411,28 +427,32 @@ NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
       const int opposite = (k + 2) % 3;  // edge (v[k], v[k+1]) lies opposite CGAL's vertex k + 2
       const Cdt::Face_handle n = f->neighbor(opposite);
       face.next[k] = kNone;
-      if (!cdt.is_constrained({f, opposite})) {
-        if (!cdt.is_infinite(n)) face.next[k] = n->info().id;
+      if (!cut.cdt.is_constrained({f, opposite})) {
+        if (!cut.cdt.is_infinite(n)) face.next[k] = n->info().id;
         continue;
       }
-      const auto found = across.find(key(face.v[k], face.v[(k + 1) % 3]));
-      if (found == across.end()) continue;
+      const auto found = cut.across.find(edge_key(face.v[k], face.v[(k + 1) % 3]));
+      if (found == cut.across.end()) continue;
       face.next[k] = found->second.face;
       faces_[found->second.face].next[found->second.edge] = id;
     }
     count_face(static_cast<std::size_t>(id), 1);
-    for (const std::uint32_t v : face.v) touched.push_back(v);
+    for (const std::uint32_t v : face.v) cut.touched.push_back(v);
     index_->faces.insert(Index::Item(face_box(id), id));
   }
-  for (const std::int32_t n : neighbours) {
+  for (const std::int32_t n : cut.neighbours) {
     count_face(n, 1);
-    for (const std::uint32_t v : faces_[n].v) touched.push_back(v);
+    for (const std::uint32_t v : faces_[n].v) cut.touched.push_back(v);
   }
-  for (const std::uint32_t v : touched) mark_corner(v);
+  for (const std::uint32_t v : cut.touched) mark_corner(v);
+  fill_freed(taken, made.size());
+  return {taken.size(), made.size()};
+}
 
+void NavMesh::fill_freed(const std::vector<std::int32_t>& taken, std::size_t reused) {
   // Taken numbers no new face took: the last face moves into each, largest
   // first, so the last is never one of them.
-  for (std::size_t i = taken.size(); i-- > made.size();) {
+  for (std::size_t i = taken.size(); i-- > reused;) {
     const std::int32_t hole = taken[i];
     const std::int32_t last = static_cast<std::int32_t>(faces_.size()) - 1;
     if (hole != last) {
@@ -446,9 +466,6 @@ NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
     }
     faces_.pop_back();
   }
-  out.removed = taken.size();
-  out.added = made.size();
-  return out;
 }
 
 }  // namespace deepguide
