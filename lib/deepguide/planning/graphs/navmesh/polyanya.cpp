@@ -185,7 +185,10 @@ class Search {
 
   // Intermediate pruning (the paper's): a node with one successor, not at
   // the goal's face, leads nowhere else, so that successor is expanded at
-  // once instead of passing through the open list (its f is no lower).
+  // once instead of passing through the open list (its f is no lower). It
+  // is kept (for the route back) only when it turns round a new root: the
+  // route is the chain of roots, and a node with its parent's root adds
+  // nothing to it, so its successors can name that parent instead.
   void expand(std::int32_t id, Node n, std::size_t& expanded) {
     for (;;) {
       ++expanded;
@@ -195,8 +198,9 @@ class Search {
           (budget_.max_expansions > 0 && expanded >= budget_.max_expansions)) {
         break;
       }
+      const bool same_root = fresh_[0].root_id == n.root_id && fresh_[0].root == n.root;
       n = fresh_[0];
-      id = store(n);
+      if (!same_root) id = store(n);
     }
     for (const Node& s : fresh_) push(s);
   }
