@@ -116,11 +116,11 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
   mark_depths(cdt);
 
   // Number the water's faces and the vertices they use.
-  std::unordered_map<const void*, std::int32_t> face_id;
+  std::int32_t faces = 0;
   std::int64_t next_vertex = 0;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!water(cdt, f)) continue;
-    face_id.emplace(&*f, static_cast<std::int32_t>(face_id.size()));
+    f->info().id = faces++;
     for (int i = 0; i < 3; ++i) {
       if (f->vertex(i)->info().id == -1) {
         f->vertex(i)->info().id = next_vertex++;
@@ -128,10 +128,10 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
       }
     }
   }
-  faces_.resize(face_id.size());
+  faces_.resize(static_cast<std::size_t>(faces));
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!water(cdt, f)) continue;
-    const std::int32_t id = face_id.at(&*f);
+    const std::int32_t id = f->info().id;
     Face& out = faces_[id];
     for (int k = 0; k < 3; ++k) out.v[k] = static_cast<std::uint32_t>(f->vertex(k)->info().id);
     for (int k = 0; k < 3; ++k) {
@@ -139,7 +139,7 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
       const int opposite = (k + 2) % 3;
       const Cdt::Face_handle n = f->neighbor(opposite);
       const bool open = !cdt.is_constrained({f, opposite}) && water(cdt, n);
-      out.next[k] = open ? face_id.at(&*n) : kNone;
+      out.next[k] = open ? n->info().id : kNone;
     }
   }
   find_corners();
