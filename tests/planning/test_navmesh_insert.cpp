@@ -118,9 +118,11 @@ TEST(NavMeshInsert, APolygonInNoWaterChangesNoWaterAndOneBeyondTheAreaStopsAtIts
 }
 
 // Random fields: a graph built round some obstacles, then given more
-// (overlapping the old ones and each other), against a graph built round
-// all of them: the same water, the same shortest routes to 1e-9, and every
-// inserted-into route safe of every obstacle.
+// (overlapping the old ones and each other; every fourth field gets them
+// twice), against a graph built round all of them: the same water, the same
+// shortest routes to 1e-9, and every inserted-into route safe of every
+// obstacle; the corners kept face by face equal those found afresh, and the
+// face index agrees with a scan of every face.
 TEST(NavMeshInsert, InsertedObstaclesGiveTheRoutesOfAGraphBuiltRoundThemAll) {
   unsigned seed = 5150;
   if (const char* shift = std::getenv("DEEPGUIDE_NAVMESH_SEED")) seed += static_cast<unsigned>(std::atoi(shift));
@@ -157,6 +159,28 @@ TEST(NavMeshInsert, InsertedObstaclesGiveTheRoutesOfAGraphBuiltRoundThemAll) {
     const Vec2 area_before = repaired.mesh().area_min();
     repaired.insert(found);
     local_repairs += repaired.mesh().area_min() == area_before ? 1 : 0;  // else the area widened: a rebuild
+    if (scenario % 4 == 0) repaired.insert(found);                       // reported twice: the same water
+    // The corners kept face by face are those found afresh from the same
+    // faces; the face index finds what a scan of every face finds.
+    {
+      const NavMesh& m = repaired.mesh();
+      const NavMesh fresh(m.vertices(), m.faces(), m.area_min(), m.area_max());
+      for (const NavMesh::Face& f : m.faces())
+        for (const std::uint32_t v : f.v) ASSERT_EQ(m.corner(v), fresh.corner(v)) << "scenario " << scenario;
+      for (int k = 0; k < 20; ++k) {
+        const Vec2 p = m.area_min() + Vec2(u01(rng), u01(rng)).cwiseProduct(m.area_max() - m.area_min());
+        std::size_t holding = 0;
+        for (const NavMesh::Face& f : m.faces()) {
+          bool inside = true;
+          for (int e = 0; e < 3 && inside; ++e) {
+            const Vec2 a = m.vertices()[f.v[e]], b = m.vertices()[f.v[(e + 1) % 3]];
+            inside = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x() > 0.0;
+          }
+          holding += inside ? 1 : 0;
+        }
+        ASSERT_EQ(std::min<std::size_t>(m.faces_at(p).size(), 1), holding) << "scenario " << scenario;
+      }
+    }
     // The water of the same area less all the zones (found ones may reach
     // beyond the area), about the same origin.
     BgMultiPolygon zones;

@@ -318,8 +318,23 @@ void triangulate_region(Cut& cut, const NavMesh& mesh, const std::vector<std::in
 // are water).
 std::vector<char> water_pieces(Cdt& cdt, const NavMesh& mesh, const std::vector<std::int32_t>& taken,
                                const BgPolygon& no_go) {
+  // The taken faces by box: a long zone at an angle takes thousands of
+  // faces, and the pieces outside the region would each test all of them.
+  using Item = std::pair<BgBox, std::int32_t>;
+  std::vector<Item> boxes;
+  boxes.reserve(taken.size());
+  for (const std::int32_t id : taken) {
+    BgBox b;
+    bg::assign_inverse(b);
+    for (const std::uint32_t v : mesh.faces()[id].v) bg::expand(b, to_bg(mesh.vertices()[v]));
+    boxes.emplace_back(b, id);
+  }
+  const bgi::rtree<Item, bgi::rstar<16>> by_box(boxes.begin(), boxes.end());
+  std::vector<Item> near;
   const auto in_region = [&](const K::Point_2& c) {
-    for (const std::int32_t id : taken) {
+    near.clear();
+    by_box.query(bgi::intersects(BgPoint(c.x(), c.y())), std::back_inserter(near));
+    for (const auto& [box, id] : near) {
       const NavMesh::Face& f = mesh.faces()[id];
       bool inside = true;
       for (int k = 0; k < 3 && inside; ++k) {

@@ -107,15 +107,19 @@ NavMesh::Repair NavMeshGraph::insert(const ObstacleSet& found) {
     triangulate(area_lo, area_hi);
     return {before, mesh_->faces().size()};
   }
+  {
+    // The zone polygons matter again only for a start or goal in no water
+    // face (the band test): they are joined there, once per batch of inserts
+    // (joining them to a chart's coast costs more than the insert). Noted
+    // before the mesh changes, so an insert that fails part way still keeps
+    // the mesh from being saved as the one built.
+    const std::lock_guard<std::mutex> hold(band_lock_);
+    inserted_.insert(inserted_.end(), local.begin(), local.end());
+    band_.reset();
+    ever_inserted_ = true;
+  }
   const NavMesh::Repair repair = mesh_->insert(local);
   edge_count_ = mesh_->edge_count();
-  // The zone polygons matter again only for a start or goal in no water
-  // face (the band test): they are joined there, once per batch of inserts
-  // (joining them to a chart's coast costs more than the insert).
-  const std::lock_guard<std::mutex> hold(band_lock_);
-  inserted_.insert(inserted_.end(), local.begin(), local.end());
-  band_.reset();
-  ever_inserted_ = true;
   return repair;
 }
 
