@@ -21,7 +21,10 @@
 # per method the same way. Ratios above 1.1 are marked "slower".
 #
 # Environment: ROUNDS (3), SCENARIOS (5), METHODS (visibility,tangent,geometric),
-# SUITE_SEED (99), JOBS (2: parallel compile jobs).
+# SUITE_SEED (99), JOBS (2: parallel compile jobs), EVALUATE_BASE (default
+# BASE: the commit whose `evaluate` is timed against HEAD's; issue 44 asks
+# the planning tables against 58e4a16 and evaluate against 4257f9b, which
+# `EVALUATE_BASE=4257f9b scripts/bench_compare.sh 58e4a16` gives in one run).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 [ $# -ge 1 ] || { sed -n '2,24p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 2; }
@@ -34,6 +37,7 @@ cache="${DEEPGUIDE_BENCH_CACHE:-$HOME/.cache/deepguide/bench-builds}"
 
 base=$(git -C "$root" rev-parse --verify "$1^{commit}")
 head=$(git -C "$root" rev-parse --verify "${2:-HEAD}^{commit}")
+eval_base=$(git -C "$root" rev-parse --verify "${EVALUATE_BASE:-$1}^{commit}")
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"; git -C "$root" worktree prune' EXIT
 
@@ -54,10 +58,11 @@ build() {
 }
 build "$base"
 build "$head"
+build "$eval_base"
 
 # evaluate is timed only where both CLIs have it with these options (older commits do not).
 evaluate=1
-for sha in "$base" "$head"; do
+for sha in "$eval_base" "$head"; do
   "$cache/$sha/apps/deepguide" evaluate --help 2>/dev/null | grep -q -- "--no-report" || evaluate=0
 done
 if [ "$evaluate" = 1 ]; then
@@ -82,6 +87,7 @@ for r in $(seq "$rounds"); do
     echo "bench_compare: round $r/$rounds, ${which} (${sha:0:10})" >&2
     "$cache/$sha/bench/bench_planning" --no-peer --scenarios "$scenarios" >"$tmp/$which-$r.md"
     [ "$evaluate" = 1 ] || continue
+    if [ "$which" = base ]; then sha="$eval_base"; fi
     for m in "${method_list[@]}"; do
       rm -rf "$tmp/eval"
       s=$(seconds "$cache/$sha/apps/deepguide" evaluate "$tmp/suite" --methods "$m" --threads 2 --no-report \
@@ -95,9 +101,9 @@ echo "# bench_compare: HEAD ${head:0:10} / BASE ${base:0:10}"
 echo
 echo "$(uname -n), $(nproc) cores, $(date -u +%Y-%m-%d); $rounds interleaved rounds; bench_planning --no-peer" \
   "--scenarios $scenarios; medians over the rounds."
-python3 - "$tmp" "$rounds" <<'PY'
+python3 - "$tmp" "$rounds" "${eval_base:0:10}" <<'PY'
 import re, statistics, sys
-tmp, rounds = sys.argv[1], int(sys.argv[2])
+tmp, rounds, eval_base = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 
 def tables(path):
     """{title: (header, {key: {column: value}})} for every markdown table of a run."""
@@ -158,7 +164,7 @@ if not any(lines):
 for line in filter(None, lines):
     which, _, method, s = line.split()
     ev.setdefault(method, {}).setdefault(which, []).append(float(s))
-print("\n## evaluate, 200 scenarios, one method at a time (s)\n")
+print(f"\n## evaluate, 200 scenarios, one method at a time (s; BASE here is {eval_base})\n")
 print("| method | BASE | HEAD | HEAD/BASE |\n|---|---:|---:|---:|")
 for method, w in ev.items():
     b, h = statistics.median(w["base"]), statistics.median(w["head"])
