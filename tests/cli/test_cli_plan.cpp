@@ -454,6 +454,14 @@ TEST(CliPlanNavMesh, ReplanningCutsEachReportOutOfTheMeshAndRoutesRoundIt) {
       "detected_at_m": 100}, "geometry": {"type": "Polygon", "coordinates": [[[10.2620, 54.4548], [10.2660, 54.4548],
       [10.2660, 54.4572], [10.2620, 54.4572], [10.2620, 54.4548]], [[10.2630, 54.4554], [10.2630, 54.4566],
       [10.2650, 54.4566], [10.2650, 54.4554], [10.2630, 54.4554]]]}}]})");
+  // Repairs are not rounded: a turning radius, given or a vehicle's, is refused in one line.
+  for (const std::string& radius : {std::string(" --turn-radius 20"),
+                                    " --vehicle '" + deepguide::test::source_file("data/vehicles/deepc.yaml") + "'"}) {
+    const auto refused = run_cli(base + " --graph navmesh --replan-events '" + rock + "'" + radius);
+    EXPECT_EQ(refused.exit_code, 1) << radius << ": " << refused.out << refused.err;
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << radius << ": " << refused.err;
+    EXPECT_NE(refused.err.find("--replan-events"), std::string::npos) << radius << ": " << refused.err;
+  }
   const auto walled = run_cli(base + " --graph navmesh --replan-events '" + wall + "'");
   EXPECT_EQ(walled.exit_code, 3) << walled.out << walled.err;
   EXPECT_NE(walled.err.find("after report 1"), std::string::npos) << walled.err;

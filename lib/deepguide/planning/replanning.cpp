@@ -144,6 +144,7 @@ Replay replay_detections(NavMeshGraph& graph, const PlanningProblem& problem, st
   const PlanResult first = graph.solve(problem, SearchAlgorithm::astar, nullptr, {});
   if (!first.found) throw NoRouteError(first.message.empty() ? "no route from the start to the goal" : first.message);
   Replay replay;
+  replay.remeshed = true;
   replay.initial_route = first.route.points;
   replay.initial_cost = first.route.length();
   replay.track = {problem.start};

@@ -55,6 +55,7 @@ struct Replay {
   std::vector<Vec2> track;                  ///< every vertex the vehicle reached, start first
   std::vector<GraphVertex> track_vertices;  ///< quadtree only
   bool reached_goal = false;
+  bool remeshed = false;  ///< repaired on the navigation mesh (Repair::remeshed_faces), not by D* Lite
 };
 
 /// Reads detections from an obstacle file (any format load_obstacles reads,

@@ -65,6 +65,12 @@ CostModel cost_model_of(const RoutePlanRequest& r, const VehicleParams& vehicle,
 }
 
 // The options' combinations the graphs cannot serve, before any file is read.
+// Whether the plan turns within a radius: one given, or a vehicle's, which a
+// graph whose routes step cell to cell keeps only when smoothed (planner.cpp).
+bool keeps_turn_radius(const RoutePlanRequest& r) {
+  return r.turn_radius_m || (!r.vehicle.empty() && (!graph_entry(r.graph).can.steps || r.smooth));
+}
+
 void check_request(const RoutePlanRequest& r) {
   // Headings ask for Dubins ends, which the tangent graph alone plans (planner.hpp).
   const PlanningProblem& p = r.problem;
@@ -87,12 +93,12 @@ void check_request(const RoutePlanRequest& r) {
     throw InputError("`turn_radius_m`: expected a radius > 0 m, got " + general(*r.turn_radius_m));
   }
   if (!r.replan_events.empty() && (!graph_entry(r.graph).can.repairs || r.cost != CostKind::length || r.smooth ||
-                                   r.problem.escape || (r.graph.name == "navmesh" && r.turn_radius_m))) {
+                                   r.problem.escape || keeps_turn_radius(r))) {
     throw InputError("`replan_events`: expected `graph` " +
                      graph_names_text([](const GraphEntry& e) { return e.can.repairs; }) +
-                     " with `cost` length, and neither `smooth` nor `escape` (nor a turning radius on navmesh): "
-                     "the repairs are routes by length from a start outside every zone, and the mesh's are not "
-                     "rounded");
+                     " with `cost` length, and neither `smooth`, `escape` nor a turning radius (`turn_radius_m`, "
+                     "or a `vehicle` on that graph): the repairs are unrounded routes by length from a start "
+                     "outside every zone");
   }
   if (r.smooth && !graph_entry(r.graph).can.steps) {
     throw InputError("`smooth`: expected `graph` " + graph_names_text([](const GraphEntry& e) { return e.can.steps; }) +
@@ -249,8 +255,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   if (model.kind != CostKind::length) options.cost = report.model;
   if (r.turn_radius_m) {
     options.turn_radius_m = *r.turn_radius_m;
-  } else if (!r.vehicle.empty() && (!graph_entry(r.graph).can.steps || r.smooth)) {
-    // A graph whose routes step cell to cell keeps a radius only when smoothed (planner.cpp).
+  } else if (keeps_turn_radius(r)) {
     options.turn_radius_m = route_turn_radius(report.vehicle, model.speed_mps, model.max_current_mps);
   }
   if (r.waypoint_grid_m) options.grid = waypoint_grid_for(r.problem.start, r.problem.goal, *r.waypoint_grid_m);
@@ -386,7 +391,7 @@ nlohmann::json RoutePlanReport::to_json() const {
       const Repair& r = replay->repairs[k];
       nlohmann::json row = {{"repair", k + 1},  {"along_m", r.along_m},   {"blocked_edges", r.blocked_edges},
                             {"found", r.found}, {"expanded", r.expanded}, {"repair_ms", r.repair_ms}};
-      if (request.graph.name == "navmesh") row["remeshed_faces"] = r.remeshed_faces;
+      if (replay->remeshed) row["remeshed_faces"] = r.remeshed_faces;
       if (r.found) row["length_m"] = r.cost;
       if (!repair_files[k].empty()) row["file"] = repair_files[k];
       repairs.push_back(row);
@@ -502,7 +507,7 @@ std::string RoutePlanReport::to_text() const {
     }
   }
   if (replay) {
-    const bool mesh = request.graph.name == "navmesh";
+    const bool mesh = replay->remeshed;
     t += report_line("replanning",
                      std::to_string(replay->repairs.size()) + " detection(s) replayed " +
                          (mesh ? "on the navigation mesh (cut round each, searched again)" : "with D* Lite") +

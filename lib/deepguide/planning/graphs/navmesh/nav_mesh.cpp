@@ -323,12 +323,7 @@ std::vector<char> water_pieces(Cdt& cdt, const NavMesh& mesh, const std::vector<
   using Item = std::pair<BgBox, std::int32_t>;
   std::vector<Item> boxes;
   boxes.reserve(taken.size());
-  for (const std::int32_t id : taken) {
-    BgBox b;
-    bg::assign_inverse(b);
-    for (const std::uint32_t v : mesh.faces()[id].v) bg::expand(b, to_bg(mesh.vertices()[v]));
-    boxes.emplace_back(b, id);
-  }
+  for (const std::int32_t id : taken) boxes.emplace_back(mesh.face_box(id), id);
   const bgi::rtree<Item, bgi::rstar<16>> by_box(boxes.begin(), boxes.end());
   std::vector<Item> near;
   const auto in_region = [&](const K::Point_2& c) {

@@ -75,6 +75,8 @@ class NavMesh {
   std::vector<std::pair<Vec2, Vec2>> edges() const;
   /// edges().size(), without making them.
   std::size_t edge_count() const;
+  /// The bounding box of face `id`.
+  BgBox face_box(std::int32_t id) const;
 
   struct Repair {
     std::size_t removed = 0;  ///< faces taken out
@@ -102,7 +104,6 @@ class NavMesh {
   void find_corners();
   void count_face(std::size_t id, int sign);  // adds (sign 1) or takes back (-1) a face's angles and boundary edges
   void mark_corner(std::uint32_t v);
-  BgBox face_box(std::int32_t id) const;
   // After an insert reused `reused` of the `taken` numbers (ascending): the
   // rest are filled by the last faces.
   void fill_freed(const std::vector<std::int32_t>& taken, std::size_t reused);

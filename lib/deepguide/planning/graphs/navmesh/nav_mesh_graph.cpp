@@ -88,6 +88,17 @@ NavMesh::Repair NavMeshGraph::insert(const ObstacleSet& found) {
                   bg::strategy::transform::translate_transformer<double, 2, 2>(-origin_.x(), -origin_.y()));
     local.push_back(std::move(moved));
   }
+  {
+    // The zone polygons matter again only for a start or goal in no water
+    // face (the band test): they are joined there, or when the area widens,
+    // once per batch of inserts (joining them to a chart's coast costs more
+    // than the insert). Noted before the mesh changes, so an insert that
+    // fails part way still keeps the mesh from being saved as the one built.
+    const std::lock_guard<std::mutex> hold(band_lock_);
+    inserted_.insert(inserted_.end(), local.begin(), local.end());
+    band_.reset();
+    ever_inserted_ = true;
+  }
   // A zone reaching the area's edge can send the shortest route round it
   // outside the area: the area widens, and the mesh is made again.
   BgBox box;
@@ -97,26 +108,9 @@ NavMesh::Repair NavMeshGraph::insert(const ObstacleSet& found) {
   if (!local.empty() &&
       ((lo.array() <= mesh_->area_min().array()).any() || (hi.array() >= mesh_->area_max().array()).any())) {
     const std::size_t before = mesh_->faces().size();
-    {
-      const std::lock_guard<std::mutex> hold(band_lock_);
-      inserted_.insert(inserted_.end(), local.begin(), local.end());
-      band_.reset();
-      ever_inserted_ = true;
-    }
     const auto [area_lo, area_hi] = widened(lo.cwiseMin(mesh_->area_min()), hi.cwiseMax(mesh_->area_max()));
     triangulate(area_lo, area_hi);
     return {before, mesh_->faces().size()};
-  }
-  {
-    // The zone polygons matter again only for a start or goal in no water
-    // face (the band test): they are joined there, once per batch of inserts
-    // (joining them to a chart's coast costs more than the insert). Noted
-    // before the mesh changes, so an insert that fails part way still keeps
-    // the mesh from being saved as the one built.
-    const std::lock_guard<std::mutex> hold(band_lock_);
-    inserted_.insert(inserted_.end(), local.begin(), local.end());
-    band_.reset();
-    ever_inserted_ = true;
   }
   const NavMesh::Repair repair = mesh_->insert(local);
   edge_count_ = mesh_->edge_count();
