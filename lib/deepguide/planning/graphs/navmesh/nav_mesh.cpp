@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/planning/graphs/navmesh/convex_cells.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
@@ -144,6 +145,7 @@ NavMesh::NavMesh(const BgMultiPolygon& no_go, const Vec2& area_min, const Vec2& 
   }
   find_corners();
   index_faces();
+  cells_ = std::make_unique<ConvexCells>(merge_into_cells(vertices_, faces_));
 }
 
 NavMesh::NavMesh(std::vector<Vec2> vertices, std::vector<Face> faces, const Vec2& area_min, const Vec2& area_max)
@@ -154,6 +156,7 @@ NavMesh::NavMesh(std::vector<Vec2> vertices, std::vector<Face> faces, const Vec2
       index_(std::make_unique<Index>()) {
   find_corners();
   index_faces();
+  cells_ = std::make_unique<ConvexCells>(merge_into_cells(vertices_, faces_));
 }
 
 void NavMesh::find_corners() {
@@ -396,6 +399,10 @@ NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
   std::vector<std::int32_t> taken;
   for (const auto& item : hit) taken.push_back(item.second);
   std::sort(taken.begin(), taken.end());
+  std::vector<std::int32_t> dissolved;  // the cells of the taken faces, merged again at the end
+  for (const std::int32_t id : taken) dissolved.push_back(cells_->cell_of[id]);
+  std::sort(dissolved.begin(), dissolved.end());
+  dissolved.erase(std::unique(dissolved.begin(), dissolved.end()), dissolved.end());
   Cut cut;
   triangulate_region(cut, *this, taken, no_go);
   const std::vector<char> water = water_pieces(cut.cdt, *this, taken, no_go);
@@ -418,6 +425,8 @@ NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
     made.push_back(f);
   }
   if (made.size() > taken.size()) faces_.resize(faces_.size() + made.size() - taken.size());
+  cells_->cell_of.resize(faces_.size());
+  for (const Cdt::Face_handle& f : made) cells_->cell_of[f->info().id] = ConvexCells::kNone;
   for (const Cdt::Face_handle& f : made) {
     for (int i = 0; i < 3; ++i) {
       VertexInfo& v = f->vertex(i)->info();
@@ -456,6 +465,7 @@ NavMesh::Repair NavMesh::insert(const BgPolygon& no_go) {
   }
   for (const std::uint32_t v : cut.touched) mark_corner(v);
   fill_freed(taken, made.size());
+  merge_again(*cells_, vertices_, faces_, dissolved);
   return {taken.size(), made.size()};
 }
 
@@ -468,6 +478,7 @@ void NavMesh::fill_freed(const std::vector<std::int32_t>& taken, std::size_t reu
     if (hole != last) {
       index_->faces.remove(Index::Item(face_box(last), last));
       faces_[hole] = faces_[last];
+      cells_->cell_of[hole] = cells_->cell_of[last];
       for (const std::int32_t n : faces_[hole].next) {
         if (n == kNone) continue;
         for (std::int32_t& back : faces_[n].next) back = back == last ? hole : back;
@@ -475,6 +486,7 @@ void NavMesh::fill_freed(const std::vector<std::int32_t>& taken, std::size_t reu
       index_->faces.insert(Index::Item(face_box(hole), hole));
     }
     faces_.pop_back();
+    cells_->cell_of.pop_back();
   }
 }
 

@@ -17,9 +17,9 @@
 // Which triangles are water: a flood from outside the area that flips at
 // every constraint edge (outside the area, in it, in a no-go polygon, in a
 // hole of one, ...): odd depths are water. The rings must not cross; merged
-// zone polygons (zone_polygons.hpp) do not. Triangles are kept as they are
-// (not merged into larger convex polygons): a few more search nodes, one
-// simple projection step.
+// zone polygons (zone_polygons.hpp) do not. The triangles are what is kept,
+// saved and repaired; the search runs on them merged into convex cells
+// (cells()), which it crosses in fewer steps.
 //
 // A no-go polygon found later (a sonar detection) goes in without
 // triangulating the rest again (insert): the faces whose boxes meet its box
@@ -41,6 +41,8 @@
 #include "deepguide/geometry/vec2.hpp"
 
 namespace DEEPGUIDE_API deepguide {
+
+struct ConvexCells;
 
 class NavMesh {
  public:
@@ -64,6 +66,9 @@ class NavMesh {
   const std::vector<Vec2>& vertices() const { return vertices_; }
   const std::vector<Face>& faces() const { return faces_; }
   bool corner(std::uint32_t v) const { return corner_[v] != 0; }
+  /// The triangles merged into convex cells (convex_cells.hpp): what
+  /// Polyanya searches. Made again after every insert.
+  const ConvexCells& cells() const { return *cells_; }
   Vec2 area_min() const { return area_min_; }
   Vec2 area_max() const { return area_max_; }
 
@@ -108,6 +113,7 @@ class NavMesh {
   // rest are filled by the last faces.
   void fill_freed(const std::vector<std::int32_t>& taken, std::size_t reused);
   std::unique_ptr<Index> index_;
+  std::unique_ptr<ConvexCells> cells_;
 };
 
 }  // namespace deepguide

@@ -1,5 +1,7 @@
 #include "deepguide/planning/graphs/navmesh/polyanya.hpp"
 
+#include "deepguide/planning/graphs/navmesh/convex_cells.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +11,7 @@
 namespace deepguide {
 namespace {
 
+constexpr std::int32_t kNone = ConvexCells::kNone;
 constexpr std::int32_t kNoVertex = -1;
 constexpr std::int32_t kStartRoot = -2;
 constexpr std::int32_t kFinal = -1;  // Node::face of a node that ends at the goal
@@ -19,15 +22,18 @@ constexpr double kSnap = 1e-10;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+// A vector's size for the scales of what counts as zero: within a factor
+// sqrt(2) of its length, and no square root (the search's innermost loop).
+double extent(const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); }
 
 struct Node {
   Vec2 root;
   std::int32_t root_id;                    // mesh vertex, or kStartRoot
   Vec2 left, right;                        // the interval's ends as seen from the root
   std::int32_t left_vertex, right_vertex;  // the mesh vertex at that end, else kNoVertex
-  std::int32_t face;                       // the face beyond the interval, or kFinal
-  int edge;          // that face's edge (v[edge], v[edge + 1]) holding the interval, left at v[edge]
-  bool fan = false;  // the root is an end of that edge: it sees the whole face beyond
+  std::int32_t face;                       // the cell beyond the interval, or kFinal
+  std::uint32_t edge;  // that cell's edge from its corner `edge` to the next, holding the interval, left at `edge`
+  bool fan = false;    // the root is an end of that edge: it sees the whole cell beyond
   double g, f;
   std::int32_t parent;  // the node this one was made from; -1 for the start's
 };
@@ -61,6 +67,9 @@ double snapped(double t) {
 // The t in [0, 1] where a + b t >= 0; eps: what counts as zero for a and b.
 Range where_not_negative(double a, double b, double eps) {
   if (std::abs(b) <= eps) return a >= -eps ? Range{0.0, 1.0} : Range{};
+  // Both ends on one side: what the division below would give, without it.
+  if (a >= 0.0 && a + b >= 0.0) return Range{0.0, 1.0};
+  if (a < 0.0 && a + b < 0.0) return Range{};
   const double t0 = snapped(-a / b);
   return b > 0.0 ? Range{std::max(t0, 0.0), 1.0} : Range{0.0, std::min(t0, 1.0)};
 }
@@ -70,16 +79,20 @@ Range both(const Range& x, const Range& y) { return {std::max(x.lo, y.lo), std::
 class Search {
  public:
   Search(const NavMesh& mesh, const Vec2& goal, const SearchBudget& budget, bool heuristic)
-      : mesh_(mesh), goal_(goal), budget_(budget), heuristic_(heuristic), best_(mesh.vertices().size(), kInf) {
-    for (const std::int32_t f : mesh.faces_at(goal)) goal_faces_.push_back(f);
-  }
+      : mesh_(mesh),
+        cells_(mesh.cells()),
+        goal_(goal),
+        budget_(budget),
+        heuristic_(heuristic),
+        best_(mesh.vertices().size(), kInf),
+        goal_faces_(cells_at(goal)) {}
 
   PolyanyaResult run(const Vec2& start) {
     PolyanyaResult out;
-    const std::vector<std::int32_t> start_faces = mesh_.faces_at(start);
+    const std::vector<std::int32_t> start_faces = cells_at(start);
     if (start_faces.empty() || goal_faces_.empty()) return out;
     for (const std::int32_t f : start_faces) {
-      if (holds_goal(f)) {  // a face is convex: the straight line
+      if (holds_goal(f)) {  // a cell is convex: the straight line
         out.found = true;
         out.path = {start, goal_};
         out.length = (goal_ - start).norm();
@@ -110,8 +123,25 @@ class Search {
  private:
   static double tie(double g) { return 1e-12 * std::max(g, 1.0); }
 
-  static int open_edges(const NavMesh::Face& f) {
-    return (f.next[0] != NavMesh::kNone) + (f.next[1] != NavMesh::kNone) + (f.next[2] != NavMesh::kNone);
+  // The cells whose closure holds p.
+  std::vector<std::int32_t> cells_at(const Vec2& p) const {
+    std::vector<std::int32_t> out;
+    for (const std::int32_t f : mesh_.faces_at(p)) out.push_back(cells_.cell_of[f]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  int open_edges(std::int32_t cell) const {
+    int open = 0;
+    for (std::uint32_t i = cells_.begin[cell]; i < cells_.begin[cell] + cells_.count[cell]; ++i)
+      open += cells_.across[i] != kNone;
+    return open;
+  }
+
+  // The mesh vertex at corner k (k < 2 * count) of a cell.
+  std::uint32_t vertex(std::uint32_t base, std::uint32_t count, std::uint32_t k) const {
+    return cells_.corner[base + (k < count ? k : k - count)];
   }
 
   bool holds_goal(std::int32_t face) const {
@@ -122,22 +152,27 @@ class Search {
     nodes_.push_back(n);
     return static_cast<std::int32_t>(nodes_.size() - 1);
   }
-  void push(const Node& n) { open_.push({{n.f, -n.g}, store(n)}); }
+  // f is worked out only here: most nodes made are expanded at once
+  // (intermediate pruning) and never need it. A final node has its own.
+  void push(Node& n) {
+    if (n.face != kFinal) n.f = n.g + (heuristic_ ? heuristic(n.root, n.left, n.right, goal_) : 0.0);
+    open_.push({{n.f, -n.g}, store(n)});
+  }
 
   // The node for the part [lo, hi] of edge (P, Q) (P on the right), seen
-  // from `root`, into the face across it; nothing when the part is a point
+  // from `root`, into the cell across it; nothing when the part is a point
   // or lies on a line through the root.
-  void make(std::int32_t parent, const Vec2& root, std::int32_t root_id, double g, std::int32_t face, int e,
+  void make(std::int32_t parent, const Vec2& root, std::int32_t root_id, double g, std::int32_t face, std::uint32_t e,
             const Range& part) {
-    const NavMesh::Face& f = mesh_.faces()[face];
-    const std::int32_t across = f.next[e];
-    if (across == NavMesh::kNone || part.empty()) return;
-    const std::uint32_t p = f.v[e], q = f.v[(e + 1) % 3];
+    const std::uint32_t base = cells_.begin[face];
+    const std::int32_t across = cells_.across[base + e];
+    if (across == kNone || part.empty()) return;
+    const std::uint32_t p = cells_.corner[base + e], q = vertex(base, cells_.count[face], e + 1);
     const Vec2& P = mesh_.vertices()[p];
     const Vec2& Q = mesh_.vertices()[q];
-    const double len = (Q - P).norm();
+    const double len = extent(Q - P);
     Node n;
-    if (std::abs(cross(Q - P, root - P)) <= 1e-10 * len * std::max(len, (root - P).norm())) {
+    if (std::abs(cross(Q - P, root - P)) <= 1e-10 * len * std::max(len, extent(root - P))) {
       // On the edge's line the root sees through the edge only when it is one
       // of its ends, and then sees all of the face beyond (it is a corner of
       // it): the fan round a corner a route turns at. Elsewhere on the line
@@ -151,17 +186,13 @@ class Search {
     n.left = part.hi == 1.0 ? Q : Vec2(P + part.hi * (Q - P));
     n.right_vertex = part.lo == 0.0 ? static_cast<std::int32_t>(p) : kNoVertex;
     n.left_vertex = part.hi == 1.0 ? static_cast<std::int32_t>(q) : kNoVertex;
-    const NavMesh::Face& beyond = mesh_.faces()[across];
-    // Dead-end pruning (the paper's): a face whose only open edge is the one
+    // Dead-end pruning (the paper's): a cell whose only open edge is the one
     // crossed leads back only, so nothing shorter passes through it; unless
     // the goal lies in it.
-    if (open_edges(beyond) == 1 && !holds_goal(across)) return;
+    if (open_edges(across) == 1 && !holds_goal(across)) return;
     n.face = across;
-    n.edge = 0;
-    while (n.edge < 3 && !(beyond.v[n.edge] == q && beyond.v[(n.edge + 1) % 3] == p)) ++n.edge;
-    if (n.edge == 3) return;  // not the shared edge: cannot happen in a valid mesh
+    n.edge = cells_.back[base + e];
     n.g = g;
-    n.f = g + (heuristic_ ? heuristic(root, n.left, n.right, goal_) : 0.0);
     n.parent = parent;
     fresh_.push_back(n);
   }
@@ -169,8 +200,8 @@ class Search {
   void start_successors(const Vec2& start, std::int32_t face) {
     // From inside a face its edges, anticlockwise, run from right to left.
     fresh_.clear();
-    for (int e = 0; e < 3; ++e) make(-1, start, kStartRoot, 0.0, face, e, Range{0.0, 1.0});
-    for (const Node& n : fresh_) push(n);
+    for (std::uint32_t e = 0; e < cells_.count[face]; ++e) make(-1, start, kStartRoot, 0.0, face, e, Range{0.0, 1.0});
+    for (Node& n : fresh_) push(n);
   }
 
   // A turn round the interval's end `v` (a mesh vertex or none): its g, or
@@ -202,15 +233,15 @@ class Search {
       n = fresh_[0];
       if (!same_root) id = store(n);
     }
-    for (const Node& s : fresh_) push(s);
+    for (Node& s : fresh_) push(s);
   }
 
   void successors(std::int32_t id, const Node& n) {
-    const NavMesh::Face& f = mesh_.faces()[n.face];
+    const std::uint32_t base = cells_.begin[n.face], count = cells_.count[n.face];
     if (n.fan) {
       // The root is a corner of this face: every far edge is seen whole (the
       // next edge round the root fans on; the way back is not taken again).
-      for (int e = 0; e < 3; ++e) {
+      for (std::uint32_t e = 0; e < count; ++e) {
         if (e != n.edge) make(id, n.root, n.root_id, n.g, n.face, e, Range{0.0, 1.0});
       }
       if (holds_goal(n.face)) finals(id, n, kInf, kInf);
@@ -221,12 +252,13 @@ class Search {
     const double g_right = turn(n, n.right_vertex, n.right);
     const double g_left = turn(n, n.left_vertex, n.left);
     // The far edges, from the interval's right end round to its left.
-    for (int step = 1; step < 3; ++step) {
-      const int e = (n.edge + step) % 3;
-      const Vec2& P = mesh_.vertices()[f.v[e]];
-      const Vec2& Q = mesh_.vertices()[f.v[(e + 1) % 3]];
-      const double eps_r = 1e-12 * to_right.norm() * ((Q - P).norm() + (P - r).norm());
-      const double eps_l = 1e-12 * to_left.norm() * ((Q - P).norm() + (P - r).norm());
+    for (std::uint32_t step = 1; step < count; ++step) {
+      const std::uint32_t e = n.edge + step < count ? n.edge + step : n.edge + step - count;
+      const Vec2& P = mesh_.vertices()[cells_.corner[base + e]];
+      const Vec2& Q = mesh_.vertices()[vertex(base, count, e + 1)];
+      const double reach = extent(Q - P) + extent(P - r);
+      const double eps_r = 1e-12 * extent(to_right) * reach;
+      const double eps_l = 1e-12 * extent(to_left) * reach;
       // Left of (or on) the ray r -> right, and right of (or on) r -> left.
       const double ar = cross(to_right, P - r), br = cross(to_right, Q - P);
       const double al = cross(to_left, P - r), bl = cross(to_left, Q - P);
@@ -278,11 +310,12 @@ class Search {
   }
 
   const NavMesh& mesh_;
+  const ConvexCells& cells_;
   Vec2 goal_;
   const SearchBudget& budget_;
   bool heuristic_;
-  std::vector<double> best_;  // the shortest way found to each corner used as a root
-  std::vector<std::int32_t> goal_faces_;
+  std::vector<double> best_;              // the shortest way found to each corner used as a root
+  std::vector<std::int32_t> goal_faces_;  // cells
   std::vector<Node> nodes_;
   std::vector<Node> fresh_;                                          // the successors of the node being expanded
   using Entry = std::pair<std::pair<double, double>, std::int32_t>;  // (f, -g), node: least f, then most g

@@ -13,13 +13,16 @@
 // decreases from a node to its successors (the paper's lemmas), so the first
 // time a route to the goal leaves the open list, it is the shortest.
 //
-// Expanding a node projects I through the face beyond it. The part of the
-// face's far edges between the rays r -> left and r -> right is seen from r:
+// The mesh's faces here are its convex cells (convex_cells.hpp): the
+// triangles merged, so an interval crosses fewer of them on its way.
+//
+// Expanding a node projects I through the cell beyond it. The part of the
+// cell's far edges between the rays r -> left and r -> right is seen from r:
 // a successor per far edge with root r ("observable"). What lies beyond a
 // ray is seen only by turning round the interval's end, so it becomes a
 // successor with that end as root when the end is a corner of the water
 // (NavMesh::corner); otherwise the taut route does not turn there, and other
-// intervals reach it. A face that holds the goal adds the final node: the
+// intervals reach it. A cell that holds the goal adds the final node: the
 // goal seen from r, or round an end of I that is a corner.
 //
 // Root-level pruning (the paper's): a corner reached again with a longer g
