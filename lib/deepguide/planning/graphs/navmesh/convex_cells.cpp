@@ -7,13 +7,6 @@ namespace {
 
 constexpr std::int32_t kNone = ConvexCells::kNone;
 
-// One corner of a cell being merged: the vertex, and the triangle across the
-// edge that leaves it (anticlockwise), or kNone.
-struct Corner {
-  std::uint32_t vertex;
-  std::int32_t across;
-};
-
 // Strictly convex at b, coming from a, going on to c: a turn left by more
 // than 1e-9 rad, so rounding cannot pass a straight or reflex vertex.
 bool turns_left(const Vec2& a, const Vec2& b, const Vec2& c) {
@@ -21,67 +14,77 @@ bool turns_left(const Vec2& a, const Vec2& b, const Vec2& c) {
   return u.x() * w.y() - u.y() * w.x() > 1e-9 * u.norm() * w.norm();
 }
 
-// Hertel and Mehlhorn's merge of the triangles `region`; slot[t] is
-// triangle t's index in it, or kNone outside it.
+// Hertel and Mehlhorn's merge of the triangles `region` (slot[t]: triangle
+// t's index in it, or kNone outside it). Each cell's ring is a cycle of the
+// triangles' directed edges, 3 i + k for edge k of region[i], linked both
+// ways, so a merge relinks four of them.
 struct Merged {
-  std::vector<std::vector<Corner>> ring;  // a cell's ring at one of its triangles' index, else empty
-  std::vector<std::size_t> owner;         // the index whose ring holds each triangle
+  static constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> owner;  // per triangle: the index of the triangle that names its cell
+  std::vector<std::size_t> any;    // per naming triangle: one directed edge of its cell's ring
+  std::vector<std::size_t> next;   // per directed edge: the next one round its ring
+  std::vector<std::size_t> twin;   // per directed edge: the same edge the other way, or kOutside
 };
 
 Merged merge_region(const std::vector<Vec2>& vertices, const std::vector<NavMesh::Face>& faces,
                     const std::vector<std::int32_t>& region, const std::vector<std::int32_t>& slot) {
-  Merged out;
-  out.ring.resize(region.size());
-  out.owner.resize(region.size());
+  const std::size_t n = region.size();
+  const auto from = [&](std::size_t d) { return faces[region[d / 3]].v[d % 3]; };
+  const auto to = [&](std::size_t d) { return faces[region[d / 3]].v[(d % 3 + 1) % 3]; };
+  Merged m;
+  m.owner.resize(n);
+  m.any.resize(n);
+  m.next.resize(3 * n);
+  m.twin.assign(3 * n, Merged::kOutside);
+  std::vector<std::size_t> prev(3 * n);
   struct Edge {
     double length2;
-    std::size_t from;
-    int k;
+    std::size_t d;
   };
   std::vector<Edge> edges;
-  for (std::size_t i = 0; i < region.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
+    m.owner[i] = i;
+    m.any[i] = 3 * i;
     const NavMesh::Face& f = faces[region[i]];
-    out.owner[i] = i;
-    for (int k = 0; k < 3; ++k) {
-      out.ring[i].push_back({f.v[k], f.next[k]});
-      if (f.next[k] > region[i] && slot[f.next[k]] != kNone) {
-        edges.push_back({(vertices[f.v[(k + 1) % 3]] - vertices[f.v[k]]).squaredNorm(), i, k});
-      }
+    for (std::size_t k = 0; k < 3; ++k) {
+      m.next[3 * i + k] = 3 * i + (k + 1) % 3;
+      prev[3 * i + k] = 3 * i + (k + 2) % 3;
+      const std::int32_t other = f.next[k];
+      if (other == NavMesh::kNone || slot[other] == kNone) continue;
+      const NavMesh::Face& g = faces[other];
+      std::size_t j = 0;
+      while (j < 3 && !(g.v[j] == f.v[(k + 1) % 3] && g.v[(j + 1) % 3] == f.v[k])) ++j;
+      if (j == 3) continue;  // not the shared edge: cannot happen in a valid mesh
+      m.twin[3 * i + k] = 3 * static_cast<std::size_t>(slot[other]) + j;
+      if (other > region[i]) edges.push_back({(vertices[g.v[j]] - vertices[f.v[k]]).squaredNorm(), 3 * i + k});
     }
   }
   std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.length2 > b.length2; });
   const auto root = [&](std::size_t k) {
-    while (out.owner[k] != k) k = out.owner[k] = out.owner[out.owner[k]];
+    while (m.owner[k] != k) k = m.owner[k] = m.owner[m.owner[k]];
     return k;
   };
   for (const Edge& e : edges) {
-    const std::int32_t t = region[e.from], other = faces[t].next[e.k];
-    const std::size_t a = root(e.from), b = root(static_cast<std::size_t>(slot[other]));
+    const std::size_t d = e.d, t = m.twin[d];
+    const std::size_t a = root(d / 3), b = root(t / 3);
     if (a == b) continue;  // cannot happen: two convex cells share one edge at most
-    std::vector<Corner>& A = out.ring[a];
-    std::vector<Corner>& B = out.ring[b];
-    // The edge u -> w leaves a corner of A towards `other`, and w -> u one
-    // of B towards t.
-    const std::uint32_t u = faces[t].v[e.k], w = faces[t].v[(e.k + 1) % 3];
-    const auto i = std::find_if(A.begin(), A.end(), [&](const Corner& c) { return c.vertex == u && c.across == other; });
-    const auto j = std::find_if(B.begin(), B.end(), [&](const Corner& c) { return c.vertex == w && c.across == t; });
-    if (i == A.end() || j == B.end()) continue;
-    // Both rings from just after the shared edge: A from w round to u, B
-    // from u round to w. Merged: A's without u, then B's without w.
-    std::rotate(A.begin(), std::next(i) == A.end() ? A.begin() : std::next(i), A.end());
-    std::rotate(B.begin(), std::next(j) == B.end() ? B.begin() : std::next(j), B.end());
-    const Vec2& x = vertices[A[A.size() - 2].vertex];  // before u in A
-    const Vec2& y = vertices[A[1].vertex];             // after w in A
-    const Vec2& p = vertices[B[B.size() - 2].vertex];  // before w in B
-    const Vec2& q = vertices[B[1].vertex];             // after u in B
-    if (!turns_left(x, vertices[u], q) || !turns_left(p, vertices[w], y)) continue;
-    A.pop_back();
-    A.insert(A.end(), B.begin(), std::prev(B.end()));
-    std::vector<Corner>().swap(B);
-    out.owner[b] = a;
+    // d runs u -> w in one cell, its twin w -> u in the other. Merged, the
+    // ring comes from x into u and goes on to q (the twin's cell), and comes
+    // from p into w and goes on to y (d's cell).
+    const Vec2& x = vertices[from(prev[d])];
+    const Vec2& y = vertices[to(m.next[d])];
+    const Vec2& p = vertices[from(prev[t])];
+    const Vec2& q = vertices[to(m.next[t])];
+    if (!turns_left(x, vertices[from(d)], q) || !turns_left(p, vertices[to(d)], y)) continue;
+    m.next[prev[d]] = m.next[t];
+    prev[m.next[t]] = prev[d];
+    m.next[prev[t]] = m.next[d];
+    prev[m.next[d]] = prev[t];
+    m.owner[b] = a;
+    m.any[a] = prev[d];
   }
-  for (std::size_t i = 0; i < region.size(); ++i) out.owner[i] = root(i);
-  return out;
+  for (std::size_t i = 0; i < n; ++i) m.owner[i] = root(i);
+  return m;
 }
 
 }  // namespace
@@ -123,12 +126,15 @@ void merge_again(ConvexCells& cells, const std::vector<Vec2>& vertices, const st
     free_numbers.push_back(c);
   }
   const Merged merged = merge_region(vertices, faces, region, slot);
-  const auto& ring = merged.ring;
 
-  // Number the new cells (freed numbers first) and store their corners.
+  // Number the new cells (freed numbers first) and store their corners,
+  // noting where each directed edge went.
   std::vector<std::int32_t> number(region.size(), kNone);
+  std::vector<std::uint32_t> place(3 * region.size(), 0);  // per directed edge: its corner's offset in its cell
+  const std::size_t first_new = cells.corner.size();
+  std::vector<std::size_t> edge_of;  // per new corner: its directed edge
   for (std::size_t i = 0; i < region.size(); ++i) {
-    if (merged.owner[i] != i) continue;  // merged into another's ring
+    if (merged.owner[i] != i) continue;  // another triangle names its cell
     std::int32_t c;
     if (!free_numbers.empty()) {
       c = free_numbers.back();
@@ -140,35 +146,42 @@ void merge_again(ConvexCells& cells, const std::vector<Vec2>& vertices, const st
     }
     number[i] = c;
     cells.begin[c] = static_cast<std::uint32_t>(cells.corner.size());
-    cells.count[c] = static_cast<std::uint32_t>(ring[i].size());
+    std::size_t d = merged.any[i];
+    do {
+      place[d] = static_cast<std::uint32_t>(cells.corner.size() - cells.begin[c]);
+      cells.corner.push_back(faces[region[d / 3]].v[d % 3]);
+      edge_of.push_back(d);
+      d = merged.next[d];
+    } while (d != merged.any[i]);
+    cells.count[c] = static_cast<std::uint32_t>(cells.corner.size() - cells.begin[c]);
     ++cells.live;
-    for (const Corner& k : ring[i]) {
-      cells.corner.push_back(k.vertex);
-      cells.across.push_back(kNone);
-      cells.back.push_back(0);
-    }
   }
+  cells.across.resize(cells.corner.size(), kNone);
+  cells.back.resize(cells.corner.size(), 0);
   for (std::size_t i = 0; i < region.size(); ++i) cells.cell_of[region[i]] = number[merged.owner[i]];
-  // Link each new cell to the cells across its edges: the corner there
-  // that starts at this edge's far end and ends at its near one.
-  for (std::size_t i = 0; i < region.size(); ++i) {
-    if (number[i] == kNone) continue;
-    const std::int32_t c = number[i];
-    const std::uint32_t m = cells.count[c];
-    for (std::uint32_t k = 0; k < m; ++k) {
-      const std::int32_t t = ring[i][k].across;
-      if (t == kNone) continue;
-      const std::int32_t d = cells.cell_of[t];
-      const std::uint32_t u = ring[i][k].vertex, w = ring[i][(k + 1) % m].vertex;
-      const std::uint32_t md = cells.count[d];
-      for (std::uint32_t j = 0; j < md; ++j) {
-        if (cells.corner[cells.begin[d] + j] == w && cells.corner[cells.begin[d] + (j + 1) % md] == u) {
-          cells.across[cells.begin[c] + k] = d;
-          cells.back[cells.begin[c] + k] = j;
-          cells.across[cells.begin[d] + j] = c;  // an old cell's link to the region turns to the new cell
-          cells.back[cells.begin[d] + j] = k;
-          break;
-        }
+  // Link each new corner's edge to the cell across: a new cell by the
+  // twin's place, an old one (across the region's edge) by the corner there
+  // that runs the other way.
+  for (std::size_t g = first_new; g < cells.corner.size(); ++g) {
+    const std::size_t d = edge_of[g - first_new];
+    const std::int32_t c = number[merged.owner[d / 3]];
+    if (merged.twin[d] != Merged::kOutside) {
+      cells.across[g] = number[merged.owner[merged.twin[d] / 3]];
+      cells.back[g] = place[merged.twin[d]];
+      continue;
+    }
+    const NavMesh::Face& f = faces[region[d / 3]];
+    const std::int32_t t = f.next[d % 3];
+    if (t == NavMesh::kNone) continue;
+    const std::int32_t old = cells.cell_of[t];
+    const std::uint32_t u = f.v[d % 3], w = f.v[(d % 3 + 1) % 3], m = cells.count[old];
+    for (std::uint32_t j = 0; j < m; ++j) {
+      if (cells.corner[cells.begin[old] + j] == w && cells.corner[cells.begin[old] + (j + 1) % m] == u) {
+        cells.across[g] = old;
+        cells.back[g] = j;
+        cells.across[cells.begin[old] + j] = c;  // the old cell's link to the region turns to the new cell
+        cells.back[cells.begin[old] + j] = static_cast<std::uint32_t>(g - cells.begin[c]);
+        break;
       }
     }
   }
