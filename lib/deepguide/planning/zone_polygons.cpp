@@ -106,36 +106,57 @@ BgMultiPolygon merged_zone_polygons(const ObstacleSet& obstacles, const ZoneOpti
     }
   }
 
-  std::vector<std::vector<std::size_t>> groups(zones.size());
-  for (std::size_t i = 0; i < zones.size(); ++i) groups[comp.find(i)].push_back(i);
-  BgMultiPolygon merged;
-  for (const auto& group : groups) {
-    if (group.empty()) continue;
-    // Boost's buffer of a long coast can cross itself (a 15,000-vertex Kachemak zone did): such a
-    // zone, and any group holding one, is repaired and joined by GEOS (world/no_go_union.hpp).
-    const bool any_invalid =
-        std::any_of(group.begin(), group.end(), [&](std::size_t k) { return !bg::is_valid(zones[k]); });
-    if (group.size() == 1 && !any_invalid) {
-      merged.push_back(std::move(zones[group[0]]));
-      continue;
+  std::vector<std::vector<std::size_t>> groups;
+  {
+    std::vector<std::vector<std::size_t>> by_root(zones.size());
+    for (std::size_t i = 0; i < zones.size(); ++i) by_root[comp.find(i)].push_back(i);
+    for (auto& group : by_root) {
+      if (!group.empty()) groups.push_back(std::move(group));
     }
-    if (group.size() > kLargestBoostGroup || any_invalid) {
+  }
+  // Each group is merged alone, so groups go to every core (Boost's union
+  // keeps no state); GEOS's groups stay on this thread. The output keeps
+  // the groups' order, whatever thread merged them.
+  std::vector<BgMultiPolygon> parts(groups.size());
+  std::vector<char> to_geos(groups.size(), 0);
+  const std::size_t union_workers = zones.size() >= kParallelEllipses ? hardware_workers() : 1;
+  parallel_blocks(groups.size(), 16, union_workers, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t g = begin; g < end; ++g) {
+      const std::vector<std::size_t>& group = groups[g];
+      // Boost's buffer of a long coast can cross itself (a 15,000-vertex Kachemak zone did): such a
+      // zone, and any group holding one, is repaired and joined by GEOS (world/no_go_union.hpp).
+      const bool any_invalid =
+          std::any_of(group.begin(), group.end(), [&](std::size_t k) { return !bg::is_valid(zones[k]); });
+      if (group.size() > kLargestBoostGroup || any_invalid) {
+        to_geos[g] = 1;
+        continue;
+      }
+      if (group.size() == 1) {
+        parts[g].push_back(std::move(zones[group[0]]));
+        continue;
+      }
+      BgMultiPolygon acc;
+      acc.push_back(zones[group[0]]);
+      for (std::size_t k = 1; k < group.size(); ++k) {
+        BgMultiPolygon next;
+        bg::union_(acc, zones[group[k]], next);
+        acc = std::move(next);
+      }
+      parts[g] = std::move(acc);
+    }
+  });
+  BgMultiPolygon merged;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (to_geos[g]) {
       // A chart's coast with its hazards: thousands of zones in one group.
       // Adding them one by one costs O(group x vertices), and Boost 1.74's
       // union is not robust at that scale (world/no_go_union.hpp).
-      std::vector<const BgPolygon*> parts;
-      for (std::size_t k : group) parts.push_back(&zones[k]);
-      for (BgPolygon& part : union_no_go({}, parts)) merged.push_back(std::move(part));
+      std::vector<const BgPolygon*> group;
+      for (std::size_t k : groups[g]) group.push_back(&zones[k]);
+      for (BgPolygon& part : union_no_go({}, group)) merged.push_back(std::move(part));
       continue;
     }
-    BgMultiPolygon acc;
-    acc.push_back(zones[group[0]]);
-    for (std::size_t k = 1; k < group.size(); ++k) {
-      BgMultiPolygon next;
-      bg::union_(acc, zones[group[k]], next);
-      acc = std::move(next);
-    }
-    for (BgPolygon& part : acc) merged.push_back(std::move(part));
+    for (BgPolygon& part : parts[g]) merged.push_back(std::move(part));
   }
   return merged;
 }

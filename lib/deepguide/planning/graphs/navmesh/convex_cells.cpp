@@ -37,11 +37,7 @@ Merged merge_region(const std::vector<Vec2>& vertices, const std::vector<NavMesh
   m.next.resize(3 * n);
   m.twin.assign(3 * n, Merged::kOutside);
   std::vector<std::size_t> prev(3 * n);
-  struct Edge {
-    double length2;
-    std::size_t d;
-  };
-  std::vector<Edge> edges;
+  std::vector<std::size_t> edges;  // each inner edge once, as the directed edge of its lower triangle
   for (std::size_t i = 0; i < n; ++i) {
     m.owner[i] = i;
     m.any[i] = 3 * i;
@@ -56,16 +52,15 @@ Merged merge_region(const std::vector<Vec2>& vertices, const std::vector<NavMesh
       while (j < 3 && !(g.v[j] == f.v[(k + 1) % 3] && g.v[(j + 1) % 3] == f.v[k])) ++j;
       if (j == 3) continue;  // not the shared edge: cannot happen in a valid mesh
       m.twin[3 * i + k] = 3 * static_cast<std::size_t>(slot[other]) + j;
-      if (other > region[i]) edges.push_back({(vertices[g.v[j]] - vertices[f.v[k]]).squaredNorm(), 3 * i + k});
+      if (other > region[i]) edges.push_back(3 * i + k);
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.length2 > b.length2; });
   const auto root = [&](std::size_t k) {
     while (m.owner[k] != k) k = m.owner[k] = m.owner[m.owner[k]];
     return k;
   };
-  for (const Edge& e : edges) {
-    const std::size_t d = e.d, t = m.twin[d];
+  for (const std::size_t d : edges) {
+    const std::size_t t = m.twin[d];
     const std::size_t a = root(d / 3), b = root(t / 3);
     if (a == b) continue;  // cannot happen: two convex cells share one edge at most
     // d runs u -> w in one cell, its twin w -> u in the other. Merged, the

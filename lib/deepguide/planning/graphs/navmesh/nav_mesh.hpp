@@ -104,7 +104,8 @@ class NavMesh {
   std::vector<std::int32_t> boundary_;
   std::vector<Face> faces_;
   Vec2 area_min_, area_max_;
-  struct Index;  // R-tree of the faces' boxes
+  struct Index;   // R-tree of the faces' boxes
+  void finish();  // after the faces are made: corners, index, cells
   void index_faces();
   void find_corners();
   void count_face(std::size_t id, int sign);  // adds (sign 1) or takes back (-1) a face's angles and boundary edges
