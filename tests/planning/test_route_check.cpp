@@ -308,12 +308,36 @@ TEST(RouteCheckLegs, AnArcOnItsOwnZoneIsJudgedAgainstEveryOtherObstacle) {
   EXPECT_LE(near_buoy.min_clearance_m, truth + 1e-9);
   EXPECT_GE(near_buoy.min_clearance_m, truth - 1e-6);
 
-  // A core one nanometre off the obstacle is not its own: judged by chords
-  // against it too, and found safe all the same.
+  // A core a nanometre off the obstacle (a planner's shifted frame, rounded
+  // back) is still its own: the arc's clearance is the offset less the shift.
   Ellipse moved = rock;
   moved.centre.x() += 1e-9;
   const RouteCheck shifted = check_route_legs({arc_round(moved, kMargin + 1e-6, -0.3, 1.9)}, alone);
   EXPECT_TRUE(shifted.safe) << shifted.describe();
-  EXPECT_GE(shifted.min_clearance_m, kMargin - 1e-6);
-  EXPECT_LE(shifted.min_clearance_m, kMargin + 1e-6);
+  EXPECT_NEAR(shifted.min_clearance_m, kMargin + 1e-6 - 1e-9, 1e-12);
+  // A millimetre off, it is another ellipse: the chords judge the arc against
+  // the obstacle, and find it a millimetre inside the margin where the core
+  // moved towards the arc (the normal at phi = 0 points along +x).
+  Ellipse far = rock;
+  far.centre.x() -= 1e-3;
+  const RouteLeg off_core = arc_round(far, kMargin + 1e-6, -0.3, 1.9);
+  const RouteCheck apart = check_route_legs({off_core}, alone);
+  EXPECT_FALSE(apart.safe);
+  const double truth_apart = sampled_distance(off_core, rock);
+  EXPECT_LE(apart.min_clearance_m, truth_apart + 1e-9);
+  EXPECT_GE(apart.min_clearance_m, truth_apart - 1e-6);
+}
+
+TEST(RouteCheckLegs, AnEllipseIsFoundByItsFootprintWithinTheShiftAllowed) {
+  ObstacleSet set;
+  add_ellipse(set, "a", Ellipse{{100.0, 50.0}, 20.0, 8.0, 0.3});
+  add_ellipse(set, "b", Ellipse{{100.0, 50.0}, 20.0, 8.0, 0.4});
+  const ObstacleField field(set, kMargin);
+  EXPECT_EQ(field.ellipse_index(Ellipse{{100.0, 50.0}, 20.0, 8.0, 0.3}), 0u);
+  EXPECT_EQ(field.ellipse_index(Ellipse{{100.0, 50.0}, 20.0, 8.0, 0.4}), 1u);
+  const Ellipse nudged{{100.0 + 3e-10, 50.0 - 4e-10}, 20.0, 8.0, 0.4};  // 5e-10 away
+  EXPECT_EQ(field.ellipse_index(nudged), ObstacleField::kNone);         // bit for bit by default
+  EXPECT_EQ(field.ellipse_index(nudged, 5.001e-10), 1u);                // (the shift is 5e-10 up to rounding of 1e-14)
+  EXPECT_EQ(field.ellipse_index(nudged, 4.999e-10), ObstacleField::kNone);
+  EXPECT_EQ(field.ellipse_index(Ellipse{{100.0, 50.0}, 20.0, 8.0 + 1e-12, 0.4}, 1.0), ObstacleField::kNone);
 }

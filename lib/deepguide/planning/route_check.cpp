@@ -120,9 +120,18 @@ RouteCheck check_route_legs(const std::vector<RouteLeg>& legs, const ObstacleFie
     // chords judge the others only. Split against it, the chords ran down to
     // the tolerance: thousands of exact distances per arc (bench_compare:
     // the tangent graph's solve 10 times slower than before this checker).
-    const std::size_t own = leg.core.a > 0.0 ? field.ellipse_index(leg.core) : ObstacleField::kNone;
+    //
+    // The core may be its ellipse moved by rounding (the tangent graph works
+    // in a frame centred on its zones and adds the origin back; bit for bit,
+    // most arcs of bench_planning's fields went unrecognised and split down
+    // to the tolerance, 4,000 to 9,000 chords each): the arc then lies
+    // offset_m from the moved ellipse, so at least offset_m less the shift
+    // from the obstacle.
+    const double within = 1e-9 * (1.0 + leg.core.centre.cwiseAbs().maxCoeff());
+    const std::size_t own = leg.core.a > 0.0 ? field.ellipse_index(leg.core, within) : ObstacleField::kNone;
     if (own != ObstacleField::kNone) {
-      note(k, {leg.offset_m, own, arc_point(leg, 0.5 * (leg.phi_from + leg.phi_to))});
+      const double shift = (field.obstacles().ellipses[own].footprint.centre - leg.core.centre).norm();
+      note(k, {leg.offset_m - shift, own, arc_point(leg, 0.5 * (leg.phi_from + leg.phi_to))});
     }
     std::vector<std::pair<double, double>> todo{{leg.phi_from, leg.phi_to}};
     note(k, field.segment_clearance(leg.to, leg.to));

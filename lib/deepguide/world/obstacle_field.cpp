@@ -383,13 +383,14 @@ ObstacleField::Nearest ObstacleField::segment_clearance(const Vec2& a, const Vec
   return best;
 }
 
-std::size_t ObstacleField::ellipse_index(const Ellipse& footprint) const {
+std::size_t ObstacleField::ellipse_index(const Ellipse& footprint, double within) const {
   const std::size_t n_ellipses = obstacles_.ellipses.size();
   for (auto it = tree_.qbegin(bgi::intersects(to_bg(footprint.centre))); it != tree_.qend(); ++it) {
     const std::size_t i = it->second;
     if (i >= n_ellipses) continue;
     const Ellipse& e = obstacles_.ellipses[i].footprint;
-    if (e.centre == footprint.centre && e.a == footprint.a && e.b == footprint.b && e.theta == footprint.theta)
+    if ((e.centre - footprint.centre).norm() <= within && e.a == footprint.a && e.b == footprint.b &&
+        e.theta == footprint.theta)
       return i;
   }
   return kNone;

@@ -101,8 +101,11 @@ class ObstacleField {
   /// first; a degenerate segment (a == b) is the point a. Obstacle `skip` is
   /// not looked at (one whose distance the caller knows exactly).
   Nearest segment_clearance(const Vec2& a, const Vec2& b, std::size_t skip = kNone) const;
-  /// The ellipse obstacle whose footprint is `footprint`, bit for bit; kNone when there is none.
-  std::size_t ellipse_index(const Ellipse& footprint) const;
+  /// The ellipse obstacle whose footprint is `footprint`: the same axes and
+  /// heading bit for bit, its centre at most `within` from footprint's (a
+  /// planner that worked in a shifted frame gives it back rounded); kNone
+  /// when there is none.
+  std::size_t ellipse_index(const Ellipse& footprint, double within = 0.0) const;
   /// segment_clearance(a, b).distance >= margin, stopping at the first obstacle
   /// closer than the margin and never looking at boxes farther than it.
   /// Obstacles skip_a and skip_b are not looked at: a planner passes the
