@@ -7,11 +7,11 @@
 //
 // The merge is Hertel and Mehlhorn's: an edge between two cells is taken out
 // when the cell it leaves is still strictly convex at both of its ends, the
-// edges taken in the triangles' order (longest first gave 5 % fewer cells
+// edges taken in the triangles' order (longest first gave 3-5 % fewer cells
 // and no faster search, for a third more merge time: the sort scatters the
-// memory it touches). Every cell is a union
-// of whole triangles, so the water, its boundary and its corners are the
-// triangles' own, and a route inside one cell is a straight line.
+// memory it touches). Every cell is a union of whole triangles, so the
+// water, its boundary and its corners are the triangles' own, and a route
+// inside one cell is a straight line.
 //
 // A repair (NavMesh::insert) changes a few triangles: the cells they lay in
 // are dissolved and their triangles, old and new, merged again, while every
