@@ -133,11 +133,18 @@ struct TangentGraph::Impl {
   // vertices and, backwards, between the other two. Arcs join vertices of one
   // way round: a route never reverses along a piece (with pieces that are not
   // obstacles, the turning circles, a reversal could otherwise look short).
-  // Arcs are stored in the direction of travel (from u to v).
+  // Without a turning radius there are no such pieces, and a shortest route
+  // never reverses (a cusp is never shortest): one vertex per tangent point
+  // (orient 0), tangents and arcs both ways, half the vertices to build,
+  // join and search (`one_way`).
+  // Arcs are stored in the direction of travel (from u to v), with the way
+  // round they run (+1 anticlockwise).
   struct Arc {
     std::size_t u, v;
     double w;
+    int turn;
   };
+  bool one_way = false;
   std::vector<Node> nodes;  // the environment's, then a query's own while it runs
   std::size_t env_nodes = 0;
   std::vector<std::vector<std::size_t>> on_piece;  // vertex ids per piece, by phi
@@ -234,6 +241,7 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
   m.inner = std::make_unique<PolygonVisibility>(std::move(inner), 1e-9);
   for (const ZonePiece& z : m.pieces) m.piece_names.push_back(m.field->obstacle_name(z.obstacle));
   m.heading_radius = turn_radius;
+  m.one_way = !(turn_radius > 0.0);
   m.end_way.assign(m.pieces.size(), 0);
   m.end_is_start.assign(m.pieces.size(), false);
 
@@ -275,6 +283,12 @@ TangentGraph::TangentGraph(const ObstacleSet& obstacles, double margin, double t
       m.on_piece[n.piece].push_back(m.nodes.size() - 1);
       return m.nodes.size() - 1;
     };
+    if (m.one_way) {
+      const std::size_t a = vertex(seg.a, 0), b = vertex(seg.b, 0);
+      segment_ends.emplace_back(a, b);
+      segment_ends.emplace_back(b, a);
+      continue;
+    }
     const std::size_t a_out = vertex(seg.a, oa), b_in = vertex(seg.b, ob);
     const std::size_t b_out = vertex(seg.b, -ob), a_in = vertex(seg.a, -oa);
     segment_ends.emplace_back(a_out, b_in);
@@ -342,7 +356,7 @@ template <class Want>
 void TangentGraph::Impl::add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all,
                                   Want want, PlanningGraph& graph, std::vector<Arc>& out,
                                   std::unordered_map<std::uint64_t, std::size_t>& index) const {
-  for (int orient : {+1, -1}) {
+  for (int orient : one_way ? std::vector<int>{0} : std::vector<int>{+1, -1}) {
     std::vector<std::size_t> way;
     for (std::size_t v : ids) {
       if (all[v].orient == orient) way.push_back(v);
@@ -360,10 +374,10 @@ void TangentGraph::Impl::add_arcs(std::size_t piece, const std::vector<std::size
       // Two vertices at one point (the sort's order between them is
       // arbitrary) are joined both ways.
       const bool same_point = k + 1 < way.size() && phi1 == phi0;
-      for (int dir : same_point ? std::vector<int>{+1, -1} : std::vector<int>{orient}) {
+      for (int dir : same_point || orient == 0 ? std::vector<int>{+1, -1} : std::vector<int>{orient}) {
         const std::size_t from = dir > 0 ? a : b, to = dir > 0 ? b : a;
         boost::add_edge(from, to, w, graph);
-        out.push_back({from, to, w});
+        out.push_back({from, to, w, orient != 0 ? orient : dir});
         auto it = index.find(key(from, to));
         if (it == index.end() || out[it->second].w > w) index[key(from, to)] = out.size() - 1;
       }
@@ -664,8 +678,9 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
         // itself may go either way round.
         const Vec2 d = end == 0 ? Vec2(seg.b.p - seg.a.p) : Vec2(seg.a.p - seg.b.p);
         const double w = d.norm();
-        const std::vector<int> ways =
-            w > 0.0 ? std::vector<int>{orientation(unit(seg.b.phi), d)} : std::vector<int>{+1, -1};
+        const std::vector<int> ways = m.one_way ? std::vector<int>{0}
+                                      : w > 0.0 ? std::vector<int>{orientation(unit(seg.b.phi), d)}
+                                                : std::vector<int>{+1, -1};
         for (int orient : ways) {
           const int way = m.end_way[seg.b.piece];
           if (way != 0 && orient != way) continue;  // the other end's circle, sailed the wrong way round
@@ -768,7 +783,7 @@ PlanResult TangentGraph::solve(const PlanningProblem& problem, SearchAlgorithm a
       }
     }
     if (arc != nullptr) {
-      const int turn = a.orient;
+      const int turn = arc->turn;
       const double phi_from = a.phi;
       double phi_to = b.phi;
       if (turn > 0) {
