@@ -64,13 +64,13 @@ CostModel cost_model_of(const RoutePlanRequest& r, const VehicleParams& vehicle,
   return m;
 }
 
-// The options' combinations the graphs cannot serve, before any file is read.
 // Whether the plan turns within a radius: one given, or a vehicle's, which a
 // graph whose routes step cell to cell keeps only when smoothed (planner.cpp).
 bool keeps_turn_radius(const RoutePlanRequest& r) {
   return r.turn_radius_m || (!r.vehicle.empty() && (!graph_entry(r.graph).can.steps || r.smooth));
 }
 
+// The options' combinations the graphs cannot serve, before any file is read.
 void check_request(const RoutePlanRequest& r) {
   // Headings ask for Dubins ends, which the tangent graph alone plans (planner.hpp).
   const PlanningProblem& p = r.problem;

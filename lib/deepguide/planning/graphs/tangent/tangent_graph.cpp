@@ -45,7 +45,7 @@ struct Node {
   std::size_t piece;  // kNoPiece for start and goal
   double phi;         // outward normal angle on the piece, in [0, 2 pi)
   Vec2 p;
-  int orient = 0;  // the way round the piece a route passes here: +1 anticlockwise, -1 clockwise
+  int orient = 0;  // the way round the piece a route passes here: +1 anticlockwise, -1 clockwise, 0 either (one_way)
 };
 
 // The way round a piece of a route moving along `d` where the piece's outward
@@ -374,7 +374,9 @@ void TangentGraph::Impl::add_arcs(std::size_t piece, const std::vector<std::size
       // Two vertices at one point (the sort's order between them is
       // arbitrary) are joined both ways.
       const bool same_point = k + 1 < way.size() && phi1 == phi0;
-      for (int dir : same_point || orient == 0 ? std::vector<int>{+1, -1} : std::vector<int>{orient}) {
+      const bool both_ways = same_point || orient == 0;
+      for (const int dir : {+1, -1}) {
+        if (!both_ways && dir != orient) continue;
         const std::size_t from = dir > 0 ? a : b, to = dir > 0 ? b : a;
         boost::add_edge(from, to, w, graph);
         out.push_back({from, to, w, orient != 0 ? orient : dir});
