@@ -165,6 +165,65 @@ TEST(ZonePieces, CapsuleArcLengthCountsFlatSides) {
   EXPECT_NEAR(pieces[0].arc_length(0.1, 0.1 + 2 * kPi), 20.0 + 2 * kPi * 2.0, 1e-12);
 }
 
+namespace {
+ZonePiece disc(double x, double y, double r) {
+  ZonePiece z;
+  z.kind = ZonePiece::Kind::capsule;
+  z.a = z.b = {x, y};
+  z.margin = r;
+  return z;
+}
+}  // namespace
+
+TEST(ZonePieces, OverlapByHand) {
+  // Discs 10 m apart: radii 6 + 5 overlap, 4 + 5 do not, 5 + 5 only touch.
+  EXPECT_TRUE(zones_overlap(disc(0, 0, 6), disc(10, 0, 5)));
+  EXPECT_FALSE(zones_overlap(disc(0, 0, 4), disc(10, 0, 5)));
+  EXPECT_FALSE(zones_overlap(disc(0, 0, 5), disc(10, 0, 5)));
+  // Ellipse a = 10, b = 2 along x with a 1 m zone (its tip at x = 11): a disc
+  // at x = 12.5 is 2.5 m from the ellipse, so radius 1.6 reaches its zone
+  // and 1.4 does not; the test is symmetric.
+  const ZonePiece e = zone_pieces(ObstacleSet{{ellipse(0, 0, 10, 2, 0.0)}, {}}, 1.0)[0];
+  EXPECT_TRUE(zones_overlap(e, disc(12.5, 0, 1.6)));
+  EXPECT_TRUE(zones_overlap(disc(12.5, 0, 1.6), e));
+  EXPECT_FALSE(zones_overlap(e, disc(12.5, 0, 1.4)));
+  // Across the minor axis the ellipse's centre disc (b + d = 3) reaches a disc at y = 4.5 of radius 1.6.
+  EXPECT_TRUE(zones_overlap(e, disc(0, 4.5, 1.6)));
+  EXPECT_FALSE(zones_overlap(e, disc(0, 4.5, 1.4)));
+}
+
+TEST(ZonePieces, OverlappingZonesHaveNoInnerTangent) {
+  // What the tangent graph relies on when it skips the inner tangents: for
+  // every pair the test calls overlapping, h_p(u) + h_q(-u) stays positive
+  // on a dense scan of u (it would be negative somewhere for disjoint zones).
+  std::mt19937_64 rng(2027);
+  std::uniform_real_distribution<double> pos(-30, 30), semi(1, 20), ratio(0.1, 1), angle(0, 2 * kPi), rad(0.5, 15);
+  int overlapping = 0, separated = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double a = semi(rng);
+    const ZonePiece e =
+        zone_pieces(ObstacleSet{{ellipse(pos(rng), pos(rng), a, a * ratio(rng), angle(rng))}, {}}, rad(rng) / 3)[0];
+    const ZonePiece d = trial % 2
+                            ? disc(pos(rng), pos(rng), rad(rng))
+                            : zone_pieces(ObstacleSet{{ellipse(pos(rng), pos(rng), a, a * ratio(rng), angle(rng))}, {}},
+                                          rad(rng) / 3)[0];
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 20000; ++k) {
+      const Vec2 u(std::cos(2 * kPi * k / 20000), std::sin(2 * kPi * k / 20000));
+      least = std::min(least, e.support(u) + d.support(-u));
+    }
+    if (zones_overlap(e, d)) {
+      ++overlapping;
+      EXPECT_GT(least, 0.0) << "trial " << trial;
+    } else if (least < 0.0) {
+      ++separated;
+    }
+  }
+  // Both kinds occur, so the loop tests something.
+  EXPECT_GT(overlapping, 300);
+  EXPECT_GT(separated, 300);
+}
+
 TEST(TangentGraph, SingleDiscAndEllipseClosedForms) {
   ObstacleSet set{{ellipse(0, 0, 15, 15, 0.3)}, {}};
   Planner planner(set, {5.0, 0.05, GraphKind::tangent, SearchAlgorithm::astar});

@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "deepguide/core/angles.hpp"
+#include "deepguide/geometry/ellipse_distance.hpp"
+#include "deepguide/geometry/vec2.hpp"
 
 namespace deepguide {
 namespace {
@@ -101,6 +103,27 @@ Vec2 ZonePiece::inner_point() const { return kind == Kind::ellipse ? ellipse.cen
 
 double ZonePiece::bounding_radius() const {
   return (kind == Kind::ellipse ? ellipse.a : 0.5 * (b - a).norm()) + margin;
+}
+
+double ZonePiece::core_distance(const Vec2& p) const {
+  if (kind == Kind::capsule) return point_segment_distance(p, a, b);
+  return std::max(0.0, signed_distance(ellipse, p));
+}
+
+bool zones_overlap(const ZonePiece& p, const ZonePiece& q) {
+  // w in p's core with the disc of radius r round it in p's zone; the zones'
+  // interiors meet when w lies closer than r + q.margin to q's core. The
+  // nanometre per metre keeps a touch (one common point, tangents through
+  // it) out of the verdict despite rounding.
+  auto reaches = [](const ZonePiece& x, const ZonePiece& y) {
+    auto within = [&](const Vec2& w, double r) {
+      const double reach = r + y.margin;
+      return y.core_distance(w) < reach - 1e-9 * (1.0 + reach);
+    };
+    if (x.kind == ZonePiece::Kind::ellipse) return within(x.ellipse.centre, x.ellipse.b + x.margin);
+    return within(x.a, x.margin) || within(x.b, x.margin);
+  };
+  return reaches(p, q) || reaches(q, p);
 }
 
 std::vector<ZonePiece> zone_pieces(const ObstacleSet& obstacles, double margin) {

@@ -51,7 +51,16 @@ struct ZonePiece {
   Vec2 inner_point() const;
   /// Radius of a disc around inner_point() that holds the piece.
   double bounding_radius() const;
+  /// Distance from p to the piece's core: the ellipse (0 inside it) or the capsule's edge.
+  double core_distance(const Vec2& p) const;
 };
+
+/// True when the two zones' interiors share a point, by a sufficient test: the
+/// disc the zone holds round a point of its core (an ellipse's centre, a
+/// capsule's ends) reaches into the other zone. Such pieces have no inner
+/// common tangent (h_p(u) + h_q(-u) > 0 for every u), which the tangent graph
+/// otherwise learns only from a dense search for a sign change.
+bool zones_overlap(const ZonePiece& p, const ZonePiece& q);
 
 /// The pieces of every obstacle's zone for margin d.
 std::vector<ZonePiece> zone_pieces(const ObstacleSet& obstacles, double margin);
