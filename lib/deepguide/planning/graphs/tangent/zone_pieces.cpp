@@ -123,6 +123,8 @@ bool zones_overlap(const ZonePiece& p, const ZonePiece& q) {
     if (x.kind == ZonePiece::Kind::ellipse) return within(x.ellipse.centre, x.ellipse.b + x.margin);
     return within(x.a, x.margin) || within(x.b, x.margin);
   };
+  // Discs round the inner points that hold the pieces and do not meet rule it out at once.
+  if ((p.inner_point() - q.inner_point()).norm() >= p.bounding_radius() + q.bounding_radius()) return false;
   return reaches(p, q) || reaches(q, p);
 }
 
