@@ -12,14 +12,19 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <random>
 #include <string>
 
+#include "deepguide/core/format.hpp"
+#include "deepguide/geometry/vec2.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/planning/single_query.hpp"
@@ -144,6 +149,59 @@ TEST(PreparedNavMesh, PlanLoadsTheKeptMeshAndPlansTheSameRoute) {
       test::run_cli("plan --chart '" + gpkg + "'" + trip + "'" + tmp.file("d.geojson") + "' --margin 6");
   ASSERT_EQ(wider.exit_code, 0) << wider.err;
   EXPECT_FALSE(nlohmann::json::parse(wider.out)["graph_prepared"].get<bool>());
+
+  // A rock from an obstacle file (a store's, say) on the route: the kept
+  // mesh is loaded and the rock cut into it, not the whole chart triangulated
+  // again; the route is as long as one planned from the cell with the rock.
+  {
+    const auto route = nlohmann::json::parse(std::ifstream(tmp.file("b.geojson")));
+    const auto& line = route["features"][0]["geometry"]["coordinates"];
+    ASSERT_GE(line.size(), 2u);
+    std::size_t longest = 1;
+    double most = 0.0;
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const double d = std::hypot(line[i][0].get<double>() - line[i - 1][0].get<double>(),
+                                  line[i][1].get<double>() - line[i - 1][1].get<double>());
+      if (d > most) most = d, longest = i;
+    }
+    const double lon = 0.5 * (line[longest][0].get<double>() + line[longest - 1][0].get<double>());
+    const double lat = 0.5 * (line[longest][1].get<double>() + line[longest - 1][1].get<double>());
+    const std::string rock = tmp.write(
+        "rock.geojson",
+        "{\"type\": \"FeatureCollection\", \"features\": [{\"type\": \"Feature\", \"properties\": {\"id\": \"rock\", "
+        "\"semi_major_m\": 30, \"semi_minor_m\": 30, \"orientation_deg\": 0}, \"geometry\": {\"type\": \"Point\", "
+        "\"coordinates\": [" +
+            printf_text("%.9f, %.9f", lon, lat) + "]}}]}");
+    const test::RunResult kept = test::run_cli("plan --chart '" + gpkg + "' --obstacles '" + rock + "'" + trip + "'" +
+                                               tmp.file("f.geojson") + "'");
+    const test::RunResult built = test::run_cli("plan --chart '" + cell + "' --obstacles '" + rock + "'" + trip + "'" +
+                                                tmp.file("g.geojson") + "'");
+    ASSERT_EQ(kept.exit_code, 0) << kept.err;
+    ASSERT_EQ(built.exit_code, 0) << built.err;
+    const auto k = nlohmann::json::parse(kept.out), c = nlohmann::json::parse(built.out);
+    EXPECT_TRUE(k["graph_prepared"].get<bool>());
+    EXPECT_FALSE(c["graph_prepared"].get<bool>());
+    EXPECT_NEAR(k["length_m"].get<double>(), c["length_m"].get<double>(), 1e-3);
+    // The rock lay on the route; the new one keeps its zone (30 + 5 m) clear.
+    // (Lengths alone say little: round a disc at a long leg's middle adds
+    // a fraction of a metre.) Metres from degrees near the rock suffice here.
+    const auto nearest = [&](const std::string& file) {
+      const auto doc = nlohmann::json::parse(std::ifstream(file));
+      const auto& pts = doc["features"][0]["geometry"]["coordinates"];
+      const double kx = 6371000.0 * std::numbers::pi / 180.0 * std::cos(lat * std::numbers::pi / 180.0);
+      const double ky = 6371000.0 * std::numbers::pi / 180.0;
+      double best = 1e300;
+      for (std::size_t i = 1; i < pts.size(); ++i) {
+        const Vec2 p((pts[i - 1][0].get<double>() - lon) * kx, (pts[i - 1][1].get<double>() - lat) * ky);
+        const Vec2 q((pts[i][0].get<double>() - lon) * kx, (pts[i][1].get<double>() - lat) * ky);
+        best = std::min(best, point_segment_distance(Vec2::Zero(), p, q));
+      }
+      return best;
+    };
+    EXPECT_LT(nearest(tmp.file("b.geojson")), 1.0);
+    EXPECT_GT(nearest(tmp.file("f.geojson")), 35.0 - 0.5);
+    EXPECT_GE(k["min_clearance_m"].get<double>(), 5.0 - 1e-6) << kept.out;
+  }
 
   // Damage the kept bytes (GDAL, as any GeoPackage tool could).
   {

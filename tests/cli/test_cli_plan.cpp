@@ -106,6 +106,15 @@ TEST(CliPlan, ExitCodes) {
       [[10.02,54.02],[10.08,54.02],[10.08,54.08],[10.02,54.08],[10.02,54.02]]]}}]})");
   const auto enclosed = run_cli("plan --obstacles '" + walls + "' --from 9.9,53.9 --to 10.05,54.05 --margin 1");
   EXPECT_EQ(enclosed.exit_code, 3) << enclosed.err;
+  // The navigation mesh says both in the same one line with the same exit.
+  const auto mesh_inside =
+      run_cli("plan --obstacles '" + kSample + "' --from 10.240,54.440 --to 10.2500,54.4501 --graph navmesh");
+  EXPECT_EQ(mesh_inside.exit_code, 3) << mesh_inside.err;
+  EXPECT_EQ(mesh_inside.err, inside.err);
+  const auto mesh_enclosed =
+      run_cli("plan --obstacles '" + walls + "' --from 9.9,53.9 --to 10.05,54.05 --margin 1 --graph navmesh");
+  EXPECT_EQ(mesh_enclosed.exit_code, 3) << mesh_enclosed.err;
+  EXPECT_EQ(std::count(mesh_enclosed.err.begin(), mesh_enclosed.err.end(), '\n'), 1) << mesh_enclosed.err;
 }
 
 TEST(CliPlan, ProjectedCoordinatesWithCrs) {

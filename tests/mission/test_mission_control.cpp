@@ -11,10 +11,13 @@
 #include <numbers>
 #include <string>
 
+#include "deepguide/mission/evasion_planner.hpp"
 #include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/plan_check.hpp"
 #include "deepguide/mission/plan_splice.hpp"
+#include "deepguide/planning/route.hpp"
+#include "deepguide/planning/route_check.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "planning/obstacle_builders.hpp"
@@ -442,4 +445,66 @@ TEST(PlanCheck, TheMissionsCurrentIsTurnedIntoTheLocalFrame) {
   // Towards true east; the grid is turned from true north by the convergence at the start.
   const Vec2 true_east = m.frame.from_lonlat(m.frame.to_lonlat(m.start) + Vec2(1e-4, 0.0)) - m.start;
   EXPECT_NEAR(std::atan2(c.y(), c.x()), std::atan2(true_east.y(), true_east.x()), 1e-3);
+}
+
+TEST(MissionControl, TheEvasionGraphIsReadAndAWrongOneNamed) {
+  ScratchDir dir;
+  const std::string track = "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n";
+  EXPECT_EQ(mission_from(dir, track).control.evasion_graph, GraphKind::visibility);
+  EXPECT_EQ(mission_from(dir, "control: {evasion_graph: navmesh}\n" + track).control.evasion_graph,
+            GraphKind{"navmesh"});
+  try {
+    mission_from(dir, "control: {evasion_graph: tangent}\n" + track);
+    ADD_FAILURE() << "a tangent evasion graph was taken";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("control.evasion_graph"), std::string::npos) << what;
+    EXPECT_NE(what.find("visibility, visibility-full or navmesh"), std::string::npos) << what;
+    EXPECT_NE(what.find("'tangent'"), std::string::npos) << what;
+  }
+}
+
+TEST(MissionControl, EvasionsOnAKeptMeshEqualTheVisibilityGraphsAndTakeNewRocksWithoutARebuild) {
+  ScratchDir dir;
+  const std::string track = "manoeuvres:\n  - track: {depth_m: 8, waypoints: [{x: 1000, y: 0}]}\n";
+  const Mission vis = mission_from(dir, track);
+  const Mission mesh = mission_from(dir, "control: {evasion_graph: navmesh}\n" + track);
+  MissionEnvironment env;
+  env.obstacles.ellipses.push_back(test::disc(300.0, 10.0, 20.0, "rock"));
+  env.obstacles.ellipses.push_back(test::disc(700.0, -12.0, 15.0, "wreck"));
+  const MissionPlan initial = expand_mission(vis, env.obstacles);
+  const PlannedMission a = plan_mission(vis, env, initial);
+  const PlannedMission b = plan_mission(mesh, env, initial);
+  ASSERT_EQ(a.resolutions.size(), 2u);
+  ASSERT_EQ(b.resolutions.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    ASSERT_TRUE(b.resolutions[i].resolved) << b.resolutions[i].problem;
+    EXPECT_NEAR(b.resolutions[i].added_m, a.resolutions[i].added_m, 1e-6) << i;
+  }
+  EXPECT_TRUE(b.remaining.empty());
+  const MissionPlanCheck verdict = check_mission_plan(b.plan, env, observation_options(mesh));
+  EXPECT_TRUE(verdict.safe) << verdict.problem;
+
+  // A rock found later goes into the kept mesh; the route round all three
+  // is as long as that of a planner given all three from the start, and of
+  // the visibility graph's.
+  EvasionPlanner kept(mesh, env);
+  std::string problem;
+  const std::vector<Vec2> first = kept.route(8.0, {0, 0}, {1000, 0}, problem);
+  ASSERT_FALSE(first.empty()) << problem;
+  ObstacleSet found;
+  found.ellipses.push_back(test::disc(500.0, 4.0, 18.0, "found"));
+  kept.add(found);
+  EXPECT_EQ(kept.environment().obstacles.ellipses.size(), 3u);
+  EXPECT_FALSE(kept.free_at(8.0, {500.0, 4.0 + 18.0 + 5.0}));
+  const std::vector<Vec2> again = kept.route(8.0, {0, 0}, {1000, 0}, problem);
+  ASSERT_FALSE(again.empty()) << problem;
+  MissionEnvironment all = env;
+  all.obstacles.ellipses.push_back(found.ellipses.front());
+  EvasionPlanner fresh(mesh, all), visibility(vis, all);
+  const double want = Route{fresh.route(8.0, {0, 0}, {1000, 0}, problem)}.length();
+  EXPECT_NEAR(Route{again}.length(), want, 1e-9 * want);
+  EXPECT_NEAR(Route{visibility.route(8.0, {0, 0}, {1000, 0}, problem)}.length(), want, 1e-6 * want);
+  EXPECT_GT(Route{again}.length(), Route{first}.length() + 1.0);
+  EXPECT_TRUE(check_route(again, ObstacleField(all.obstacles, kept.zone_margin())).safe);
 }

@@ -247,3 +247,43 @@ TEST(NavMeshInsert, AGraphInsertedIntoIsNotKeptAndAStartInTheNewZonesBandStepsOu
   EXPECT_NEAR(round.route.length(), both.result.route.length(), 1e-9 * both.result.route.length());
   EXPECT_TRUE(check_route(round.route.points, ObstacleField(all, 5.0)).safe);
 }
+
+TEST(NavMeshInsert, APlannerTakesFoundObstaclesIntoItsMeshAndItsChecker) {
+  ObstacleSet set;
+  set.ellipses.push_back(test::disc(0, 0, 10, "rock"));
+  Planner planner(set, {5.0, 0.5, GraphKind{"navmesh"}, SearchAlgorithm::astar});
+  const PlanOutcome before = planner.solve({{-100, 2}, {200, 2}});
+  ASSERT_TRUE(before.result.found);
+  ObstacleSet found;
+  found.ellipses.push_back(test::disc(80, 3, 12, "detection"));
+  // The old route runs through the new rock: the planner's checker must know it now.
+  ObstacleSet all = set;
+  all.ellipses.push_back(found.ellipses.front());
+  ASSERT_FALSE(check_route(before.result.route.points, ObstacleField(all, 5.0)).safe);
+  planner.insert(found);
+  EXPECT_EQ(planner.field().size(), 2u);
+  EXPECT_FALSE(check_route(before.result.route.points, planner.field()).safe);
+  // The same length as a planner built round both, and the checker passes it.
+  const PlanOutcome after = planner.solve({{-100, 2}, {200, 2}});
+  const PlanOutcome fresh =
+      Planner(all, {5.0, 0.5, GraphKind{"navmesh"}, SearchAlgorithm::astar}).solve({{-100, 2}, {200, 2}});
+  ASSERT_TRUE(after.result.found && fresh.result.found);
+  EXPECT_NEAR(after.result.route.length(), fresh.result.route.length(), 1e-9 * fresh.result.route.length());
+  EXPECT_GT(after.result.route.length(), before.result.route.length() + 1.0);
+  EXPECT_TRUE(after.check.safe) << after.check.describe();
+  // A bad obstacle is refused and changes nothing.
+  ObstacleSet bad;
+  bad.ellipses.push_back(test::disc(150, 0, 5, "bad"));
+  bad.ellipses.back().footprint.b = 2 * bad.ellipses.back().footprint.a;
+  EXPECT_THROW(planner.insert(bad), InputError);
+  EXPECT_EQ(planner.field().size(), 2u);
+  EXPECT_NEAR(planner.solve({{-100, 2}, {200, 2}}).result.route.length(), after.result.route.length(), 1e-12);
+  // A graph built per query cannot take them, and says which can.
+  Planner visibility(set, {5.0, 0.5, GraphKind::visibility, SearchAlgorithm::astar});
+  try {
+    visibility.insert(found);
+    ADD_FAILURE() << "the visibility graph took an obstacle";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("navmesh"), std::string::npos) << e.what();
+  }
+}

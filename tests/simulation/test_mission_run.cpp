@@ -199,3 +199,27 @@ TEST(MissionRun, LapsAreSailedWholeAndAHoldAtTheEndCounts) {
   EXPECT_NEAR(run.time_s, plan.length_m / 2.0 + 300.0, 0.03 * plan.length_m / 2.0);
   EXPECT_TRUE(has_event(run, "hold 300 s"));
 }
+
+TEST(MissionRun, ObjectsFoundUnderWayGoIntoAKeptMeshAndAreEvadedAsOnTheVisibilityGraph) {
+  ScratchDir dir;
+  const std::string track = "  - track: {depth_m: 8, speed_mps: 2, waypoints: [{x: 1500, y: 0}]}\n";
+  const Mission vis = mission_from(dir, track);
+  const Mission mesh = read_mission(dir.write("mesh.yaml",
+                                              "crs: EPSG:32632\nstart: {x: 0, y: 0, depth_m: 8}\n"
+                                              "control: {evasion_graph: navmesh}\nmanoeuvres:\n" +
+                                                  track));
+  ASSERT_EQ(mesh.control.evasion_graph, GraphKind{"navmesh"});
+  ObstacleSet unknown;
+  unknown.ellipses.push_back(test::disc(500.0, 2.0, 6.0, "container"));
+  unknown.ellipses.push_back(test::disc(1000.0, -2.0, 6.0, "buoy"));
+  const MissionRun a = run_mission(vis, {}, expand_mission(vis, {}), unknown);
+  const MissionRun b = run_mission(mesh, {}, expand_mission(mesh, {}), unknown);
+  ASSERT_TRUE(b.completed);
+  EXPECT_FALSE(b.collided);
+  EXPECT_EQ(b.detected.size(), 2u);
+  EXPECT_EQ(b.replans, a.replans);
+  EXPECT_GT(b.min_clearance_m, 3.0);
+  // The second contact's evasion is planned on the mesh the first was cut into: the same ways round.
+  EXPECT_NEAR(b.length_m, a.length_m, 0.5);
+  EXPECT_NEAR(b.time_s, a.time_s, 0.5);
+}

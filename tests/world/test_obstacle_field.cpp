@@ -45,6 +45,8 @@
 #include "geometry/reference_ellipse.hpp"
 #include "test_support.hpp"
 
+#include "planning/obstacle_builders.hpp"
+
 using namespace deepguide;
 
 namespace {
@@ -565,4 +567,34 @@ TEST(ObstacleField, ManyVertexPolygonsAgreeWithTheWholeRingScan) {
   EXPECT_GE(inside, test::cases(200));
   EXPECT_GE(in_hole, test::cases(20));
   EXPECT_GE(crossing, test::cases(100));
+}
+
+TEST(ObstaclesBeyond, WhatAGraphKeptForAPartMustTakeIn) {
+  ObstacleSet part;
+  part.ellipses.push_back(test::disc(0, 0, 5, "a"));
+  part.ellipses.push_back(test::disc(10, 0, 5, "b"));
+  const PolygonObstacle box{"", square(0.0, 0.0, 10.0), std::nullopt, std::nullopt};
+  part.polygons.push_back(box);
+  // The part's obstacles among others, in another order, one of them twice.
+  ObstacleSet all;
+  all.ellipses.push_back(test::disc(10, 0, 5, "b, renamed"));  // ids do not count, footprints do
+  all.ellipses.push_back(test::disc(50, 0, 5, "c"));
+  all.ellipses.push_back(test::disc(0, 0, 5, "a"));
+  all.ellipses.push_back(test::disc(0, 0, 5, "a again"));
+  all.polygons.push_back(box);
+  const std::optional<ObstacleSet> beyond = obstacles_beyond(all, part);
+  ASSERT_TRUE(beyond);
+  ASSERT_EQ(beyond->ellipses.size(), 2u);
+  EXPECT_EQ(beyond->ellipses[0].id, "c");
+  EXPECT_EQ(beyond->ellipses[1].id, "a again");
+  EXPECT_TRUE(beyond->polygons.empty());
+  EXPECT_TRUE(obstacles_beyond(part, part)->empty());
+  // A footprint a nanometre off is another obstacle: the part is not all there.
+  ObstacleSet moved = all;
+  moved.ellipses[0].footprint.centre.x() += 1e-9;
+  moved.ellipses[3].footprint.centre.x() += 1e-9;
+  EXPECT_FALSE(obstacles_beyond(moved, part));
+  ObstacleSet without = all;
+  without.polygons.clear();
+  EXPECT_FALSE(obstacles_beyond(without, part));
 }

@@ -283,8 +283,9 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
         s.number_or("vertical_clearance_m", {0.0, 1e4, true, "a clearance in metres"}, mission.vertical_clearance_m);
   }
   if (root.has("control")) {
-    const Mapping c(root.value("control"), source, "control.", {"identify", "identify_distance_m", "unknown_objects"},
-                    "a mapping of control keys (identify, identify_distance_m, unknown_objects)");
+    const Mapping c(root.value("control"), source, "control.",
+                    {"identify", "identify_distance_m", "unknown_objects", "evasion_graph"},
+                    "a mapping of control keys (identify, identify_distance_m, unknown_objects, evasion_graph)");
     if (c.has("identify")) {
       const YAML::Node ids = c.value("identify");
       if (!ids.IsSequence()) throw input_error(c.where("identify"), "a list of obstacle ids");
@@ -306,6 +307,14 @@ Mission parse(const YAML::Node& doc, const std::string& source, const std::strin
         throw input_error(c.where("unknown_objects"), "evade or identify", "'" + printable(what) + "'");
       mission.control.unknown_objects =
           what == "evade" ? ControlRules::Reaction::evade : ControlRules::Reaction::identify;
+    }
+    if (c.has("evasion_graph")) {
+      // Graphs whose routes are the shortest polylines among the zones: the evasion's lines.
+      const char* kEvasionGraphs = "visibility, visibility-full or navmesh";
+      const std::string what = c.text("evasion_graph", kEvasionGraphs);
+      if (what != "visibility" && what != "visibility-full" && what != "navmesh")
+        throw input_error(c.where("evasion_graph"), kEvasionGraphs, "'" + printable(what) + "'");
+      mission.control.evasion_graph = GraphKind{what};
     }
   }
   const YAML::Node list = root.value("manoeuvres");

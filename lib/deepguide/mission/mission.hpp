@@ -20,6 +20,7 @@
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/geometry/vec2.hpp"
+#include "deepguide/planning/planner_options.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
 #include "deepguide/world/local_frame.hpp"
 
@@ -75,6 +76,10 @@ struct ControlRules {
   std::vector<std::string> identify;  ///< obstacle ids
   double identify_distance_m = 25.0;  ///< from the outline; at least the corridor (margin + half width)
   Reaction unknown_objects = Reaction::evade;
+  /// What plans the evasions (`control.evasion_graph`): the reduced visibility
+  /// graph round each evasion, or a navigation mesh kept per depth
+  /// (mission/evasion_planner.hpp). visibility-full is accepted too.
+  GraphKind evasion_graph = GraphKind::visibility;
 };
 
 struct Mission {

@@ -9,106 +9,17 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/mission/evasion_planner.hpp"
 #include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/plan_splice.hpp"
-#include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "deepguide/world/water_volume.hpp"
 
 namespace deepguide {
 namespace {
 
-constexpr double kExtraZone = 0.2;      // m beyond the corridor: the header
-constexpr double kStep = 2.0;           // m: pieces of the danger scan, steps of the goal-point search
-constexpr double kNoGoTolerance = 2.0;  // m: how far no-go polygons may reach outside the shallow cells
+constexpr double kStep = 2.0;  // m: pieces of the danger scan, steps of the goal-point search
 constexpr int kAttempts = 4;
-
-// What planning the evasions of one mission shares.
-class Evasions {
- public:
-  Evasions(const Evasions&) = delete;  // volume_ points into field_
-  Evasions& operator=(const Evasions&) = delete;
-  Evasions(const Mission& mission, const MissionEnvironment& env)
-      : mission_(mission),
-        env_(env),
-        observe_(observation_options(mission)),
-        zone_margin_(observe_.margin_m + observe_.half_width_m + kExtraZone),
-        field_(env.obstacles, zone_margin_),
-        volume_(field_, env.floor.get(),
-                {observe_.vertical_clearance_m, 0.0, std::numeric_limits<double>::infinity()}) {}
-
-  const ObservationOptions& observe() const { return observe_; }
-  const WaterVolume& volume() const { return volume_; }
-  double zone_margin() const { return zone_margin_; }
-
-  // What a vehicle at `depth` must go around: obstacles whose top it does not
-  // clear, and the sea floor's no-go polygons there.
-  const ObstacleSet& obstacles_at(double depth) {
-    auto found = at_depth_.find(depth);
-    if (found != at_depth_.end()) return found->second;
-    ObstacleSet out;
-    const std::size_t ellipses = env_.obstacles.ellipses.size();
-    for (std::size_t i = 0; i < env_.obstacles.size(); ++i) {
-      if (!(volume_.zone_top(i) < depth)) continue;
-      if (i < ellipses)
-        out.ellipses.push_back(env_.obstacles.ellipses[i]);
-      else
-        out.polygons.push_back(env_.obstacles.polygons[i - ellipses]);
-    }
-    if (env_.floor) {
-      NoGoOptions o;
-      o.operating_depth_m = depth;
-      o.vertical_clearance_m = observe_.vertical_clearance_m;
-      o.simplify_tolerance_m = kNoGoTolerance;
-      NoGoArea area = compute_no_go(*env_.floor, mission_.frame, o);
-      out.polygons.insert(out.polygons.end(), area.polygons.begin(), area.polygons.end());
-    }
-    return at_depth_.emplace(depth, std::move(out)).first->second;
-  }
-
-  std::vector<Vec2> route(double depth, const Vec2& from, const Vec2& to, std::string& problem) {
-    if ((to - from).norm() < 1e-6) return {from, to};
-    PlannerOptions options;
-    options.margin = zone_margin_;
-    options.graph = GraphKind::visibility;
-    try {
-      const SingleQueryPlan plan = plan_single_query(obstacles_at(depth), {from, to, false}, options);
-      if (!plan.outcome.result.found) {
-        problem = "no safe route at " + fixed(depth, 1) + " m" + " from " + point_text(from) + " to " + point_text(to) +
-                  (plan.outcome.result.message.empty() ? "" : ": " + plan.outcome.result.message);
-        return {};
-      }
-      if (!plan.outcome.check.safe) {
-        problem =
-            "the route at " + fixed(depth, 1) + " m" + " fails the route checker: " + plan.outcome.check.describe();
-        return {};
-      }
-      return plan.outcome.result.route.points;
-    } catch (const NoRouteError& e) {
-      problem = "no safe route at " + fixed(depth, 1) + " m" + ": " + e.what();
-    } catch (const InputError& e) {
-      problem = "no safe route at " + fixed(depth, 1) + " m" + ": " + e.what();
-    }
-    return {};
-  }
-
-  bool free_at(double depth, const Vec2& p) {
-    auto found = fields_.find(depth);
-    if (found == fields_.end()) found = fields_.emplace(depth, ObstacleField(obstacles_at(depth), zone_margin_)).first;
-    return found->second.is_free(p);
-  }
-
- private:
-  const Mission& mission_;
-  const MissionEnvironment& env_;
-  ObservationOptions observe_;
-  double zone_margin_;
-  ObstacleField field_;
-  WaterVolume volume_;
-  std::map<double, ObstacleSet> at_depth_;
-  std::map<double, ObstacleField> fields_;
-};
 
 double deepest_between(const TrackDanger& danger, const MissionPlan& plan, double from_m, double to_m) {
   double d = std::max(position_at(plan, from_m).depth_m, position_at(plan, to_m).depth_m);
@@ -187,7 +98,7 @@ namespace {
 
 // One attempt at resolving `next` on `plan` (the header's steps 1 to 4);
 // fills r and returns the new plan, or none with r.problem set.
-std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironment& env, Evasions& evasions,
+std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironment& env, EvasionPlanner& evasions,
                                    const MissionPlan& plan, const Conflict& next, double not_before, Resolution& r) {
   const PlanPosition at_conflict = position_at(plan, next.along_m);
   const double speed = std::max(at_conflict.speed_mps, 1e-3);
@@ -280,9 +191,15 @@ std::optional<MissionPlan> resolve(const Mission& mission, const MissionEnvironm
 
 }  // namespace
 
-PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& env, const MissionPlan& initial,
+PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& environment, const MissionPlan& initial,
                             double from_m) {
-  Evasions evasions(mission, env);
+  EvasionPlanner evasions(mission, environment);
+  return plan_mission(mission, evasions, initial, from_m);
+}
+
+PlannedMission plan_mission(const Mission& mission, EvasionPlanner& evasions, const MissionPlan& initial,
+                            double from_m) {
+  const MissionEnvironment& env = evasions.environment();
   PlannedMission out;
   out.plan = initial;
   double not_before = std::max(0.0, from_m);  // the end of the last evasion

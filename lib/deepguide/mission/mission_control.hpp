@@ -8,7 +8,8 @@
 //   1. Goal-point generation (mission/goal_point.hpp) picks the departure
 //      and the rendezvous on the remaining route past the obstacle.
 //   2. The evasion's depth is the deepest the plan goes between them; the 2-D
-//      planner (planning/single_query.hpp, visibility graph) routes at that
+//      planner (mission/evasion_planner.hpp: the visibility graph, or a
+//      navigation mesh with `control.evasion_graph: navmesh`) routes at that
 //      depth around every obstacle whose top it does not clear and around the
 //      sea floor's no-go polygons there (world/no_go.hpp, from the same sea
 //      floor the checkers use). The zone is the corridor (margin + half the
@@ -37,6 +38,8 @@
 #include "deepguide/mission/mission_environment.hpp"
 
 namespace DEEPGUIDE_API deepguide {
+
+class EvasionPlanner;
 
 struct Resolution {
   Conflict conflict;  ///< as observed on the plan of the time (along_m in that plan)
@@ -68,6 +71,11 @@ ControlRules::Reaction choose_reaction(const ControlRules& rules, const Obstacle
 /// more along it (a vehicle under way replans only what lies ahead of it;
 /// evasions leave from there at the earliest).
 PlannedMission plan_mission(const Mission& mission, const MissionEnvironment& environment, const MissionPlan& initial,
+                            double from_m = 0.0);
+/// The same with what `evasions` keeps (its environment, its meshes): a
+/// vehicle under way plans again as it finds obstacles without building
+/// every depth's mesh anew.
+PlannedMission plan_mission(const Mission& mission, EvasionPlanner& evasions, const MissionPlan& initial,
                             double from_m = 0.0);
 
 }  // namespace deepguide

@@ -86,6 +86,9 @@ struct GraphEntry {
   /// The graph as bytes its `build` reads back (GraphBuild::prepared), for
   /// `chart prepare --graphs`; null when the graph cannot be kept.
   std::function<std::vector<std::uint8_t>(const RouteGraph&)> save = {};
+  /// Takes obstacles found after the build into the graph without building
+  /// it again (Planner::insert); null when the graph must be built anew.
+  std::function<void(RouteGraph&, const ObstacleSet&)> insert = {};
 };
 
 /// Adds a graph kind. Throws InputError for an empty name, one with a comma

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
@@ -50,6 +51,36 @@ struct Planner::Impl {
   // is found, to say where the radius closes the way.
   std::unique_ptr<RouteGraph> plain;
 };
+
+namespace {
+
+// A graph kept for the prepared chart's obstacles alone
+// (PlannerOptions::prepared_obstacles), loaded and given the obstacles beyond
+// them; null when none is kept for them at this margin, when they are not
+// all among `all.obstacles`, or when the graph cannot take more.
+std::unique_ptr<RouteGraph> extended_kept_graph(const GraphEntry& entry, const GraphBuild& all) {
+  const PlannerOptions& options = all.options;
+  if (!options.prepared || !options.prepared_obstacles || !entry.save || !entry.insert) return nullptr;
+  const ObstacleSet& part = *options.prepared_obstacles;
+  GraphBuild build{part, all.field, options, all.focus, std::max(options.margin, min_graph_margin(part))};
+  if (build.margin != all.margin) return nullptr;  // the zones would be made at another margin
+  const PreparedGraphRecord* record = find_prepared(*options.prepared, entry.name, prepared_graph_key(build));
+  if (record == nullptr) return nullptr;
+  const std::optional<ObstacleSet> beyond = obstacles_beyond(all.obstacles, part);
+  if (!beyond) return nullptr;
+  build.prepared = &record->data;
+  std::unique_ptr<RouteGraph> graph;
+  try {
+    graph = entry.build(build);
+  } catch (const InputError& e) {
+    throw InputError(printable(record->source, 240) + ": table deepguide_graphs, graph '" + entry.name +
+                     "': " + e.what());
+  }
+  if (graph) entry.insert(*graph, *beyond);
+  return graph;
+}
+
+}  // namespace
 
 Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const QueryFocus& focus) : options_(options) {
   // 100 km is far beyond any safety margin, and keeps the zones' polygons
@@ -105,7 +136,10 @@ Planner::Planner(ObstacleSet obstacles, const PlannerOptions& options, const Que
   const PreparedGraphRecord* kept_graph = options.prepared && entry.save
                                               ? find_prepared(*options.prepared, entry.name, prepared_graph_key(build))
                                               : nullptr;
-  if (kept_graph != nullptr) {
+  if (kept_graph == nullptr) impl_->graph = extended_kept_graph(entry, build);
+  if (impl_->graph) {
+    impl_->prepared = true;
+  } else if (kept_graph != nullptr) {
     build.prepared = &kept_graph->data;
     try {
       impl_->graph = entry.build(build);
@@ -136,6 +170,22 @@ PreparedGraphRecord Planner::save_graph() const {
   const GraphBuild build{impl_->field.obstacles(), impl_->field, options_, QueryFocus{}, impl_->graph_margin};
   return {entry.name, prepared_graph_key(build), "", entry.save(*impl_->graph), ""};
 }
+void Planner::insert(const ObstacleSet& found) {
+  const GraphEntry& entry = graph_entry(options_.graph);
+  if (!entry.insert) {
+    throw InputError("graph '" + entry.name + "': cannot take obstacles after its build (expected " +
+                     graph_names_text([](const GraphEntry& e) { return static_cast<bool>(e.insert); }) + ")");
+  }
+  if (found.empty()) return;
+  ObstacleSet all = impl_->field.obstacles();
+  all.ellipses.insert(all.ellipses.end(), found.ellipses.begin(), found.ellipses.end());
+  all.polygons.insert(all.polygons.end(), found.polygons.begin(), found.polygons.end());
+  ObstacleField field(std::move(all), options_.margin);  // checks them before the graph changes
+  entry.insert(*impl_->graph, found);
+  // Move-assigned: a graph holding a reference to the field sees the new one.
+  impl_->field = std::move(field);
+}
+
 RouteGraph& Planner::graph() { return *impl_->graph; }
 const RouteGraph& Planner::graph() const { return *impl_->graph; }
 

@@ -49,6 +49,12 @@ class Planner {
   /// a safety zone (the start only without `escape`, or when the way out
   /// ends in another zone). A search that finds nothing returns found == false.
   PlanOutcome solve(const PlanningProblem& problem);
+  /// Obstacles found after the build (a sonar's contacts, an import into a
+  /// store): into the graph without a rebuild (GraphEntry::insert: the
+  /// navigation mesh cuts them out of its water), and into the field that
+  /// checks every route. InputError for a graph that cannot take them (the
+  /// message names those that can) or a bad obstacle; then nothing changes.
+  void insert(const ObstacleSet& found);
 
   const ObstacleField& field() const;
   const PlannerOptions& options() const { return options_; }

@@ -73,6 +73,12 @@ struct PlannerOptions {
   /// Planner loads the one of its graph kind whose key fits the obstacles and
   /// these options (prepared_graphs.hpp) instead of building it.
   std::shared_ptr<const std::vector<PreparedGraphRecord>> prepared = nullptr;
+  /// The obstacles the `prepared` graphs were built over (the prepared
+  /// chart's, as read back). When none is kept under the key of all the
+  /// obstacles, one kept under these is loaded and the obstacles beyond them
+  /// (a store's, a file's) are inserted into it, for a graph that can take
+  /// them (GraphEntry::insert: the navmesh), instead of building it anew.
+  std::shared_ptr<const ObstacleSet> prepared_obstacles = nullptr;
 };
 
 /// A registered graph's name (graph_registry.hpp) / "astar", "dijkstra"; InputError otherwise.

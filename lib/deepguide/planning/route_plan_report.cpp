@@ -260,6 +260,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   }
   if (r.waypoint_grid_m) options.grid = waypoint_grid_for(r.problem.start, r.problem.goal, *r.waypoint_grid_m);
   options.prepared = charted.prepared_graphs;
+  options.prepared_obstacles = charted.prepared_obstacles;
 
   report.plan = plan_single_query(report.obstacles, r.problem, options);
   const PlanOutcome& out = report.plan.outcome;

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/mission/evasion_planner.hpp"
 #include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
@@ -124,6 +126,12 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
   plan_track.reset(run.plan, 0.0, mission.start, kTrackWindow_m);
   double plan_speed = first.speed_mps;  // the plan's speed where the vehicle was a step ago
   const ObservationOptions observe = observation_options(mission);
+  // Mission control's evasions, kept across detections: a contact it plans
+  // round is cut into the kept meshes (EvasionPlanner::add). One it only
+  // waits on (a later, nearer estimate replaces it) leaves them stale: then
+  // they are made again from the chart and the contacts handled.
+  std::unique_ptr<EvasionPlanner> evasions;
+  bool evasions_stale = true;
 
   bool reactive = false;
   double reactive_until = 0.0;
@@ -241,12 +249,16 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         Mission rules = mission;
         if (mission.control.unknown_objects == ControlRules::Reaction::identify)
           rules.control.identify.push_back(object.id);
-        MissionEnvironment seen_env = env;
-        seen_env.obstacles.ellipses.insert(seen_env.obstacles.ellipses.end(), run.detected.ellipses.begin(),
-                                           run.detected.ellipses.end());
-        seen_env.obstacles.ellipses.push_back(object);
+        if (evasions_stale) {
+          MissionEnvironment seen_env = env;
+          seen_env.obstacles.ellipses.insert(seen_env.obstacles.ellipses.end(), run.detected.ellipses.begin(),
+                                             run.detected.ellipses.end());
+          evasions = std::make_unique<EvasionPlanner>(mission, std::move(seen_env));
+          evasions_stale = false;
+        }
+        evasions->add(contact);
         const double from_m = plan_track.along() + speed * options.planning_delay_s + lead;
-        PlannedMission planned = plan_mission(rules, seen_env, run.plan, from_m);
+        PlannedMission planned = plan_mission(rules, *evasions, run.plan, from_m);
         const auto mine = std::find_if(planned.resolutions.begin(), planned.resolutions.end(),
                                        [&](const Resolution& r) { return r.conflict.with == object.id; });
         const bool ok = mine != planned.resolutions.end() && planned.remaining.empty() &&
@@ -256,6 +268,7 @@ MissionRun run_mission(const Mission& mission, const MissionEnvironment& env, co
         const bool imminent = danger->along_m - plan_track.along() <= speed * options.planning_delay_s + 2.0 * lead;
         if (!ok && !imminent) {
           waiting.emplace_back(c.centre, t + kRetry_s);  // try again as it comes nearer
+          evasions_stale = true;
           continue;
         }
         handled.push_back(c.centre);

@@ -75,8 +75,10 @@ ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const Loca
     EncNoGo no_go = chart_no_go(enc, frame, o);
     if (no_go.cells.empty()) {  // one prepared chart (chart_no_go refuses more)
       auto graphs = read_prepared_graphs(enc.front());
-      if (!graphs.empty())
+      if (!graphs.empty()) {
         out.prepared_graphs = std::make_shared<const std::vector<PreparedGraphRecord>>(std::move(graphs));
+        out.prepared_obstacles = std::make_shared<const ObstacleSet>(no_go.obstacles);
+      }
     }
     // One row for the cells read together.
     ChartFileObstacles file{no_go.cells.empty()       ? enc.front()

@@ -56,6 +56,9 @@ struct ChartObstacles {
   std::shared_ptr<const EncNoGo> enc;
   /// The graphs a prepared chart keeps (prepared_graph_record.hpp; null when none).
   std::shared_ptr<const std::vector<PreparedGraphRecord>> prepared_graphs;
+  /// The prepared chart's own obstacles, which its graphs were built over
+  /// (PlannerOptions::prepared_obstacles; null when none).
+  std::shared_ptr<const ObstacleSet> prepared_obstacles;
   /// Where the bathymetry rasters know the depth (their outlines, local frame;
   /// empty without rasters). A route must stay inside: route_leaves_coverage.
   BgMultiPolygon raster_coverage;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <unordered_map>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/fnv1a.hpp"
@@ -56,6 +58,37 @@ std::string footprint_fingerprint(const ObstacleSet& obstacles) {
     for (const BgPolygon::ring_type& inner : p.footprint.inners()) ring(inner);
   }
   return h.text();
+}
+
+std::optional<ObstacleSet> obstacles_beyond(const ObstacleSet& all, const ObstacleSet& part) {
+  // One obstacle's fingerprint: the set's of it alone.
+  const auto print = [](const auto& obstacle) {
+    ObstacleSet one;
+    if constexpr (std::is_same_v<std::decay_t<decltype(obstacle)>, EllipticCylinder>) {
+      one.ellipses.push_back(obstacle);
+    } else {
+      one.polygons.push_back(obstacle);
+    }
+    return footprint_fingerprint(one);
+  };
+  std::unordered_map<std::string, std::size_t> left;
+  for (const EllipticCylinder& e : part.ellipses) ++left[print(e)];
+  for (const PolygonObstacle& p : part.polygons) ++left[print(p)];
+  ObstacleSet out;
+  std::size_t matched = 0;
+  const auto take = [&](const auto& obstacle, auto& into) {
+    auto it = left.find(print(obstacle));
+    if (it != left.end() && it->second > 0) {
+      --it->second;
+      ++matched;
+    } else {
+      into.push_back(obstacle);
+    }
+  };
+  for (const EllipticCylinder& e : all.ellipses) take(e, out.ellipses);
+  for (const PolygonObstacle& p : all.polygons) take(p, out.polygons);
+  if (matched != part.size()) return std::nullopt;
+  return out;
 }
 
 }  // namespace deepguide

@@ -54,4 +54,10 @@ std::size_t remove_passable(ObstacleSet& obstacles, double depth_m, double verti
 /// is taken only for the same obstacles read the same way.
 std::string footprint_fingerprint(const ObstacleSet& obstacles);
 
+/// The obstacles of `all` beyond those of `part` (footprints equal bit for
+/// bit, each counted as often as it occurs), in `all`'s order; nullopt when
+/// `part` is not wholly in `all`. What a graph kept for `part` must take in
+/// to stand for `all` (prepared_graphs.hpp).
+std::optional<ObstacleSet> obstacles_beyond(const ObstacleSet& all, const ObstacleSet& part);
+
 }  // namespace deepguide

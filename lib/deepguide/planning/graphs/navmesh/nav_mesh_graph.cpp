@@ -173,6 +173,7 @@ GraphEntry nav_mesh_graph_entry() {
   e.can = {.turn_radius = true, .finished_by_planner = true, .repairs = true, .covers_area = true};
   e.build = [](const GraphBuild& in) -> std::unique_ptr<RouteGraph> { return std::make_unique<NavMeshGraph>(in); };
   e.save = [](const RouteGraph& g) { return g.as<NavMeshGraph>()->save(); };
+  e.insert = [](RouteGraph& g, const ObstacleSet& found) { g.as<NavMeshGraph>()->insert(found); };
   return e;
 }
 
