@@ -412,6 +412,16 @@ Eigen::Vector2d to_local_checked(const LocalFrame& frame, const Eigen::Vector2d&
 
 }  // namespace
 
+Ellipse ellipse_from_fields(const LocalFrame& frame, const Eigen::Vector2d& centre, const Eigen::Vector2d& lonlat,
+                            double semi_major_m, double semi_minor_m, double orientation_deg) {
+  // Where the frame stretches the axes they are made frame metres; where it
+  // shrinks them (at most 0.05 %) they stay as given, as every other size
+  // from a chart does.
+  const double scale = std::max(1.0, frame.scale_at(lonlat).greatest);
+  const double k = std::isfinite(scale) ? scale : 1.0;
+  return Ellipse{centre, semi_major_m * k, semi_minor_m * k, frame.heading_to_local(orientation_deg, centre)};
+}
+
 LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const ObstacleReadOptions& options) {
   gdal::ensure_registered();
   // Fail on a bad --crs before reading anything.
@@ -445,14 +455,8 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
       if (r.is_ellipse) {
         EllipticCylinder c;
         c.id = r.id;
-        c.footprint.centre = to_local_checked(*frame, r.centre, r.where);
-        // Axes are true metres: where the frame stretches them they are made
-        // frame metres (frame_scale.hpp); where it shrinks them (at most
-        // 0.05 %) they stay as given, as every other size from a chart does.
-        const double scale = std::max(1.0, frame->scale_at(r.centre).greatest);
-        c.footprint.a = r.a * (std::isfinite(scale) ? scale : 1.0);
-        c.footprint.b = r.b * (std::isfinite(scale) ? scale : 1.0);
-        c.footprint.theta = frame->heading_to_local(r.heading_deg, c.footprint.centre);
+        c.footprint =
+            ellipse_from_fields(*frame, to_local_checked(*frame, r.centre, r.where), r.centre, r.a, r.b, r.heading_deg);
         c.height_m = r.height_m;
         c.top_depth_m = r.top_depth_m;
         out.obstacles.ellipses.push_back(std::move(c));

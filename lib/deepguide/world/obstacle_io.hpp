@@ -83,6 +83,14 @@ struct LoadedObstacles {
 /// frame. Throws InputError (one line: file, feature, field, expectation).
 LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const ObstacleReadOptions& options = {});
 
+/// An elliptic obstacle's footprint in `frame` from the fields a file gives
+/// it: the centre (`centre` in the frame, `lonlat` the same point), the
+/// semi-axes in true metres (made frame metres where the frame stretches
+/// them, frame_scale.hpp) and orientation_deg, the major axis clockwise from
+/// true north. What the readers and deepguide.plan's `ellipses` share.
+Ellipse ellipse_from_fields(const LocalFrame& frame, const Eigen::Vector2d& centre, const Eigen::Vector2d& lonlat,
+                            double semi_major_m, double semi_minor_m, double orientation_deg);
+
 /// Output formats, chosen from the file extension.
 enum class ObstacleFormat { geojson, geopackage, csv };
 /// Throws InputError for an extension deepguide does not write.

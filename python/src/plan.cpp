@@ -1,0 +1,231 @@
+// deepguide.plan: what `deepguide plan` does, from Python. The frame, the
+// obstacles and the ends are read by the same library calls as the CLI's
+// (load_obstacles, parse_position), the route by plan_route_request, so a
+// route here has the CLI's length bit for bit; to_dict() is its --json.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/planning/route_plan_report.hpp"
+#include "deepguide/world/obstacle_io.hpp"
+
+namespace py = pybind11;
+
+namespace deepguide::python {
+namespace {
+
+// A position as the CLI reads it: the same text, so the same double.
+std::string position_text(const std::pair<double, double>& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g,%.17g", p.first, p.second);
+  return text;
+}
+
+using EllipseRow = std::array<double, 5>;
+
+// Rows (x, y, semi_major_m, semi_minor_m, orientation_deg), read while the
+// GIL is held.
+std::vector<EllipseRow> ellipse_rows(const py::array& array) {
+  const auto rows = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!rows || rows.ndim() != 2 || rows.shape(1) != 5) {
+    throw InputError(
+        "`ellipses`: expected an array of shape (n, 5): x, y, semi_major_m, semi_minor_m, orientation_deg");
+  }
+  std::vector<EllipseRow> out(static_cast<std::size_t>(rows.shape(0)));
+  const auto r = rows.unchecked<2>();
+  for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+    for (py::ssize_t k = 0; k < 5; ++k) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = r(i, k);
+  }
+  return out;
+}
+
+// The rows as obstacles: centres in the frame's CRS, axes and orientation as an obstacle file gives them.
+std::vector<EllipticCylinder> ellipses_in(const LocalFrame& frame, const std::vector<EllipseRow>& rows) {
+  std::vector<EllipticCylinder> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& [x, y, a, b, heading] = rows[i];
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      throw InputError("`ellipses` row " + std::to_string(i) + ": expected a finite x and y, got " + std::to_string(x) +
+                       ", " + std::to_string(y));
+    }
+    EllipticCylinder e;
+    e.id = "ellipses[" + std::to_string(i) + "]";
+    const Vec2 centre(x, y);
+    e.footprint = ellipse_from_fields(frame, centre, frame.to_lonlat(centre), a, b, heading);
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+// A planned route: the report the CLI prints, with the frame it is in.
+struct Route {
+  std::shared_ptr<const RoutePlanReport> report;
+  LocalFrame frame;
+
+  py::array_t<double> xy() const {
+    const auto& pts = report->route.points;
+    py::array_t<double> out({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
+    auto o = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < pts.size(); ++i) o(i, 0) = pts[i].x(), o(i, 1) = pts[i].y();
+    return out;
+  }
+  py::array_t<double> lonlat() const {
+    const auto& pts = report->route.points;
+    py::array_t<double> out({static_cast<py::ssize_t>(pts.size()), py::ssize_t{2}});
+    auto o = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const Vec2 ll = frame.to_lonlat(pts[i]);
+      o(i, 0) = ll.x(), o(i, 1) = ll.y();
+    }
+    return out;
+  }
+  py::object to_dict() const { return py::module_::import("json").attr("loads")(report->to_json().dump()); }
+  std::string repr() const {
+    char text[200];
+    std::snprintf(text, sizeof text, "Route(length_m=%.2f, waypoints=%zu, graph='%s', crs='%s')",
+                  report->route.length(), report->route.points.size(), to_string(report->options.graph).c_str(),
+                  frame.id().c_str());
+    return text;
+  }
+};
+
+struct PlanArgs {
+  std::pair<double, double> start, goal;
+  std::vector<std::string> obstacles, charts;
+  std::optional<py::array> ellipses;
+  std::string crs, src_crs;
+  std::optional<std::string> graph;
+  std::string search, cost;
+  double margin, tolerance;
+  std::optional<double> depth, turn_radius;
+  double vertical_clearance;
+  bool escape;
+  std::string vehicle, speed, current;
+  std::size_t max_expansions;
+};
+
+Route plan(const PlanArgs& a) {
+  if (a.obstacles.empty() && a.charts.empty() && !a.ellipses) {
+    throw InputError("`obstacles`: expected obstacle files, `charts` or `ellipses` (or several of them)");
+  }
+  if (a.ellipses && a.crs.empty()) {
+    throw InputError("`crs`: expected the CRS the `ellipses` array is in, e.g. 'EPSG:32632'");
+  }
+  const std::vector<EllipseRow> rows = a.ellipses ? ellipse_rows(*a.ellipses) : std::vector<EllipseRow>{};
+  RoutePlanRequest r;
+  r.charts = a.charts;
+  r.src_crs = a.src_crs;
+  r.margin_m = a.margin;
+  r.tolerance_m = a.tolerance;
+  r.turn_radius_m = a.turn_radius;
+  if (a.depth) r.depth_m = *a.depth;
+  r.vertical_clearance_m = a.vertical_clearance;
+  r.problem.escape = a.escape;
+  r.search = parse_search(a.search);
+  r.cost = parse_cost_kind(a.cost);
+  r.vehicle = a.vehicle;
+  r.speed = a.speed;
+  r.current_file = a.current;
+  r.max_expansions = a.max_expansions;
+  r.graph = a.graph ? parse_graph_kind(*a.graph) : default_plan_graph(r.charts, r.cost, false, false);
+  if (graph_entry(r.graph).can.in_depth) {
+    throw InputError("`graph` " + r.graph.name + ": routes in depth are not in the Python module yet");
+  }
+  const std::string from = position_text(a.start), to = position_text(a.goal);
+  // As the CLI: the frame is `crs`, else the UTM zone of the obstacles, else of the start (then lon, lat).
+  py::gil_scoped_release free;
+  ObstacleReadOptions read{a.crs, a.src_crs};
+  if (a.crs.empty()) read.fallback_lonlat = parse_lonlat(from, "`start`");
+  LoadedObstacles loaded = load_obstacles(a.obstacles, read);
+  r.obstacles = std::move(loaded.obstacles);
+  for (EllipticCylinder& e : ellipses_in(loaded.frame, rows)) r.obstacles.ellipses.push_back(std::move(e));
+  r.problem.start = parse_position(from, "`start`", loaded.frame, !a.crs.empty());
+  r.problem.goal = parse_position(to, "`goal`", loaded.frame, !a.crs.empty());
+  auto report = std::make_shared<const RoutePlanReport>(plan_route_request(loaded.frame, r));
+  if (const auto why = report->stop_reason()) throw NoRouteError(*why);
+  return Route{std::move(report), loaded.frame};
+}
+
+}  // namespace
+
+void bind_plan(py::module_& m) {
+  py::class_<Route>(m, "Route", "A route `plan` found, with what the CLI reports about it.")
+      .def_property_readonly("xy", &Route::xy, "Waypoints in the planning frame (metres), an (n, 2) float64 array.")
+      .def_property_readonly("lonlat", &Route::lonlat, "Waypoints as longitude, latitude (degrees, WGS 84), (n, 2).")
+      .def_property_readonly(
+          "length_m", [](const Route& r) { return r.report->route.length(); }, "Length of the route (m).")
+      .def_property_readonly(
+          "crs", [](const Route& r) { return r.frame.id(); }, "The planning frame, e.g. 'EPSG:32632'.")
+      .def_property_readonly(
+          "graph", [](const Route& r) { return to_string(r.report->options.graph); }, "The graph that planned it.")
+      .def("to_dict", &Route::to_dict, "The report as `deepguide plan --json` prints it (the same keys).")
+      .def(
+          "text", [](const Route& r) { return r.report->to_text(); }, "The report as `deepguide plan` prints it.")
+      .def("__repr__", &Route::repr);
+
+  m.def(
+      "plan",
+      [](std::pair<double, double> start, std::pair<double, double> goal, std::vector<std::string> obstacles,
+         std::vector<std::string> charts, std::optional<py::array> ellipses, std::string crs, std::string src_crs,
+         std::optional<std::string> graph, std::string search, std::string cost, double margin, double tolerance,
+         std::optional<double> depth, std::optional<double> turn_radius, double vertical_clearance, bool escape,
+         std::string vehicle, std::string speed, std::string current, std::size_t max_expansions) {
+        return plan(PlanArgs{start,
+                             goal,
+                             std::move(obstacles),
+                             std::move(charts),
+                             std::move(ellipses),
+                             std::move(crs),
+                             std::move(src_crs),
+                             std::move(graph),
+                             std::move(search),
+                             std::move(cost),
+                             margin,
+                             tolerance,
+                             depth,
+                             turn_radius,
+                             vertical_clearance,
+                             escape,
+                             std::move(vehicle),
+                             std::move(speed),
+                             std::move(current),
+                             max_expansions});
+      },
+      py::arg("start"), py::arg("goal"), py::kw_only(), py::arg("obstacles") = std::vector<std::string>{},
+      py::arg("charts") = std::vector<std::string>{}, py::arg("ellipses") = py::none(), py::arg("crs") = "",
+      py::arg("src_crs") = "", py::arg("graph") = py::none(), py::arg("search") = "astar", py::arg("cost") = "length",
+      py::arg("margin") = 5.0, py::arg("tolerance") = PlannerOptions{}.tolerance, py::arg("depth") = py::none(),
+      py::arg("turn_radius") = py::none(), py::arg("vertical_clearance") = 2.0, py::arg("escape") = false,
+      py::arg("vehicle") = "", py::arg("speed") = "cruise", py::arg("current") = "", py::arg("max_expansions") = 0,
+      R"(The shortest (or fastest, or most economical) safe route from `start` to `goal`, as `deepguide plan`.
+
+start, goal: (lon, lat) in degrees, or (x, y) in `crs` when `crs` is given.
+obstacles: obstacle files; charts: bathymetry rasters, S-57 cells or folders, prepared charts, hazard files.
+ellipses: an (n, 5) array of x, y, semi_major_m, semi_minor_m, orientation_deg (clockwise from grid north) in `crs`.
+graph: a graph of the registry (deepguide.graphs()); None: what `plan` takes by default.
+margin, tolerance, depth, turn_radius, vertical_clearance: metres, as the CLI's flags.
+The GIL is released while it plans, so threads plan in parallel.
+Raises InputError (bad input), NoRouteError (no safe route).)");
+
+  m.def(
+      "graphs",
+      [] {
+        std::vector<std::string> names;
+        for (const GraphEntry& e : graph_entries()) names.push_back(e.name);
+        return names;
+      },
+      "The graph kinds `plan` takes, by name.");
+}
+
+}  // namespace deepguide::python
