@@ -13,6 +13,13 @@ PartialError. `plan` releases the GIL while it works, so threads plan in
 parallel.
 """
 
+import csv as _csv
+import io as _io
+import os as _os
+
+import numpy as _np
+
+from . import _deepguide
 from ._deepguide import (
     InputError,
     ManoeuvreError,
@@ -20,17 +27,124 @@ from ._deepguide import (
     PartialError,
     Route,
     __version__,
+    generate_suite,
     graphs,
     plan,
 )
 
 __all__ = [
+    "Evaluation",
     "InputError",
     "ManoeuvreError",
     "NoRouteError",
     "PartialError",
     "Route",
+    "Simulation",
     "__version__",
+    "evaluate",
+    "generate_suite",
     "graphs",
     "plan",
+    "simulate",
 ]
+
+
+class Simulation:
+    """One reactive run, as `deepguide simulate` makes it.
+
+    trajectory: a NumPy structured array, one record per sample, with the
+    trajectory CSV's fields and units (docs/SIMULATION.md) at full precision:
+    time_s, x_m, y_m, heading_deg, course_cmd_deg, rate_cmd_deg_s,
+    rate_ref_deg_s, rate_deg_s (turning rates clockwise positive), speed_mps,
+    clearance_m, sector, status, course_unreachable.
+    to_dict(): the statistics as `simulate --json` prints them.
+    """
+
+    def __init__(self, compiled):
+        self._run = compiled
+        columns = compiled._columns()
+        names = list(columns)
+        arrays = [_np.asarray(columns[n]) if n != "status" else _np.array(columns[n], dtype="U24") for n in names]
+        self.trajectory = _np.rec.fromarrays(arrays, names=names)
+
+    end = property(lambda self: self._run.end, doc="Why the run ended (reached, collided, time_out, ...).")
+    reached = property(lambda self: self._run.reached)
+    collided = property(lambda self: self._run.collided)
+    method = property(lambda self: self._run.method)
+
+    def to_dict(self):
+        return self._run.to_dict()
+
+    def text(self):
+        return self._run.text()
+
+    def __repr__(self):
+        return f"Simulation(method={self.method!r}, end={self.end!r}, samples={len(self.trajectory)})"
+
+
+def simulate(scenario, method, *, seed=None):
+    """Runs a scenario file with one reactive method (dipole, geometric or
+    potential), as `deepguide simulate SCENARIO --method METHOD [--seed N]`.
+    The GIL is released while it runs. Raises InputError for a bad scenario."""
+    return Simulation(_deepguide._simulate(_os.fspath(scenario), method, seed))
+
+
+def _csv_column(values):
+    """A CSV column as integers if every value is one, else as floats (an
+    empty cell is NaN) if every value is one and some are there, else as text."""
+    try:
+        return _np.array([int(v) for v in values], dtype=_np.int64)
+    except ValueError:
+        pass
+    if any(v != "" for v in values):
+        try:
+            return _np.array([float(v) if v != "" else _np.nan for v in values], dtype=_np.float64)
+        except ValueError:
+            pass
+    return _np.array(values, dtype=str)
+
+
+def _csv_table(text):
+    """The library's CSV text (quoted fields included) as a structured array."""
+    header, *body = list(_csv.reader(_io.StringIO(text)))
+    columns = [_csv_column([row[k] for row in body]) for k in range(len(header))]
+    return _np.rec.fromarrays(columns, names=header)
+
+
+class Evaluation:
+    """An evaluation run, as `deepguide evaluate` writes it to its folder.
+
+    rows: a NumPy structured array, one record per scenario and method, with
+    rows.csv's fields and values (a structured array rather than a list of
+    dicts: columns are what one compares and plots, and pandas takes it as
+    it is: pandas.DataFrame(evaluation.rows)).
+    to_dict(): what results.json holds (summary per method, the seed's
+    claims, every row); summary_markdown(): what `evaluate` prints.
+    """
+
+    def __init__(self, compiled):
+        self._run = compiled
+        self.rows = _csv_table(compiled._rows_csv())
+
+    complete = property(lambda self: self._run.complete)
+
+    def to_dict(self):
+        return self._run.to_dict()
+
+    def summary_markdown(self):
+        return self._run.summary_markdown()
+
+    def __repr__(self):
+        return f"Evaluation(rows={len(self.rows)})"
+
+
+def evaluate(suite, methods, output, *, threads=0, fresh=False, timing=True, report=False, progress=None):
+    """Runs every scenario of `suite` (a folder, its suite.yaml or one
+    scenario file) through `methods` ("geometric,dipole" or a list; planners
+    as GRAPH[:SEARCH][:COST]) into the folder `output`, as `deepguide
+    evaluate`; resumes a run there unless `fresh`. `progress(done, total)` is
+    called after each row. The GIL is released while it runs."""
+    if not isinstance(methods, str):
+        methods = ",".join(methods)
+    return Evaluation(_deepguide._evaluate(_os.fspath(suite), methods, _os.fspath(output), threads, fresh, timing,
+                                           report, progress))

@@ -7,5 +7,9 @@ namespace deepguide::python {
 
 /// deepguide.plan and the Route it returns (plan.cpp).
 void bind_plan(pybind11::module_& m);
+/// deepguide.simulate's compiled part (simulate.cpp).
+void bind_simulate(pybind11::module_& m);
+/// deepguide.generate_suite and deepguide.evaluate's compiled part (evaluate.cpp).
+void bind_evaluate(pybind11::module_& m);
 
 }  // namespace deepguide::python

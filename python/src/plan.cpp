@@ -6,6 +6,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
 
 #include <array>
 #include <cmath>
@@ -176,15 +179,21 @@ void bind_plan(py::module_& m) {
 
   m.def(
       "plan",
-      [](std::pair<double, double> start, std::pair<double, double> goal, std::vector<std::string> obstacles,
-         std::vector<std::string> charts, std::optional<py::array> ellipses, std::string crs, std::string src_crs,
-         std::optional<std::string> graph, std::string search, std::string cost, double margin, double tolerance,
-         std::optional<double> depth, std::optional<double> turn_radius, double vertical_clearance, bool escape,
-         std::string vehicle, std::string speed, std::string current, std::size_t max_expansions) {
+      [](std::pair<double, double> start, std::pair<double, double> goal,
+         const std::vector<std::filesystem::path>& obstacles, const std::vector<std::filesystem::path>& charts,
+         std::optional<py::array> ellipses, std::string crs, std::string src_crs, std::optional<std::string> graph,
+         std::string search, std::string cost, double margin, double tolerance, std::optional<double> depth,
+         std::optional<double> turn_radius, double vertical_clearance, bool escape, std::string vehicle,
+         std::string speed, std::string current, std::size_t max_expansions) {
+        const auto strings = [](const std::vector<std::filesystem::path>& paths) {
+          std::vector<std::string> out;
+          for (const auto& p : paths) out.push_back(p.string());
+          return out;
+        };
         return plan(PlanArgs{start,
                              goal,
-                             std::move(obstacles),
-                             std::move(charts),
+                             strings(obstacles),
+                             strings(charts),
                              std::move(ellipses),
                              std::move(crs),
                              std::move(src_crs),
@@ -202,8 +211,8 @@ void bind_plan(py::module_& m) {
                              std::move(current),
                              max_expansions});
       },
-      py::arg("start"), py::arg("goal"), py::kw_only(), py::arg("obstacles") = std::vector<std::string>{},
-      py::arg("charts") = std::vector<std::string>{}, py::arg("ellipses") = py::none(), py::arg("crs") = "",
+      py::arg("start"), py::arg("goal"), py::kw_only(), py::arg("obstacles") = std::vector<std::filesystem::path>{},
+      py::arg("charts") = std::vector<std::filesystem::path>{}, py::arg("ellipses") = py::none(), py::arg("crs") = "",
       py::arg("src_crs") = "", py::arg("graph") = py::none(), py::arg("search") = "astar", py::arg("cost") = "length",
       py::arg("margin") = 5.0, py::arg("tolerance") = PlannerOptions{}.tolerance, py::arg("depth") = py::none(),
       py::arg("turn_radius") = py::none(), py::arg("vertical_clearance") = 2.0, py::arg("escape") = false,

@@ -275,8 +275,7 @@ std::string summary_markdown(const EvaluationRun& run, const EvaluationSummary& 
   return o.str();
 }
 
-void write_results(const std::string& dir, const EvaluationRun& run) {
-  const EvaluationSummary s = summarize(run);
+nlohmann::json results_json(const EvaluationRun& run, const EvaluationSummary& s) {
   nlohmann::json rows = nlohmann::json::array();
   for (const EvalRow& r : run.rows) {
     const MethodRun& x = r.run;
@@ -330,15 +329,19 @@ void write_results(const std::string& dir, const EvaluationRun& run) {
   for (const SkippedRun& k : run.manifest.skipped) {
     skipped.push_back({{"scenario", k.scenario}, {"method", k.method}, {"error", k.error}});
   }
-  const nlohmann::json doc = {{"suite", run.manifest.suite},
-                              {"scenarios", run.manifest.scenarios},
-                              {"methods", run.manifest.methods},
-                              {"skipped", skipped},
-                              {"summary", methods},
-                              {"claims", claims},
-                              {"rows", rows}};
+  return {{"suite", run.manifest.suite},
+          {"scenarios", run.manifest.scenarios},
+          {"methods", run.manifest.methods},
+          {"skipped", skipped},
+          {"summary", methods},
+          {"claims", claims},
+          {"rows", rows}};
+}
+
+void write_results(const std::string& dir, const EvaluationRun& run) {
+  const EvaluationSummary s = summarize(run);
   const std::filesystem::path d(dir);
-  write_text_file(d / "results.json", doc.dump(1) + "\n", "results");
+  write_text_file(d / "results.json", results_json(run, s).dump(1) + "\n", "results");
   write_text_file(d / "summary.md", summary_markdown(run, s), "summary");
 }
 

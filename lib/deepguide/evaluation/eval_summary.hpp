@@ -18,6 +18,7 @@
 // and spent the least energy (within 1 J; ties win together).
 
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,10 @@ struct MethodColumn {
   bool numeric = true;  ///< right-aligned
 };
 std::vector<MethodColumn> method_columns(const RunManifest& manifest);
+
+/// What results.json holds: the suite, its methods, the skipped runs, the
+/// summary per method, the seed's claims judged and every row.
+nlohmann::json results_json(const EvaluationRun& run, const EvaluationSummary& summary);
 
 /// Writes results.json (manifest, rows, summary, claims) and summary.md into `dir`.
 void write_results(const std::string& dir, const EvaluationRun& run);

@@ -25,10 +25,10 @@ void append_row(std::string& out, const char* format, auto... values) {
   out.append(row, static_cast<std::size_t>(std::clamp<int>(n, 0, static_cast<int>(sizeof row) - 1)));
 }
 
-void append_vehicle_columns(std::string& out, const TrajectorySample& x) {
-  append_row(out, "%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,", x.time_s, x.position.x(), x.position.y(),
-             math_rad_to_heading_deg(x.heading), math_rad_to_heading_deg(x.course_cmd), nautical_rate(x.rate_cmd),
-             nautical_rate(x.rate_ref), nautical_rate(x.rate), x.speed_mps);
+void append_vehicle_columns(std::string& out, const TrajectorySample& sample) {
+  const VehicleColumns x = vehicle_columns(sample);
+  append_row(out, "%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,", x.time_s, x.x_m, x.y_m, x.heading_deg,
+             x.course_cmd_deg, x.rate_cmd_deg_s, x.rate_ref_deg_s, x.rate_deg_s, x.speed_mps);
   if (std::isinf(x.clearance_m) && x.clearance_m > 0) {
     out += "inf";
   } else {
@@ -37,6 +37,19 @@ void append_vehicle_columns(std::string& out, const TrajectorySample& x) {
 }
 
 }  // namespace
+
+VehicleColumns vehicle_columns(const TrajectorySample& x) {
+  return {x.time_s,
+          x.position.x(),
+          x.position.y(),
+          math_rad_to_heading_deg(x.heading),
+          math_rad_to_heading_deg(x.course_cmd),
+          nautical_rate(x.rate_cmd),
+          nautical_rate(x.rate_ref),
+          nautical_rate(x.rate),
+          x.speed_mps,
+          x.clearance_m};
+}
 
 std::string trajectory_csv(std::span<const TrajectorySample> trajectory) {
   std::string out = std::string(kVehicleHeader) + ",sector,status,course_unreachable\n";

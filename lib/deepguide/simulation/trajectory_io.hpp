@@ -33,6 +33,14 @@
 
 namespace DEEPGUIDE_API deepguide {
 
+/// A sample's first ten CSV columns (header above) in their units, at full
+/// precision: what the file rounds, and what deepguide.simulate gives Python.
+struct VehicleColumns {
+  double time_s, x_m, y_m, heading_deg, course_cmd_deg, rate_cmd_deg_s, rate_ref_deg_s, rate_deg_s, speed_mps,
+      clearance_m;
+};
+VehicleColumns vehicle_columns(const TrajectorySample& sample);
+
 /// The CSV text of a trajectory (header above).
 std::string trajectory_csv(std::span<const TrajectorySample> trajectory);
 
