@@ -43,9 +43,9 @@ struct Evaluation {
 void bind_evaluate(py::module_& m) {
   m.def(
       "generate_suite",
-      [](const std::filesystem::path& directory, int scenarios, std::uint64_t seed, const std::string& name, int min_obstacles,
-         int max_obstacles, double min_size, double max_size, double spread, double max_current, double sonar_noise,
-         bool on_demand, bool overwrite) {
+      [](const std::filesystem::path& directory, int scenarios, std::uint64_t seed, const std::string& name,
+         int min_obstacles, int max_obstacles, double min_size, double max_size, double spread, double max_current,
+         double sonar_noise, bool on_demand, bool overwrite) {
         MonteCarloParams p;
         p.scenarios = scenarios, p.seed = seed, p.min_obstacles = min_obstacles, p.max_obstacles = max_obstacles;
         p.min_size_m = min_size, p.max_size_m = max_size, p.cross_track_sigma_m = spread;
@@ -65,13 +65,15 @@ void bind_evaluate(py::module_& m) {
 
   py::class_<Evaluation>(m, "_Evaluation")
       .def("_rows_csv", &Evaluation::rows_csv)
-      .def("to_dict",
-           [](const Evaluation& e) {
-             return py::module_::import("json").attr("loads")(results_json(e.run, summarize(e.run)).dump());
-           },
-           "What results.json holds: the summary per method, the seed's claims, every row.")
-      .def("summary_markdown", [](const Evaluation& e) { return summary_markdown(e.run, summarize(e.run)); },
-           "The summary `deepguide evaluate` prints (summary.md).")
+      .def(
+          "to_dict",
+          [](const Evaluation& e) {
+            return py::module_::import("json").attr("loads")(results_json(e.run, summarize(e.run)).dump());
+          },
+          "What results.json holds: the summary per method, the seed's claims, every row.")
+      .def(
+          "summary_markdown", [](const Evaluation& e) { return summary_markdown(e.run, summarize(e.run)); },
+          "The summary `deepguide evaluate` prints (summary.md).")
       .def_property_readonly("complete", [](const Evaluation& e) { return e.run.complete; });
 
   m.def(

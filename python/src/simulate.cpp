@@ -61,8 +61,9 @@ void bind_simulate(py::module_& m) {
   py::class_<Simulation>(m, "_Simulation")
       .def("_columns", &Simulation::columns)
       .def("to_dict", &Simulation::to_dict, "The statistics as `deepguide simulate --json` prints them.")
-      .def("text", [](const Simulation& s) { return simulation_text(s.scenario, s.result); },
-           "The statistics as `deepguide simulate` prints them.")
+      .def(
+          "text", [](const Simulation& s) { return simulation_text(s.scenario, s.result); },
+          "The statistics as `deepguide simulate` prints them.")
       .def_property_readonly("end", [](const Simulation& s) { return std::string(to_string(s.result.end)); })
       .def_property_readonly("reached", [](const Simulation& s) { return s.result.stats.reached; })
       .def_property_readonly("collided", [](const Simulation& s) { return s.result.stats.collided; })
