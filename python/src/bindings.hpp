@@ -11,5 +11,7 @@ void bind_plan(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);
 /// deepguide.generate_suite and deepguide.evaluate's compiled part (evaluate.cpp).
 void bind_evaluate(pybind11::module_& m);
+/// deepguide.mission_check, mission_plan, mission_export and mission_simulate (missions.cpp).
+void bind_missions(pybind11::module_& m);
 
 }  // namespace deepguide::python

@@ -63,4 +63,5 @@ PYBIND11_MODULE(_deepguide, m) {
   deepguide::python::bind_plan(m);
   deepguide::python::bind_simulate(m);
   deepguide::python::bind_evaluate(m);
+  deepguide::python::bind_missions(m);
 }

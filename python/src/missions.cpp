@@ -1,0 +1,92 @@
+// Missions from Python: `deepguide mission check|plan|export|simulate`. Each
+// returns the report the command prints (to_dict() its --json, text() its
+// text) with `failure`, the one line the command exits 3 with, or None: a
+// mission that cannot be sailed is a report to read, not an exception.
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "deepguide/mission/mission_report.hpp"
+#include "deepguide/simulation/mission_run_report.hpp"
+
+namespace py = pybind11;
+
+namespace deepguide::python {
+namespace {
+
+py::object as_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+
+// The reports share what Python sees of them.
+template <class Report>
+void bind_report(py::module_& m, const char* name, const char* doc) {
+  py::class_<Report>(m, name, doc)
+      .def("to_dict", [](const Report& r) { return as_python(r.to_json()); }, "The command's --json.")
+      .def("text", &Report::to_text, "What the command prints.")
+      .def_property_readonly("failure", &Report::failure,
+                             "Why the mission cannot be sailed (the line the command exits 3 with), or None.")
+      .def("__repr__", [name](const Report& r) {
+        return std::string(name) + "(file='" + r.file + "', failure=" + (r.failure() ? "'" + *r.failure() + "'" : "None") +
+               ")";
+      });
+}
+
+}  // namespace
+
+void bind_missions(py::module_& m) {
+  bind_report<MissionCheckReport>(m, "MissionCheck", "What `deepguide mission check` reports.");
+  bind_report<MissionPlanReport>(m, "MissionPlan", "What `deepguide mission plan` reports.");
+  bind_report<MissionRunReport>(m, "MissionRun", "What `deepguide mission simulate` reports.");
+
+  m.def(
+      "mission_check",
+      [](const std::filesystem::path& mission) {
+        py::gil_scoped_release free;
+        return check_mission_file(mission.string());
+      },
+      py::arg("mission"), "The plan as written and its conflicts, as `deepguide mission check`.");
+  m.def(
+      "mission_plan",
+      [](const std::filesystem::path& mission) {
+        py::gil_scoped_release free;
+        return plan_mission_file(mission.string());
+      },
+      py::arg("mission"), "Every conflict evaded or identified and the plan checked, as `deepguide mission plan`.");
+  m.def(
+      "mission_export",
+      [](const std::filesystem::path& mission, const std::filesystem::path& output, bool as_written) {
+        MissionExportRequest request;
+        request.mission = mission.string();
+        request.output = output.string();
+        request.as_written = as_written;
+        py::gil_scoped_release free;
+        return export_mission_file(request).to_text(request.output);
+      },
+      py::arg("mission"), py::arg("output"), py::kw_only(), py::arg("as_written") = false,
+      "Plans the mission and writes it in the format of `output`'s extension, as `deepguide mission export`; "
+      "returns the line the command prints.");
+  m.def(
+      "mission_simulate",
+      [](const std::filesystem::path& mission, const std::vector<std::filesystem::path>& unknown, std::uint64_t seed,
+         double planning_delay) {
+        MissionRunRequest request;
+        request.mission = mission.string();
+        for (const auto& u : unknown) request.unknown.push_back(u.string());
+        request.options.seed = seed;
+        request.options.planning_delay_s = planning_delay;
+        py::gil_scoped_release free;
+        return simulate_mission_file(request);
+      },
+      py::arg("mission"), py::kw_only(), py::arg("unknown") = std::vector<std::filesystem::path>{},
+      py::arg("seed") = MissionRunOptions{}.seed, py::arg("planning_delay") = MissionRunOptions{}.planning_delay_s,
+      "Sails the planned mission in simulation, with objects nobody knew (`unknown` obstacle files), as "
+      "`deepguide mission simulate`.");
+}
+
+}  // namespace deepguide::python
