@@ -16,6 +16,7 @@ parallel.
 import csv as _csv
 import io as _io
 import os as _os
+import tempfile as _tempfile
 
 import numpy as _np
 
@@ -63,6 +64,18 @@ __all__ = [
 ]
 
 
+def _png_of(thing):
+    """`thing.render` to a temporary PNG, as bytes: what a notebook shows."""
+    with _tempfile.TemporaryDirectory() as folder:
+        path = _os.path.join(folder, "figure.png")
+        thing.render(path)
+        with open(path, "rb") as f:
+            return f.read()
+
+
+Route._repr_png_ = _png_of
+
+
 class Simulation:
     """One reactive run, as `deepguide simulate` makes it.
 
@@ -91,6 +104,12 @@ class Simulation:
 
     def text(self):
         return self._run.text()
+
+    def render(self, path):
+        """Draws the run over its scenario to `path` (.png or .svg)."""
+        self._run.render(_os.fspath(path))
+
+    _repr_png_ = _png_of
 
     def __repr__(self):
         return f"Simulation(method={self.method!r}, end={self.end!r}, samples={len(self.trajectory)})"

@@ -27,13 +27,14 @@ py::object as_python(const nlohmann::json& j) { return py::module_::import("json
 template <class Report>
 void bind_report(py::module_& m, const char* name, const char* doc) {
   py::class_<Report>(m, name, doc)
-      .def("to_dict", [](const Report& r) { return as_python(r.to_json()); }, "The command's --json.")
+      .def(
+          "to_dict", [](const Report& r) { return as_python(r.to_json()); }, "The command's --json.")
       .def("text", &Report::to_text, "What the command prints.")
       .def_property_readonly("failure", &Report::failure,
                              "Why the mission cannot be sailed (the line the command exits 3 with), or None.")
       .def("__repr__", [name](const Report& r) {
-        return std::string(name) + "(file='" + r.file + "', failure=" + (r.failure() ? "'" + *r.failure() + "'" : "None") +
-               ")";
+        return std::string(name) + "(file='" + r.file +
+               "', failure=" + (r.failure() ? "'" + *r.failure() + "'" : "None") + ")";
       });
 }
 

@@ -21,6 +21,7 @@
 #include "bindings.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
+#include "deepguide/render/route_plan_figure.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace py = pybind11;
@@ -175,6 +176,14 @@ void bind_plan(py::module_& m) {
       .def("to_dict", &Route::to_dict, "The report as `deepguide plan --json` prints it (the same keys).")
       .def(
           "text", [](const Route& r) { return r.report->to_text(); }, "The report as `deepguide plan` prints it.")
+      .def(
+          "render",
+          [](const Route& r, const std::filesystem::path& path, bool draw_graph) {
+            py::gil_scoped_release free;
+            render_route_plan(*r.report, path.string(), draw_graph);
+          },
+          py::arg("path"), py::kw_only(), py::arg("draw_graph") = false,
+          "Draws the route over its obstacles or chart to `path` (.png or .svg), as `plan --render`.")
       .def("__repr__", &Route::repr);
 
   m.def(

@@ -5,6 +5,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
 
 #include <cstdio>
 #include <optional>
@@ -13,6 +16,7 @@
 #include "bindings.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/render/trajectory_figure.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"
 #include "deepguide/simulation/trajectory_io.hpp"
@@ -64,6 +68,16 @@ void bind_simulate(py::module_& m) {
       .def(
           "text", [](const Simulation& s) { return simulation_text(s.scenario, s.result); },
           "The statistics as `deepguide simulate` prints them.")
+      .def(
+          "render",
+          [](const Simulation& s, const std::filesystem::path& path) {
+            py::gil_scoped_release free;
+            TrajectoryFigure figure;
+            figure.map = reactive_map_for(s.scenario, s.scenario.name);
+            figure.runs = {s.result};
+            render_trajectory_figure(figure, path.string());
+          },
+          py::arg("path"), "Draws the run over its scenario to `path` (.png or .svg).")
       .def_property_readonly("end", [](const Simulation& s) { return std::string(to_string(s.result.end)); })
       .def_property_readonly("reached", [](const Simulation& s) { return s.result.stats.reached; })
       .def_property_readonly("collided", [](const Simulation& s) { return s.result.stats.collided; })

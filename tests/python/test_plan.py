@@ -132,3 +132,16 @@ def test_graphs_lists_the_registry():
     names = deepguide.graphs()
     for name in ("visibility", "visibility-full", "tangent", "quadtree", "navmesh"):
         assert name in names
+
+
+def test_a_route_draws_as_the_command_draws_it(cli, sample, tmp_path):
+    route = deepguide.plan(FROM, TO, obstacles=[str(sample)])
+    route.render(tmp_path / "py.png")
+    cli("plan", "--obstacles", sample, "--from", lonlat_text(FROM), "--to", lonlat_text(TO),
+        "--render", tmp_path / "cli.png")
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    png = route._repr_png_()
+    assert png == (tmp_path / "py.png").read_bytes()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(deepguide.InputError, match="figure.bmp"):
+        route.render(tmp_path / "figure.bmp")

@@ -88,3 +88,11 @@ def test_bad_input_raises_the_librarys_line(suite, tmp_path):
         deepguide.evaluate(suite / "py", "warp-drive", tmp_path / "x")
     with pytest.raises(deepguide.InputError):
         deepguide.generate_suite(tmp_path / "bad", scenarios=10, min_size=-1)
+
+
+def test_a_run_draws_itself(suite, tmp_path):
+    run = deepguide.simulate(suite / "py" / "scenario-0003.yaml", "geometric", seed=11)
+    png = run._repr_png_()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20000
+    run.render(tmp_path / "run.svg")
+    assert (tmp_path / "run.svg").read_text().lstrip().startswith("<?xml")
