@@ -90,3 +90,12 @@ if [ -f "$enc/noaa-enc-US4MD81M/US4MD81M.000" ] && [ -f "$enc/noaa-enc-US5FL4DQ/
 else
   echo "deepguide: the NOAA cells in $enc are absent: skipping the ENC figures" >&2
 fi
+# docs/PYTHON.md's worked examples (the Python module in build/python; the chart one needs ../shared's US4MD81M).
+if [ -d "$DEEPGUIDE_ROOT/build/python/deepguide" ]; then
+  PYTHONPATH="$DEEPGUIDE_ROOT/build/python" /usr/bin/python3 docs/examples/turning_rates.py docs/images/python_turning_rates.png
+  cell="$DEEPGUIDE_ROOT/../shared/data/real/noaa-enc-US4MD81M/US4MD81M.000"
+  if [ -f "$cell" ]; then
+    PYTHONPATH="$DEEPGUIDE_ROOT/build/python" /usr/bin/python3 docs/examples/plan_on_a_chart.py "$cell" \
+      docs/images/python_route_on_chart.png
+  fi
+fi

@@ -14,6 +14,7 @@ DEEPGUIDE_PACKAGES=(
   libgdal-dev libgeos-dev gdal-bin libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   libcairo2-dev libxml2-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-venv python3-pip python3-setuptools
+  python3-matplotlib
 )
 
 deepguide_install_packages() {

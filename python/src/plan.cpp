@@ -21,6 +21,7 @@
 #include "bindings.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
+#include "deepguide/render/reactive_map.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -91,6 +92,32 @@ struct Route {
     for (std::size_t i = 0; i < pts.size(); ++i) {
       const Vec2 ll = frame.to_lonlat(pts[i]);
       o(i, 0) = ll.x(), o(i, 1) = ll.y();
+    }
+    return out;
+  }
+  // The obstacles' footprints (a chart's no-go polygons among them) in
+  // lon/lat: per obstacle a list of rings, the outline first, then its holes.
+  py::list outlines() const {
+    const auto ring = [&](const auto& points) {
+      py::array_t<double> a({static_cast<py::ssize_t>(points.size()), py::ssize_t{2}});
+      auto o = a.template mutable_unchecked<2>();
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec2 ll = frame.to_lonlat(Vec2(points[i].x(), points[i].y()));
+        o(i, 0) = ll.x(), o(i, 1) = ll.y();
+      }
+      return a;
+    };
+    py::list out;
+    for (const EllipticCylinder& e : report->obstacles.ellipses) {
+      py::list rings;
+      rings.append(ring(ellipse_outline(e.footprint, 72)));
+      out.append(rings);
+    }
+    for (const PolygonObstacle& p : report->obstacles.polygons) {
+      py::list rings;
+      rings.append(ring(p.footprint.outer()));
+      for (const auto& inner : p.footprint.inners()) rings.append(ring(inner));
+      out.append(rings);
     }
     return out;
   }
@@ -173,6 +200,10 @@ void bind_plan(py::module_& m) {
           "crs", [](const Route& r) { return r.frame.id(); }, "The planning frame, e.g. 'EPSG:32632'.")
       .def_property_readonly(
           "graph", [](const Route& r) { return to_string(r.report->options.graph); }, "The graph that planned it.")
+      .def("outlines", &Route::outlines,
+           "The footprints of the obstacles it was planned among (a chart's no-go polygons too), in lon, lat: per "
+           "obstacle a list of (k, 2) rings, its outline first, then its holes (opposite turning), to draw the "
+           "route over.")
       .def("to_dict", &Route::to_dict, "The report as `deepguide plan --json` prints it (the same keys).")
       .def(
           "text", [](const Route& r) { return r.report->to_text(); }, "The report as `deepguide plan` prints it.")
