@@ -32,22 +32,7 @@ struct IdentifyOptions {
 
 // The scenario with its identify section, in the mode --mode names (or its own).
 Scenario identify_scenario(const IdentifyOptions& o) {
-  std::optional<IdentifyMode> mode;
-  if (!o.mode.empty()) {
-    mode = parse_identify_mode(o.mode);
-    if (!mode) throw InputError("--mode: expected align or around, got '" + printable(o.mode) + "'");
-  }
-  Scenario scenario = read_scenario_file(o.scenario);
-  if (!scenario.identify) {
-    throw InputError(o.scenario +
-                     ": field 'identify': expected an identify section naming the object "
-                     "(see data/scenarios/align_in_current.yaml)");
-  }
-  if (mode) {
-    scenario.identify->mode = *mode;
-    validate(scenario);  // the other mode has its own rules (a path the vehicle can turn on)
-  }
-  return scenario;
+  return read_identification_scenario(o.scenario, o.mode, "--mode");
 }
 
 }  // namespace

@@ -22,6 +22,7 @@ import numpy as _np
 
 from . import _deepguide
 from ._deepguide import (
+    Identification,
     InputError,
     ManoeuvreError,
     MissionCheck,
@@ -30,9 +31,12 @@ from ._deepguide import (
     NoRouteError,
     PartialError,
     Route,
+    RouteCheck,
     __version__,
+    check_route,
     generate_suite,
     graphs,
+    identify,
     mission_check,
     mission_export,
     mission_plan,
@@ -42,6 +46,7 @@ from ._deepguide import (
 
 __all__ = [
     "Evaluation",
+    "Identification",
     "InputError",
     "ManoeuvreError",
     "MissionCheck",
@@ -50,11 +55,14 @@ __all__ = [
     "NoRouteError",
     "PartialError",
     "Route",
+    "RouteCheck",
     "Simulation",
     "__version__",
+    "check_route",
     "evaluate",
     "generate_suite",
     "graphs",
+    "identify",
     "mission_check",
     "mission_export",
     "mission_plan",

@@ -13,5 +13,7 @@ void bind_simulate(pybind11::module_& m);
 void bind_evaluate(pybind11::module_& m);
 /// deepguide.mission_check, mission_plan, mission_export and mission_simulate (missions.cpp).
 void bind_missions(pybind11::module_& m);
+/// deepguide.check_route and deepguide.identify (checks.cpp).
+void bind_checks(pybind11::module_& m);
 
 }  // namespace deepguide::python

@@ -295,4 +295,23 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
   return result;
 }
 
+Scenario read_identification_scenario(const std::string& path, const std::string& mode, const std::string& what_mode) {
+  std::optional<IdentifyMode> chosen;
+  if (!mode.empty()) {
+    chosen = parse_identify_mode(mode);
+    if (!chosen) throw InputError(what_mode + ": expected align or around, got '" + printable(mode) + "'");
+  }
+  Scenario scenario = read_scenario_file(path);
+  if (!scenario.identify) {
+    throw InputError(path +
+                     ": field 'identify': expected an identify section naming the object "
+                     "(see data/scenarios/align_in_current.yaml)");
+  }
+  if (chosen) {
+    scenario.identify->mode = *chosen;
+    validate(scenario);  // the other mode has its own rules (a path the vehicle can turn on)
+  }
+  return scenario;
+}
+
 }  // namespace deepguide

@@ -118,6 +118,13 @@ struct IdentifyResult {
 /// The time limit (header).
 double identify_max_time_s(const Scenario& scenario);
 
+/// A scenario file with an identify section, in `mode` ("align" or
+/// "around"; empty: the section's own), as `identify` runs it. Throws
+/// InputError naming `what_mode` (the caller's name for the mode) for
+/// another mode, and the file for one without an identify section.
+Scenario read_identification_scenario(const std::string& path, const std::string& mode,
+                                      const std::string& what_mode = "`mode`");
+
 /// Runs the scenario's identify section in its mode. Throws InputError for an
 /// invalid scenario or one without an identify section.
 IdentifyResult simulate_identification(const Scenario& scenario, const SimulationOptions& options = {});
