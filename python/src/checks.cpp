@@ -43,8 +43,9 @@ void bind_checks(py::module_& m) {
       .def_readonly("why", &RouteFileCheckReport::why, "The first crossing, or where the route comes closest.")
       .def_readonly("waypoints", &RouteFileCheckReport::waypoints)
       .def_readonly("length_m", &RouteFileCheckReport::length_m)
-      .def("to_dict", [](const RouteFileCheckReport& r) { return as_python(r.to_json().dump()); },
-           "The command's --json.")
+      .def(
+          "to_dict", [](const RouteFileCheckReport& r) { return as_python(r.to_json().dump()); },
+          "The command's --json.")
       .def("text", &RouteFileCheckReport::to_text)
       .def("__repr__", [](const RouteFileCheckReport& r) {
         return std::string("RouteCheck(safe=") + (r.safe ? "True" : "False") + ", why='" + r.why + "')";
@@ -76,16 +77,19 @@ void bind_checks(py::module_& m) {
       "`deepguide check route`, with the independent checker; a route that is not safe gives safe == False.");
 
   py::class_<Identification>(m, "Identification", "An identification run, as `deepguide identify` makes it.")
-      .def("to_dict", [](const Identification& r) { return as_python(identification_json(r.scenario, r.result).dump()); },
-           "The command's --json: statistics and mode switches.")
+      .def(
+          "to_dict",
+          [](const Identification& r) { return as_python(identification_json(r.scenario, r.result).dump()); },
+          "The command's --json: statistics and mode switches.")
       .def("text", [](const Identification& r) { return identification_text(r.scenario, r.result); })
       .def_property_readonly("end", [](const Identification& r) { return std::string(to_string(r.result.end)); })
-      .def_property_readonly("failure",
-                             [](const Identification& r) -> std::optional<std::string> {
-                               if (r.result.failure.empty()) return std::nullopt;
-                               return r.result.failure;
-                             },
-                             "Why the manoeuvre failed (the command exits 3 with it), or None.")
+      .def_property_readonly(
+          "failure",
+          [](const Identification& r) -> std::optional<std::string> {
+            if (r.result.failure.empty()) return std::nullopt;
+            return r.result.failure;
+          },
+          "Why the manoeuvre failed (the command exits 3 with it), or None.")
       .def("__repr__", [](const Identification& r) {
         return "Identification(end='" + std::string(to_string(r.result.end)) + "')";
       });

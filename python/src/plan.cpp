@@ -19,10 +19,12 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "deepguide/core/utc_time.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/render/reactive_map.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
+#include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
 namespace py = pybind11;
@@ -144,6 +146,8 @@ struct PlanArgs {
   bool escape;
   std::string vehicle, speed, current;
   std::size_t max_expansions;
+  std::optional<double> start_heading, goal_heading;  // deg, clockwise from true north
+  std::string current_const, depart;
 };
 
 Route plan(const PlanArgs& a) {
@@ -169,7 +173,8 @@ Route plan(const PlanArgs& a) {
   r.speed = a.speed;
   r.current_file = a.current;
   r.max_expansions = a.max_expansions;
-  r.graph = a.graph ? parse_graph_kind(*a.graph) : default_plan_graph(r.charts, r.cost, false, false);
+  r.graph = a.graph ? parse_graph_kind(*a.graph)
+                    : default_plan_graph(r.charts, r.cost, false, a.start_heading || a.goal_heading);
   if (graph_entry(r.graph).can.in_depth) {
     throw InputError("`graph` " + r.graph.name + ": routes in depth are not in the Python module yet");
   }
@@ -183,6 +188,13 @@ Route plan(const PlanArgs& a) {
   for (EllipticCylinder& e : ellipses_in(loaded.frame, rows)) r.obstacles.ellipses.push_back(std::move(e));
   r.problem.start = parse_position(from, "`start`", loaded.frame, !a.crs.empty());
   r.problem.goal = parse_position(to, "`goal`", loaded.frame, !a.crs.empty());
+  if (a.start_heading) r.problem.start_heading = loaded.frame.heading_to_local(*a.start_heading, r.problem.start);
+  if (a.goal_heading) r.problem.goal_heading = loaded.frame.heading_to_local(*a.goal_heading, r.problem.goal);
+  if (!a.current_const.empty()) {
+    r.current = std::make_shared<const CurrentField>(parse_constant_current(a.current_const, "`current_const`"));
+    r.current_source = "current_const " + a.current_const;
+  }
+  if (!a.depart.empty()) r.depart_s = parse_utc(a.depart, "`depart`");
   auto report = std::make_shared<const RoutePlanReport>(plan_route_request(loaded.frame, r));
   if (const auto why = report->stop_reason()) throw NoRouteError(*why);
   return Route{std::move(report), loaded.frame};
@@ -224,7 +236,8 @@ void bind_plan(py::module_& m) {
          std::optional<py::array> ellipses, std::string crs, std::string src_crs, std::optional<std::string> graph,
          std::string search, std::string cost, double margin, double tolerance, std::optional<double> depth,
          std::optional<double> turn_radius, double vertical_clearance, bool escape, std::string vehicle,
-         std::string speed, std::string current, std::size_t max_expansions) {
+         std::string speed, std::string current, std::size_t max_expansions, std::optional<double> start_heading,
+         std::optional<double> goal_heading, std::string current_const, std::string depart) {
         const auto strings = [](const std::vector<std::filesystem::path>& paths) {
           std::vector<std::string> out;
           for (const auto& p : paths) out.push_back(p.string());
@@ -249,7 +262,11 @@ void bind_plan(py::module_& m) {
                              std::move(vehicle),
                              std::move(speed),
                              std::move(current),
-                             max_expansions});
+                             max_expansions,
+                             start_heading,
+                             goal_heading,
+                             std::move(current_const),
+                             std::move(depart)});
       },
       py::arg("start"), py::arg("goal"), py::kw_only(), py::arg("obstacles") = std::vector<std::filesystem::path>{},
       py::arg("charts") = std::vector<std::filesystem::path>{}, py::arg("ellipses") = py::none(), py::arg("crs") = "",
@@ -257,6 +274,8 @@ void bind_plan(py::module_& m) {
       py::arg("margin") = 5.0, py::arg("tolerance") = PlannerOptions{}.tolerance, py::arg("depth") = py::none(),
       py::arg("turn_radius") = py::none(), py::arg("vertical_clearance") = 2.0, py::arg("escape") = false,
       py::arg("vehicle") = "", py::arg("speed") = "cruise", py::arg("current") = "", py::arg("max_expansions") = 0,
+      py::arg("start_heading") = py::none(), py::arg("goal_heading") = py::none(), py::arg("current_const") = "",
+      py::arg("depart") = "",
       R"(The shortest (or fastest, or most economical) safe route from `start` to `goal`, as `deepguide plan`.
 
 start, goal: (lon, lat) in degrees, or (x, y) in `crs` when `crs` is given.
@@ -264,6 +283,9 @@ obstacles: obstacle files; charts: bathymetry rasters, S-57 cells or folders, pr
 ellipses: an (n, 5) array of x, y, semi_major_m, semi_minor_m, orientation_deg (clockwise from grid north) in `crs`.
 graph: a graph of the registry (deepguide.graphs()); None: what `plan` takes by default.
 margin, tolerance, depth, turn_radius, vertical_clearance: metres, as the CLI's flags.
+start_heading, goal_heading: degrees clockwise from true north (with a turn_radius; the tangent graph).
+cost: length, time or energy, in `current` (a field's file) or `current_const` ("SPEED_MPS,DIR_DEG"),
+departing at `depart` (ISO 8601, UTC by default).
 The GIL is released while it plans, so threads plan in parallel.
 Raises InputError (bad input), NoRouteError (no safe route).)");
 

@@ -145,3 +145,20 @@ def test_a_route_draws_as_the_command_draws_it(cli, sample, tmp_path):
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
     with pytest.raises(deepguide.InputError, match="figure.bmp"):
         route.render(tmp_path / "figure.bmp")
+
+
+def test_headings_and_a_current_plan_as_the_command_plans(cli, sample):
+    base = ["plan", "--obstacles", sample, "--from", lonlat_text(FROM), "--to", lonlat_text(TO), "--json"]
+    dubins = deepguide.plan(FROM, TO, obstacles=[str(sample)], turn_radius=30, start_heading=90, goal_heading=0)
+    want = cli_json(cli(*base, "--turn-radius", 30, "--from-heading", 90, "--to-heading", 0))
+    assert dubins.graph == want["graph"] == "tangent"
+    assert dubins.length_m == pytest.approx(want["length_m"], abs=1e-9)
+    timed = deepguide.plan(FROM, TO, obstacles=[str(sample)], cost="time", current_const="0.5,45",
+                           depart="2026-12-07T06:00:00Z")
+    want = cli_json(cli(*base, "--cost", "time", "--current-const", "0.5,45", "--depart", "2026-12-07T06:00:00Z"))
+    got = timed.to_dict()
+    assert got["time_s"] == pytest.approx(want["time_s"], abs=1e-9)
+    assert got["length_m"] == pytest.approx(want["length_m"], abs=1e-9)
+    assert got["depart"] == want["depart"]
+    with pytest.raises(deepguide.InputError, match="`current_const`"):
+        deepguide.plan(FROM, TO, obstacles=[str(sample)], cost="time", current_const="fast")
