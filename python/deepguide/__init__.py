@@ -29,6 +29,7 @@ from ._deepguide import (
     MissionPlan,
     MissionRun,
     NoRouteError,
+    Obstacles,
     PartialError,
     Route,
     RouteCheck,
@@ -42,6 +43,7 @@ from ._deepguide import (
     mission_plan,
     mission_simulate,
     plan,
+    read_obstacles,
 )
 
 __all__ = [
@@ -53,6 +55,7 @@ __all__ = [
     "MissionPlan",
     "MissionRun",
     "NoRouteError",
+    "Obstacles",
     "PartialError",
     "Route",
     "RouteCheck",
@@ -68,6 +71,7 @@ __all__ = [
     "mission_plan",
     "mission_simulate",
     "plan",
+    "read_obstacles",
     "simulate",
 ]
 

@@ -15,5 +15,7 @@ void bind_evaluate(pybind11::module_& m);
 void bind_missions(pybind11::module_& m);
 /// deepguide.check_route and deepguide.identify (checks.cpp).
 void bind_checks(pybind11::module_& m);
+/// deepguide.read_obstacles (obstacles.cpp).
+void bind_obstacles(pybind11::module_& m);
 
 }  // namespace deepguide::python

@@ -65,4 +65,5 @@ PYBIND11_MODULE(_deepguide, m) {
   deepguide::python::bind_evaluate(m);
   deepguide::python::bind_missions(m);
   deepguide::python::bind_checks(m);
+  deepguide::python::bind_obstacles(m);
 }

@@ -162,3 +162,27 @@ def test_headings_and_a_current_plan_as_the_command_plans(cli, sample):
     assert got["depart"] == want["depart"]
     with pytest.raises(deepguide.InputError, match="`current_const`"):
         deepguide.plan(FROM, TO, obstacles=[str(sample)], cost="time", current_const="fast")
+
+
+def test_obstacles_read_into_arrays_plan_as_their_file(sample, tmp_path):
+    obstacles = deepguide.read_obstacles([sample])
+    assert len(obstacles) == len(obstacles.ellipse_ids) + len(obstacles.polygon_ids) > 0
+    assert obstacles.ellipses.shape == (len(obstacles.ellipse_ids), 5)
+    assert all(r.shape[1] == 2 for rings in obstacles.polygons for r in rings)
+    # The ellipses alone, from their file and from the arrays read back.
+    doc = json.loads(sample.read_text())
+    doc["features"] = [f for f in doc["features"] if f["geometry"]["type"] == "Point"]
+    points = tmp_path / "points.geojson"
+    points.write_text(json.dumps(doc))
+    read = deepguide.read_obstacles([points])
+    from_file = deepguide.plan(FROM, TO, obstacles=[points])
+    # With `crs`, start and goal are in it: the file route's own ends.
+    start, goal = tuple(from_file.xy[0]), tuple(from_file.xy[-1])
+    from_arrays = deepguide.plan(start, goal, ellipses=read.ellipses, crs=read.crs)
+    assert from_arrays.length_m == pytest.approx(from_file.length_m, abs=1e-6)
+    # The array's fields are the file's: orientation and axes as written.
+    by_id = {f["properties"]["id"]: f["properties"] for f in doc["features"]}
+    for name, row in zip(read.ellipse_ids, read.ellipses):
+        assert row[2] == pytest.approx(by_id[name]["semi_major_m"], rel=1e-12)
+        assert row[4] == pytest.approx(by_id[name]["orientation_deg"] % 180, abs=1e-9)
+    assert "ellipses" in repr(read)

@@ -422,6 +422,14 @@ Ellipse ellipse_from_fields(const LocalFrame& frame, const Eigen::Vector2d& cent
   return Ellipse{centre, semi_major_m * k, semi_minor_m * k, frame.heading_to_local(orientation_deg, centre)};
 }
 
+EllipseFields ellipse_fields(const LocalFrame& frame, const Ellipse& footprint) {
+  const Eigen::Vector2d lonlat = frame.to_lonlat(footprint.centre);
+  const double scale = std::max(1.0, frame.scale_at(lonlat).greatest);
+  const double k = std::isfinite(scale) ? scale : 1.0;
+  const double heading = std::fmod(frame.local_to_heading(footprint.theta, footprint.centre), 180.0);
+  return {lonlat, footprint.a / k, footprint.b / k, heading < 0.0 ? heading + 180.0 : heading};
+}
+
 LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const ObstacleReadOptions& options) {
   gdal::ensure_registered();
   // Fail on a bad --crs before reading anything.

@@ -91,6 +91,15 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
 Ellipse ellipse_from_fields(const LocalFrame& frame, const Eigen::Vector2d& centre, const Eigen::Vector2d& lonlat,
                             double semi_major_m, double semi_minor_m, double orientation_deg);
 
+/// The fields an obstacle file gives an ellipse in `frame`, back from its
+/// footprint: ellipse_from_fields' inverse (axes in true metres, the major
+/// axis clockwise from true north in [0, 180)).
+struct EllipseFields {
+  Eigen::Vector2d lonlat;
+  double semi_major_m, semi_minor_m, orientation_deg;
+};
+EllipseFields ellipse_fields(const LocalFrame& frame, const Ellipse& footprint);
+
 /// Output formats, chosen from the file extension.
 enum class ObstacleFormat { geojson, geopackage, csv };
 /// Throws InputError for an extension deepguide does not write.
