@@ -37,7 +37,6 @@ from ._deepguide import (
     check_route,
     generate_suite,
     graphs,
-    identify,
     mission_check,
     mission_export,
     mission_plan,
@@ -183,13 +182,39 @@ class Evaluation:
         return f"Evaluation(rows={len(self.rows)})"
 
 
-def evaluate(suite, methods, output, *, threads=0, fresh=False, timing=True, report=False, progress=None):
+def evaluate(suite, methods, output, *, threads=0, fresh=False, timing=True, report=False, progress=None,
+             allow_skips=False):
     """Runs every scenario of `suite` (a folder, its suite.yaml or one
     scenario file) through `methods` ("geometric,dipole" or a list; planners
     as GRAPH[:SEARCH][:COST]) into the folder `output`, as `deepguide
     evaluate`; resumes a run there unless `fresh`. `progress(done, total)` is
-    called after each row. The GIL is released while it runs."""
+    called after each row. The GIL is released while it runs.
+
+    A run that skipped broken scenarios raises PartialError (its `evaluation`
+    attribute holds the run, written all the same) unless `allow_skips`, as
+    the command exits 4 unless --allow-skips."""
     if not isinstance(methods, str):
         methods = ",".join(methods)
-    return Evaluation(_deepguide._evaluate(_os.fspath(suite), methods, _os.fspath(output), threads, fresh, timing,
-                                           report, progress))
+    run = Evaluation(_deepguide._evaluate(_os.fspath(suite), methods, _os.fspath(output), threads, fresh, timing,
+                                          report, progress))
+    skipped = run._run._skipped_line()
+    if skipped and not allow_skips:
+        error = PartialError(skipped)
+        error.evaluation = run
+        raise error
+    return run
+
+
+def identify(scenario, *, mode="", check=True):
+    """Runs a scenario's identify section (aligning in a current, or going
+    around the object; `mode` align or around, empty: the scenario's), as
+    `deepguide identify`. A manoeuvre that fails (overpowered by the current,
+    a collision, out of time) raises ManoeuvreError with the command's line
+    (its `identification` attribute holds the run) unless `check` is False;
+    then the run's `failure` says it."""
+    run = _deepguide.identify(_os.fspath(scenario), mode=mode)
+    if check and run.failure:
+        error = ManoeuvreError(run.failure)
+        error.identification = run
+        raise error
+    return run

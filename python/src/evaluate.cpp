@@ -74,7 +74,8 @@ void bind_evaluate(py::module_& m) {
       .def(
           "summary_markdown", [](const Evaluation& e) { return summary_markdown(e.run, summarize(e.run)); },
           "The summary `deepguide evaluate` prints (summary.md).")
-      .def_property_readonly("complete", [](const Evaluation& e) { return e.run.complete; });
+      .def_property_readonly("complete", [](const Evaluation& e) { return e.run.complete; })
+      .def("_skipped_line", [](const Evaluation& e) { return skipped_line(e.run); });
 
   m.def(
       "_evaluate",

@@ -59,8 +59,8 @@ struct Obstacles {
 
 void bind_obstacles(py::module_& m) {
   py::class_<Obstacles>(m, "Obstacles", "Obstacle files read into one planning frame.")
-      .def_property_readonly("crs", [](const Obstacles& o) { return o.loaded.frame.id(); },
-                             "The planning frame, e.g. 'EPSG:32632'.")
+      .def_property_readonly(
+          "crs", [](const Obstacles& o) { return o.loaded.frame.id(); }, "The planning frame, e.g. 'EPSG:32632'.")
       .def_property_readonly("ellipses", &Obstacles::ellipses,
                              "An (n, 5) array: x, y in the frame, semi_major_m, semi_minor_m (true metres), "
                              "orientation_deg (clockwise from true north): plan's `ellipses`.")
