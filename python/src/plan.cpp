@@ -57,6 +57,51 @@ std::vector<EllipseRow> ellipse_rows(const py::array& array) {
   return out;
 }
 
+using Rings = std::vector<std::vector<Vec2>>;
+
+// Polygons as lists of rings ((k, 2) arrays, the outline first; or one
+// array: an outline alone), read while the GIL is held.
+std::vector<Rings> polygon_rings(const py::list& polygons) {
+  std::vector<Rings> out;
+  const auto ring_of = [](const py::handle& h, std::size_t i) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(h);
+    if (!a || a.ndim() != 2 || a.shape(1) != 2) {
+      throw InputError("`polygons` item " + std::to_string(i) + ": expected rings as (k, 2) arrays of x, y");
+    }
+    std::vector<Vec2> ring;
+    const auto r = a.unchecked<2>();
+    for (py::ssize_t k = 0; k < r.shape(0); ++k) ring.emplace_back(r(k, 0), r(k, 1));
+    return ring;
+  };
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const py::handle item = polygons[i];
+    Rings rings;
+    if (py::isinstance<py::list>(item) || py::isinstance<py::tuple>(item)) {
+      for (const py::handle ring : item) rings.push_back(ring_of(ring, i));
+    } else {
+      rings.push_back(ring_of(item, i));
+    }
+    out.push_back(std::move(rings));
+  }
+  return out;
+}
+
+// The polygons as obstacles, checked as a file's are (add_polygon_obstacle).
+void add_polygons(const std::vector<Rings>& polygons, ObstacleSet& into) {
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    PolygonObstacle p;
+    p.id = "polygons[" + std::to_string(i) + "]";
+    for (std::size_t k = 0; k < polygons[i].size(); ++k) {
+      auto& ring = k == 0 ? p.footprint.outer() : p.footprint.inners().emplace_back();
+      for (const Vec2& v : polygons[i][k]) ring.push_back(to_bg(v));
+      if (!ring.empty() && !(ring.front().x() == ring.back().x() && ring.front().y() == ring.back().y())) {
+        ring.push_back(ring.front());  // closed, as a file's rings are
+      }
+    }
+    add_polygon_obstacle(std::move(p), false, {"`polygons`", "polygon " + std::to_string(i), ""}, into);
+  }
+}
+
 // The rows as obstacles: centres in the frame's CRS, axes and orientation as an obstacle file gives them.
 std::vector<EllipticCylinder> ellipses_in(const LocalFrame& frame, const std::vector<EllipseRow>& rows) {
   std::vector<EllipticCylinder> out;
@@ -137,6 +182,7 @@ struct PlanArgs {
   std::pair<double, double> start, goal;
   std::vector<std::string> obstacles, charts;
   std::optional<py::array> ellipses;
+  std::optional<py::list> polygons;
   std::string crs, src_crs;
   std::optional<std::string> graph;
   std::string search, cost;
@@ -151,13 +197,14 @@ struct PlanArgs {
 };
 
 Route plan(const PlanArgs& a) {
-  if (a.obstacles.empty() && a.charts.empty() && !a.ellipses) {
-    throw InputError("`obstacles`: expected obstacle files, `charts` or `ellipses` (or several of them)");
+  if (a.obstacles.empty() && a.charts.empty() && !a.ellipses && !a.polygons) {
+    throw InputError("`obstacles`: expected obstacle files, `charts`, `ellipses` or `polygons` (or several of them)");
   }
-  if (a.ellipses && a.crs.empty()) {
-    throw InputError("`crs`: expected the CRS the `ellipses` array is in, e.g. 'EPSG:32632'");
+  if ((a.ellipses || a.polygons) && a.crs.empty()) {
+    throw InputError("`crs`: expected the CRS the `ellipses` and `polygons` arrays are in, e.g. 'EPSG:32632'");
   }
   const std::vector<EllipseRow> rows = a.ellipses ? ellipse_rows(*a.ellipses) : std::vector<EllipseRow>{};
+  const std::vector<Rings> polygons = a.polygons ? polygon_rings(*a.polygons) : std::vector<Rings>{};
   RoutePlanRequest r;
   r.charts = a.charts;
   r.src_crs = a.src_crs;
@@ -186,6 +233,7 @@ Route plan(const PlanArgs& a) {
   LoadedObstacles loaded = load_obstacles(a.obstacles, read);
   r.obstacles = std::move(loaded.obstacles);
   for (EllipticCylinder& e : ellipses_in(loaded.frame, rows)) r.obstacles.ellipses.push_back(std::move(e));
+  add_polygons(polygons, r.obstacles);
   r.problem.start = parse_position(from, "`start`", loaded.frame, !a.crs.empty());
   r.problem.goal = parse_position(to, "`goal`", loaded.frame, !a.crs.empty());
   if (a.start_heading) r.problem.start_heading = loaded.frame.heading_to_local(*a.start_heading, r.problem.start);
@@ -233,11 +281,12 @@ void bind_plan(py::module_& m) {
       "plan",
       [](std::pair<double, double> start, std::pair<double, double> goal,
          const std::vector<std::filesystem::path>& obstacles, const std::vector<std::filesystem::path>& charts,
-         std::optional<py::array> ellipses, std::string crs, std::string src_crs, std::optional<std::string> graph,
-         std::string search, std::string cost, double margin, double tolerance, std::optional<double> depth,
-         std::optional<double> turn_radius, double vertical_clearance, bool escape, std::string vehicle,
-         std::string speed, std::string current, std::size_t max_expansions, std::optional<double> start_heading,
-         std::optional<double> goal_heading, std::string current_const, std::string depart) {
+         std::optional<py::array> ellipses, std::optional<py::list> polygons, std::string crs, std::string src_crs,
+         std::optional<std::string> graph, std::string search, std::string cost, double margin, double tolerance,
+         std::optional<double> depth, std::optional<double> turn_radius, double vertical_clearance, bool escape,
+         std::string vehicle, std::string speed, std::string current, std::size_t max_expansions,
+         std::optional<double> start_heading, std::optional<double> goal_heading, std::string current_const,
+         std::string depart) {
         const auto strings = [](const std::vector<std::filesystem::path>& paths) {
           std::vector<std::string> out;
           for (const auto& p : paths) out.push_back(p.string());
@@ -248,6 +297,7 @@ void bind_plan(py::module_& m) {
                              strings(obstacles),
                              strings(charts),
                              std::move(ellipses),
+                             std::move(polygons),
                              std::move(crs),
                              std::move(src_crs),
                              std::move(graph),
@@ -269,9 +319,10 @@ void bind_plan(py::module_& m) {
                              std::move(depart)});
       },
       py::arg("start"), py::arg("goal"), py::kw_only(), py::arg("obstacles") = std::vector<std::filesystem::path>{},
-      py::arg("charts") = std::vector<std::filesystem::path>{}, py::arg("ellipses") = py::none(), py::arg("crs") = "",
-      py::arg("src_crs") = "", py::arg("graph") = py::none(), py::arg("search") = "astar", py::arg("cost") = "length",
-      py::arg("margin") = 5.0, py::arg("tolerance") = PlannerOptions{}.tolerance, py::arg("depth") = py::none(),
+      py::arg("charts") = std::vector<std::filesystem::path>{}, py::arg("ellipses") = py::none(),
+      py::arg("polygons") = py::none(), py::arg("crs") = "", py::arg("src_crs") = "", py::arg("graph") = py::none(),
+      py::arg("search") = "astar", py::arg("cost") = "length", py::arg("margin") = 5.0,
+      py::arg("tolerance") = PlannerOptions{}.tolerance, py::arg("depth") = py::none(),
       py::arg("turn_radius") = py::none(), py::arg("vertical_clearance") = 2.0, py::arg("escape") = false,
       py::arg("vehicle") = "", py::arg("speed") = "cruise", py::arg("current") = "", py::arg("max_expansions") = 0,
       py::arg("start_heading") = py::none(), py::arg("goal_heading") = py::none(), py::arg("current_const") = "",
@@ -280,7 +331,8 @@ void bind_plan(py::module_& m) {
 
 start, goal: (lon, lat) in degrees, or (x, y) in `crs` when `crs` is given.
 obstacles: obstacle files; charts: bathymetry rasters, S-57 cells or folders, prepared charts, hazard files.
-ellipses: an (n, 5) array of x, y, semi_major_m, semi_minor_m, orientation_deg (clockwise from grid north) in `crs`.
+ellipses: an (n, 5) array of x, y, semi_major_m, semi_minor_m, orientation_deg (clockwise from true north) in `crs`.
+polygons: a list of polygons in `crs`, each a list of (k, 2) rings (the outline first, then holes) or one ring.
 graph: a graph of the registry (deepguide.graphs()); None: what `plan` takes by default.
 margin, tolerance, depth, turn_radius, vertical_clearance: metres, as the CLI's flags.
 start_heading, goal_heading: degrees clockwise from true north (with a turn_radius; the tangent graph).

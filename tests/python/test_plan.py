@@ -186,3 +186,20 @@ def test_obstacles_read_into_arrays_plan_as_their_file(sample, tmp_path):
         assert row[2] == pytest.approx(by_id[name]["semi_major_m"], rel=1e-12)
         assert row[4] == pytest.approx(by_id[name]["orientation_deg"] % 180, abs=1e-9)
     assert "ellipses" in repr(read)
+
+
+def test_arrays_of_polygons_plan_as_their_file(sample, tmp_path):
+    obstacles = deepguide.read_obstacles([sample])
+    assert obstacles.polygons, "the sample has a hazard area"
+    from_file = deepguide.plan(FROM, TO, obstacles=[sample])
+    start, goal = tuple(from_file.xy[0]), tuple(from_file.xy[-1])
+    from_arrays = deepguide.plan(start, goal, ellipses=obstacles.ellipses, polygons=obstacles.polygons,
+                                 crs=obstacles.crs)
+    assert from_arrays.length_m == pytest.approx(from_file.length_m, abs=1e-6)
+    # One ring alone is an outline; a ring that crosses itself is refused as a file's is.
+    square = np.array([[0.0, 0.0], [0.0, 10.0], [10.0, 10.0], [10.0, 0.0]]) + [500000.0, 6000000.0]
+    alone = deepguide.plan((499980.0, 6000005.0), (500030.0, 6000005.0), polygons=[square], crs="EPSG:32632")
+    assert alone.length_m > 50.0
+    bowtie = np.array([[0.0, 0.0], [10.0, 10.0], [10.0, 0.0], [0.0, 10.0]]) + [500000.0, 6000000.0]
+    with pytest.raises(deepguide.InputError, match="polygon 0"):
+        deepguide.plan((499980.0, 6000005.0), (500030.0, 6000005.0), polygons=[bowtie], crs="EPSG:32632")

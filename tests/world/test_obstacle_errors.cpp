@@ -230,6 +230,22 @@ TEST(ObstacleErrors, PolygonsThatAreNotSimpleAreRefusedNotGuessed) {
   const std::string bow = dir.write(
       "bow.geojson", collection({polygon("bowtie", "[[[10,54],[10.01,54.01],[10.01,54],[10,54.01],[10,54]]]")}));
   expect_error(error_of({bow}), {bow.c_str(), "feature 0", "bowtie", "geometry", "simple polygon", "cross themselves"});
+  // A bow-tie whose lobes cancel exactly (a projected CSV, an array from
+  // Python): Boost reports the orientation before the crossing, which
+  // passed as harmless until the area of its lobes summed to 0 bit for bit.
+  PolygonObstacle exact;
+  exact.id = "exact";
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, {10.0, 10.0}, {10.0, 0.0}, {0.0, 10.0}, {0.0, 0.0}}) {
+    exact.footprint.outer().push_back(to_bg(Vec2(500000.0 + x, 6000000.0 + y)));
+  }
+  ObstacleSet into;
+  try {
+    add_polygon_obstacle(exact, false, {"arrays", "polygon 0", ""}, into);
+    ADD_FAILURE() << "an exact bow-tie was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cross themselves"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(into.polygons.empty());
   // The library's own files (a prepared chart) ask for a repair instead: the bow-tie's two lobes, each valid.
   ObstacleReadOptions repair;
   repair.repair_polygons = true;

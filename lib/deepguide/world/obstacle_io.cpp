@@ -191,7 +191,14 @@ void require_simple(const BgPolygon& footprint, const InputLocation& where) {
     case bg::failure_nested_interior_rings: got = "a hole inside another hole"; break;
     case bg::failure_disconnected_interior: got = "holes that cut the polygon in two"; break;
     case bg::failure_intersecting_interiors: got = "holes that overlap"; break;
-    default: return;  // orientation, closure and duplicate points are corrected or harmless
+    case bg::failure_wrong_orientation:
+      // correct() has oriented every ring with an area; one it could not is a
+      // bow-tie whose lobes cancel exactly (area 0: Boost then reports the
+      // orientation before the crossing) or a ring without area.
+      got =
+          bg::intersects(footprint) ? "rings that cross themselves or each other (a bow-tie?)" : "a ring without area";
+      break;
+    default: return;  // closure and duplicate points are corrected or harmless
   }
   InputLocation w = where;
   w.field = "geometry";
@@ -422,6 +429,26 @@ Ellipse ellipse_from_fields(const LocalFrame& frame, const Eigen::Vector2d& cent
   return Ellipse{centre, semi_major_m * k, semi_minor_m * k, frame.heading_to_local(orientation_deg, centre)};
 }
 
+void add_polygon_obstacle(PolygonObstacle p, bool repair, const InputLocation& where, ObstacleSet& into) {
+  boost::geometry::correct(p.footprint);
+  if (repair && !boost::geometry::is_valid(p.footprint)) {
+    // A repair that leaves no area is refused as before: never an obstacle dropped in silence.
+    // The parts are GEOS's valid polygons; two holes touching at a vertex may stay that Boost
+    // reads as crossing (Kachemak at 7 m, enc/25), which the planners take as they are.
+    const std::vector<BgPolygon> parts = union_no_go({}, {&p.footprint});
+    if (parts.empty()) require_simple(p.footprint, where);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      PolygonObstacle part = p;
+      part.footprint = parts[k];
+      if (k > 0) part.id += "#" + std::to_string(k + 1);
+      into.polygons.push_back(std::move(part));
+    }
+    return;
+  }
+  require_simple(p.footprint, where);
+  into.polygons.push_back(std::move(p));
+}
+
 EllipseFields ellipse_fields(const LocalFrame& frame, const Ellipse& footprint) {
   const Eigen::Vector2d lonlat = frame.to_lonlat(footprint.centre);
   const double scale = std::max(1.0, frame.scale_at(lonlat).greatest);
@@ -477,23 +504,7 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
           auto& ring = k == 0 ? p.footprint.outer() : p.footprint.inners().emplace_back();
           for (const auto& ll : r.rings[k]) ring.push_back(to_bg(to_local_checked(*frame, ll, r.where)));
         }
-        boost::geometry::correct(p.footprint);
-        if (options.repair_polygons && !boost::geometry::is_valid(p.footprint)) {
-          // A repair that leaves no area is refused as before: never an obstacle dropped in silence.
-          // The parts are GEOS's valid polygons; two holes touching at a vertex may stay that Boost
-          // reads as crossing (Kachemak at 7 m, enc/25), which the planners take as they are.
-          const std::vector<BgPolygon> parts = union_no_go({}, {&p.footprint});
-          if (parts.empty()) require_simple(p.footprint, r.where);
-          for (std::size_t k = 0; k < parts.size(); ++k) {
-            PolygonObstacle part = p;
-            part.footprint = parts[k];
-            if (k > 0) part.id += "#" + std::to_string(k + 1);
-            out.obstacles.polygons.push_back(std::move(part));
-          }
-          continue;
-        }
-        require_simple(p.footprint, r.where);
-        out.obstacles.polygons.push_back(std::move(p));
+        add_polygon_obstacle(std::move(p), options.repair_polygons, r.where, out.obstacles);
       }
     }
     out.sources.push_back(std::move(src.info));

@@ -91,6 +91,12 @@ LoadedObstacles load_obstacles(const std::vector<std::string>& paths, const Obst
 Ellipse ellipse_from_fields(const LocalFrame& frame, const Eigen::Vector2d& centre, const Eigen::Vector2d& lonlat,
                             double semi_major_m, double semi_minor_m, double orientation_deg);
 
+/// Adds a polygon obstacle read from somewhere (`where` names it in errors):
+/// its rings oriented as the planners expect (outer clockwise), and either
+/// refused when it is not simple (InputError) or, with `repair`, split into
+/// GEOS's valid parts. What the readers and deepguide.plan's `polygons` share.
+void add_polygon_obstacle(PolygonObstacle polygon, bool repair, const InputLocation& where, ObstacleSet& into);
+
 /// The fields an obstacle file gives an ellipse in `frame`, back from its
 /// footprint: ellipse_from_fields' inverse (axes in true metres, the major
 /// axis clockwise from true north in [0, 180)).
