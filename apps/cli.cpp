@@ -138,6 +138,7 @@ const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter
     {"merge_distance_m", "--merge-distance"},
     {"methods", "--methods"},
     {"min_cell_m", "--min-cell"},
+    {"mode", "--mode"},
     {"name", "--name"},
     {"operating_depth_m", "--depth"},
     {"output", "--output"},
