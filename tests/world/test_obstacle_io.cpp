@@ -115,6 +115,37 @@ TEST_P(RoundTrip, LocalToFileToLocalWithinAMicrometre) {
   expect_same(set, load_obstacles({again}, {"EPSG:32632", ""}).obstacles, 1e-6);
 }
 
+TEST_P(RoundTrip, AxesSurviveWhereTheFrameStretchesThem) {
+  // 190 to 210 km east of 9 E the UTM frame stretches lengths by 4e-5 to 1.3e-4: the reader
+  // makes a file's true metres frame metres there, so the writer must give
+  // true metres back, or every round trip grew the axes by that much.
+  ScratchDir dir;
+  std::mt19937 rng(77);
+  ObstacleSet set = random_set(rng, 30, 0);
+  for (EllipticCylinder& e : set.ellipses) e.footprint.centre.x() += 120000.0;
+  const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
+  ASSERT_GT(frame.scale_at(frame.to_lonlat(set.ellipses[0].footprint.centre)).greatest, 1.00003);
+  // The scale is read at the centre as the file gives it back, to about 1e-8:
+  // the axes return to that, where the old writer grew them by the stretch.
+  const auto expect_axes = [&](const ObstacleSet& got) {
+    ASSERT_EQ(got.ellipses.size(), set.ellipses.size());
+    for (std::size_t i = 0; i < set.ellipses.size(); ++i) {
+      const Ellipse &w = set.ellipses[i].footprint, &g = got.ellipses[i].footprint;
+      EXPECT_LT((g.centre - w.centre).norm(), 1e-6);
+      EXPECT_NEAR(g.a, w.a, 1e-7 * w.a) << i;
+      EXPECT_NEAR(g.b, w.b, 1e-7 * w.b) << i;
+      EXPECT_LT(axis_diff(g.theta, w.theta) * w.a, 1e-6) << i;
+    }
+  };
+  const std::string path = dir.file("stretched" + GetParam());
+  write_obstacles(path, set, frame);
+  const LoadedObstacles back = load_obstacles({path}, {"EPSG:32632", ""});
+  expect_axes(back.obstacles);
+  const std::string again = dir.file("again" + GetParam());
+  write_obstacles(again, back.obstacles, back.frame);
+  expect_axes(load_obstacles({again}, {"EPSG:32632", ""}).obstacles);
+}
+
 INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip, ::testing::Values(".geojson", ".gpkg", ".csv"),
                          [](const auto& info) { return info.param.substr(1); });
 

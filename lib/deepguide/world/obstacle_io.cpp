@@ -579,10 +579,11 @@ void write_obstacles(const std::string& path, const ObstacleSet& obstacles, cons
       f.SetField("id", c.id.c_str());
       const Eigen::Vector2d ll = to_ll(c.footprint.centre);
       f.SetGeometry(std::make_unique<OGRPoint>(ll.x(), ll.y()).get());
-      f.SetField("semi_major_m", c.footprint.a);
-      f.SetField("semi_minor_m", c.footprint.b);
-      // An ellipse is symmetric: report its axis in [0, 180).
-      f.SetField("orientation_deg", std::fmod(frame.local_to_heading(c.footprint.theta, c.footprint.centre), 180.0));
+      // The reader's fields back (ellipse_fields): true metres, the axis in [0, 180).
+      const EllipseFields fields = ellipse_fields(frame, c.footprint);
+      f.SetField("semi_major_m", fields.semi_major_m);
+      f.SetField("semi_minor_m", fields.semi_minor_m);
+      f.SetField("orientation_deg", fields.orientation_deg);
       set_optional(f, "height_m", c.height_m);
       set_optional(f, "top_depth_m", c.top_depth_m);
       if (layer->CreateFeature(&f) != OGRERR_NONE) fail_write(path, "write obstacle '" + c.id + "'");
