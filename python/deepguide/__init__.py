@@ -87,6 +87,18 @@ def _png_of(thing):
 Route._repr_png_ = _png_of
 
 
+def _mission_track(self):
+    """The track sailed (`mission_simulate`), a sample a second: a NumPy
+    structured array of time_s, x_m, y_m (the mission's frame), lon, lat,
+    depth_m, heading_deg (clockwise from north), along_m (the vehicle's place
+    on the plan of the time) and reactive (the reactive level had control)."""
+    columns = self._track_columns()
+    return _np.rec.fromarrays([_np.asarray(columns[n]) for n in columns], names=list(columns))
+
+
+MissionRun.track = property(_mission_track)
+
+
 class Simulation:
     """One reactive run, as `deepguide simulate` makes it.
 

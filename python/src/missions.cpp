@@ -3,6 +3,7 @@
 // text) with `failure`, the one line the command exits 3 with, or None: a
 // mission that cannot be sailed is a report to read, not an exception.
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "deepguide/core/angles.hpp"
 #include "deepguide/mission/mission_report.hpp"
 #include "deepguide/simulation/mission_run_report.hpp"
 
@@ -44,6 +46,27 @@ void bind_missions(py::module_& m) {
   bind_report<MissionCheckReport>(m, "MissionCheck", "What `deepguide mission check` reports.");
   bind_report<MissionPlanReport>(m, "MissionPlan", "What `deepguide mission plan` reports.");
   bind_report<MissionRunReport>(m, "MissionRun", "What `deepguide mission simulate` reports.");
+  // The track sailed, as columns the package's Python part makes a structured array.
+  py::type::of<MissionRunReport>().attr("_track_columns") = py::cpp_function(
+      [](const MissionRunReport& r) {
+        const auto& t = r.run.track;
+        const auto n = static_cast<py::ssize_t>(t.size());
+        py::array_t<double> time(n), x(n), y(n), lon(n), lat(n), depth(n), heading(n), along(n);
+        py::array_t<bool> reactive(n);
+        for (py::ssize_t i = 0; i < n; ++i) {
+          const MissionSample& s = t[static_cast<std::size_t>(i)];
+          const Vec2 ll = r.loaded.mission.frame.to_lonlat(s.position);
+          time.mutable_at(i) = s.time_s, x.mutable_at(i) = s.position.x(), y.mutable_at(i) = s.position.y();
+          lon.mutable_at(i) = ll.x(), lat.mutable_at(i) = ll.y(), depth.mutable_at(i) = s.depth_m;
+          heading.mutable_at(i) = math_rad_to_heading_deg(s.heading), along.mutable_at(i) = s.along_m;
+          reactive.mutable_at(i) = s.reactive;
+        }
+        py::dict d;
+        d["time_s"] = time, d["x_m"] = x, d["y_m"] = y, d["lon"] = lon, d["lat"] = lat, d["depth_m"] = depth;
+        d["heading_deg"] = heading, d["along_m"] = along, d["reactive"] = reactive;
+        return d;
+      },
+      py::is_method(py::type::of<MissionRunReport>()));
 
   m.def(
       "mission_check",

@@ -1,6 +1,7 @@
 """Missions from Python against `deepguide mission check|plan|export|simulate
 --json`: the same reports, the same failures, the same files."""
 
+import numpy as np
 import pytest
 
 import deepguide
@@ -40,3 +41,19 @@ def test_a_simulated_mission_is_the_commands(cli):
 def test_a_missing_mission_is_bad_input(tmp_path):
     with pytest.raises(deepguide.InputError, match="nowhere.yaml"):
         deepguide.mission_plan(tmp_path / "nowhere.yaml")
+
+
+def test_a_simulated_missions_track_is_an_array_that_adds_up():
+    run = deepguide.mission_simulate(SAMPLE, unknown=[UNKNOWN], seed=3)
+    t = run.track
+    summary = run.to_dict()
+    assert len(t) > 100
+    assert t.dtype.names == ("time_s", "x_m", "y_m", "lon", "lat", "depth_m", "heading_deg", "along_m", "reactive")
+    steps = np.diff(t["time_s"])
+    assert np.all(steps > 0) and np.median(steps) == pytest.approx(1.0, abs=1e-6)
+    assert t["time_s"][-1] <= summary["time_s"] + 1e-6
+    # The samples, a second apart, cut the track's corners: no longer than it, and nearly as long.
+    sampled = float(np.sum(np.hypot(np.diff(t["x_m"]), np.diff(t["y_m"]))))
+    assert 0.98 * summary["length_m"] <= sampled <= summary["length_m"] + 1e-6
+    assert t["reactive"].any() == any("reactive level" in e["what"] for e in summary["events"])
+    assert np.all((t["heading_deg"] >= 0) & (t["heading_deg"] < 360))
