@@ -3,7 +3,23 @@
 
 #include <pybind11/pybind11.h>
 
+#include <filesystem>
+#include <string>
+#include <vector>
+
 namespace deepguide::python {
+
+/// A JSON text the library made (a report's --json) as Python objects.
+inline pybind11::object from_json(const std::string& text) {
+  return pybind11::module_::import("json").attr("loads")(text);
+}
+
+/// Paths from Python (str or os.PathLike) as the library's file names.
+inline std::vector<std::string> path_texts(const std::vector<std::filesystem::path>& paths) {
+  std::vector<std::string> out;
+  for (const auto& p : paths) out.push_back(p.string());
+  return out;
+}
 
 /// deepguide.plan and the Route it returns (plan.cpp).
 void bind_plan(pybind11::module_& m);

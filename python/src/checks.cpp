@@ -22,18 +22,10 @@ namespace py = pybind11;
 namespace deepguide::python {
 namespace {
 
-py::object as_python(const std::string& json) { return py::module_::import("json").attr("loads")(json); }
-
 struct Identification {
   Scenario scenario;
   IdentifyResult result;
 };
-
-std::vector<std::string> strings(const std::vector<std::filesystem::path>& paths) {
-  std::vector<std::string> out;
-  for (const auto& p : paths) out.push_back(p.string());
-  return out;
-}
 
 }  // namespace
 
@@ -44,7 +36,7 @@ void bind_checks(py::module_& m) {
       .def_readonly("waypoints", &RouteFileCheckReport::waypoints)
       .def_readonly("length_m", &RouteFileCheckReport::length_m)
       .def(
-          "to_dict", [](const RouteFileCheckReport& r) { return as_python(r.to_json().dump()); },
+          "to_dict", [](const RouteFileCheckReport& r) { return from_json(r.to_json().dump()); },
           "The command's --json.")
       .def("text", &RouteFileCheckReport::to_text)
       .def("__repr__", [](const RouteFileCheckReport& r) {
@@ -58,8 +50,8 @@ void bind_checks(py::module_& m) {
          double vertical_clearance, const std::string& crs, const std::string& src_crs) {
         RouteFileCheckOptions o;
         o.route = route.string();
-        o.obstacles = strings(obstacles);
-        o.charts = strings(charts);
+        o.obstacles = path_texts(obstacles);
+        o.charts = path_texts(charts);
         if (depth) o.operating_depth_m = *depth;
         o.margin_m = margin;
         o.vertical_clearance_m = vertical_clearance;
@@ -79,7 +71,7 @@ void bind_checks(py::module_& m) {
   py::class_<Identification>(m, "Identification", "An identification run, as `deepguide identify` makes it.")
       .def(
           "to_dict",
-          [](const Identification& r) { return as_python(identification_json(r.scenario, r.result).dump()); },
+          [](const Identification& r) { return from_json(identification_json(r.scenario, r.result).dump()); },
           "The command's --json: statistics and mode switches.")
       .def("text", [](const Identification& r) { return identification_text(r.scenario, r.result); })
       .def_property_readonly("end", [](const Identification& r) { return std::string(to_string(r.result.end)); })

@@ -66,10 +66,7 @@ void bind_evaluate(py::module_& m) {
   py::class_<Evaluation>(m, "_Evaluation")
       .def("_rows_csv", &Evaluation::rows_csv)
       .def(
-          "to_dict",
-          [](const Evaluation& e) {
-            return py::module_::import("json").attr("loads")(results_json(e.run, summarize(e.run)).dump());
-          },
+          "to_dict", [](const Evaluation& e) { return from_json(results_json(e.run, summarize(e.run)).dump()); },
           "What results.json holds: the summary per method, the seed's claims, every row.")
       .def(
           "summary_markdown", [](const Evaluation& e) { return summary_markdown(e.run, summarize(e.run)); },

@@ -23,14 +23,12 @@ namespace py = pybind11;
 namespace deepguide::python {
 namespace {
 
-py::object as_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
-
 // The reports share what Python sees of them.
 template <class Report>
 void bind_report(py::module_& m, const char* name, const char* doc) {
   py::class_<Report>(m, name, doc)
       .def(
-          "to_dict", [](const Report& r) { return as_python(r.to_json()); }, "The command's --json.")
+          "to_dict", [](const Report& r) { return from_json(r.to_json().dump()); }, "The command's --json.")
       .def("text", &Report::to_text, "What the command prints.")
       .def_property_readonly("failure", &Report::failure,
                              "Why the mission cannot be sailed (the line the command exits 3 with), or None.")
@@ -101,7 +99,7 @@ void bind_missions(py::module_& m) {
          double planning_delay) {
         MissionRunRequest request;
         request.mission = mission.string();
-        for (const auto& u : unknown) request.unknown.push_back(u.string());
+        request.unknown = path_texts(unknown);
         request.options.seed = seed;
         request.options.planning_delay_s = planning_delay;
         py::gil_scoped_release free;

@@ -87,8 +87,7 @@ void bind_obstacles(py::module_& m) {
   m.def(
       "read_obstacles",
       [](const std::vector<std::filesystem::path>& paths, const std::string& crs, const std::string& src_crs) {
-        std::vector<std::string> files;
-        for (const auto& p : paths) files.push_back(p.string());
+        const std::vector<std::string> files = path_texts(paths);
         py::gil_scoped_release free;
         return Obstacles{load_obstacles(files, {crs, src_crs})};
       },

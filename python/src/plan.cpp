@@ -168,7 +168,7 @@ struct Route {
     }
     return out;
   }
-  py::object to_dict() const { return py::module_::import("json").attr("loads")(report->to_json().dump()); }
+  py::object to_dict() const { return from_json(report->to_json().dump()); }
   std::string repr() const {
     char text[200];
     std::snprintf(text, sizeof text, "Route(length_m=%.2f, waypoints=%zu, graph='%s', crs='%s')",
@@ -287,15 +287,10 @@ void bind_plan(py::module_& m) {
          std::string vehicle, std::string speed, std::string current, std::size_t max_expansions,
          std::optional<double> start_heading, std::optional<double> goal_heading, std::string current_const,
          std::string depart) {
-        const auto strings = [](const std::vector<std::filesystem::path>& paths) {
-          std::vector<std::string> out;
-          for (const auto& p : paths) out.push_back(p.string());
-          return out;
-        };
         return plan(PlanArgs{start,
                              goal,
-                             strings(obstacles),
-                             strings(charts),
+                             path_texts(obstacles),
+                             path_texts(charts),
                              std::move(ellipses),
                              std::move(polygons),
                              std::move(crs),

@@ -54,9 +54,7 @@ struct Simulation {
     d["clearance_m"] = clearance, d["sector"] = sector, d["status"] = status, d["course_unreachable"] = unreachable;
     return d;
   }
-  py::object to_dict() const {
-    return py::module_::import("json").attr("loads")(simulation_json(scenario, result).dump());
-  }
+  py::object to_dict() const { return from_json(simulation_json(scenario, result).dump()); }
 };
 
 }  // namespace
@@ -87,7 +85,8 @@ void bind_simulate(py::module_& m) {
       "_simulate",
       [](const std::string& scenario_file, const std::string& method, std::optional<std::uint64_t> seed) {
         const auto parsed = parse_reactive_method(method);
-        if (!parsed) throw InputError("`method`: expected dipole, geometric or potential, got '" + method + "'");
+        if (!parsed)
+          throw InputError("`method`: expected dipole, geometric or potential, got '" + printable(method) + "'");
         Simulation out;
         {
           py::gil_scoped_release free;

@@ -411,16 +411,18 @@ bool TangentGraph::Impl::arc_free(std::size_t piece, double phi0, double phi1) c
   // samples find unless the overlap is thinner than the step (then the route
   // checker, which every route passes, has the last word). Far from other
   // zones an arc takes a few distances instead of one point test per `step`
-  // (up to 200,000 on a turning circle). The candidates are the obstacles
-  // whose box comes within the margin of the piece's disc.
-  const double step = std::max(0.5 * tolerance, 1e-3);
+  // (up to 200,000 on a turning circle). No arc takes more than 200,000
+  // steps: a longer one is sampled that many times over its whole length.
+  // The candidates are the obstacles whose box comes within the margin of
+  // the piece's disc.
   const double radius = std::max(z.max_curvature_radius(), 1e-9);
+  const double step = std::max({0.5 * tolerance, 1e-3, (phi1 - phi0) * radius / 200000.0});
   const std::size_t own = own_ellipse(piece);
   const Vec2 reach = Vec2::Constant(z.bounding_radius());
   std::vector<std::size_t> near = field->near(z.inner_point() - reach, z.inner_point() + reach, margin);
   std::erase(near, own);
   double phi = phi0;
-  for (int k = 0; k < 200000 && !near.empty(); ++k) {
+  while (!near.empty()) {
     const Vec2 q = z.point_at_normal(phi);
     double c = std::numeric_limits<double>::infinity();
     for (std::size_t i : near) c = std::min(c, field->distance_to(i, q) - margin);
