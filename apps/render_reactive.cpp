@@ -26,19 +26,6 @@ struct ReactiveFigureOptions {
   int width = 1200;
 };
 
-std::vector<ReactiveMethod> methods_option(const std::vector<std::string>& names) {
-  std::vector<ReactiveMethod> out;
-  for (const std::string& n : names) {
-    const ReactiveMethod m = reactive_method_option("--methods", n);
-    if (std::find(out.begin(), out.end(), m) != out.end()) {
-      throw InputError("--methods: expected each method once, got '" + printable(n) + "' twice");
-    }
-    out.push_back(m);
-  }
-  if (out.empty()) throw InputError("--methods: expected at least one method");
-  return out;
-}
-
 CLI::App* add_figure_command(CLI::App& render, const std::string& name, const std::string& help,
                              const std::shared_ptr<ReactiveFigureOptions>& o) {
   CLI::App* cmd = render.add_subcommand(name, help);
@@ -58,8 +45,7 @@ void add_methods_option(CLI::App& cmd, ReactiveFigureOptions& o) {
 }  // namespace
 
 ReactiveMethod reactive_method_option(const std::string& option, const std::string& name) {
-  if (const auto m = parse_reactive_method(name)) return *m;
-  throw InputError(option + ": expected dipole, geometric or potential, got '" + printable(name) + "'");
+  return reactive_method_named(name, option);
 }
 
 void register_render_reactive(CLI::App& render) {
@@ -85,7 +71,7 @@ void register_render_reactive(CLI::App& render) {
     add_methods_option(*cmd, *o);
     cmd->callback([o] {
       image_format_for(o->output);
-      const std::vector<ReactiveMethod> methods = methods_option(o->methods);
+      const std::vector<ReactiveMethod> methods = reactive_methods_named(o->methods, "--methods");
       TrajectoryFigure figure = trajectory_figure_for(read_scenario_file(o->scenario), methods);
       figure.width_px = o->width;
       if (!o->title.empty()) figure.map.title = o->title;
@@ -101,7 +87,7 @@ void register_render_reactive(CLI::App& render) {
     add_methods_option(*cmd, *o);
     cmd->callback([o] {
       image_format_for(o->output);
-      const std::vector<ReactiveMethod> methods = methods_option(o->methods);
+      const std::vector<ReactiveMethod> methods = reactive_methods_named(o->methods, "--methods");
       TurnRatePlot plot = turn_rate_plot_for(read_scenario_file(o->scenario), methods);
       plot.width_px = o->width;
       if (!o->title.empty()) plot.title = o->title;

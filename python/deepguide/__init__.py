@@ -22,6 +22,8 @@ import numpy as _np
 
 from . import _deepguide
 from ._deepguide import (
+    Chart,
+    CurrentField,
     Identification,
     InputError,
     ManoeuvreError,
@@ -35,6 +37,7 @@ from ._deepguide import (
     RouteCheck,
     __version__,
     check_route,
+    constant_current,
     generate_suite,
     graphs,
     mission_check,
@@ -42,10 +45,14 @@ from ._deepguide import (
     mission_plan,
     mission_simulate,
     plan,
+    read_chart,
+    read_current,
     read_obstacles,
 )
 
 __all__ = [
+    "Chart",
+    "CurrentField",
     "Evaluation",
     "Identification",
     "InputError",
@@ -61,6 +68,7 @@ __all__ = [
     "Simulation",
     "__version__",
     "check_route",
+    "constant_current",
     "evaluate",
     "generate_suite",
     "graphs",
@@ -70,21 +78,141 @@ __all__ = [
     "mission_plan",
     "mission_simulate",
     "plan",
+    "read_chart",
+    "read_current",
     "read_obstacles",
+    "render_field",
+    "render_identification",
+    "render_mission",
+    "render_simulation",
+    "render_turn_rates",
+    "seed_figure",
+    "seed_figures",
     "simulate",
 ]
 
 
-def _png_of(thing):
-    """`thing.render` to a temporary PNG, as bytes: what a notebook shows."""
+def _drawing(draw, path, format):
+    """Calls `draw(file)`: into `path` (its extension says PNG or SVG), then
+    None; or, when `path` is None, into a temporary file of `format` (png or
+    svg), then the drawing's bytes."""
+    if path is not None:
+        draw(_os.fspath(path))
+        return None
+    if format not in ("png", "svg"):
+        raise InputError(f"`format`: expected png or svg, got {format!r}")
     with _tempfile.TemporaryDirectory() as folder:
-        path = _os.path.join(folder, "figure.png")
-        thing.render(path)
-        with open(path, "rb") as f:
+        file = _os.path.join(folder, "figure." + format)
+        draw(file)
+        with open(file, "rb") as f:
             return f.read()
 
 
+def _route_render(self, path=None, *, draw_graph=False, format="png"):
+    """Draws the route over its obstacles or chart, as `plan --render`: into
+    `path` (.png or .svg), or, without one, as bytes of `format`."""
+    return _drawing(lambda file: self._render(file, draw_graph), path, format)
+
+
+Route.render = _route_render
+
+
+def _png_of(thing):
+    """`thing.render()` as PNG bytes: what a notebook shows."""
+    return thing.render()
+
+
 Route._repr_png_ = _png_of
+
+
+def _chart_render(self, path=None, *, width=1200, title="", obstacles=(), format="png"):
+    """Draws the chart as `deepguide render chart` does (depth shading, land,
+    hazards, the no-go at its depth, scale bar, north arrow; `obstacles`
+    files drawn over it): into `path` (.png or .svg), or as bytes of `format`."""
+    files = [_os.fspath(o) for o in obstacles]
+    return _drawing(lambda file: self._render(file, width, title, files), path, format)
+
+
+Chart.render = _chart_render
+Chart._repr_png_ = _png_of
+
+
+def _mission_render(self, path=None, *, zoom=0.0, width=1200, title="", format="png"):
+    """Draws the run as `mission simulate --render` does: the plan as it
+    ended, the track (coloured where the reactive level steered), the objects
+    found; `zoom` metres around the first of them when > 0. Into `path` (.png
+    or .svg), or as bytes of `format`."""
+    return _drawing(lambda file: self._render(file, zoom, width, title), path, format)
+
+
+MissionRun.render = _mission_render
+MissionRun._repr_png_ = _png_of
+
+
+_ALL_METHODS = ("dipole", "geometric", "potential")
+
+
+def _method_list(methods):
+    return [methods] if isinstance(methods, str) else list(methods)
+
+
+def render_field(scenario, method, path=None, *, width=1200, title="", format="png"):
+    """A reactive method's gradient lines around a scenario's obstacles, as
+    `deepguide render field` (the seed's Figs. 8 and 10): into `path` (.png
+    or .svg), or as bytes of `format`."""
+    return _drawing(lambda file: _deepguide._render_field(_os.fspath(scenario), method, file, width, title), path,
+                    format)
+
+
+def render_simulation(scenario, methods=_ALL_METHODS, path=None, *, width=1200, title="", format="png"):
+    """The reactive methods simulated through a scenario and their tracks, as
+    `deepguide render simulation` (the seed's Fig. 11)."""
+    names = _method_list(methods)
+    return _drawing(lambda file: _deepguide._render_simulation(_os.fspath(scenario), names, file, width, title),
+                    path, format)
+
+
+def render_turn_rates(scenario, methods=_ALL_METHODS, path=None, *, width=1200, title="", format="png"):
+    """r_ref and r over time for each method, as `deepguide render
+    turn-rates` (the seed's Fig. 12)."""
+    names = _method_list(methods)
+    return _drawing(lambda file: _deepguide._render_turn_rates(_os.fspath(scenario), names, file, width, title),
+                    path, format)
+
+
+def render_identification(scenario, path=None, *, mode="", width=1200, title="", format="png"):
+    """An identification manoeuvre (`mode` align or around; empty: the
+    scenario's) and its track, as `deepguide render identification`. A
+    manoeuvre that fails is drawn all the same: its legend says so."""
+    return _drawing(lambda file: _deepguide._render_identification(_os.fspath(scenario), mode, file, width, title),
+                    path, format)
+
+
+def render_mission(mission, path=None, *, as_written=False, width=1200, title="", format="png"):
+    """A mission over its chart, as `deepguide render mission`: the plan with
+    its evasions and identification laps and where conflicts began (or the
+    plan `as_written`)."""
+    return _drawing(lambda file: _deepguide._render_mission(_os.fspath(mission), file, width, title, as_written),
+                    path, format)
+
+
+def seed_figures(output, *, only=None, format="png", width=1200, data=None):
+    """Draws the seed paper's Figs. 4, 6, 7, 8, 10, 11 and 12 (or those in
+    `only`) into the folder `output`, as `deepguide figures`, from the bundled
+    data (`data`: the folder holding data/; default: $DEEPGUIDE_DATA, the
+    current folder, the source tree, the installed share/deepguide). Returns
+    what `figures --json` prints: per figure its file, summary and facts."""
+    return _deepguide._seed_figures(_os.fspath(output), list(only or []), format, width,
+                                    "" if data is None else _os.fspath(data))
+
+
+def seed_figure(number, *, format="png", width=1200, data=None):
+    """One of the seed paper's figures (4, 6, 7, 8, 10, 11 or 12) as bytes of
+    `format`."""
+    with _tempfile.TemporaryDirectory() as folder:
+        drawn = seed_figures(folder, only=[number], format=format, width=width, data=data)
+        with open(drawn["figures"][0]["file"], "rb") as f:
+            return f.read()
 
 
 def _mission_track(self):
@@ -128,9 +256,10 @@ class Simulation:
     def text(self):
         return self._run.text()
 
-    def render(self, path):
-        """Draws the run over its scenario to `path` (.png or .svg)."""
-        self._run.render(_os.fspath(path))
+    def render(self, path=None, *, format="png"):
+        """Draws the run over its scenario: into `path` (.png or .svg), or as
+        bytes of `format`."""
+        return _drawing(self._run._render, path, format)
 
     _repr_png_ = _png_of
 

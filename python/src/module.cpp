@@ -60,10 +60,12 @@ PYBIND11_MODULE(_deepguide, m) {
       partial(python_message(e.what()).c_str());
     }
   });
+  deepguide::python::bind_charts(m);  // before plan, whose signature names Chart and CurrentField
   deepguide::python::bind_plan(m);
   deepguide::python::bind_simulate(m);
   deepguide::python::bind_evaluate(m);
   deepguide::python::bind_missions(m);
   deepguide::python::bind_checks(m);
   deepguide::python::bind_obstacles(m);
+  deepguide::python::bind_figures(m);
 }

@@ -19,10 +19,11 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "charts.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
-#include "deepguide/render/reactive_map.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
@@ -144,30 +145,7 @@ struct Route {
   }
   // The obstacles' footprints (a chart's no-go polygons among them) in
   // lon/lat: per obstacle a list of rings, the outline first, then its holes.
-  py::list outlines() const {
-    const auto ring = [&](const auto& points) {
-      py::array_t<double> a({static_cast<py::ssize_t>(points.size()), py::ssize_t{2}});
-      auto o = a.template mutable_unchecked<2>();
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        const Vec2 ll = frame.to_lonlat(Vec2(points[i].x(), points[i].y()));
-        o(i, 0) = ll.x(), o(i, 1) = ll.y();
-      }
-      return a;
-    };
-    py::list out;
-    for (const EllipticCylinder& e : report->obstacles.ellipses) {
-      py::list rings;
-      rings.append(ring(ellipse_outline(e.footprint, 72)));
-      out.append(rings);
-    }
-    for (const PolygonObstacle& p : report->obstacles.polygons) {
-      py::list rings;
-      rings.append(ring(p.footprint.outer()));
-      for (const auto& inner : p.footprint.inners()) rings.append(ring(inner));
-      out.append(rings);
-    }
-    return out;
-  }
+  py::list outlines() const { return lonlat_outlines(report->obstacles, frame); }
   py::object to_dict() const { return from_json(report->to_json().dump()); }
   std::string repr() const {
     char text[200];
@@ -181,27 +159,68 @@ struct Route {
 struct PlanArgs {
   std::pair<double, double> start, goal;
   std::vector<std::string> obstacles, charts;
+  std::optional<Chart> chart;  ///< charts read once (read_chart), instead of `charts`
   std::optional<py::array> ellipses;
   std::optional<py::list> polygons;
   std::string crs, src_crs;
   std::optional<std::string> graph;
   std::string search, cost;
-  double margin, tolerance;
-  std::optional<double> depth, turn_radius;
-  double vertical_clearance;
-  bool escape;
+  double margin = 5.0, tolerance = 0.0;
+  std::optional<double> depth, turn_radius, vertical_clearance;
+  std::optional<std::string> zoc;
+  std::optional<bool> restricted_areas;
+  std::optional<std::tuple<double, double, double>> unassessed_zoc;
+  bool escape = false;
   std::string vehicle, speed, current;
-  std::size_t max_expansions;
+  std::shared_ptr<const CurrentField> current_field;  ///< a field read once (read_current), instead of `current`
+  std::size_t max_expansions = 0;
   std::optional<double> start_heading, goal_heading;  // deg, clockwise from true north
   std::string current_const, depart;
 };
 
+// A chart read once fixes what the request would read it with; a keyword
+// that asks otherwise is a mistake to say, not to ignore.
+void take_chart(const Chart& c, const PlanArgs& a, RoutePlanRequest& r) {
+  const auto differs = [](const char* keyword, const std::string& asked, const std::string& read) {
+    return InputError(std::string(keyword) + ": " + asked + ", but the chart was read with " + read +
+                      "; read it again with read_chart(...) to plan so");
+  };
+  const std::string depth = std::isnan(c.depth_m) ? "no depth" : general(c.depth_m) + " m";
+  if (a.depth && !(*a.depth == c.depth_m)) throw differs("`depth`", general(*a.depth) + " m", depth);
+  if (a.vertical_clearance && *a.vertical_clearance != c.clearance_m) {
+    throw differs("`vertical_clearance`", general(*a.vertical_clearance) + " m", general(c.clearance_m) + " m");
+  }
+  if (!a.src_crs.empty() && a.src_crs != c.src_crs) throw differs("`src_crs`", a.src_crs, "'" + c.src_crs + "'");
+  ChartOptions asked = c.options;
+  if (a.zoc) asked.zoc = parse_zoc_policy(*a.zoc).value_or(c.options.zoc);
+  if (a.restricted_areas) asked.restricted_areas = *a.restricted_areas;
+  if (a.unassessed_zoc) {
+    asked.unassessed = {std::get<0>(*a.unassessed_zoc), std::get<1>(*a.unassessed_zoc), std::get<2>(*a.unassessed_zoc)};
+  }
+  if (const std::string d = chart_options_difference(c.options, asked); !d.empty()) {
+    throw InputError("`zoc`, `restricted_areas`, `unassessed_zoc`: the chart was read with " + d +
+                     "; read it again with read_chart(...) to plan so");
+  }
+  r.charted = c.charted ? c.charted : throw InputError(c.unread);
+  r.charts = c.paths;
+  r.depth_m = c.depth_m;
+  r.vertical_clearance_m = c.clearance_m;
+  r.src_crs = c.src_crs;
+  r.chart = c.options;
+}
+
 Route plan(const PlanArgs& a) {
-  if (a.obstacles.empty() && a.charts.empty() && !a.ellipses && !a.polygons) {
+  if (a.obstacles.empty() && a.charts.empty() && !a.chart && !a.ellipses && !a.polygons) {
     throw InputError("`obstacles`: expected obstacle files, `charts`, `ellipses` or `polygons` (or several of them)");
   }
-  if ((a.ellipses || a.polygons) && a.crs.empty()) {
+  if ((a.ellipses || a.polygons) && a.crs.empty() && !a.chart) {
     throw InputError("`crs`: expected the CRS the `ellipses` and `polygons` arrays are in, e.g. 'EPSG:32632'");
+  }
+  if (a.zoc && !parse_zoc_policy(*a.zoc)) {
+    throw InputError("`zoc`: expected clipped, strict or none, got '" + printable(*a.zoc) + "'");
+  }
+  if ((!a.current.empty() || a.current_field) && !a.current_const.empty()) {
+    throw InputError("`current`: expected a field (a file or a CurrentField) or `current_const`, not both");
   }
   const std::vector<EllipseRow> rows = a.ellipses ? ellipse_rows(*a.ellipses) : std::vector<EllipseRow>{};
   const std::vector<Rings> polygons = a.polygons ? polygon_rings(*a.polygons) : std::vector<Rings>{};
@@ -212,13 +231,25 @@ Route plan(const PlanArgs& a) {
   r.tolerance_m = a.tolerance;
   r.turn_radius_m = a.turn_radius;
   if (a.depth) r.depth_m = *a.depth;
-  r.vertical_clearance_m = a.vertical_clearance;
+  if (a.vertical_clearance) r.vertical_clearance_m = *a.vertical_clearance;
+  if (a.zoc) r.chart.zoc = *parse_zoc_policy(*a.zoc);
+  if (a.restricted_areas) r.chart.restricted_areas = *a.restricted_areas;
+  if (a.unassessed_zoc) {
+    r.chart.unassessed = {std::get<0>(*a.unassessed_zoc), std::get<1>(*a.unassessed_zoc),
+                          std::get<2>(*a.unassessed_zoc)};
+  }
+  check_chart_options(r.chart);
+  if (a.chart) take_chart(*a.chart, a, r);
   r.problem.escape = a.escape;
   r.search = parse_search(a.search);
   r.cost = parse_cost_kind(a.cost);
   r.vehicle = a.vehicle;
   r.speed = a.speed;
   r.current_file = a.current;
+  if (a.current_field) {
+    r.current = a.current_field;
+    r.current_source = a.current_field->source;
+  }
   r.max_expansions = a.max_expansions;
   r.graph = a.graph ? parse_graph_kind(*a.graph)
                     : default_plan_graph(r.charts, r.cost, false, a.start_heading || a.goal_heading);
@@ -226,26 +257,36 @@ Route plan(const PlanArgs& a) {
     throw InputError("`graph` " + r.graph.name + ": routes in depth are not in the Python module yet");
   }
   const std::string from = position_text(a.start), to = position_text(a.goal);
-  // As the CLI: the frame is `crs`, else the UTM zone of the obstacles, else of the start (then lon, lat).
+  // As the CLI: the frame is `crs`, else the UTM zone of the obstacles, else
+  // of the start (then lon, lat). A chart read once brings its own frame.
   py::gil_scoped_release free;
   ObstacleReadOptions read{a.crs, a.src_crs};
-  if (a.crs.empty()) read.fallback_lonlat = parse_lonlat(from, "`start`");
+  if (a.chart) {
+    if (!a.crs.empty() && LocalFrame::from_user_crs(a.crs, "`crs`").id() != a.chart->frame.id()) {
+      throw InputError("`crs`: " + a.crs + ", but the chart was read in " + a.chart->frame.id() +
+                       "; read it again with read_chart(..., crs=...) to plan so");
+    }
+    read.local_crs = a.chart->frame.wkt();
+  } else if (a.crs.empty()) {
+    read.fallback_lonlat = parse_lonlat(from, "`start`");
+  }
   LoadedObstacles loaded = load_obstacles(a.obstacles, read);
+  const LocalFrame frame = a.chart ? a.chart->frame : loaded.frame;
   r.obstacles = std::move(loaded.obstacles);
-  for (EllipticCylinder& e : ellipses_in(loaded.frame, rows)) r.obstacles.ellipses.push_back(std::move(e));
+  for (EllipticCylinder& e : ellipses_in(frame, rows)) r.obstacles.ellipses.push_back(std::move(e));
   add_polygons(polygons, r.obstacles);
-  r.problem.start = parse_position(from, "`start`", loaded.frame, !a.crs.empty());
-  r.problem.goal = parse_position(to, "`goal`", loaded.frame, !a.crs.empty());
-  if (a.start_heading) r.problem.start_heading = loaded.frame.heading_to_local(*a.start_heading, r.problem.start);
-  if (a.goal_heading) r.problem.goal_heading = loaded.frame.heading_to_local(*a.goal_heading, r.problem.goal);
+  r.problem.start = parse_position(from, "`start`", frame, !a.crs.empty());
+  r.problem.goal = parse_position(to, "`goal`", frame, !a.crs.empty());
+  if (a.start_heading) r.problem.start_heading = frame.heading_to_local(*a.start_heading, r.problem.start);
+  if (a.goal_heading) r.problem.goal_heading = frame.heading_to_local(*a.goal_heading, r.problem.goal);
   if (!a.current_const.empty()) {
     r.current = std::make_shared<const CurrentField>(parse_constant_current(a.current_const, "`current_const`"));
     r.current_source = "current_const " + a.current_const;
   }
   if (!a.depart.empty()) r.depart_s = parse_utc(a.depart, "`depart`");
-  auto report = std::make_shared<const RoutePlanReport>(plan_route_request(loaded.frame, r));
+  auto report = std::make_shared<const RoutePlanReport>(plan_route_request(frame, r));
   if (const auto why = report->stop_reason()) throw NoRouteError(*why);
-  return Route{std::move(report), loaded.frame};
+  return Route{std::move(report), frame};
 }
 
 }  // namespace
@@ -268,70 +309,86 @@ void bind_plan(py::module_& m) {
       .def(
           "text", [](const Route& r) { return r.report->to_text(); }, "The report as `deepguide plan` prints it.")
       .def(
-          "render",
+          "_render",
           [](const Route& r, const std::filesystem::path& path, bool draw_graph) {
             py::gil_scoped_release free;
             render_route_plan(*r.report, path.string(), draw_graph);
           },
-          py::arg("path"), py::kw_only(), py::arg("draw_graph") = false,
-          "Draws the route over its obstacles or chart to `path` (.png or .svg), as `plan --render`.")
+          py::arg("path"), py::arg("draw_graph"))
       .def("__repr__", &Route::repr);
 
   m.def(
       "plan",
       [](std::pair<double, double> start, std::pair<double, double> goal,
-         const std::vector<std::filesystem::path>& obstacles, const std::vector<std::filesystem::path>& charts,
+         const std::vector<std::filesystem::path>& obstacles, const py::object& charts,
          std::optional<py::array> ellipses, std::optional<py::list> polygons, std::string crs, std::string src_crs,
          std::optional<std::string> graph, std::string search, std::string cost, double margin, double tolerance,
-         std::optional<double> depth, std::optional<double> turn_radius, double vertical_clearance, bool escape,
-         std::string vehicle, std::string speed, std::string current, std::size_t max_expansions,
-         std::optional<double> start_heading, std::optional<double> goal_heading, std::string current_const,
-         std::string depart) {
-        return plan(PlanArgs{start,
-                             goal,
-                             path_texts(obstacles),
-                             path_texts(charts),
-                             std::move(ellipses),
-                             std::move(polygons),
-                             std::move(crs),
-                             std::move(src_crs),
-                             std::move(graph),
-                             std::move(search),
-                             std::move(cost),
-                             margin,
-                             tolerance,
-                             depth,
-                             turn_radius,
-                             vertical_clearance,
-                             escape,
-                             std::move(vehicle),
-                             std::move(speed),
-                             std::move(current),
-                             max_expansions,
-                             start_heading,
-                             goal_heading,
-                             std::move(current_const),
-                             std::move(depart)});
+         std::optional<double> depth, std::optional<double> turn_radius, std::optional<double> vertical_clearance,
+         std::optional<std::string> zoc, std::optional<bool> restricted_areas,
+         std::optional<std::tuple<double, double, double>> unassessed_zoc, bool escape, std::string vehicle,
+         std::string speed, const py::object& current, std::size_t max_expansions, std::optional<double> start_heading,
+         std::optional<double> goal_heading, std::string current_const, std::string depart) {
+        PlanArgs a;
+        a.start = start;
+        a.goal = goal;
+        a.obstacles = path_texts(obstacles);
+        if (py::isinstance<Chart>(charts)) {
+          a.chart = charts.cast<Chart>();
+        } else if (!charts.is_none()) {
+          a.charts = one_or_more_paths(charts);
+        }
+        if (py::isinstance<Current>(current)) {
+          a.current_field = current.cast<Current>().field;
+        } else if (!current.is_none()) {
+          a.current = current.cast<std::filesystem::path>().string();
+        }
+        a.ellipses = std::move(ellipses);
+        a.polygons = std::move(polygons);
+        a.crs = std::move(crs);
+        a.src_crs = std::move(src_crs);
+        a.graph = std::move(graph);
+        a.search = std::move(search);
+        a.cost = std::move(cost);
+        a.margin = margin;
+        a.tolerance = tolerance;
+        a.depth = depth;
+        a.turn_radius = turn_radius;
+        a.vertical_clearance = vertical_clearance;
+        a.zoc = std::move(zoc);
+        a.restricted_areas = restricted_areas;
+        a.unassessed_zoc = unassessed_zoc;
+        a.escape = escape;
+        a.vehicle = std::move(vehicle);
+        a.speed = std::move(speed);
+        a.max_expansions = max_expansions;
+        a.start_heading = start_heading;
+        a.goal_heading = goal_heading;
+        a.current_const = std::move(current_const);
+        a.depart = std::move(depart);
+        return plan(a);
       },
       py::arg("start"), py::arg("goal"), py::kw_only(), py::arg("obstacles") = std::vector<std::filesystem::path>{},
-      py::arg("charts") = std::vector<std::filesystem::path>{}, py::arg("ellipses") = py::none(),
-      py::arg("polygons") = py::none(), py::arg("crs") = "", py::arg("src_crs") = "", py::arg("graph") = py::none(),
-      py::arg("search") = "astar", py::arg("cost") = "length", py::arg("margin") = 5.0,
-      py::arg("tolerance") = PlannerOptions{}.tolerance, py::arg("depth") = py::none(),
-      py::arg("turn_radius") = py::none(), py::arg("vertical_clearance") = 2.0, py::arg("escape") = false,
-      py::arg("vehicle") = "", py::arg("speed") = "cruise", py::arg("current") = "", py::arg("max_expansions") = 0,
-      py::arg("start_heading") = py::none(), py::arg("goal_heading") = py::none(), py::arg("current_const") = "",
-      py::arg("depart") = "",
+      py::arg("charts") = py::none(), py::arg("ellipses") = py::none(), py::arg("polygons") = py::none(),
+      py::arg("crs") = "", py::arg("src_crs") = "", py::arg("graph") = py::none(), py::arg("search") = "astar",
+      py::arg("cost") = "length", py::arg("margin") = 5.0, py::arg("tolerance") = PlannerOptions{}.tolerance,
+      py::arg("depth") = py::none(), py::arg("turn_radius") = py::none(), py::arg("vertical_clearance") = py::none(),
+      py::arg("zoc") = py::none(), py::arg("restricted_areas") = py::none(), py::arg("unassessed_zoc") = py::none(),
+      py::arg("escape") = false, py::arg("vehicle") = "", py::arg("speed") = "cruise", py::arg("current") = py::none(),
+      py::arg("max_expansions") = 0, py::arg("start_heading") = py::none(), py::arg("goal_heading") = py::none(),
+      py::arg("current_const") = "", py::arg("depart") = "",
       R"(The shortest (or fastest, or most economical) safe route from `start` to `goal`, as `deepguide plan`.
 
 start, goal: (lon, lat) in degrees, or (x, y) in `crs` when `crs` is given.
-obstacles: obstacle files; charts: bathymetry rasters, S-57 cells or folders, prepared charts, hazard files.
+obstacles: obstacle files; charts: a Chart (read_chart: read once, planned on again and again; then `ellipses`
+and `polygons` are in its frame) or chart files: bathymetry rasters, S-57 cells or folders, prepared charts,
+hazard files, read with `zoc`, `restricted_areas` and `unassessed_zoc` as read_chart reads them.
 ellipses: an (n, 5) array of x, y, semi_major_m, semi_minor_m, orientation_deg (clockwise from true north) in `crs`.
 polygons: a list of polygons in `crs`, each a list of (k, 2) rings (the outline first, then holes) or one ring.
 graph: a graph of the registry (deepguide.graphs()); None: what `plan` takes by default.
-margin, tolerance, depth, turn_radius, vertical_clearance: metres, as the CLI's flags.
+margin, tolerance, depth, turn_radius, vertical_clearance (default 2): metres, as the CLI's flags.
 start_heading, goal_heading: degrees clockwise from true north (with a turn_radius; the tangent graph).
-cost: length, time or energy, in `current` (a field's file) or `current_const` ("SPEED_MPS,DIR_DEG"),
+cost: length, time or energy, in `current` (a CurrentField, or a field's file read at `depth`) or
+`current_const` ("SPEED_MPS,DIR_DEG"),
 departing at `depart` (ISO 8601, UTC by default).
 The GIL is released while it plans, so threads plan in parallel.
 Raises InputError (bad input), NoRouteError (no safe route).)");

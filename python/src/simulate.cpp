@@ -67,7 +67,7 @@ void bind_simulate(py::module_& m) {
           "text", [](const Simulation& s) { return simulation_text(s.scenario, s.result); },
           "The statistics as `deepguide simulate` prints them.")
       .def(
-          "render",
+          "_render",
           [](const Simulation& s, const std::filesystem::path& path) {
             py::gil_scoped_release free;
             TrajectoryFigure figure;
@@ -75,7 +75,7 @@ void bind_simulate(py::module_& m) {
             figure.runs = {s.result};
             render_trajectory_figure(figure, path.string());
           },
-          py::arg("path"), "Draws the run over its scenario to `path` (.png or .svg).")
+          py::arg("path"))
       .def_property_readonly("end", [](const Simulation& s) { return std::string(to_string(s.result.end)); })
       .def_property_readonly("reached", [](const Simulation& s) { return s.result.stats.reached; })
       .def_property_readonly("collided", [](const Simulation& s) { return s.result.stats.collided; })
@@ -84,15 +84,13 @@ void bind_simulate(py::module_& m) {
   m.def(
       "_simulate",
       [](const std::string& scenario_file, const std::string& method, std::optional<std::uint64_t> seed) {
-        const auto parsed = parse_reactive_method(method);
-        if (!parsed)
-          throw InputError("`method`: expected dipole, geometric or potential, got '" + printable(method) + "'");
+        const ReactiveMethod parsed = reactive_method_named(method, "`method`");
         Simulation out;
         {
           py::gil_scoped_release free;
           out.scenario = read_scenario_file(scenario_file);
           if (seed) out.scenario.sonar.seed = *seed;
-          out.result = simulate(out.scenario, *parsed, {true});
+          out.result = simulate(out.scenario, parsed, {true});
         }
         return out;
       },

@@ -66,9 +66,13 @@ def test_twenty_random_queries_equal_the_commands(cli, sample):
 
 def test_enc_pairs_equal_the_commands(cli):
     cell = real_file("noaa-enc-US4MD81M/US4MD81M.000")
-    pairs = [((-76.41, 38.87), (-76.35, 38.60)), ((-76.40, 38.95), (-76.37, 38.70)),
-             ((-76.42, 38.80), (-76.33, 38.62)), ((-76.39, 38.90), (-76.36, 38.66)),
-             ((-76.41, 38.75), (-76.35, 38.58))]
+    # Pairs in the cell's water at 5 m (found by random draws), 13 to 34 km
+    # apart, and one whose goal is charted too shallow.
+    pairs = [((-76.41, 38.87), (-76.35, 38.60)), ((-76.465, 38.554), (-76.472, 38.761)),
+             ((-76.385, 38.971), (-76.476, 38.672)), ((-76.411, 38.956), (-76.394, 38.682)),
+             ((-76.439, 38.634), (-76.442, 38.519)), ((-76.342, 38.427), (-76.42, 38.678)),
+             ((-76.40, 38.95), (-76.37, 38.70))]
+    planned = 0
     for a, b in pairs:
         done = cli("plan", "--chart", cell, "--depth", 5, "--from", lonlat_text(a), "--to", lonlat_text(b),
                    "--json", check=False)
@@ -79,6 +83,8 @@ def test_enc_pairs_equal_the_commands(cli):
         route = deepguide.plan(a, b, charts=[str(cell)], depth=5)
         assert route.graph == cli_json(done)["graph"] == "navmesh"
         assert route.length_m == pytest.approx(cli_json(done)["length_m"], abs=1e-9)
+        planned += 1
+    assert planned == 6
 
 
 def test_an_array_of_ellipses_plans_as_the_same_obstacles_from_a_file(tmp_path):

@@ -224,14 +224,18 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   report.request.obstacles = {};
   report.obstacles = r.obstacles;
   if (!std::isnan(r.depth_m)) report.passed_over = remove_passable(report.obstacles, r.depth_m, r.vertical_clearance_m);
-  ChartObstacles charted;
-  if (!r.charts.empty()) {
+  std::shared_ptr<const ChartObstacles> read = r.charted;
+  if (!read && !r.charts.empty()) {
     ChartObstacleOptions chart_options;
     chart_options.depth_m = r.depth_m;
     chart_options.clearance_m = r.vertical_clearance_m;
     chart_options.source_crs = r.src_crs;
     chart_options.enc = enc_options(r.chart);
-    charted = chart_obstacles(r.charts, frame, chart_options);
+    read = std::make_shared<const ChartObstacles>(chart_obstacles(r.charts, frame, chart_options));
+  }
+  static const ChartObstacles none;
+  const ChartObstacles& charted = read ? *read : none;
+  if (read) {
     for (const ChartFileObstacles& f : charted.files) report.passed_over += f.passed_over;
     append(report.obstacles, charted.obstacles);
   }

@@ -30,12 +30,18 @@
 
 namespace DEEPGUIDE_API deepguide {
 
+struct ChartObstacles;  // world/chart_obstacles.hpp
+
 struct RoutePlanRequest {
   ObstacleSet obstacles;  ///< in the local frame
   /// Bathymetry rasters (no-go shallower than depth_m + vertical_clearance_m),
   /// S-57 cells and hazard files; read into the frame.
   std::vector<std::string> charts;
-  std::string src_crs;      ///< CRS of charts that carry none
+  std::string src_crs;  ///< CRS of charts that carry none
+  /// The charts already read (chart_obstacles) into the frame planned in, at
+  /// depth_m and vertical_clearance_m with src_crs and `chart`: taken instead
+  /// of reading `charts` again, which then only name them. Null: read them.
+  std::shared_ptr<const ChartObstacles> charted;
   ChartOptions chart;       ///< how S-57 charts are read (zones of confidence, restricted areas)
   PlanningProblem problem;  ///< start, goal, their headings (local) and escape
   double margin_m = 5.0;

@@ -2,7 +2,10 @@
 
 #include "deepguide/reactive/reactive_method.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "deepguide/core/error.hpp"
 
 #include "deepguide/reactive/dipole_field.hpp"
 #include "deepguide/reactive/geometric_construction.hpp"
@@ -24,6 +27,24 @@ std::optional<ReactiveMethod> parse_reactive_method(std::string_view name) {
     if (to_string(m) == name) return m;
   }
   return std::nullopt;
+}
+
+ReactiveMethod reactive_method_named(std::string_view name, const std::string& what) {
+  if (const auto m = parse_reactive_method(name)) return *m;
+  throw InputError(what + ": expected dipole, geometric or potential, got '" + printable(std::string(name)) + "'");
+}
+
+std::vector<ReactiveMethod> reactive_methods_named(const std::vector<std::string>& names, const std::string& what) {
+  std::vector<ReactiveMethod> out;
+  for (const std::string& n : names) {
+    const ReactiveMethod m = reactive_method_named(n, what);
+    if (std::find(out.begin(), out.end(), m) != out.end()) {
+      throw InputError(what + ": expected each method once, got '" + printable(n) + "' twice");
+    }
+    out.push_back(m);
+  }
+  if (out.empty()) throw InputError(what + ": expected at least one method");
+  return out;
 }
 
 std::string_view to_string(ReactiveStatus status) {

@@ -35,7 +35,9 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
@@ -48,6 +50,12 @@ enum class ReactiveMethod { dipole, geometric, potential };
 std::string_view to_string(ReactiveMethod method);
 /// "dipole", "geometric" or "potential"; nullopt otherwise.
 std::optional<ReactiveMethod> parse_reactive_method(std::string_view name);
+/// The method `name` names, given as `what` (an option or a parameter, e.g.
+/// "--method"); throws InputError "WHAT: expected dipole, geometric or
+/// potential, got 'NAME'".
+ReactiveMethod reactive_method_named(std::string_view name, const std::string& what);
+/// Methods by name, each once and at least one; throws InputError naming `what`.
+std::vector<ReactiveMethod> reactive_methods_named(const std::vector<std::string>& names, const std::string& what);
 
 struct ReactiveParams {
   double margin_m = 10.0;                    ///< security margin around each reported object, >= 0

@@ -165,6 +165,16 @@ Canvas::Canvas(const std::string& path, int width_px, int height_px) {
   impl_->cr = cairo_create(impl_->surface);
   if (const cairo_status_t s = cairo_status(impl_->cr); s != CAIRO_STATUS_SUCCESS) impl_->fail(s);
   cairo_set_antialias(impl_->cr, CAIRO_ANTIALIAS_GOOD);
+  // Text the same on every surface, whatever the process drew before: the
+  // surfaces' own font options differ (an SVG surface asks for unhinted
+  // metrics), and Cairo's shared font cache then let a PNG drawn after an SVG
+  // differ from the same PNG drawn first. One set of options for all.
+  cairo_font_options_t* text = cairo_font_options_create();
+  cairo_font_options_set_antialias(text, CAIRO_ANTIALIAS_GRAY);
+  cairo_font_options_set_hint_style(text, CAIRO_HINT_STYLE_NONE);
+  cairo_font_options_set_hint_metrics(text, CAIRO_HINT_METRICS_OFF);
+  cairo_set_font_options(impl_->cr, text);
+  cairo_font_options_destroy(text);
   // An RGB24 surface starts black; every image starts white.
   fill_rect({0.0, 0.0, static_cast<double>(width_px), static_cast<double>(height_px)}, {1.0, 1.0, 1.0, 1.0});
 }

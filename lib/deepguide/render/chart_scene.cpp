@@ -20,6 +20,7 @@
 #include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/bathymetry_raster.hpp"
 #include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
@@ -478,20 +479,7 @@ ChartLayout render_chart(const ChartRenderOptions& options, const std::string& p
   }
 
   // One local frame for everything: the user's, else the first chart's UTM zone.
-  auto frame = [&]() -> LocalFrame {
-    if (!options.local_crs.empty()) return LocalFrame::from_user_crs(options.local_crs);
-    const std::string& first = options.charts.front();
-    for (const RasterSource& r : scene.rasters) {
-      if (r.path == first) {
-        return default_frame_for(r.info.extent);
-      }
-    }
-    if (!scene.enc_charts.empty() && scene.enc_charts.front() == first) {
-      if (is_prepared_chart(first)) return load_obstacles({first}).frame;
-      return s57_local_frame(summarize_s57(find_enc_cells({first}).front().base));
-    }
-    return load_obstacles({first}).frame;
-  }();
+  const LocalFrame frame = charts_frame(options.charts, options.local_crs, options.source_crs);
   const ObstacleReadOptions read{frame.wkt(), ""};
   if (!scene.hazard_files.empty()) scene.hazards = load_obstacles(scene.hazard_files, read).obstacles;
   if (!scene.enc_charts.empty()) {

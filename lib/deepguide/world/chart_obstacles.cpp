@@ -4,11 +4,15 @@
 #include <cmath>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/prepared_chart.hpp"
+#include "deepguide/world/s57_chart.hpp"
 
 namespace deepguide {
 
@@ -25,6 +29,25 @@ void append(ObstacleSet& to, ObstacleSet from) {
 
 bool reads_as_enc(const std::string& path) {
   return names_enc(path) || is_prepared_chart(path) || chart_kind(path) == ChartKind::s57;
+}
+
+LocalFrame charts_frame(const std::vector<std::string>& paths, const std::string& local_crs,
+                        const std::string& source_crs) {
+  if (!local_crs.empty()) return LocalFrame::from_user_crs(local_crs);
+  if (paths.empty()) throw InputError("charts: expected at least one chart file");
+  const std::string& first = paths.front();
+  if (is_prepared_chart(first)) return load_obstacles({first}).frame;
+  if (names_enc(first)) return s57_local_frame(summarize_s57(find_enc_cells({first}).front().base));
+  switch (chart_kind(first)) {
+    case ChartKind::raster: {
+      BathymetryOptions read;
+      read.assumed_crs = source_crs;
+      return default_frame_for(inspect_bathymetry(first, read).extent);
+    }
+    case ChartKind::s57: return s57_local_frame(summarize_s57(find_enc_cells({first}).front().base));
+    case ChartKind::vector: break;
+  }
+  return load_obstacles({first}).frame;
 }
 
 ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const LocalFrame& frame,

@@ -78,6 +78,14 @@ std::optional<CoverageExit> route_leaves_coverage(const std::vector<Vec2>& route
 /// set's catalogue, or a prepared chart), not as a raster or a hazard file.
 bool reads_as_enc(const std::string& path);
 
+/// The frame charts are read into when the caller names none: `local_crs`
+/// when given, else the first chart's own (a prepared chart's frame, the UTM
+/// zone of an S-57 cell's or a raster's centre, a hazard file's frame;
+/// `source_crs` for a raster that carries no CRS). Throws InputError naming
+/// the file or the CRS.
+LocalFrame charts_frame(const std::vector<std::string>& paths, const std::string& local_crs,
+                        const std::string& source_crs);
+
 /// Reads every chart into `frame`. Throws InputError (one line naming the
 /// file, or the option) for an unreadable chart, or a raster without depth_m.
 ChartObstacles chart_obstacles(const std::vector<std::string>& paths, const LocalFrame& frame,

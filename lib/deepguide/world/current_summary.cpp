@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "deepguide/core/utc_time.hpp"
+
 namespace deepguide {
 
 CurrentSummary summarize_current(const CurrentField& f) {
@@ -54,6 +56,39 @@ CurrentSummary summarize_current(const CurrentField& f) {
     s.max_speed_mps = smax;
   }
   return s;
+}
+
+nlohmann::json to_json(const CurrentSummary& s) {
+  const auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  const auto time = [](double v) { return std::isfinite(v) ? nlohmann::json(format_utc(v)) : nlohmann::json(); };
+  return {{"source", s.source},
+          {"driver", s.driver},
+          {"crs", s.crs},
+          {"crs_source", s.crs_source},
+          {"u_name", s.u_name},
+          {"v_name", s.v_name},
+          {"width", s.width},
+          {"height", s.height},
+          {"steps", s.steps},
+          {"extent",
+           {{"west", number(s.extent.west)},
+            {"east", number(s.extent.east)},
+            {"south", number(s.extent.south)},
+            {"north", number(s.extent.north)}}},
+          {"time_first_s", number(s.time_first_s)},
+          {"time_last_s", number(s.time_last_s)},
+          {"time_first", time(s.time_first_s)},
+          {"time_last", time(s.time_last_s)},
+          {"depth_m", s.depth_m},
+          {"depth_levels", s.depth_levels},
+          {"valid_nodes", s.valid_nodes},
+          {"fill_nodes", s.fill_nodes},
+          {"min_speed_mps", number(s.min_speed_mps)},
+          {"max_speed_mps", number(s.max_speed_mps)},
+          {"u_min", number(s.u_min)},
+          {"u_max", number(s.u_max)},
+          {"v_min", number(s.v_min)},
+          {"v_max", number(s.v_max)}};
 }
 
 }  // namespace deepguide

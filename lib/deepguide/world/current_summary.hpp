@@ -1,17 +1,20 @@
 #pragma once
-// What a current field holds (`deepguide chart info`): its grid, times,
-// depth taken, and the range of its values.
+// What a current field holds: its grid, times, depth taken, and the range of
+// its values (the Python module's CurrentField.summary(); the cost model
+// takes its fastest current).
 
 #include <cstddef>
 #include <limits>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/world/current_field.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-/// For `deepguide chart info`: what a field holds.
+/// What a field holds.
 struct CurrentSummary {
   std::string source;
   std::string driver;
@@ -38,5 +41,9 @@ struct CurrentSummary {
 };
 
 CurrentSummary summarize_current(const CurrentField& field);
+
+/// The summary's fields under their names; times as ISO 8601 UTC too
+/// ("time_first", "time_last"); what is unknown (NaN) as null.
+nlohmann::json to_json(const CurrentSummary& summary);
 
 }  // namespace deepguide
