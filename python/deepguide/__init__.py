@@ -234,7 +234,8 @@ class Simulation:
     trajectory CSV's fields and units (docs/SIMULATION.md) at full precision:
     time_s, x_m, y_m, heading_deg, course_cmd_deg, rate_cmd_deg_s,
     rate_ref_deg_s, rate_deg_s (turning rates clockwise positive), speed_mps,
-    clearance_m, sector, status, course_unreachable.
+    clearance_m, sector, status, course_unreachable, and contacts (the sonar
+    contacts the method was given at that step; not in the CSV).
     to_dict(): the statistics as `simulate --json` prints them.
     """
 

@@ -95,11 +95,12 @@ Chart read_chart(const std::vector<std::string>& paths, std::optional<double> de
   if (!std::isfinite(clearance) || clearance < 0.0) {
     throw InputError("`vertical_clearance`: expected a clearance >= 0 m, got " + general(clearance));
   }
-  Chart c{paths, charts_frame(paths, crs, src_crs), depth ? *depth : std::nan(""), clearance, src_crs, options,
-          nullptr, ""};
+  Chart c{paths, charts_frame(paths, crs, src_crs), depth ? *depth : std::nan(""), clearance, src_crs, options, nullptr,
+          ""};
   if (!depth && std::any_of(paths.begin(), paths.end(), needs_depth)) {
-    c.unread = "`depth`: expected the operating depth the chart was read at (read_chart(..., depth=M)); its "
-               "rasters' and S-57 cells' no-go depend on it";
+    c.unread =
+        "`depth`: expected the operating depth the chart was read at (read_chart(..., depth=M)); its "
+        "rasters' and S-57 cells' no-go depend on it";
     return c;
   }
   ChartObstacleOptions read;
@@ -229,8 +230,8 @@ void bind_charts(py::module_& m) {
 
   m.def(
       "read_chart",
-      [](const py::object& charts, std::optional<double> depth, double vertical_clearance,
-         const std::string& crs, const std::string& src_crs, const std::string& zoc, bool restricted_areas,
+      [](const py::object& charts, std::optional<double> depth, double vertical_clearance, const std::string& crs,
+         const std::string& src_crs, const std::string& zoc, bool restricted_areas,
          std::optional<std::tuple<double, double, double>> unassessed_zoc) {
         const ChartOptions options = chart_options(zoc, restricted_areas, unassessed_zoc);
         const std::vector<std::string> paths = one_or_more_paths(charts);
@@ -289,8 +290,8 @@ Raises InputError for a missing or unreadable chart or a bad option.)");
         py::gil_scoped_release free;
         return Current{std::make_shared<const CurrentField>(load_current_field(path.string(), o))};
       },
-      py::arg("path"), py::kw_only(), py::arg("depth") = 0.0, py::arg("u_variable") = "",
-      py::arg("v_variable") = "", py::arg("src_crs") = "",
+      py::arg("path"), py::kw_only(), py::arg("depth") = 0.0, py::arg("u_variable") = "", py::arg("v_variable") = "",
+      py::arg("src_crs") = "",
       "Reads a current field (NetCDF u/v, or a two-band raster) at `depth` (m), as `plan --current` does; "
       "`u_variable`/`v_variable` name its variables when they are not found by their standard names, `src_crs` "
       "its CRS when it carries none. Raises InputError naming the file.");

@@ -59,8 +59,8 @@ std::vector<std::string> data_candidates(const std::string& given) {
 void bind_figures(py::module_& m) {
   m.def(
       "_render_field",
-      [](const std::filesystem::path& scenario, const std::string& method, const std::filesystem::path& path,
-         int width, const std::string& title) {
+      [](const std::filesystem::path& scenario, const std::string& method, const std::filesystem::path& path, int width,
+         const std::string& title) {
         const ReactiveMethod parsed = reactive_method_named(method, "`method`");
         check_figure(path, width);
         py::gil_scoped_release free;

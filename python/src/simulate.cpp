@@ -35,7 +35,7 @@ struct Simulation {
     const auto n = static_cast<py::ssize_t>(t.size());
     py::array_t<double> time(n), x(n), y(n), heading(n), course(n), rate_cmd(n), rate_ref(n), rate(n), speed(n),
         clearance(n);
-    py::array_t<std::int32_t> sector(n);
+    py::array_t<std::int32_t> sector(n), contacts(n);
     py::array_t<bool> unreachable(n);
     py::list status;
     for (py::ssize_t i = 0; i < n; ++i) {
@@ -46,12 +46,14 @@ struct Simulation {
       rate_cmd.mutable_at(i) = c.rate_cmd_deg_s, rate_ref.mutable_at(i) = c.rate_ref_deg_s;
       rate.mutable_at(i) = c.rate_deg_s, speed.mutable_at(i) = c.speed_mps, clearance.mutable_at(i) = c.clearance_m;
       sector.mutable_at(i) = s.sector, unreachable.mutable_at(i) = s.course_unreachable;
+      contacts.mutable_at(i) = s.contacts;
       status.append(std::string(to_string(s.status)));
     }
     py::dict d;
     d["time_s"] = time, d["x_m"] = x, d["y_m"] = y, d["heading_deg"] = heading, d["course_cmd_deg"] = course;
     d["rate_cmd_deg_s"] = rate_cmd, d["rate_ref_deg_s"] = rate_ref, d["rate_deg_s"] = rate, d["speed_mps"] = speed;
     d["clearance_m"] = clearance, d["sector"] = sector, d["status"] = status, d["course_unreachable"] = unreachable;
+    d["contacts"] = contacts;
     return d;
   }
   py::object to_dict() const { return from_json(simulation_json(scenario, result).dump()); }

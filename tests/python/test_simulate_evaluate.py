@@ -54,6 +54,10 @@ def test_a_trajectory_is_the_commands_file(suite, cli, tmp_path, method):
     assert list(t["status"]) == [r["status"] for r in rows]
     assert list(t["sector"]) == [int(r["sector"]) for r in rows]
     assert list(t["course_unreachable"]) == [r["course_unreachable"] == "1" for r in rows]
+    # The contacts the method was given: remembered for the whole run, so
+    # they never drop, and they end at the run's count.
+    assert np.all(np.diff(t["contacts"]) >= 0)
+    assert t["contacts"][-1] == want["contacts"] > 0
 
 
 def test_evaluate_rows_are_the_commands_rows(suite, cli, tmp_path):

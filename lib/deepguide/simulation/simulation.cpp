@@ -95,6 +95,7 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
   ReactiveMemory memory;
   const ReactiveParams params = sailing_params(sc.reactive, sc.vehicle);
   CollisionWatch watch(sc);
+  std::vector<int> seen;  // contacts given to the method, a step each (guidance is asked once a step)
   const Guidance reactive = [&](double t, const VehicleState& state) {
     watch.observe(state);
     if (sonar && sonar->update(t, state.position, state.heading, sc.obstacles)) {
@@ -102,9 +103,11 @@ SimulationResult simulate(const Scenario& sc, ReactiveMethod method, const Simul
     }
     const ReactiveInput input{
         t, state.position, course_over_ground(state), state.speed_mps, sc.target, contacts.ellipses(), state.yaw_rate};
+    if (options.record_trajectory) seen.push_back(static_cast<int>(input.objects.size()));
     return reactive_command(method, params, memory, input);
   };
   SimulationResult result = simulate_guided(sc, reactive, options);
+  for (std::size_t k = 0; k < result.trajectory.size() && k < seen.size(); ++k) result.trajectory[k].contacts = seen[k];
   result.method = method;
   result.contacts = contacts.size();
   result.collision = watch.cause();

@@ -77,6 +77,9 @@ struct TrajectorySample {
   int sector = 0;            ///< geometric method's sector, 0 otherwise
   ReactiveStatus status = ReactiveStatus::ok;
   bool course_unreachable = false;  ///< the autopilot could not make good the course in the current
+  /// Sonar contacts the reactive method was given at this step (simulate();
+  /// 0 under other guidance). Not a column of the trajectory CSV.
+  int contacts = 0;
 
   bool operator==(const TrajectorySample&) const = default;
 };
