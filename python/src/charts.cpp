@@ -66,19 +66,21 @@ py::list lonlat_outlines(const ObstacleSet& obstacles, const LocalFrame& frame) 
   return out;
 }
 
-namespace {
-
 ChartOptions chart_options(const std::string& zoc, bool restricted_areas,
-                           const std::optional<std::tuple<double, double, double>>& unassessed) {
+                           const std::optional<std::tuple<double, double, double>>& unassessed_zoc) {
   ChartOptions o;
   const std::optional<ZocPolicy> policy = parse_zoc_policy(zoc);
   if (!policy) throw InputError("`zoc`: expected clipped, strict or none, got '" + printable(zoc) + "'");
   o.zoc = *policy;
   o.restricted_areas = restricted_areas;
-  if (unassessed) o.unassessed = {std::get<0>(*unassessed), std::get<1>(*unassessed), std::get<2>(*unassessed)};
+  if (unassessed_zoc) {
+    o.unassessed = {std::get<0>(*unassessed_zoc), std::get<1>(*unassessed_zoc), std::get<2>(*unassessed_zoc)};
+  }
   check_chart_options(o);
   return o;
 }
+
+namespace {
 
 // Without a depth a raster's or an S-57 cell's no-go cannot be judged
 // (chart_obstacles.hpp): such a chart is drawn and described, not planned on.

@@ -6,7 +6,9 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "deepguide/world/chart_obstacles.hpp"
@@ -39,6 +41,11 @@ struct Chart {
 struct Current {
   std::shared_ptr<const CurrentField> field;
 };
+
+/// The CLI's --zoc, --restricted and --unassessed-zoc as keywords; throws
+/// InputError naming the keyword.
+ChartOptions chart_options(const std::string& zoc, bool restricted_areas,
+                           const std::optional<std::tuple<double, double, double>>& unassessed_zoc);
 
 /// Footprints in lon/lat, per obstacle a list of (k, 2) rings, the outline
 /// first (an ellipse as 72 points), for matplotlib.

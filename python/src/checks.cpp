@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "charts.hpp"
 #include "deepguide/planning/route_file_check.hpp"
 #include "deepguide/simulation/identification_run.hpp"
 #include "deepguide/simulation/trajectory_io.hpp"
@@ -47,8 +48,10 @@ void bind_checks(py::module_& m) {
       "check_route",
       [](const std::filesystem::path& route, const std::vector<std::filesystem::path>& obstacles,
          const std::vector<std::filesystem::path>& charts, std::optional<double> depth, double margin,
-         double vertical_clearance, const std::string& crs, const std::string& src_crs) {
+         double vertical_clearance, const std::string& crs, const std::string& src_crs, const std::string& zoc,
+         bool restricted_areas, const std::optional<std::tuple<double, double, double>>& unassessed_zoc) {
         RouteFileCheckOptions o;
+        o.chart = chart_options(zoc, restricted_areas, unassessed_zoc);
         o.route = route.string();
         o.obstacles = path_texts(obstacles);
         o.charts = path_texts(charts);
@@ -64,7 +67,8 @@ void bind_checks(py::module_& m) {
       py::arg("charts") = std::vector<std::filesystem::path>{}, py::arg("depth") = py::none(),
       py::arg("margin") = RouteFileCheckOptions{}.margin_m,
       py::arg("vertical_clearance") = RouteFileCheckOptions{}.vertical_clearance_m, py::arg("crs") = "",
-      py::arg("src_crs") = "",
+      py::arg("src_crs") = "", py::arg("zoc") = "clipped", py::arg("restricted_areas") = false,
+      py::arg("unassessed_zoc") = py::none(),
       "Checks a route file (RTZ, GPX, GeoJSON, KML, ...) against obstacle files and S-57 charts at `depth`, as "
       "`deepguide check route`, with the independent checker; a route that is not safe gives safe == False.");
 

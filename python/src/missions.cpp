@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bindings.hpp"
+#include "charts.hpp"
 #include "deepguide/core/angles.hpp"
 #include "deepguide/mission/mission_report.hpp"
 #include "deepguide/simulation/mission_run_report.hpp"
@@ -68,36 +70,49 @@ void bind_missions(py::module_& m) {
 
   m.def(
       "mission_check",
-      [](const std::filesystem::path& mission) {
+      [](const std::filesystem::path& mission, const std::string& zoc, bool restricted_areas,
+         const std::optional<std::tuple<double, double, double>>& unassessed_zoc) {
+        const ChartOptions chart = chart_options(zoc, restricted_areas, unassessed_zoc);
         py::gil_scoped_release free;
-        return check_mission_file(mission.string());
+        return check_mission_file(mission.string(), chart);
       },
-      py::arg("mission"), "The plan as written and its conflicts, as `deepguide mission check`.");
+      py::arg("mission"), py::kw_only(), py::arg("zoc") = "clipped", py::arg("restricted_areas") = false,
+      py::arg("unassessed_zoc") = py::none(), "The plan as written and its conflicts, as `deepguide mission check`.");
   m.def(
       "mission_plan",
-      [](const std::filesystem::path& mission) {
+      [](const std::filesystem::path& mission, const std::string& zoc, bool restricted_areas,
+         const std::optional<std::tuple<double, double, double>>& unassessed_zoc) {
+        const ChartOptions chart = chart_options(zoc, restricted_areas, unassessed_zoc);
         py::gil_scoped_release free;
-        return plan_mission_file(mission.string());
+        return plan_mission_file(mission.string(), chart);
       },
-      py::arg("mission"), "Every conflict evaded or identified and the plan checked, as `deepguide mission plan`.");
+      py::arg("mission"), py::kw_only(), py::arg("zoc") = "clipped", py::arg("restricted_areas") = false,
+      py::arg("unassessed_zoc") = py::none(),
+      "Every conflict evaded or identified and the plan checked, as `deepguide mission plan`.");
   m.def(
       "mission_export",
-      [](const std::filesystem::path& mission, const std::filesystem::path& output, bool as_written) {
+      [](const std::filesystem::path& mission, const std::filesystem::path& output, bool as_written,
+         const std::string& zoc, bool restricted_areas,
+         const std::optional<std::tuple<double, double, double>>& unassessed_zoc) {
         MissionExportRequest request;
+        request.chart = chart_options(zoc, restricted_areas, unassessed_zoc);
         request.mission = mission.string();
         request.output = output.string();
         request.as_written = as_written;
         py::gil_scoped_release free;
         return export_mission_file(request).to_text(request.output);
       },
-      py::arg("mission"), py::arg("output"), py::kw_only(), py::arg("as_written") = false,
+      py::arg("mission"), py::arg("output"), py::kw_only(), py::arg("as_written") = false, py::arg("zoc") = "clipped",
+      py::arg("restricted_areas") = false, py::arg("unassessed_zoc") = py::none(),
       "Plans the mission and writes it in the format of `output`'s extension, as `deepguide mission export`; "
       "returns the line the command prints.");
   m.def(
       "mission_simulate",
       [](const std::filesystem::path& mission, const std::vector<std::filesystem::path>& unknown, std::uint64_t seed,
-         double planning_delay) {
+         double planning_delay, const std::string& zoc, bool restricted_areas,
+         const std::optional<std::tuple<double, double, double>>& unassessed_zoc) {
         MissionRunRequest request;
+        request.chart = chart_options(zoc, restricted_areas, unassessed_zoc);
         request.mission = mission.string();
         request.unknown = path_texts(unknown);
         request.options.seed = seed;
@@ -107,6 +122,7 @@ void bind_missions(py::module_& m) {
       },
       py::arg("mission"), py::kw_only(), py::arg("unknown") = std::vector<std::filesystem::path>{},
       py::arg("seed") = MissionRunOptions{}.seed, py::arg("planning_delay") = MissionRunOptions{}.planning_delay_s,
+      py::arg("zoc") = "clipped", py::arg("restricted_areas") = false, py::arg("unassessed_zoc") = py::none(),
       "Sails the planned mission in simulation, with objects nobody knew (`unknown` obstacle files), as "
       "`deepguide mission simulate`.");
 }

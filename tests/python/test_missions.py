@@ -57,3 +57,18 @@ def test_a_simulated_missions_track_is_an_array_that_adds_up():
     assert 0.98 * summary["length_m"] <= sampled <= summary["length_m"] + 1e-6
     assert t["reactive"].any() == any("reactive level" in e["what"] for e in summary["events"])
     assert np.all((t["heading_deg"] >= 0) & (t["heading_deg"] < 360))
+
+
+def test_chart_options_reach_the_missions_and_the_route_check(cli, tmp_path):
+    planned = deepguide.mission_plan(SAMPLE, zoc="none", restricted_areas=True)
+    assert planned.to_dict() == cli_json(cli("mission", "plan", SAMPLE, "--zoc", "none", "--restricted", "--json"))
+    for call in (lambda: deepguide.mission_check(SAMPLE, zoc="maybe"),
+                 lambda: deepguide.mission_plan(SAMPLE, zoc="maybe"),
+                 lambda: deepguide.mission_simulate(SAMPLE, zoc="maybe"),
+                 lambda: deepguide.mission_export(SAMPLE, tmp_path / "m.rtz", zoc="maybe"),
+                 lambda: deepguide.check_route(tmp_path / "r.gpx", zoc="maybe")):
+        with pytest.raises(deepguide.InputError, match="`zoc`: expected clipped, strict or none, got 'maybe'"):
+            call()
+    with pytest.raises(deepguide.InputError, match="unassessed"):
+        deepguide.mission_plan(SAMPLE, unassessed_zoc=(2, 0.05, -1))
+    assert list(tmp_path.iterdir()) == []
