@@ -142,6 +142,29 @@ TEST(ChartOptionsCli, APreparedChartWithoutDepthAsksForTheDepth) {
   EXPECT_EQ(r.err.find(".hpp"), std::string::npos) << r.err;
 }
 
+// A prepared chart draws as its cells do: the frame it was prepared in, its
+// no-go. (The drawing once took the frame by reading the file as an obstacle
+// file, and failed on the no-go layer's first point feature.)
+TEST(ChartOptionsCli, APreparedChartDraws) {
+  DEEPGUIDE_REAL_FILE_OR_SKIP(cell, kKeyWest);
+  ScratchDir tmp;
+  const std::string gpkg = tmp.file("kw.gpkg");
+  ASSERT_EQ(run_cli("chart prepare '" + cell + "' --depth 3 -o '" + gpkg + "'").exit_code, 0);
+  const test::RunResult drawn = run_cli("render chart '" + gpkg + "' --depth 3 -o '" + tmp.file("kw.png") + "'");
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  const test::RunResult cells = run_cli("render chart '" + cell + "' --depth 3 -o '" + tmp.file("cell.png") + "'");
+  ASSERT_EQ(cells.exit_code, 0) << cells.err;
+  // The same frame and no-go polygons as the cell's own drawing ("wrote F (W x H px, FRAME, N no-go polygon(s), ...").
+  const auto frame_and_no_go = [](const std::string& out) {
+    const std::size_t from = out.find("px, ");
+    const std::size_t to = out.find(" no-go polygon");
+    return from == std::string::npos || to == std::string::npos ? std::string() : out.substr(from, to - from);
+  };
+  EXPECT_NE(frame_and_no_go(drawn.out), "") << drawn.out;
+  EXPECT_EQ(frame_and_no_go(drawn.out), frame_and_no_go(cells.out)) << drawn.out << cells.out;
+  EXPECT_TRUE(std::filesystem::exists(tmp.file("kw.png")));
+}
+
 // `chart info` takes the exchange set plan takes: its cells read together,
 // through their catalogues, best scale first.
 TEST(ChartOptionsCli, ChartInfoReadsAnExchangeSet) {

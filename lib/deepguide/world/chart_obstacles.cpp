@@ -36,7 +36,7 @@ LocalFrame charts_frame(const std::vector<std::string>& paths, const std::string
   if (!local_crs.empty()) return LocalFrame::from_user_crs(local_crs);
   if (paths.empty()) throw InputError("charts: expected at least one chart file");
   const std::string& first = paths.front();
-  if (is_prepared_chart(first)) return load_obstacles({first}).frame;
+  if (is_prepared_chart(first)) return prepared_chart_frame(first);
   if (names_enc(first)) return s57_local_frame(summarize_s57(find_enc_cells({first}).front().base));
   switch (chart_kind(first)) {
     case ChartKind::raster: {

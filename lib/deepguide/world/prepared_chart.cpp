@@ -323,10 +323,10 @@ void write_prepared_chart(const std::string& path, const EncNoGo& no_go, const E
   out.commit(replace);
 }
 
-EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFrame>& frame, double depth_m,
-                            double vertical_clearance_m, PreparedChartInfo* info) {
-  gdal::QuietErrors quiet;
-  GDALDatasetUniquePtr ds = open_gpkg(path);
+namespace {
+
+// The table that says what the file is, its one row checked for a format this reader knows.
+std::unique_ptr<OGRFeature> prepared_row(GDALDataset* ds, const std::string& path) {
   OGRLayer* meta = ds ? ds->GetLayerByName(kMetaLayer) : nullptr;
   if (meta == nullptr) throw InputError(shown(path) + ": expected a prepared chart (chart prepare), got none");
   std::unique_ptr<OGRFeature> row(meta->GetNextFeature());
@@ -334,6 +334,23 @@ EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFr
   if (format != kFormat && format != kFormat2 && format != kFormat1) {
     throw InputError(shown(path) + ": table deepguide_chart: expected format '" + kFormat + "'");
   }
+  return row;
+}
+
+}  // namespace
+
+LocalFrame prepared_chart_frame(const std::string& path) {
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_gpkg(path);
+  return LocalFrame::from_user_crs(prepared_row(ds.get(), path)->GetFieldAsString("local_crs"), shown(path));
+}
+
+EncNoGo read_prepared_chart(const std::string& path, const std::optional<LocalFrame>& frame, double depth_m,
+                            double vertical_clearance_m, PreparedChartInfo* info) {
+  gdal::QuietErrors quiet;
+  GDALDatasetUniquePtr ds = open_gpkg(path);
+  const std::unique_ptr<OGRFeature> row = prepared_row(ds.get(), path);
+  const std::string format = row->GetFieldAsString("format");
   PreparedChartInfo p;
   p.depth_m = row->GetFieldAsDouble("depth_m");
   p.vertical_clearance_m = row->GetFieldAsDouble("vertical_clearance_m");

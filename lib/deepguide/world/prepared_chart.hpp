@@ -78,6 +78,10 @@ ChartPreparation prepare_chart(const std::vector<std::string>& charts, const std
                                const EncNoGoOptions& options, const std::string& output, bool overwrite,
                                const PreparedGraphsMaker& graphs = {});
 
+/// The frame a prepared chart was prepared in (its local_crs); throws
+/// InputError naming the file when it is not a prepared chart.
+LocalFrame prepared_chart_frame(const std::string& path);
+
 /// Reads a prepared chart into `frame` (or the frame it was prepared in) for
 /// `depth_m` and `vertical_clearance_m`; throws InputError naming the file
 /// when it was prepared for others, or is not a prepared chart.
