@@ -169,3 +169,17 @@ def test_a_constant_current_is_current_const(sample):
     with pytest.raises(deepguide.InputError):
         deepguide.constant_current(-1, 0)
     assert SOURCE.exists()
+
+
+def test_a_prepared_chart_read_once_plans_what_the_command_plans(cli, tmp_path):
+    cell = real_file(CELL)
+    prepared = tmp_path / "md5.gpkg"
+    cli("chart", "prepare", cell, "--depth", "5", "-o", prepared)
+    chart = deepguide.read_chart(prepared, depth=5)
+    assert chart.crs == "EPSG:32618" and len(chart) > 0
+    for a, b in PAIRS[:2]:
+        want = cli_json(cli("plan", "--chart", prepared, "--depth", "5", "--from", text(a), "--to", text(b), "--json"))
+        assert abs(deepguide.plan(a, b, charts=chart).length_m - want["length_m"]) <= 1e-9
+    assert chart.render()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(deepguide.InputError, match="prepared for depth 5 m"):
+        deepguide.read_chart(prepared, depth=7)
