@@ -52,6 +52,9 @@ void register_plan(CLI::App& app) {
   cmd->add_flag("--escape", r.problem.escape, "A start inside a safety zone first leaves it the shortest way");
   cmd->add_option("--render", c->out.render, "Also draw the route chart (obstacles, zones, route) as .png or .svg");
   cmd->add_flag("--render-graph", c->render_graph, "With --render: draw the zone polygons and the planning graph");
+  cmd->add_option("--html", c->out.html,
+                  "Also write a web map of the route (one .html file that works offline: the chart's no-go with "
+                  "its reasons, obstacles, zones, legs and waypoints; docs/WEB_MAP.md)");
   cmd->add_option("--cost", c->cost, "What the route minimises: length, time or energy (in the current)")
       ->capture_default_str();
   auto* current = cmd->add_option("--current", r.current_file,

@@ -27,7 +27,7 @@ void add_depth_flags(CLI::App& cmd, DepthFlags& flags);
 void check_depth_flags(bool in_depth, const DepthFlags& flags, bool flags_2d);
 
 struct PlanOutputs {
-  std::string route_file, render;
+  std::string route_file, render, html;
   bool json = false;
 };
 /// Shares the 2-D request's obstacles, charts, ends, depth, margin, cells and vehicle.

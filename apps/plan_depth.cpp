@@ -58,7 +58,7 @@ void check_depth_flags(bool in_depth, const DepthFlags& f, bool flags_2d) {
   if (in_depth && flags_2d) {
     throw InputError(
         "--graph octree: plans by length; --cost, --current, --waypoint-grid, --escape, "
-        "--replan-events, --depart, --render-graph and the headings are for the 2-D graphs (Dubins "
+        "--replan-events, --depart, --render-graph, --html and the headings are for the 2-D graphs (Dubins "
         "ends: --graph tangent)");
   }
   if (!f.render_profile.empty()) image_format_for(f.render_profile);  // before the work, not after

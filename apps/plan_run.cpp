@@ -14,6 +14,7 @@
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
+#include "deepguide/render/route_web_map.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 #include "plan_command.hpp"
 
@@ -46,14 +47,17 @@ void run_plan(PlanCommand& c) {
   check_depth_flags(in_depth, c.depth,
                     c.cost != "length" || !r.current_file.empty() || !c.current_const.empty() || r.waypoint_grid_m ||
                         r.problem.escape || !r.replan_events.empty() || !c.depart.empty() || c.render_graph ||
-                        c.from_heading || c.to_heading);
+                        c.from_heading || c.to_heading || !c.out.html.empty());
   if (!c.out.render.empty()) image_format_for(c.out.render);  // before the work, not after
+  if (!c.out.html.empty()) check_web_map_path(c.out.html, "--html");
   std::vector<NamedPath> inputs{
       {"--current", r.current_file}, {"--vehicle", r.vehicle}, {"--replan-events", r.replan_events}};
   for (const std::string& f : c.obstacles) inputs.push_back({"--obstacles", f});
   for (const std::string& f : r.charts) inputs.push_back({"--chart", f});
-  check_outputs_apart(
-      inputs, {{"-o", c.out.route_file}, {"--render", c.out.render}, {"--render-profile", c.depth.render_profile}});
+  check_outputs_apart(inputs, {{"-o", c.out.route_file},
+                               {"--render", c.out.render},
+                               {"--render-profile", c.depth.render_profile},
+                               {"--html", c.out.html}});
   if (!c.out.route_file.empty()) route_file_format(c.out.route_file);  // a mission's .yaml is not a route
   r.search = parse_search(c.search);
   r.cost = parse_cost_kind(c.cost);
@@ -73,6 +77,7 @@ void run_plan(PlanCommand& c) {
   for (const std::string& w : report.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (!c.out.route_file.empty()) write_route_plan(report, c.out.route_file);
   if (!c.out.render.empty()) render_route_plan(report, c.out.render, c.render_graph);
+  if (!c.out.html.empty()) write_web_map(route_web_map(report), c.out.html);
   // Written and printed first, then said loudly: a replay where the vehicle is walled in is exit 3.
   if (c.out.json) {
     std::cout << report.to_json().dump(2) << "\n";
@@ -80,6 +85,7 @@ void run_plan(PlanCommand& c) {
     std::cout << report.to_text();
     if (!c.out.route_file.empty()) std::cout << report_line("wrote", c.out.route_file);
     if (!c.out.render.empty()) std::cout << report_line("rendered", c.out.render);
+    if (!c.out.html.empty()) std::cout << report_line("web map", c.out.html);
   }
   if (const auto why = report.stop_reason()) throw NoRouteError(*why);
 }

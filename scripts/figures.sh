@@ -99,3 +99,18 @@ if [ -d "$DEEPGUIDE_ROOT/build/python/deepguide" ]; then
       docs/images/python_route_on_chart.png
   fi
 fi
+# The web map of the Chesapeake route (docs/WEB_MAP.md), as headless Chromium shows it, when both are here.
+cell="$DEEPGUIDE_ROOT/../shared/data/real/noaa-enc-US4MD81M/US4MD81M.000"
+chromium="$(command -v chromium || true)"
+if [ -f "$cell" ] && [ -n "$chromium" ]; then
+  page="$(mktemp -d)"
+  "$DEEPGUIDE_CLI" plan --chart "$cell" --depth 5 --from -76.41,38.87 --to -76.35,38.60 --html "$page/map.html" >/dev/null
+  # Zoomed to the route's turn round the shoals off Cove Point, a DEPARE's reason open.
+  "$chromium" --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1400,800 \
+    --host-resolver-rules="MAP * ~NOTFOUND" --virtual-time-budget=15000 \
+    --screenshot="$DEEPGUIDE_ROOT/docs/images/web_map_chesapeake.png" \
+    "file://$page/map.html#zoom=12.5&center=-76.392,38.556&click=-76.380,38.545" 2>/dev/null
+  rm -rf "$page"
+else
+  echo "deepguide: Chromium or US4MD81M is absent: skipping the web map's screenshot" >&2
+fi

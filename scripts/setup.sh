@@ -15,6 +15,8 @@ DEEPGUIDE_PACKAGES=(
   libcairo2-dev libxml2-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-venv python3-pip python3-setuptools
   python3-matplotlib
+  # The web map: Leaflet, inlined into every page; Chromium, headless, tests the pages.
+  libjs-leaflet chromium
 )
 
 deepguide_install_packages() {

@@ -85,6 +85,68 @@ TEST(CliPlan, CheckRouteNamesTheSegmentAndObstacleOfAnUnsafeRoute) {
   EXPECT_NE(r.err.find("'c5'"), std::string::npos) << r.err;
 }
 
+// --html that cannot be written: one line, exit 1, before any work, and no
+// file written (neither the page nor the route).
+TEST(CliPlan, AWebMapThatCannotBeWrittenIsOneLineAndNothingWritten) {
+  ScratchDir dir;
+  const std::string route = dir.file("route.geojson");
+  for (const auto& [html, words] : {std::pair<std::string, std::string>{dir.file("no/such/map.html"), "does not exist"},
+                                    {dir.file("map.png"), "expected a web page file name ending in .html or .htm"},
+                                    {kSample, "expected a web page file name"}}) {
+    const auto r =
+        run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + route + "' --html '" + html + "'");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("--html"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(route));
+  }
+  // Over an input file with an .html name: refused as the other outputs are.
+  const std::string input = dir.file("obstacles.html");
+  std::filesystem::copy_file(kSample, input);
+  const auto over =
+      run_cli("plan --obstacles '" + kSample + "' --chart '" + input + "'" + kFromTo + " --html '" + input + "'");
+  EXPECT_EQ(over.exit_code, 1) << over.err;
+  EXPECT_EQ(std::count(over.err.begin(), over.err.end(), '\n'), 1) << over.err;
+  EXPECT_FALSE(std::filesystem::exists(route));
+  // And one that can: a page beside the route.
+  const auto ok = run_cli("plan --obstacles '" + kSample + "'" + kFromTo + " -o '" + route + "' --html '" +
+                          dir.file("map.html") + "'");
+  if (std::filesystem::exists("/usr/share/javascript/leaflet/leaflet.min.js")) {
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_GT(std::filesystem::file_size(dir.file("map.html")), 100000u);
+  }
+}
+
+// render chart --html: S-57 charts with a depth; anything else is one line,
+// exit 1, nothing written; -o or --html is required (usage, exit 2).
+TEST(CliRenderChart, AWebMapAsksForCellsAndADepth) {
+  ScratchDir dir;
+  const std::string page = dir.file("chart.html");
+  const std::string raster = deepguide::test::source_file("charts/sample_chart.tif");
+  const auto not_s57 = run_cli("render chart '" + raster + "' --depth 3 --html '" + page + "'");
+  EXPECT_EQ(not_s57.exit_code, 1) << not_s57.err;
+  EXPECT_NE(not_s57.err.find("--html: expected S-57 charts"), std::string::npos) << not_s57.err;
+  EXPECT_EQ(std::count(not_s57.err.begin(), not_s57.err.end(), '\n'), 1) << not_s57.err;
+  EXPECT_EQ(run_cli("render chart '" + raster + "'").exit_code, 2);
+  EXPECT_FALSE(std::filesystem::exists(page));
+  DEEPGUIDE_REAL_FILE_OR_SKIP(cell, "noaa-enc-US5FL4DQ/US5FL4DQ.000");
+  const auto no_depth = run_cli("render chart '" + cell + "' --html '" + page + "'");
+  EXPECT_EQ(no_depth.exit_code, 1) << no_depth.err;
+  EXPECT_NE(no_depth.err.find("--html: expected --depth"), std::string::npos) << no_depth.err;
+  const auto no_folder = run_cli("render chart '" + cell + "' --depth 3 --html '" + dir.file("no/chart.html") + "'");
+  EXPECT_EQ(no_folder.exit_code, 1) << no_folder.err;
+  EXPECT_NE(no_folder.err.find("does not exist"), std::string::npos) << no_folder.err;
+  const auto over = run_cli("render chart '" + cell + "' --depth 3 --html '" + cell + "'");
+  EXPECT_EQ(over.exit_code, 1) << over.err;
+  EXPECT_FALSE(std::filesystem::exists(page));
+  if (std::filesystem::exists("/usr/share/javascript/leaflet/leaflet.min.js")) {
+    const auto ok = run_cli("render chart '" + cell + "' --depth 3 --html '" + page + "'");
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_TRUE(std::filesystem::exists(page));
+  }
+}
+
 TEST(CliPlan, ExitCodes) {
   ScratchDir dir;
   // Goal inside obstacle c1's zone: no safe route, exit 3, naming c1.

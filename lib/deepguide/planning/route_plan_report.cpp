@@ -241,6 +241,7 @@ RoutePlanReport plan_route_request(const LocalFrame& frame, const RoutePlanReque
   }
   if (charted.enc) {
     report.enc_charts = true;
+    report.enc = charted.enc;
     refuse_ends_in_enc_no_go(*charted.enc, r);
   }
   report.vehicle = r.vehicle.empty() ? VehicleParams{} : read_vehicle_file(r.vehicle);

@@ -31,6 +31,7 @@
 namespace DEEPGUIDE_API deepguide {
 
 struct ChartObstacles;  // world/chart_obstacles.hpp
+struct EncNoGo;         // world/enc_no_go.hpp
 
 struct RoutePlanRequest {
   ObstacleSet obstacles;  ///< in the local frame
@@ -80,6 +81,9 @@ struct RoutePlanReport {
   RoutePlanRequest request;  ///< as given, but for the obstacles (below)
   ObstacleSet obstacles;     ///< the request's and the charts' (what the route was planned among)
   bool enc_charts = false;   ///< the charts held S-57 cells
+  /// The S-57 cells' no-go, feature by feature (null without cells): what a
+  /// drawing or a web map explains the no-go with.
+  std::shared_ptr<const EncNoGo> enc;
   /// On S-57 charts: the cells, least depth, zones and nearest no-go along the route.
   std::optional<RouteQuality> chart_quality;
   std::size_t passed_over = 0;  ///< obstacles and hazards deeper than the band

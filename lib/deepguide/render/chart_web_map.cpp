@@ -1,0 +1,168 @@
+#include "deepguide/render/chart_web_map.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
+#include "deepguide/world/chart_obstacles.hpp"
+#include "deepguide/world/prepared_chart.hpp"
+
+namespace deepguide {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json metres(double v) { return std::round(v * 100.0) / 100.0; }
+
+// Depth bands' fills, shallow to deep, as a paper chart shades them.
+constexpr std::array<double, 6> kBandEdges{2.0, 5.0, 10.0, 20.0, 50.0, 100.0};
+constexpr std::array<const char*, 7> kBandFills{"#c7e4f5", "#a9d3ee", "#8cc2e6", "#6fb0dd", "#5198cc", "#3b7fb8", "#2a6399"};
+
+const char* band_fill(double depth_m) {
+  std::size_t i = 0;
+  while (i < kBandEdges.size() && depth_m >= kBandEdges[i]) ++i;
+  return kBandFills[i];
+}
+
+// Point hazards by kind: rocks, wrecks, obstructions, piles and structures.
+const char* hazard_fill(const std::string& cls) {
+  if (cls == "UWTROC") return "#5f3dc4";
+  if (cls == "WRECKS") return "#d9480f";
+  if (cls == "OBSTRN") return "#c2255c";
+  return "#495057";
+}
+
+WebMapLayer make_layer(const char* id, std::string name, const char* stroke, const char* fill, double opacity,
+                       double weight) {
+  WebMapLayer l;
+  l.id = id;
+  l.name = std::move(name);
+  l.stroke = stroke;
+  l.fill = fill;
+  l.fill_opacity = opacity;
+  l.weight = weight;
+  return l;
+}
+
+json feature_properties(const EncNoGoFeature& f) {
+  json props{{"record", f.id}, {"cell", f.cell}, {"class", f.cls}, {"why", f.reason}};
+  if (std::isfinite(f.charted_depth_m)) props["charted depth (m)"] = metres(f.charted_depth_m);
+  if (std::isfinite(f.least_depth_m)) props["least depth (m)"] = metres(f.least_depth_m);
+  if (f.point) props["radius (m)"] = metres(f.radius_m);
+  return props;
+}
+
+}  // namespace
+
+WebMapLayer enc_no_go_layer(const EncNoGo& enc, double operating_depth_m) {
+  const WebMapGeometry to{enc.frame};
+  WebMapLayer layer = make_layer("no_go", "No-go at " + general(operating_depth_m) + " m, by feature (click for why)",
+                                 "#c92a2a", "#e03131", 0.18, 1.0);
+  layer.explained = true;
+  for (const EncNoGoFeature& f : enc.features) {
+    if (f.point) {
+      layer.features.push_back(web_map_feature(to.disc(*f.point, f.radius_m), feature_properties(f)));
+    } else if (!f.area.empty()) {
+      layer.features.push_back(web_map_feature(to.multipolygon(f.area), feature_properties(f)));
+    }
+  }
+  return layer;
+}
+
+WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::string& title) {
+  const WebMapGeometry to{enc.frame};
+  WebMap map;
+  map.title = title;
+  map.subtitle = std::to_string(enc.cells.size()) + " cell(s), no-go shallower than " +
+                 general(enc.required_depth_m) + " m (depth " + general(operating_depth_m) + " m and its clearance), frame " +
+                 enc.frame.id();
+
+  WebMapLayer cells = make_layer("cells", "Cells (where each decides)", "#343a40", "#343a40", 0.0, 1.5);
+  cells.dash = "8 4";
+  for (const EncChartArea& a : enc.cell_areas) {
+    json props{{"cell", a.cell}};
+    const auto it = std::find_if(enc.cells.begin(), enc.cells.end(), [&](const EncCellSummary& c) { return c.name == a.cell; });
+    if (it != enc.cells.end()) {
+      props["usage band"] = it->usage_band;
+      props["scale"] = "1:" + std::to_string(it->compilation_scale);
+      props["edition"] = it->edition;
+      props["update"] = it->update_number;
+    }
+    cells.features.push_back(web_map_feature(to.multipolygon(a.area), std::move(props)));
+  }
+
+  WebMapLayer depths = make_layer("depth_areas", "Depth areas (shaded by DRVAL1)", "#74a9cf", "#8cc2e6", 0.9, 0.5);
+  for (const EncChartArea& a : enc.depth_areas) {
+    json props{{"record", a.id}, {"cell", a.cell}};
+    if (std::isfinite(a.depth_m)) props["DRVAL1 (m)"] = metres(a.depth_m);
+    json style{{"fillColor", std::isfinite(a.depth_m) ? band_fill(a.depth_m) : "#d9d9d9"}};
+    depths.features.push_back(web_map_feature(to.multipolygon(a.area), std::move(props), std::move(style)));
+  }
+
+  WebMapLayer land = make_layer("land", "Land", "#a68a5b", "#f1e3c6", 1.0, 0.8);
+  WebMapLayer hazards = make_layer("hazards", "Hazards (rocks, wrecks, obstructions, piles)", "#212529", "#495057", 0.9, 1.0);
+  hazards.point_radius_px = 4.0;
+  WebMapLayer soundings = make_layer("soundings", "Soundings that are no-go", "#1864ab", "#1864ab", 0.9, 0.5);
+  soundings.point_radius_px = 2.0;
+  soundings.shown = false;
+  for (const EncNoGoFeature& f : enc.features) {
+    if (f.cls == "LNDARE") {  // areas, and the points of islets and rocks that show
+      land.features.push_back(
+          web_map_feature(f.point ? to.point(*f.point) : to.multipolygon(f.area), feature_properties(f)));
+    } else if (f.point && f.cls == "SOUNDG") {
+      soundings.features.push_back(web_map_feature(to.point(*f.point), feature_properties(f)));
+    } else if (f.point) {
+      hazards.features.push_back(
+          web_map_feature(to.point(*f.point), feature_properties(f), json{{"fillColor", hazard_fill(f.cls)}}));
+    }
+  }
+
+  WebMapLayer zones = make_layer("zones_of_confidence", "Zones of confidence (CATZOC)", "#2b8a3e", "#2b8a3e", 0.05, 1.0);
+  zones.dash = "3 3";
+  zones.shown = false;
+  static constexpr std::array<const char*, 7> kLetters{"none", "A1", "A2", "B", "C", "D", "U"};
+  for (const EncChartArea& z : enc.zones) {
+    json props{{"zone", z.id}, {"cell", z.cell}};
+    props["CATZOC"] = z.catzoc >= 1 && z.catzoc <= 6 ? kLetters[static_cast<std::size_t>(z.catzoc)] : "none";
+    zones.features.push_back(web_map_feature(to.multipolygon(z.area), std::move(props)));
+  }
+
+  map.layers = {std::move(depths), std::move(land), enc_no_go_layer(enc, operating_depth_m), std::move(hazards),
+                std::move(soundings), std::move(zones), std::move(cells)};
+  map.table.title = "Cells, best scale first";
+  map.table.columns = {"cell", "usage band", "scale", "edition", "update"};
+  for (const EncCellSummary& c : enc.cells) {
+    map.table.rows.push_back({c.name, c.usage_band, "1:" + std::to_string(c.compilation_scale), c.edition,
+                              c.update_number});
+  }
+  return map;
+}
+
+void write_chart_web_map(const ChartRenderOptions& options, const std::string& path) {
+  check_web_map_path(path, "--html");
+  if (std::isnan(options.depth_m)) throw InputError("--html: expected --depth (the web map shows the no-go at it)");
+  for (const std::string& chart : options.charts) {
+    if (!reads_as_enc(chart)) {
+      throw InputError("--html: expected S-57 charts (cells, folders, exchange sets, prepared charts), got '" +
+                       printable(chart) + "'");
+    }
+  }
+  const LocalFrame frame = charts_frame(options.charts, options.local_crs, options.source_crs);
+  const EncNoGo enc =
+      chart_no_go(options.charts, frame, enc_options(options.chart_options, options.depth_m, options.clearance_m));
+  std::string title = options.title;
+  if (title.empty()) {
+    for (const std::string& chart : options.charts) {
+      title += (title.empty() ? "" : ", ") + std::filesystem::path(chart).filename().string();
+    }
+    title += " at " + general(options.depth_m) + " m";
+  }
+  write_web_map(chart_web_map(enc, options.depth_m, title), path);
+}
+
+}  // namespace deepguide

@@ -1,0 +1,133 @@
+// The web map's page script (render/web_map.hpp says what the page does).
+// It reads the layers from <script id="dg-data" type="application/json">,
+// and is inlined into every page with Leaflet: no network.
+(function () {
+  "use strict";
+  const data = JSON.parse(document.getElementById("dg-data").textContent);
+  // Lines and rings come as steps of 1e-7 degrees ("q", web_map.cpp): decoded to GeoJSON positions.
+  const positions = (q) => {
+    const out = new Array(q.length / 2);
+    let x = 0;
+    let y = 0;
+    for (let i = 0; i < q.length; i += 2) {
+      x += q[i];
+      y += q[i + 1];
+      out[i / 2] = [x / 1e7, y / 1e7];
+    }
+    return out;
+  };
+  for (const layer of data.layers) {
+    for (const f of layer.features) {
+      const g = f.geometry;
+      if (!g || !g.q) continue;
+      if (g.type === "LineString") g.coordinates = positions(g.q);
+      else if (g.type === "Polygon") g.coordinates = g.q.map(positions);
+      else if (g.type === "MultiPolygon") g.coordinates = g.q.map((p) => p.map(positions));
+      delete g.q;
+    }
+  }
+  const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;"}[c]));
+  const table = (props) =>
+    "<table class=\"dg-props\">" +
+    Object.entries(props).map(([k, v]) => "<tr><th>" + esc(k) + "</th><td>" + esc(v) + "</td></tr>").join("") +
+    "</table>";
+
+  const map = L.map("map", {preferCanvas: true, zoomSnap: 0.25, attributionControl: false});
+  const overlays = {};
+  const counts = {};
+  const explained = [];
+  let all = null;
+  for (const layer of data.layers) {
+    const style = {
+      color: layer.stroke, weight: layer.weight, fillColor: layer.fill, fillOpacity: layer.fill_opacity,
+      opacity: 1, dashArray: layer.dash || null, interactive: !layer.explained,
+    };
+    const group = L.geoJSON({type: "FeatureCollection", features: layer.features}, {
+      style: (f) => (f.style ? Object.assign({}, style, f.style) : style),
+      pointToLayer: (f, ll) => L.circleMarker(ll, Object.assign({}, style, f.style || {}, {radius: layer.point_radius_px})),
+      onEachFeature: (f, l) => {
+        if (!layer.explained && f.properties && Object.keys(f.properties).length) l.bindPopup(table(f.properties));
+      },
+    });
+    counts[layer.id] = group.getLayers().length;  // what Leaflet made of the features
+    if (layer.explained) explained.push({layer: layer, group: group});
+    const swatch = "<span class=\"dg-swatch\" style=\"border-color:" + esc(layer.stroke) + ";background:" +
+      esc(layer.fill) + "\"></span>";
+    overlays[swatch + esc(layer.name) + " <span class=\"dg-count\">(" + layer.features.length + ")</span>"] = group;
+    if (layer.shown) group.addTo(map);
+    if (layer.features.length) {
+      const b = group.getBounds();
+      if (b.isValid()) all = all ? all.extend(b) : L.latLngBounds(b.getSouthWest(), b.getNorthEast());
+    }
+  }
+  L.control.layers(null, overlays, {collapsed: false}).addTo(map);
+  L.control.scale({imperial: false, maxWidth: 160}).addTo(map);
+  const f = data.focus;
+  if (f) map.fitBounds([[f.south, f.west], [f.north, f.east]], {padding: [20, 20]});
+  else if (all) map.fitBounds(all, {padding: [20, 20]});
+  else map.setView([0, 0], 2);
+
+  // Point in a GeoJSON (multi)polygon, even-odd over every ring (holes included).
+  function inRing(ring, x, y) {
+    let inside = false;
+    for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
+      const [xi, yi] = ring[i];
+      const [xj, yj] = ring[j];
+      if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
+    }
+    return inside;
+  }
+  function contains(geometry, x, y) {
+    const polygons = geometry.type === "Polygon" ? [geometry.coordinates]
+      : geometry.type === "MultiPolygon" ? geometry.coordinates : [];
+    return polygons.some((rings) => rings.reduce((acc, ring) => acc !== inRing(ring, x, y), false));
+  }
+  // What a click tells: every feature of an explained layer under it (the
+  // chart's no-go: overlapping features all listed, the planner's reason each).
+  map.on("click", (e) => {
+    const hits = [];
+    for (const {layer, group} of explained) {
+      if (!map.hasLayer(group)) continue;
+      for (const feature of layer.features) {
+        if (feature.geometry && contains(feature.geometry, e.latlng.lng, e.latlng.lat)) hits.push(feature.properties);
+      }
+    }
+    if (hits.length) {
+      L.popup({maxHeight: 320}).setLatLng(e.latlng)
+        .setContent("<div class=\"dg-hits\">" + hits.map(table).join("<hr>") + "</div>").openOn(map);
+    }
+  });
+
+  // The table beside the map.
+  const t = data.table;
+  if (t && t.columns.length) {
+    document.getElementById("dg-table").innerHTML =
+      "<h2>" + esc(t.title) + "</h2><table class=\"dg-rows\"><thead><tr>" +
+      t.columns.map((c) => "<th>" + esc(c) + "</th>").join("") + "</tr></thead><tbody>" +
+      t.rows.map((r) => "<tr>" + r.map((v) => "<td>" + esc(v === null ? "" : v) + "</td>").join("") + "</tr>").join("") +
+      "</tbody></table>";
+  }
+
+  // The fragment: view, click and test output for scripts and tests.
+  const args = {};
+  for (const part of location.hash.replace(/^#/, "").split("&")) {
+    const [k, v] = part.split("=");
+    if (k) args[decodeURIComponent(k)] = v === undefined ? "" : decodeURIComponent(v);
+  }
+  if (args.center || args.zoom) {
+    const c = args.center ? args.center.split(",").map(Number) : [map.getCenter().lng, map.getCenter().lat];
+    map.setView([c[1], c[0]], args.zoom ? Number(args.zoom) : map.getZoom(), {animate: false});
+  }
+  if (args.click) {
+    const [lon, lat] = args.click.split(",").map(Number);
+    map.fire("click", {latlng: L.latLng(lat, lon)});
+  }
+  if ("test" in args) {
+    const out = document.createElement("pre");
+    out.id = "dg-test";
+    out.textContent = JSON.stringify({
+      layers: counts, table: t ? t.rows : [], zoom: map.getZoom(), ms: Math.round(performance.now()),
+    });
+    document.body.appendChild(out);
+  }
+})();
