@@ -9,8 +9,10 @@
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/core/output_paths.hpp"
 #include "deepguide/mission/mission_report.hpp"
 #include "deepguide/render/mission_figure.hpp"
+#include "deepguide/render/mission_web_map.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 #include "deepguide/simulation/mission_run_report.hpp"
 #include "deepguide/world/chart_options.hpp"
@@ -19,7 +21,7 @@ namespace deepguide::app {
 namespace {
 
 struct MissionOptions {
-  std::string mission;
+  std::string mission, html;
   bool json = false;
   ChartOptions chart;
 };
@@ -54,7 +56,20 @@ void register_mission(CLI::App& app) {
   plan->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   plan->add_flag("--json", o->json, "Print the result as JSON");
   add_chart_options(*plan, o->chart, nullptr);
-  plan->callback([o] { print_then_fail(plan_mission_file(o->mission, o->chart), o->json); });
+  plan->add_option("--html", o->html,
+                   "Also write the planned mission as a web map (one .html file that works offline; docs/WEB_MAP.md)");
+  plan->callback([o] {
+    if (!o->html.empty()) {
+      check_web_map_path(o->html, "--html");
+      check_outputs_apart({{"MISSION", o->mission}}, {{"--html", o->html}});
+    }
+    const MissionPlanReport report = plan_mission_file(o->mission, o->chart);
+    if (!o->html.empty()) {
+      check_outputs_apart(mission_input_files(o->mission, report.loaded.mission), {{"--html", o->html}});
+      write_web_map(mission_web_map(report.loaded, report.planned), o->html);
+    }
+    print_then_fail(report, o->json);
+  });
 
   struct ExportCli {
     std::string output, format, route_name;
@@ -90,7 +105,7 @@ void register_mission(CLI::App& app) {
 
 void register_mission_simulate(CLI::App& mission) {
   struct Options {
-    std::string mission, render;
+    std::string mission, render, html;
     std::vector<std::string> unknown;
     std::uint64_t seed = 1;
     double delay = 5.0;
@@ -112,10 +127,15 @@ void register_mission_simulate(CLI::App& mission) {
   cmd->add_option("--render", o->render, "Also draw the mission and the track sailed (.png or .svg)");
   cmd->add_option("--zoom", o->zoom, "With --render: show only this many metres around the first object found")
       ->check(CLI::Range(10.0, 1e5));
+  cmd->add_option("--html", o->html,
+                  "Also write the mission and the track sailed as a web map (one .html file that works offline; "
+                  "docs/WEB_MAP.md)");
   cmd->add_flag("--json", o->json, "Print the result as JSON");
   add_chart_options(*cmd, o->chart, nullptr);
   cmd->callback([o] {
-    MissionRunRequest request{o->mission, o->unknown, {}, {{"--render", o->render}}, !o->render.empty(), o->chart};
+    if (!o->html.empty()) check_web_map_path(o->html, "--html");
+    MissionRunRequest request{o->mission,         o->unknown, {}, {{"--render", o->render}, {"--html", o->html}},
+                              !o->render.empty(), o->chart};
     request.options.seed = o->seed;
     request.options.planning_delay_s = o->delay;
     const MissionRunReport report = simulate_mission_file(request);
@@ -124,6 +144,7 @@ void register_mission_simulate(CLI::App& mission) {
       const LoadedMission& l = report.loaded;
       render_mission(simulated_mission_figure(l.mission, l.plan, report.planned, report.run, o->zoom), o->render);
     }
+    if (!o->html.empty()) write_web_map(mission_web_map(report.loaded, report.planned, &report.run), o->html);
     if (const auto why = report.failure()) throw NoRouteError(*why);
   });
 }

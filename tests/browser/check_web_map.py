@@ -8,6 +8,9 @@
                                          dom.html against the library's files there
     check_web_map.py check-chart FOLDER RECORD
                                          the same for a `render chart --html` page
+    check_web_map.py pick-obstacle PAGE  prints the first obstacle's id and LON,LAT inside it
+    check_web_map.py check-mission FOLDER ID
+                                         the same for `mission plan|simulate --html` pages
 Exit 1 naming what differs.
 """
 
@@ -168,6 +171,42 @@ def check_chart(folder, record):
           f"counts them; {len(cells)} cells; {record} explained (DRVAL1 {drval1} m)")
 
 
+def check_mission(folder, obstacle):
+    data, dom, drawn = drawn_page(folder)
+    plan = json.load(open(f"{folder}/plan.json"))
+    if drawn["layers"]["conflicts"] != len(plan["resolutions"]):
+        fail(f"conflicts: {drawn['layers']['conflicts']} drawn, mission plan says {len(plan['resolutions'])}")
+    # The waypoints and the table are what mission export writes, to 1e-7 degrees.
+    export = json.load(open(f"{folder}/export.geojson"))
+    points = [f for f in export["features"] if f["geometry"]["type"] == "Point"]
+    if drawn["layers"]["waypoints"] != len(points) or len(drawn["table"]) != len(points):
+        fail(f"waypoints {drawn['layers']['waypoints']}, table {len(drawn['table'])}; mission export: {len(points)}")
+    for row, p in zip(drawn["table"], points):
+        lon, lat = p["geometry"]["coordinates"][:2]
+        if abs(row[1] - lon) > 1e-7 or abs(row[2] - lat) > 1e-7:
+            fail(f"waypoint {row[0]}: {row[1]}, {row[2]}; mission export: {lon}, {lat}")
+    if drawn["layers"]["legs"] != len(points) - 1:
+        fail(f"legs {drawn['layers']['legs']} for {len(points)} waypoints")
+    popup = re.search(r'class="leaflet-popup-content"[^>]*>(.*?)</div></div>', dom, re.S)
+    if not popup or obstacle not in html.unescape(re.sub(r"<[^>]+>", " ", popup.group(1))):
+        fail(f"a click inside obstacle {obstacle} opened no popup naming it")
+    shots = [open(f"{folder}/zoom{z}.png", "rb").read() for z in ("_far", "_near")]
+    if any(len(s) < 20000 or s[:8] != b"\x89PNG\r\n\x1a\n" for s in shots) or shots[0] == shots[1]:
+        fail("the screenshots at two zoom levels are missing, tiny or the same")
+    # The simulated page: the track, and the objects the sonar found.
+    simulated = open(f"{folder}/simulated_dom.html", encoding="utf-8").read()
+    found = re.search(r'<pre id="dg-test">(.*?)</pre>', simulated, re.S)
+    if not found:
+        fail("the simulated page wrote no test output")
+    layers = json.loads(html.unescape(found.group(1)))["layers"]
+    run = json.load(open(f"{folder}/run.json"))
+    if layers.get("track", 0) < 1 or "detected" not in layers:
+        fail(f"the simulated page has no track or no found objects: {layers}")
+    print(f"web map: {sum(drawn['layers'].values())} features in {len(drawn['layers'])} layers drawn; "
+          f"{len(points)} waypoints equal mission export's; obstacle {obstacle} named by a click; "
+          f"simulated: {layers['track']} track stretches, {layers['detected']} objects found")
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "click":
         data, _ = page_data(sys.argv[2])
@@ -180,7 +219,14 @@ if __name__ == "__main__":
         feature = max(chosen, key=lambda f: max(len(r[0]) for r in polygons(f["geometry"])))
         x, y = point_inside(feature)
         print(f"{feature['properties']['record']} {x:.7f},{y:.7f}")
+    elif sys.argv[1] == "pick-obstacle":
+        data, _ = page_data(sys.argv[2])
+        feature = layer(data, "obstacles")["features"][0]
+        x, y = point_inside(feature)
+        print(f"{feature['properties']['obstacle']} {x:.7f},{y:.7f}")
     elif sys.argv[1] == "check":
         check(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "check-mission":
+        check_mission(sys.argv[2], sys.argv[3])
     else:
         check_chart(sys.argv[2], sys.argv[3])

@@ -59,6 +59,30 @@ TEST(CliMission, BadMissionsAreOneLineAndExitOne) {
   }
 }
 
+// mission plan|simulate --html that cannot be written: one line, exit 1,
+// nothing written; over one of the mission's inputs (its chart): refused.
+TEST(CliMission, AWebMapThatCannotBeWrittenIsOneLineAndNothingWritten) {
+  const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
+  ScratchDir dir;
+  for (const std::string command : {"mission plan", "mission simulate"}) {
+    for (const auto& [html, words] : {std::pair<std::string, std::string>{dir.file("no/map.html"), "does not exist"},
+                                      {dir.file("map.txt"), "ending in .html or .htm"}}) {
+      const auto r = run_cli(command + " '" + mission + "' --html '" + html + "'");
+      EXPECT_EQ(r.exit_code, 1) << command << ": " << r.err;
+      EXPECT_NE(r.err.find("--html"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  // A page written over the mission file itself is refused.
+  const std::string copy = dir.file("m.html");
+  std::filesystem::copy_file(mission, copy);
+  const auto over = run_cli("mission plan '" + copy + "' --html '" + copy + "'");
+  EXPECT_EQ(over.exit_code, 1) << over.err;
+  EXPECT_NE(over.err.find("which is the MISSION file"), std::string::npos) << over.err;
+}
+
 TEST(CliMission, PlanResolvesEveryConflictOfTheSampleAndTheCheckerPasses) {
   const std::string mission = deepguide::test::source_file("data/missions/sample_mission.yaml");
   const auto r = run_cli("mission plan '" + mission + "' --json");

@@ -21,7 +21,8 @@ json metres(double v) { return std::round(v * 100.0) / 100.0; }
 
 // Depth bands' fills, shallow to deep, as a paper chart shades them.
 constexpr std::array<double, 6> kBandEdges{2.0, 5.0, 10.0, 20.0, 50.0, 100.0};
-constexpr std::array<const char*, 7> kBandFills{"#c7e4f5", "#a9d3ee", "#8cc2e6", "#6fb0dd", "#5198cc", "#3b7fb8", "#2a6399"};
+constexpr std::array<const char*, 7> kBandFills{"#c7e4f5", "#a9d3ee", "#8cc2e6", "#6fb0dd",
+                                                "#5198cc", "#3b7fb8", "#2a6399"};
 
 const char* band_fill(double depth_m) {
   std::size_t i = 0;
@@ -78,15 +79,15 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   const WebMapGeometry to{enc.frame};
   WebMap map;
   map.title = title;
-  map.subtitle = std::to_string(enc.cells.size()) + " cell(s), no-go shallower than " +
-                 general(enc.required_depth_m) + " m (depth " + general(operating_depth_m) + " m and its clearance), frame " +
-                 enc.frame.id();
+  map.subtitle = std::to_string(enc.cells.size()) + " cell(s), no-go shallower than " + general(enc.required_depth_m) +
+                 " m (depth " + general(operating_depth_m) + " m and its clearance), frame " + enc.frame.id();
 
   WebMapLayer cells = make_layer("cells", "Cells (where each decides)", "#343a40", "#343a40", 0.0, 1.5);
   cells.dash = "8 4";
   for (const EncChartArea& a : enc.cell_areas) {
     json props{{"cell", a.cell}};
-    const auto it = std::find_if(enc.cells.begin(), enc.cells.end(), [&](const EncCellSummary& c) { return c.name == a.cell; });
+    const auto it =
+        std::find_if(enc.cells.begin(), enc.cells.end(), [&](const EncCellSummary& c) { return c.name == a.cell; });
     if (it != enc.cells.end()) {
       props["usage band"] = it->usage_band;
       props["scale"] = "1:" + std::to_string(it->compilation_scale);
@@ -105,7 +106,8 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   }
 
   WebMapLayer land = make_layer("land", "Land", "#a68a5b", "#f1e3c6", 1.0, 0.8);
-  WebMapLayer hazards = make_layer("hazards", "Hazards (rocks, wrecks, obstructions, piles)", "#212529", "#495057", 0.9, 1.0);
+  WebMapLayer hazards =
+      make_layer("hazards", "Hazards (rocks, wrecks, obstructions, piles)", "#212529", "#495057", 0.9, 1.0);
   hazards.point_radius_px = 4.0;
   WebMapLayer soundings = make_layer("soundings", "Soundings that are no-go", "#1864ab", "#1864ab", 0.9, 0.5);
   soundings.point_radius_px = 2.0;
@@ -122,7 +124,8 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
     }
   }
 
-  WebMapLayer zones = make_layer("zones_of_confidence", "Zones of confidence (CATZOC)", "#2b8a3e", "#2b8a3e", 0.05, 1.0);
+  WebMapLayer zones =
+      make_layer("zones_of_confidence", "Zones of confidence (CATZOC)", "#2b8a3e", "#2b8a3e", 0.05, 1.0);
   zones.dash = "3 3";
   zones.shown = false;
   static constexpr std::array<const char*, 7> kLetters{"none", "A1", "A2", "B", "C", "D", "U"};
@@ -132,13 +135,14 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
     zones.features.push_back(web_map_feature(to.multipolygon(z.area), std::move(props)));
   }
 
-  map.layers = {std::move(depths), std::move(land), enc_no_go_layer(enc, operating_depth_m), std::move(hazards),
-                std::move(soundings), std::move(zones), std::move(cells)};
+  map.layers = {std::move(depths),  std::move(land),      enc_no_go_layer(enc, operating_depth_m),
+                std::move(hazards), std::move(soundings), std::move(zones),
+                std::move(cells)};
   map.table.title = "Cells, best scale first";
   map.table.columns = {"cell", "usage band", "scale", "edition", "update"};
   for (const EncCellSummary& c : enc.cells) {
-    map.table.rows.push_back({c.name, c.usage_band, "1:" + std::to_string(c.compilation_scale), c.edition,
-                              c.update_number});
+    map.table.rows.push_back(
+        {c.name, c.usage_band, "1:" + std::to_string(c.compilation_scale), c.edition, c.update_number});
   }
   return map;
 }

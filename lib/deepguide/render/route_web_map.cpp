@@ -75,8 +75,8 @@ WebMap route_web_map(const RoutePlanReport& report) {
   const RoutePlanRequest& r = report.request;
   const std::vector<Vec2>& points = report.route.points;
   WebMap map;
-  map.title = "Route: " + fixed(report.route.length() / 1000.0, 2) + " km, " + std::to_string(points.size()) +
-              " waypoints";
+  map.title =
+      "Route: " + fixed(report.route.length() / 1000.0, 2) + " km, " + std::to_string(points.size()) + " waypoints";
   map.subtitle = "graph " + to_string(report.options.graph) + ", margin " + general(r.margin_m) + " m" +
                  (std::isnan(r.depth_m) ? std::string() : ", depth " + general(r.depth_m) + " m") + ", frame " +
                  frame.id();

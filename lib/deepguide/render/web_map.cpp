@@ -21,8 +21,9 @@ std::string read_leaflet(const std::string& name) {
   std::stringstream text;
   if (in) text << in.rdbuf();
   if (!in || text.str().empty()) {
-    throw InputError(path.string() +
-                     ": expected Leaflet for the web map (apt-get install libjs-leaflet, or set DEEPGUIDE_LEAFLET_DIR)");
+    throw InputError(
+        path.string() +
+        ": expected Leaflet for the web map (apt-get install libjs-leaflet, or set DEEPGUIDE_LEAFLET_DIR)");
   }
   return text.str();
 }
@@ -40,7 +41,8 @@ std::string offline_css(std::string css) {
 
 // JSON inside <script>: "</" would end the element, so it is written "<\/".
 std::string script_safe(std::string json) {
-  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3)) json.insert(at + 1, "\\");
+  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3))
+    json.insert(at + 1, "\\");
   return json;
 }
 
@@ -136,7 +138,8 @@ nlohmann::ordered_json web_map_position(double lon, double lat) {
 
 nlohmann::ordered_json web_map_feature(nlohmann::ordered_json geometry, nlohmann::ordered_json properties,
                                        nlohmann::ordered_json style) {
-  nlohmann::ordered_json f{{"type", "Feature"}, {"geometry", std::move(geometry)}, {"properties", std::move(properties)}};
+  nlohmann::ordered_json f{
+      {"type", "Feature"}, {"geometry", std::move(geometry)}, {"properties", std::move(properties)}};
   if (!style.is_null()) f["style"] = std::move(style);
   return f;
 }
@@ -218,10 +221,8 @@ std::string web_map_html(const WebMap& map) {
   }
   data["table"] = {{"title", map.table.title}, {"columns", map.table.columns}, {"rows", map.table.rows}};
   if (!map.focus.empty()) {
-    data["focus"] = {{"west", map.focus.west},
-                     {"east", map.focus.east},
-                     {"south", map.focus.south},
-                     {"north", map.focus.north}};
+    data["focus"] = {
+        {"west", map.focus.west}, {"east", map.focus.east}, {"south", map.focus.south}, {"north", map.focus.north}};
   }
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
                      html_text(map.title) + "</title>\n<style>\n" + css + "\n" + kPageStyle + "</style>\n<script>\n" +

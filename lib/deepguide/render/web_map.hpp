@@ -40,11 +40,11 @@ struct WebMapLayer {
   std::string stroke = "#1c7ed6";
   std::string fill = "#1c7ed6";
   double fill_opacity = 0.2;
-  double weight = 2.0;            ///< line width (px)
-  std::string dash;               ///< SVG dash array, e.g. "6 4"; "" solid
-  double point_radius_px = 4.0;   ///< points are drawn as circles this big
-  bool shown = true;              ///< on when the page opens
-  bool explained = false;         ///< a click lists every feature of it under the click
+  double weight = 2.0;           ///< line width (px)
+  std::string dash;              ///< SVG dash array, e.g. "6 4"; "" solid
+  double point_radius_px = 4.0;  ///< points are drawn as circles this big
+  bool shown = true;             ///< on when the page opens
+  bool explained = false;        ///< a click lists every feature of it under the click
 };
 
 struct WebMapTable {

@@ -1,0 +1,156 @@
+#include "deepguide/render/mission_web_map.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "deepguide/core/format.hpp"
+#include "deepguide/mission/plan_export.hpp"
+#include "deepguide/planning/zone_polygons.hpp"
+#include "deepguide/render/reactive_map.hpp"  // ellipse_outline
+#include "deepguide/simulation/mission_run.hpp"
+
+namespace deepguide {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json rounded(double v, double unit) { return std::round(v / unit) * unit; }
+
+const char* role_colour(const std::string& role) {
+  if (role == "evasion") return "#f76707";
+  if (role == "identification") return "#ae3ec9";
+  return "#f08c00";
+}
+
+WebMapLayer layer_of(const char* id, std::string name, const char* stroke, const char* fill, double opacity,
+                     double weight) {
+  WebMapLayer l;
+  l.id = id;
+  l.name = std::move(name);
+  l.stroke = stroke;
+  l.fill = fill;
+  l.fill_opacity = opacity;
+  l.weight = weight;
+  return l;
+}
+
+WebMapLayer obstacles_of(const ObstacleSet& obstacles, const WebMapGeometry& to, const char* id, std::string name,
+                         const char* colour) {
+  WebMapLayer layer = layer_of(id, std::move(name), colour, colour, 0.3, 1.0);
+  layer.explained = true;
+  for (const EllipticCylinder& e : obstacles.ellipses) {
+    json props{{"obstacle", e.id}, {"shape", "ellipse"},
+               {"semi-axes (m)", fixed(e.footprint.a, 2) + " x " + fixed(e.footprint.b, 2)}};
+    if (e.top_depth_m) props["top depth (m)"] = rounded(*e.top_depth_m, 0.01);
+    layer.features.push_back(web_map_feature(to.outline(ellipse_outline(e.footprint, 72)), std::move(props)));
+  }
+  for (const PolygonObstacle& p : obstacles.polygons) {
+    json props{{"obstacle", p.id}, {"shape", "polygon"}};
+    if (p.top_depth_m) props["top depth (m)"] = rounded(*p.top_depth_m, 0.01);
+    layer.features.push_back(web_map_feature(to.polygon(p.footprint), std::move(props)));
+  }
+  return layer;
+}
+
+}  // namespace
+
+WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planned, const MissionRun* run) {
+  const Mission& mission = loaded.mission;
+  const WebMapGeometry to{mission.frame};
+  const MissionPlan& plan = run ? run->plan : planned.plan;
+  WebMap map;
+  map.title = mission.name + ": " + fixed(plan.length_m / 1000.0, 2) + " km, " + clock_text(plan_duration(plan));
+  map.subtitle = std::to_string(planned.resolutions.size()) + " conflict(s), margin " + general(mission.margin_m) +
+                 " m, frame " + mission.frame.id() + (run ? ", simulated" : "");
+
+  map.layers.push_back(obstacles_of(loaded.env.obstacles, to, "obstacles", "Obstacles and charted no-go", "#862e9c"));
+  WebMapLayer zones = layer_of("zones", "Safety zones (margin " + general(mission.margin_m) + " m)", "#e8590c",
+                               "#e8590c", 0.04, 1.0);
+  zones.dash = "5 4";
+  const BgMultiPolygon merged = merged_zone_polygons(loaded.env.obstacles, {mission.margin_m, 0.05});
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    zones.features.push_back(web_map_feature(to.polygon(merged[i]), {{"safety zone", i + 1}}));
+  }
+  map.layers.push_back(std::move(zones));
+
+  WebMapLayer written = layer_of("written", "The plan as written", "#868e96", "#868e96", 0.0, 2.0);
+  written.dash = "6 5";
+  written.shown = false;
+  {
+    std::vector<Vec2> line;
+    for (const ExportWaypoint& w : export_waypoints(mission, loaded.plan)) line.push_back(w.xy);
+    if (line.size() >= 2) written.features.push_back(web_map_feature(to.line(line), {{"plan", "as written"}}));
+  }
+  map.layers.push_back(std::move(written));
+
+  const std::vector<ExportWaypoint> waypoints = export_waypoints(mission, plan);
+  WebMapLayer legs = layer_of("legs", "The plan's legs (mission, evasion, identification)", "#f08c00", "#f08c00",
+                              0.0, 4.0);
+  WebMapLayer points = layer_of("waypoints", "Waypoints (as mission export writes them)", "#212529", "#ffd43b",
+                                1.0, 1.5);
+  points.point_radius_px = 4.0;
+  map.table.title = "Waypoints";
+  map.table.columns = {"name", "lon", "lat", "depth (m)", "speed (m/s)", "hold (s)", "time (s)", "role", "manoeuvre"};
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    const ExportWaypoint& w = waypoints[i];
+    const json position = web_map_position(w.lonlat.x(), w.lonlat.y());
+    if (i > 0) {
+      json props{{"leg", i}, {"manoeuvre", w.manoeuvre}, {"role", w.role}};
+      props["length (m)"] = rounded(w.along_m - waypoints[i - 1].along_m, 0.01);
+      props["depth (m)"] = rounded(w.depth_m, 0.01);
+      props["speed (m/s)"] = rounded(w.speed_mps, 0.001);
+      legs.features.push_back(web_map_feature(to.line({waypoints[i - 1].xy, w.xy}), std::move(props),
+                                              json{{"color", role_colour(w.role)}}));
+    }
+    json props{{"waypoint", w.name}, {"lon", position[0]}, {"lat", position[1]}};
+    props["depth (m)"] = rounded(w.depth_m, 0.01);
+    props["speed (m/s)"] = rounded(w.speed_mps, 0.001);
+    if (w.hold_s > 0.0) props["hold (s)"] = rounded(w.hold_s, 0.1);
+    if (w.radius_m > 0.0) props["turn radius (m)"] = rounded(w.radius_m, 0.01);
+    props["along (m)"] = rounded(w.along_m, 0.01);
+    props["time (s)"] = rounded(w.time_s, 0.1);
+    props["role"] = w.role;
+    props["manoeuvre"] = w.manoeuvre;
+    points.features.push_back(web_map_feature(to.point(w.xy), std::move(props)));
+    map.table.rows.push_back({w.name, position[0], position[1], rounded(w.depth_m, 0.01), rounded(w.speed_mps, 0.001),
+                              rounded(w.hold_s, 0.1), rounded(w.time_s, 0.1), w.role, w.manoeuvre});
+  }
+  map.layers.push_back(std::move(legs));
+  map.layers.push_back(std::move(points));
+
+  WebMapLayer conflicts = layer_of("conflicts", "Where conflicts began", "#c92a2a", "#ff6b6b", 1.0, 2.0);
+  conflicts.point_radius_px = 6.0;
+  for (const Resolution& r : planned.resolutions) {
+    json props{{"with", r.conflict.with},
+               {"reaction", r.reaction == ControlRules::Reaction::evade ? "evade" : "identify"},
+               {"resolved", r.resolved ? "yes" : "no"}};
+    props["along (m)"] = rounded(r.conflict.along_m, 0.1);
+    props["depth (m)"] = rounded(r.conflict.depth_m, 0.01);
+    if (!r.problem.empty()) props["why not"] = r.problem;
+    if (!r.note.empty()) props["note"] = r.note;
+    conflicts.features.push_back(web_map_feature(to.point(r.conflict.where), std::move(props)));
+  }
+  map.layers.push_back(std::move(conflicts));
+
+  if (run) {
+    WebMapLayer track = layer_of("track", "Track sailed (reactive level in cyan)", "#2f9e44", "#2f9e44", 0.0, 2.5);
+    for (std::size_t k = 1; k < run->track.size();) {
+      // One line per stretch under one level of control.
+      const bool reactive = run->track[k].reactive;
+      std::vector<Vec2> stretch{run->track[k - 1].position};
+      const double from_s = run->track[k - 1].time_s;
+      while (k < run->track.size() && run->track[k].reactive == reactive) stretch.push_back(run->track[k++].position);
+      json props{{"control", reactive ? "reactive" : "mission"}, {"from (s)", rounded(from_s, 0.1)},
+                 {"to (s)", rounded(run->track[k - 1].time_s, 0.1)}};
+      track.features.push_back(
+          web_map_feature(to.line(stretch), std::move(props), reactive ? json{{"color", "#15aabf"}} : json(nullptr)));
+    }
+    map.layers.push_back(std::move(track));
+    map.layers.push_back(obstacles_of(run->detected, to, "detected", "Objects the sonar found", "#1971c2"));
+  }
+  return map;
+}
+
+}  // namespace deepguide

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# `mission plan --html` and `mission simulate --html` in a real browser
+# (headless Chromium): the sample mission, its page opened with the network
+# shut off. Checked (tests/browser/check_web_map.py): every layer drawn with
+# every feature; the waypoints and the table equal what `mission export`
+# writes to GeoJSON (positions to 1e-7 degrees); the conflicts are mission
+# plan --json's; a click inside the first obstacle names it; the simulated
+# page has the track. Exit 77 (ctest: skipped) without Chromium.
+#   tests/browser/web_map_mission.sh DEEPGUIDE_CLI SOURCE_DIR [OUTPUT_DIR]
+set -euo pipefail
+cli="$1"
+source_dir="$2"
+chromium="$(command -v chromium || command -v chromium-browser || true)"
+if [ -z "$chromium" ]; then
+  echo "SKIP: Chromium is absent (apt-get install chromium; scripts/setup.sh installs it)"
+  exit 77
+fi
+out="${3:-$(mktemp -d)}"
+[ -n "${3:-}" ] || trap 'rm -rf "$out"' EXIT
+mkdir -p "$out"
+mission="$source_dir/data/missions/sample_mission.yaml"
+"$cli" mission plan "$mission" --html "$out/page.html" --json > "$out/plan.json"
+"$cli" mission export "$mission" -o "$out/export.geojson" > /dev/null
+"$cli" mission simulate "$mission" --unknown "$source_dir/data/missions/sample_unknown.geojson" \
+  --html "$out/simulated.html" --json > "$out/run.json"
+read -r record click < <(python3 "$source_dir/tests/browser/check_web_map.py" pick-obstacle "$out/page.html")
+browse() {
+  "$chromium" --headless=new --no-sandbox --disable-gpu --hide-scrollbars --no-first-run \
+    --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
+    --window-size=1400,900 --virtual-time-budget=15000 "$@" 2> "$out/chromium.log"
+}
+browse --dump-dom "file://$out/page.html#test&click=$click" > "$out/dom.html"
+browse --dump-dom "file://$out/simulated.html#test" > "$out/simulated_dom.html"
+browse --screenshot="$out/zoom_far.png" "file://$out/page.html"
+browse --screenshot="$out/zoom_near.png" "file://$out/page.html#zoom=17&center=$click"
+python3 "$source_dir/tests/browser/check_web_map.py" check-mission "$out" "$record"
