@@ -1,12 +1,16 @@
-// deepguide check route ROUTE (--obstacles FILE... | --chart CELL|FOLDER... --depth D) [--margin M] [--json]
+// deepguide check route ROUTE (--obstacles FILE... | --chart CELL|FOLDER... --depth D) [--margin M] [--json] [--html F]
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/output_paths.hpp"
 #include "deepguide/planning/route_file_check.hpp"
+#include "deepguide/render/route_check_web_map.hpp"
 
 namespace deepguide::app {
 
@@ -14,6 +18,7 @@ void register_check_route(CLI::App& check) {
   auto o = std::make_shared<RouteFileCheckOptions>();
   auto frame = std::make_shared<FrameOptions>();
   auto json = std::make_shared<bool>(false);
+  auto html = std::make_shared<std::string>();
   CLI::App* cmd = check.add_subcommand(
       "route",
       "Check a route against obstacles (exact clearance) or S-57 charts at a depth (the first crossing "
@@ -29,7 +34,10 @@ void register_check_route(CLI::App& check) {
   add_frame_options(*cmd, *frame);
   cmd->add_option("--margin", o->margin_m, "Safety margin the route must keep (m)")->capture_default_str();
   cmd->add_flag("--json", *json, "Print the verdict as JSON");
-  cmd->callback([o, frame, json] {
+  cmd->add_option("--html", *html,
+                  "Also write the check as a web map (one .html file that works offline; written for an unsafe route "
+                  "too; docs/WEB_MAP.md)");
+  cmd->callback([o, frame, json, html] {
     if (o->obstacles.empty() && o->charts.empty()) {
       throw CLI::ValidationError("check route", "give --obstacles FILE... or --chart CELL... (or both)");
     }
@@ -41,7 +49,16 @@ void register_check_route(CLI::App& check) {
     }
     o->crs = frame->crs;
     o->src_crs = frame->src_crs;
+    if (!html->empty()) {
+      check_web_map_path(*html, "--html");
+      std::vector<NamedPath> inputs{{"ROUTE", o->route}};
+      for (const std::string& f : o->obstacles) inputs.push_back({"--obstacles", f});
+      for (const std::string& f : o->charts) inputs.push_back({"--chart", f});
+      check_outputs_apart(inputs, {{"--html", *html}});
+    }
     const RouteFileCheckReport report = check_route_file(*o);
+    // The page first: an unsafe route is where an operator wants to look.
+    if (!html->empty()) write_web_map(route_check_web_map(report, *o), *html);
     if (*json) {
       std::cout << report.to_json().dump(2) << "\n";
     } else if (report.safe) {

@@ -49,7 +49,21 @@ void register_mission(CLI::App& app) {
   check->add_option("MISSION", o->mission, "Mission file (YAML; docs/MISSIONS.md)")->required();
   check->add_flag("--json", o->json, "Print the result as JSON");
   add_chart_options(*check, o->chart, nullptr);
-  check->callback([o] { print_then_fail(check_mission_file(o->mission, o->chart), o->json); });
+  check->add_option("--html", o->html,
+                    "Also write the mission as written and its conflicts as a web map (one .html file that works "
+                    "offline; docs/WEB_MAP.md)");
+  check->callback([o] {
+    if (!o->html.empty()) {
+      check_web_map_path(o->html, "--html");
+      check_outputs_apart({{"MISSION", o->mission}}, {{"--html", o->html}});
+    }
+    const MissionCheckReport report = check_mission_file(o->mission, o->chart);
+    if (!o->html.empty()) {
+      check_outputs_apart(mission_input_files(o->mission, report.loaded.mission), {{"--html", o->html}});
+      write_web_map(mission_web_map(report.loaded, report.planned, nullptr, true), o->html);
+    }
+    print_then_fail(report, o->json);
+  });
 
   CLI::App* plan = mission->add_subcommand(
       "plan", "Read a mission and resolve every conflict by its rules (evade, or identify), then check the whole plan");

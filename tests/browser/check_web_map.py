@@ -202,8 +202,23 @@ def check_mission(folder, obstacle):
     run = json.load(open(f"{folder}/run.json"))
     if layers.get("track", 0) < 1 or "detected" not in layers:
         fail(f"the simulated page has no track or no found objects: {layers}")
+    # The checked page: the plan as written, mission check's obstacles and conflicts.
+    checked = json.loads(html.unescape(re.search(r'<pre id="dg-test">(.*?)</pre>',
+                                                 open(f"{folder}/check_dom.html", encoding="utf-8").read(),
+                                                 re.S).group(1)))
+    check_report = json.load(open(f"{folder}/check.json"))
+    written = [f for f in json.load(open(f"{folder}/export_written.geojson"))["features"]
+               if f["geometry"]["type"] == "Point"]
+    if (checked["layers"]["waypoints"] != len(written) or checked["layers"]["conflicts"] != len(check_report["conflicts"])
+            or checked["layers"]["obstacles"] != check_report["obstacles"]):
+        fail(f"mission check's page: {checked['layers']}; mission check: {len(check_report['conflicts'])} conflicts, "
+             f"{check_report['obstacles']} obstacles; export --as-written: {len(written)} waypoints")
+    for row, p in zip(checked["table"], written):
+        if abs(row[1] - p["geometry"]["coordinates"][0]) > 1e-7 or abs(row[2] - p["geometry"]["coordinates"][1]) > 1e-7:
+            fail(f"mission check's waypoint {row[0]} is not export --as-written's")
     print(f"web map: {sum(drawn['layers'].values())} features in {len(drawn['layers'])} layers drawn; "
           f"{len(points)} waypoints equal mission export's; obstacle {obstacle} named by a click; "
+          f"checked page: {len(written)} waypoints as written, {len(check_report['conflicts'])} conflicts; "
           f"simulated: {layers['track']} track stretches, {layers['detected']} objects found")
 
 

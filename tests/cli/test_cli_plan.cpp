@@ -147,6 +147,28 @@ TEST(CliRenderChart, AWebMapAsksForCellsAndADepth) {
   }
 }
 
+// check route --html: the page is written for an unsafe route too (where an
+// operator wants to look), its first leg marked unsafe; the exit is still 1.
+TEST(CliCheckRoute, AWebMapOfAnUnsafeRoute) {
+  if (!std::filesystem::exists("/usr/share/javascript/leaflet/leaflet.min.js")) GTEST_SKIP() << "no Leaflet";
+  ScratchDir dir;
+  const std::string straight = dir.write("straight.geojson", R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {}, "geometry": {"type": "LineString",
+     "coordinates": [[10.240, 54.440], [10.265, 54.462]]}}]})");
+  const std::string page = dir.file("check.html");
+  const auto r = run_cli("check route '" + straight + "' --obstacles '" + kSample + "' --html '" + page + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(page));
+  std::ifstream in(page);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("straight.geojson: unsafe"), std::string::npos);
+  EXPECT_NE(text.find(R"("safe":"no")"), std::string::npos);
+  // Bad --html: one line, exit 1, nothing written.
+  const auto bad = run_cli("check route '" + straight + "' --obstacles '" + kSample + "' --html '" + straight + "'");
+  EXPECT_EQ(bad.exit_code, 1) << bad.err;
+  EXPECT_NE(bad.err.find("--html"), std::string::npos) << bad.err;
+}
+
 TEST(CliPlan, ExitCodes) {
   ScratchDir dir;
   // Goal inside obstacle c1's zone: no safe route, exit 3, naming c1.

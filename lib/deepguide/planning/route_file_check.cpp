@@ -1,11 +1,13 @@
 #include "deepguide/planning/route_file_check.hpp"
 
+#include <memory>
 #include <optional>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/route_io.hpp"
+#include "deepguide/world/enc_no_go.hpp"
 #include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/enc_route_quality.hpp"
 #include "deepguide/world/frame_scale.hpp"
@@ -58,6 +60,8 @@ RouteFileCheckReport check_on_obstacles(const RouteFileCheckOptions& o, const st
   r.details["lines"] = lines;
   r.details["points"] = points;
   r.details["crs"] = frame.id();
+  r.obstacles_frame = frame;
+  r.obstacles = loaded.obstacles;
   return r;
 }
 
@@ -70,8 +74,10 @@ RouteFileCheckReport check_on_charts(const RouteFileCheckOptions& o, const std::
   const EncNoGoOptions opts = enc_options(o.chart, o.operating_depth_m, o.vertical_clearance_m);
   std::optional<LocalFrame> frame;
   if (!o.crs.empty()) frame = LocalFrame::from_user_crs(o.crs);
-  const EncNoGo no_go = chart_no_go(o.charts, frame, opts);
+  const auto read = std::make_shared<const EncNoGo>(chart_no_go(o.charts, frame, opts));
+  const EncNoGo& no_go = *read;
   RouteFileCheckReport r;
+  r.enc = read;
   nlohmann::json& j = r.details;
   j = {{"margin_m", o.margin_m}, {"required_depth_m", no_go.required_depth_m}};
   std::size_t lines = 0, points = 0, crossed = 0;
@@ -146,10 +152,16 @@ RouteFileCheckReport check_route_file(const RouteFileCheckOptions& o) {
   }
   // Every line and point of the file (a second line through an obstacle is not "safe").
   const std::vector<RouteFilePart> parts = read_route_parts(o.route);
-  if (o.obstacles.empty()) return check_on_charts(o, parts);
+  if (o.obstacles.empty()) {
+    RouteFileCheckReport r = check_on_charts(o, parts);
+    r.parts = parts;
+    return r;
+  }
   RouteFileCheckReport r = check_on_obstacles(o, parts);
+  r.parts = parts;
   if (o.charts.empty()) return r;
-  const RouteFileCheckReport chart = check_on_charts(o, parts);
+  RouteFileCheckReport chart = check_on_charts(o, parts);
+  r.enc = std::move(chart.enc);
   r.details["chart"] = chart.details;
   r.details["safe"] = r.safe && chart.safe;
   if (r.safe && !chart.safe) r.why = chart.why;

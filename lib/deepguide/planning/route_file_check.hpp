@@ -6,15 +6,22 @@
 
 #include <cmath>
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/planning/route_io.hpp"
 #include "deepguide/world/chart_options.hpp"
+#include "deepguide/world/local_frame.hpp"
+#include "deepguide/world/obstacle.hpp"
 
 namespace DEEPGUIDE_API deepguide {
+
+struct EncNoGo;  // world/enc_no_go.hpp
 
 struct RouteFileCheckOptions {
   std::string route;                        ///< the route file (RTZ, GPX, GeoJSON, KML, ...)
@@ -39,6 +46,12 @@ struct RouteFileCheckReport {
   /// The verdict's fields (the obstacles' verdict, with the chart's under
   /// "chart" when both were checked).
   nlohmann::json details = nlohmann::json::object();
+  /// What was checked, for a drawing of the check (render/route_check_web_map.hpp):
+  /// the file's parts, the obstacles in their frame, the cells' no-go.
+  std::vector<RouteFilePart> parts;
+  std::optional<LocalFrame> obstacles_frame;
+  ObstacleSet obstacles;
+  std::shared_ptr<const EncNoGo> enc;
 
   nlohmann::json to_json() const { return details; }
   /// "safe: WHY (N waypoints, L m)", then the chart quality's lines; or "unsafe: WHY".

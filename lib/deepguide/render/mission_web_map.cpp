@@ -41,7 +41,8 @@ WebMapLayer obstacles_of(const ObstacleSet& obstacles, const WebMapGeometry& to,
   WebMapLayer layer = layer_of(id, std::move(name), colour, colour, 0.3, 1.0);
   layer.explained = true;
   for (const EllipticCylinder& e : obstacles.ellipses) {
-    json props{{"obstacle", e.id}, {"shape", "ellipse"},
+    json props{{"obstacle", e.id},
+               {"shape", "ellipse"},
                {"semi-axes (m)", fixed(e.footprint.a, 2) + " x " + fixed(e.footprint.b, 2)}};
     if (e.top_depth_m) props["top depth (m)"] = rounded(*e.top_depth_m, 0.01);
     layer.features.push_back(web_map_feature(to.outline(ellipse_outline(e.footprint, 72)), std::move(props)));
@@ -56,18 +57,22 @@ WebMapLayer obstacles_of(const ObstacleSet& obstacles, const WebMapGeometry& to,
 
 }  // namespace
 
-WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planned, const MissionRun* run) {
+WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planned, const MissionRun* run,
+                       bool as_written) {
   const Mission& mission = loaded.mission;
   const WebMapGeometry to{mission.frame};
-  const MissionPlan& plan = run ? run->plan : planned.plan;
+  const MissionPlan& plan = run ? run->plan : as_written ? loaded.plan : planned.plan;
   WebMap map;
   map.title = mission.name + ": " + fixed(plan.length_m / 1000.0, 2) + " km, " + clock_text(plan_duration(plan));
   map.subtitle = std::to_string(planned.resolutions.size()) + " conflict(s), margin " + general(mission.margin_m) +
-                 " m, frame " + mission.frame.id() + (run ? ", simulated" : "");
+                 " m, frame " + mission.frame.id() +
+                 (run          ? ", simulated"
+                  : as_written ? ", as written"
+                               : "");
 
   map.layers.push_back(obstacles_of(loaded.env.obstacles, to, "obstacles", "Obstacles and charted no-go", "#862e9c"));
-  WebMapLayer zones = layer_of("zones", "Safety zones (margin " + general(mission.margin_m) + " m)", "#e8590c",
-                               "#e8590c", 0.04, 1.0);
+  WebMapLayer zones =
+      layer_of("zones", "Safety zones (margin " + general(mission.margin_m) + " m)", "#e8590c", "#e8590c", 0.04, 1.0);
   zones.dash = "5 4";
   const BgMultiPolygon merged = merged_zone_polygons(loaded.env.obstacles, {mission.margin_m, 0.05});
   for (std::size_t i = 0; i < merged.size(); ++i) {
@@ -86,10 +91,10 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
   map.layers.push_back(std::move(written));
 
   const std::vector<ExportWaypoint> waypoints = export_waypoints(mission, plan);
-  WebMapLayer legs = layer_of("legs", "The plan's legs (mission, evasion, identification)", "#f08c00", "#f08c00",
-                              0.0, 4.0);
-  WebMapLayer points = layer_of("waypoints", "Waypoints (as mission export writes them)", "#212529", "#ffd43b",
-                                1.0, 1.5);
+  WebMapLayer legs =
+      layer_of("legs", "The plan's legs (mission, evasion, identification)", "#f08c00", "#f08c00", 0.0, 4.0);
+  WebMapLayer points =
+      layer_of("waypoints", "Waypoints (as mission export writes them)", "#212529", "#ffd43b", 1.0, 1.5);
   points.point_radius_px = 4.0;
   map.table.title = "Waypoints";
   map.table.columns = {"name", "lon", "lat", "depth (m)", "speed (m/s)", "hold (s)", "time (s)", "role", "manoeuvre"};
@@ -142,7 +147,8 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
       std::vector<Vec2> stretch{run->track[k - 1].position};
       const double from_s = run->track[k - 1].time_s;
       while (k < run->track.size() && run->track[k].reactive == reactive) stretch.push_back(run->track[k++].position);
-      json props{{"control", reactive ? "reactive" : "mission"}, {"from (s)", rounded(from_s, 0.1)},
+      json props{{"control", reactive ? "reactive" : "mission"},
+                 {"from (s)", rounded(from_s, 0.1)},
                  {"to (s)", rounded(run->track[k - 1].time_s, 0.1)}};
       track.features.push_back(
           web_map_feature(to.line(stretch), std::move(props), reactive ? json{{"color", "#15aabf"}} : json(nullptr)));

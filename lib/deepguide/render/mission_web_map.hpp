@@ -28,7 +28,10 @@ namespace DEEPGUIDE_API deepguide {
 struct MissionRun;
 
 /// The map of a loaded mission and its planned version; with `run`, the
-/// track sailed in simulation and what its sonar found (on the run's plan).
-WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planned, const MissionRun* run = nullptr);
+/// track sailed in simulation and what its sonar found (on the run's plan);
+/// `as_written`: the plan as written is the one drawn (`mission check`),
+/// its conflicts where they begin on it.
+WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planned, const MissionRun* run = nullptr,
+                       bool as_written = false);
 
 }  // namespace deepguide
