@@ -33,8 +33,8 @@ WebMapLayer obstacle_layers(const ObstacleSet& obstacles, const WebMapGeometry& 
   layer.weight = 1.0;
   layer.explained = true;
   for (const EllipticCylinder& e : obstacles.ellipses) {
-    layer.features.push_back(web_map_feature(to.outline(ellipse_outline(e.footprint, 72)),
-                                             {{"obstacle", e.id}, {"shape", "ellipse"}}));
+    layer.features.push_back(
+        web_map_feature(to.outline(ellipse_outline(e.footprint, 72)), {{"obstacle", e.id}, {"shape", "ellipse"}}));
   }
   for (const PolygonObstacle& p : obstacles.polygons) {
     layer.features.push_back(web_map_feature(to.polygon(p.footprint), {{"obstacle", p.id}, {"shape", "polygon"}}));
@@ -119,7 +119,8 @@ WebMap route_check_web_map(const RouteFileCheckReport& report, const RouteFileCh
         if (report.enc) {
           const Vec2 a = report.enc->frame.from_lonlat(part.points[i].lonlat.x(), part.points[i].lonlat.y());
           const Vec2 b = report.enc->frame.from_lonlat(part.points[i + 1].lonlat.x(), part.points[i + 1].lonlat.y());
-          const ChartRouteCheck chart = check_route_on_chart({a, b}, *report.enc, options.margin_m, kRouteFileTolerance_m);
+          const ChartRouteCheck chart =
+              check_route_on_chart({a, b}, *report.enc, options.margin_m, kRouteFileTolerance_m);
           safe = safe && chart.safe;
           leg["chart"] = chart.describe(report.enc->frame);
         }
@@ -128,8 +129,8 @@ WebMap route_check_web_map(const RouteFileCheckReport& report, const RouteFileCh
                                                 safe ? json(nullptr) : json{{"color", "#e03131"}}));
       }
       if (part.is_point) continue;
-      map.table.rows.push_back(
-          {static_cast<int>(map.table.rows.size() + 1), part.points[i].name, position[0], position[1], length, clearance});
+      map.table.rows.push_back({static_cast<int>(map.table.rows.size() + 1), part.points[i].name, position[0],
+                                position[1], length, clearance});
     }
   }
   map.layers.push_back(std::move(legs));

@@ -1,5 +1,6 @@
 #include "deepguide/render/web_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -58,6 +59,20 @@ std::string html_text(const std::string& s) {
     }
   }
   return out;
+}
+
+// `e` grown by every position in GeoJSON coordinates (nested arrays).
+void extend(LonLatExtent& e, const nlohmann::ordered_json& c) {
+  if (!c.is_array() || c.empty()) return;
+  if (c[0].is_number()) {
+    const double lon = c[0].get<double>(), lat = c[1].get<double>();
+    e.west = std::isnan(e.west) ? lon : std::min(e.west, lon);
+    e.east = std::isnan(e.east) ? lon : std::max(e.east, lon);
+    e.south = std::isnan(e.south) ? lat : std::min(e.south, lat);
+    e.north = std::isnan(e.north) ? lat : std::max(e.north, lat);
+    return;
+  }
+  for (const auto& x : c) extend(e, x);
 }
 
 // A line's or a ring's positions as integers of 1e-7 degrees, the first
@@ -220,9 +235,20 @@ std::string web_map_html(const WebMap& map) {
                               {"features", compact_features(l.features)}});
   }
   data["table"] = {{"title", map.table.title}, {"columns", map.table.columns}, {"rows", map.table.rows}};
-  if (!map.focus.empty()) {
-    data["focus"] = {
-        {"west", map.focus.west}, {"east", map.focus.east}, {"south", map.focus.south}, {"north", map.focus.north}};
+  // The view: the focus, else every feature; worked out here, so the page
+  // need not walk its features before it draws them.
+  LonLatExtent view = map.focus;
+  if (view.empty()) {
+    for (const WebMapLayer& l : map.layers) {
+      for (const auto& f : l.features) {
+        if (f.contains("geometry") && f["geometry"].is_object() && f["geometry"].contains("coordinates")) {
+          extend(view, f["geometry"]["coordinates"]);
+        }
+      }
+    }
+  }
+  if (!view.empty()) {
+    data["focus"] = {{"west", view.west}, {"east", view.east}, {"south", view.south}, {"north", view.north}};
   }
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
                      html_text(map.title) + "</title>\n<style>\n" + css + "\n" + kPageStyle + "</style>\n<script>\n" +

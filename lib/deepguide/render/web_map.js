@@ -33,39 +33,43 @@
     "</table>";
 
   const map = L.map("map", {preferCanvas: true, zoomSnap: 0.25, attributionControl: false});
+  // The view first (web_map.cpp works it out): layers added after it are drawn once.
+  const f = data.focus;
+  if (f) map.fitBounds([[f.south, f.west], [f.north, f.east]], {padding: [20, 20], animate: false});
+  else map.setView([0, 0], 2);
+
+  // A layer's features become Leaflet's when it is first shown (a hidden
+  // layer costs nothing until then).
   const overlays = {};
-  const counts = {};
+  const built = {};
   const explained = [];
-  let all = null;
-  for (const layer of data.layers) {
+  const build = (layer, group) => {
+    if (built[layer.id]) return;
     const style = {
       color: layer.stroke, weight: layer.weight, fillColor: layer.fill, fillOpacity: layer.fill_opacity,
       opacity: 1, dashArray: layer.dash || null, interactive: !layer.explained,
     };
-    const group = L.geoJSON({type: "FeatureCollection", features: layer.features}, {
+    built[layer.id] = L.geoJSON({type: "FeatureCollection", features: layer.features}, {
       style: (f) => (f.style ? Object.assign({}, style, f.style) : style),
       pointToLayer: (f, ll) => L.circleMarker(ll, Object.assign({}, style, f.style || {}, {radius: layer.point_radius_px})),
       onEachFeature: (f, l) => {
         if (!layer.explained && f.properties && Object.keys(f.properties).length) l.bindPopup(table(f.properties));
       },
     });
-    counts[layer.id] = group.getLayers().length;  // what Leaflet made of the features
+    group.addLayer(built[layer.id]);
+  };
+  for (const layer of data.layers) {
+    const group = L.layerGroup();
+    group.on("add", () => build(layer, group));
     if (layer.explained) explained.push({layer: layer, group: group});
     const swatch = "<span class=\"dg-swatch\" style=\"border-color:" + esc(layer.stroke) + ";background:" +
       esc(layer.fill) + "\"></span>";
     overlays[swatch + esc(layer.name) + " <span class=\"dg-count\">(" + layer.features.length + ")</span>"] = group;
     if (layer.shown) group.addTo(map);
-    if (layer.features.length) {
-      const b = group.getBounds();
-      if (b.isValid()) all = all ? all.extend(b) : L.latLngBounds(b.getSouthWest(), b.getNorthEast());
-    }
+    layer.group = group;
   }
   L.control.layers(null, overlays, {collapsed: false}).addTo(map);
   L.control.scale({imperial: false, maxWidth: 160}).addTo(map);
-  const f = data.focus;
-  if (f) map.fitBounds([[f.south, f.west], [f.north, f.east]], {padding: [20, 20]});
-  else if (all) map.fitBounds(all, {padding: [20, 20]});
-  else map.setView([0, 0], 2);
 
   // Point in a GeoJSON (multi)polygon, even-odd over every ring (holes included).
   function inRing(ring, x, y) {
@@ -108,6 +112,8 @@
       "</tbody></table>";
   }
 
+  const ready = Math.round(performance.now());  // the page as an operator gets it
+
   // The fragment: view, click and test output for scripts and tests.
   const args = {};
   for (const part of location.hash.replace(/^#/, "").split("&")) {
@@ -123,10 +129,16 @@
     map.fire("click", {latlng: L.latLng(lat, lon)});
   }
   if ("test" in args) {
+    // Every layer built, hidden ones too, and counted as Leaflet made them.
+    const counts = {};
+    for (const layer of data.layers) {
+      build(layer, layer.group);
+      counts[layer.id] = built[layer.id].getLayers().length;
+    }
     const out = document.createElement("pre");
     out.id = "dg-test";
     out.textContent = JSON.stringify({
-      layers: counts, table: t ? t.rows : [], zoom: map.getZoom(), ms: Math.round(performance.now()),
+      layers: counts, table: t ? t.rows : [], zoom: map.getZoom(), ms: ready,
     });
     document.body.appendChild(out);
   }
