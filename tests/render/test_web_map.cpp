@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -112,6 +113,37 @@ TEST(WebMap, APageThatCannotBeWrittenIsOneLineAndNoFile) {
   }
   unsetenv("DEEPGUIDE_LEAFLET_DIR");
   EXPECT_FALSE(std::filesystem::exists(dir.file("map.html")));
+}
+
+}  // namespace
+
+namespace {
+
+// The frame's grid: round spacing, a line at every multiple in the box,
+// each straight in the frame (its positions, read back, at the same easting
+// or northing to the page's 1e-7 degrees, about a centimetre).
+TEST(WebMap, TheFramesGridIsRoundAndStraightInTheFrame) {
+  const deepguide::LocalFrame frame = deepguide::LocalFrame::from_user_crs("EPSG:32632");
+  const WebMapLayer grid = deepguide::frame_grid_layer(frame, {500000.0, 6000000.0}, {510000.0, 6004000.0});
+  EXPECT_EQ(grid.id, "grid");
+  EXPECT_FALSE(grid.shown);
+  EXPECT_NE(grid.name.find("every 1000 m"), std::string::npos) << grid.name;
+  std::size_t eastings = 0, northings = 0;
+  for (const auto& f : grid.features) {
+    const auto& props = f.at("properties");
+    const bool east = props.contains("easting (m)");
+    const double value = props.at(east ? "easting (m)" : "northing (m)").get<double>();
+    EXPECT_DOUBLE_EQ(std::fmod(value, 1000.0), 0.0);
+    (east ? eastings : northings) += 1;
+    for (const auto& p : f.at("geometry").at("coordinates")) {
+      const deepguide::Vec2 xy = frame.from_lonlat(p[0].get<double>(), p[1].get<double>());
+      EXPECT_NEAR(east ? xy.x() : xy.y(), value, 0.02);
+    }
+  }
+  EXPECT_EQ(eastings, 11u);
+  EXPECT_EQ(northings, 5u);
+  // A box of no size: no lines, no failure.
+  EXPECT_TRUE(deepguide::frame_grid_layer(frame, {0.0, 0.0}, {0.0, 0.0}).features.empty());
 }
 
 }  // namespace

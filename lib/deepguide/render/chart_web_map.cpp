@@ -138,6 +138,15 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   map.layers = {std::move(depths),  std::move(land),      enc_no_go_layer(enc, operating_depth_m),
                 std::move(hazards), std::move(soundings), std::move(zones),
                 std::move(cells)};
+  if (!enc.cell_areas.empty()) {  // the frame's grid over the cells
+    Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
+    for (const EncChartArea& a : enc.cell_areas) {
+      for (const BgPolygon& p : a.area) {
+        for (const auto& v : p.outer()) lo = lo.cwiseMin(Vec2(v.x(), v.y())), hi = hi.cwiseMax(Vec2(v.x(), v.y()));
+      }
+    }
+    map.layers.push_back(frame_grid_layer(enc.frame, lo, hi));
+  }
   map.table.title = "Cells, best scale first";
   map.table.columns = {"cell", "usage band", "scale", "edition", "update"};
   for (const EncCellSummary& c : enc.cells) {

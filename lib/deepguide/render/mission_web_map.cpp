@@ -1,5 +1,6 @@
 #include "deepguide/render/mission_web_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -124,6 +125,12 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
   }
   map.layers.push_back(std::move(legs));
   map.layers.push_back(std::move(points));
+  if (!waypoints.empty()) {  // the frame's grid round the plan
+    Vec2 lo = waypoints.front().xy, hi = waypoints.front().xy;
+    for (const ExportWaypoint& w : waypoints) lo = lo.cwiseMin(w.xy), hi = hi.cwiseMax(w.xy);
+    const Vec2 pad = Vec2::Constant(0.1 * std::max(hi.x() - lo.x(), hi.y() - lo.y()) + 50.0);
+    map.layers.push_back(frame_grid_layer(mission.frame, lo - pad, hi + pad));
+  }
 
   WebMapLayer conflicts = layer_of("conflicts", "Where conflicts began", "#c92a2a", "#ff6b6b", 1.0, 2.0);
   conflicts.point_radius_px = 6.0;

@@ -135,6 +135,17 @@ WebMap route_check_web_map(const RouteFileCheckReport& report, const RouteFileCh
   }
   map.layers.push_back(std::move(legs));
   map.layers.push_back(std::move(points));
+  if (!map.focus.empty()) {  // the frame's grid round the route
+    Vec2 lo = frame.from_lonlat(map.focus.west, map.focus.south), hi = lo;
+    for (const double lon : {map.focus.west, map.focus.east}) {
+      for (const double lat : {map.focus.south, map.focus.north}) {
+        const Vec2 p = frame.from_lonlat(lon, lat);
+        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      }
+    }
+    const Vec2 pad = Vec2::Constant(0.2 * std::max(hi.x() - lo.x(), hi.y() - lo.y()) + 100.0);
+    map.layers.push_back(frame_grid_layer(frame, lo - pad, hi + pad));
+  }
   return map;
 }
 

@@ -143,6 +143,12 @@ WebMap route_web_map(const RoutePlanReport& report) {
   }
   map.layers.push_back(std::move(waypoints));
 
+  {  // The frame's grid round the route.
+    Vec2 lo = points.front(), hi = points.front();
+    for (const Vec2& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Vec2 pad = Vec2::Constant(0.2 * std::max(hi.x() - lo.x(), hi.y() - lo.y()) + 100.0);
+    map.layers.push_back(frame_grid_layer(frame, lo - pad, hi + pad));
+  }
   // First the route, with a margin round it.
   LonLatExtent& f = map.focus;
   for (const Vec2& p : points) {

@@ -10,6 +10,7 @@
 
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/core/format.hpp"
 #include "deepguide/render/web_map_script.hpp"  // generated from web_map.js (lib/CMakeLists.txt)
 
 namespace deepguide {
@@ -213,6 +214,43 @@ nlohmann::ordered_json WebMapGeometry::disc(const Vec2& centre, double radius_m)
     points.push_back(centre + radius_m * Vec2(std::cos(a), std::sin(a)));
   }
   return outline(points);
+}
+
+WebMapLayer frame_grid_layer(const LocalFrame& frame, const Vec2& lo, const Vec2& hi) {
+  const double span = std::max(hi.x() - lo.x(), hi.y() - lo.y());
+  double step = 1.0;
+  if (std::isfinite(span) && span > 0.0) {
+    const double raw = span / 10.0, decade = std::pow(10.0, std::floor(std::log10(raw)));
+    step = raw <= decade         ? decade
+           : raw <= 2.0 * decade ? 2.0 * decade
+           : raw <= 5.0 * decade ? 5.0 * decade
+                                 : 10.0 * decade;
+  }
+  WebMapLayer layer;
+  layer.id = "grid";
+  layer.name = "Grid of " + frame.id() + " (every " + general(step) + " m)";
+  layer.stroke = layer.fill = "#495057";
+  layer.fill_opacity = 0.0;
+  layer.weight = 0.8;
+  layer.dash = "2 4";
+  layer.shown = false;
+  if (!(std::isfinite(span) && span > 0.0)) return layer;
+  const WebMapGeometry to{frame};
+  // Straight in the frame, so a little curved on the map: 24 points a line.
+  const auto line = [&](const Vec2& a, const Vec2& b) {
+    std::vector<Vec2> points;
+    for (int k = 0; k <= 24; ++k) points.push_back(a + (b - a) * (k / 24.0));
+    return to.line(points);
+  };
+  const double x0 = std::floor(lo.x() / step) * step, y0 = std::floor(lo.y() / step) * step;
+  const double x1 = std::ceil(hi.x() / step) * step, y1 = std::ceil(hi.y() / step) * step;
+  for (double x = x0; x <= x1 + step / 2; x += step) {
+    layer.features.push_back(web_map_feature(line({x, y0}, {x, y1}), {{"easting (m)", x}, {"frame", frame.id()}}));
+  }
+  for (double y = y0; y <= y1 + step / 2; y += step) {
+    layer.features.push_back(web_map_feature(line({x0, y}, {x1, y}), {{"northing (m)", y}, {"frame", frame.id()}}));
+  }
+  return layer;
 }
 
 std::string web_map_html(const WebMap& map) {

@@ -14,7 +14,8 @@
 //  - a table beside the map (a route's waypoints);
 //  - for tests and scripts, the URL's fragment: `#test` writes the layers'
 //    feature counts and the table as JSON into <pre id="dg-test">,
-//    `click=LON,LAT` clicks there, `zoom=Z` and `center=LON,LAT` set the view.
+//    `click=LON,LAT` clicks there, `zoom=Z` and `center=LON,LAT` set the view,
+//    `show=ID,...` and `hide=ID,...` switch layers on and off.
 // Coordinates are written to 1e-7 degrees (about a centimetre); lines and
 // rings as integer steps of that (a third of the text), which the page
 // decodes exactly.
@@ -83,6 +84,11 @@ struct WebMapGeometry {
   /// A disc as a 48-gon.
   nlohmann::ordered_json disc(const Vec2& centre, double radius_m) const;
 };
+
+/// The planning frame's grid over the box [lo, hi] (frame metres): lines of
+/// constant easting and northing at a round spacing (1, 2 or 5 x 10^k m,
+/// about ten across), each with its value; off when the page opens.
+WebMapLayer frame_grid_layer(const LocalFrame& frame, const Vec2& lo, const Vec2& hi);
 
 /// The page. Throws InputError when Leaflet cannot be read (naming the
 /// file and the Debian package).

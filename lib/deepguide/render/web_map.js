@@ -120,6 +120,14 @@
     const [k, v] = part.split("=");
     if (k) args[decodeURIComponent(k)] = v === undefined ? "" : decodeURIComponent(v);
   }
+  // show=ID,... and hide=ID,...: switch layers on and off.
+  for (const [key, on] of [["show", true], ["hide", false]]) {
+    for (const id of (args[key] || "").split(",").filter(Boolean)) {
+      const layer = data.layers.find((l) => l.id === id);
+      if (layer && on) layer.group.addTo(map);
+      if (layer && !on) map.removeLayer(layer.group);
+    }
+  }
   if (args.center || args.zoom) {
     const c = args.center ? args.center.split(",").map(Number) : [map.getCenter().lng, map.getCenter().lat];
     map.setView([c[1], c[0]], args.zoom ? Number(args.zoom) : map.getZoom(), {animate: false});
