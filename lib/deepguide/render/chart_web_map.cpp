@@ -65,6 +65,8 @@ WebMapLayer enc_no_go_layer(const EncNoGo& enc, double operating_depth_m) {
   WebMapLayer layer = make_layer("no_go", "No-go at " + general(operating_depth_m) + " m, by feature (click for why)",
                                  "#c92a2a", "#e03131", 0.18, 1.0);
   layer.explained = true;
+  layer.hatched = true;  // as ECDIS and paper charts mark what a vessel must keep out of
+  layer.fill_opacity = 0.6;
   for (const EncNoGoFeature& f : enc.features) {
     if (f.point) {
       layer.features.push_back(web_map_feature(to.disc(*f.point, f.radius_m), feature_properties(f)));
@@ -109,9 +111,10 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   WebMapLayer hazards =
       make_layer("hazards", "Hazards (rocks, wrecks, obstructions, piles)", "#212529", "#495057", 0.9, 1.0);
   hazards.point_radius_px = 4.0;
-  WebMapLayer soundings = make_layer("soundings", "Soundings that are no-go", "#1864ab", "#1864ab", 0.9, 0.5);
+  WebMapLayer soundings =
+      make_layer("soundings", "Soundings that are no-go (from zoom 12 in)", "#1864ab", "#1864ab", 0.9, 0.5);
   soundings.point_radius_px = 2.0;
-  soundings.shown = false;
+  soundings.min_zoom = 12.0;  // a sounding every few pixels: from about 1:150,000 in
   for (const EncNoGoFeature& f : enc.features) {
     if (f.cls == "LNDARE") {  // areas, and the points of islets and rocks that show
       land.features.push_back(

@@ -270,6 +270,8 @@ std::string web_map_html(const WebMap& map) {
                               {"point_radius_px", l.point_radius_px},
                               {"shown", l.shown},
                               {"explained", l.explained},
+                              {"hatched", l.hatched},
+                              {"min_zoom", l.min_zoom},
                               {"features", compact_features(l.features)}});
   }
   data["table"] = {{"title", map.table.title}, {"columns", map.table.columns}, {"rows", map.table.rows}};

@@ -46,6 +46,10 @@ struct WebMapLayer {
   double point_radius_px = 4.0;  ///< points are drawn as circles this big
   bool shown = true;             ///< on when the page opens
   bool explained = false;        ///< a click lists every feature of it under the click
+  bool hatched = false;          ///< areas filled with diagonal lines of `fill` (a chart's no-go)
+  /// Drawn only from this zoom level in (Leaflet's: 0 the world, 18 streets;
+  /// soundings thin out as a chart zooms out); 0: at every zoom.
+  double min_zoom = 0.0;
 };
 
 struct WebMapTable {

@@ -43,11 +43,28 @@
   const overlays = {};
   const built = {};
   const explained = [];
+  // Diagonal lines in a colour, as a canvas pattern Leaflet's canvas renderer fills with.
+  const hatch = (colour) => {
+    const tile = document.createElement("canvas");
+    tile.width = tile.height = 8;
+    const c = tile.getContext("2d");
+    c.strokeStyle = colour;
+    c.lineWidth = 1.2;
+    c.beginPath();
+    c.moveTo(-2, 10);
+    c.lineTo(10, -2);
+    c.moveTo(-2, 2);
+    c.lineTo(2, -2);
+    c.moveTo(6, 10);
+    c.lineTo(10, 6);
+    c.stroke();
+    return c.createPattern(tile, "repeat");
+  };
   const build = (layer, group) => {
     if (built[layer.id]) return;
     const style = {
-      color: layer.stroke, weight: layer.weight, fillColor: layer.fill, fillOpacity: layer.fill_opacity,
-      opacity: 1, dashArray: layer.dash || null, interactive: !layer.explained,
+      color: layer.stroke, weight: layer.weight, fillColor: layer.hatched ? hatch(layer.fill) : layer.fill,
+      fillOpacity: layer.fill_opacity, opacity: 1, dashArray: layer.dash || null, interactive: !layer.explained,
     };
     built[layer.id] = L.geoJSON({type: "FeatureCollection", features: layer.features}, {
       style: (f) => (f.style ? Object.assign({}, style, f.style) : style),
@@ -56,7 +73,14 @@
         if (!layer.explained && f.properties && Object.keys(f.properties).length) l.bindPopup(table(f.properties));
       },
     });
-    group.addLayer(built[layer.id]);
+    // A layer with a least zoom shows its features only from it in.
+    const show = () => {
+      const wanted = map.getZoom() >= (layer.min_zoom || 0);
+      if (wanted && !group.hasLayer(built[layer.id])) group.addLayer(built[layer.id]);
+      if (!wanted && group.hasLayer(built[layer.id])) group.removeLayer(built[layer.id]);
+    };
+    if (layer.min_zoom) map.on("zoomend", show);
+    show();
   };
   for (const layer of data.layers) {
     const group = L.layerGroup();
