@@ -24,6 +24,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/render/chart_scene.hpp"
+#include "deepguide/render/chart_web_map.hpp"
 #include "deepguide/render/reactive_map.hpp"  // ellipse_outline
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/current_sampling.hpp"
@@ -223,6 +224,21 @@ void bind_charts(py::module_& m) {
           "its outline first, then its holes.")
       .def("info", &chart_info_dicts, "Per chart file what `deepguide chart info --json` prints.")
       .def("_render", &render, py::arg("path"), py::arg("width"), py::arg("title"), py::arg("obstacles"))
+      .def(
+          "to_html",
+          [](const Chart& c) {
+            const ChartObstacles& read = c.obstacles();
+            if (!read.enc) {
+              throw InputError("to_html: expected S-57 charts (cells, folders, exchange sets, prepared charts)");
+            }
+            std::string title;
+            for (const std::string& p : c.paths)
+              title += (title.empty() ? "" : ", ") + std::filesystem::path(p).filename().string();
+            py::gil_scoped_release free;
+            return web_map_html(chart_web_map(*read.enc, c.depth_m, title + " at " + general(c.depth_m) + " m"));
+          },
+          "The chart as `render chart --html` writes it: one web page that works offline (depth areas, land, the "
+          "no-go with its reasons, hazards, soundings, zones of confidence, cells; docs/WEB_MAP.md). S-57 charts.")
       .def("__repr__", [](const Chart& c) {
         std::string out = "Chart(paths=" + std::to_string(c.paths.size()) + ", crs='" + c.frame.id() + "'";
         out += std::isnan(c.depth_m) ? ", depth=None" : ", depth=" + general(c.depth_m);

@@ -25,6 +25,7 @@
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
+#include "deepguide/render/route_web_map.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_io.hpp"
 
@@ -315,6 +316,15 @@ void bind_plan(py::module_& m) {
             render_route_plan(*r.report, path.string(), draw_graph);
           },
           py::arg("path"), py::arg("draw_graph"))
+      .def(
+          "to_html",
+          [](const Route& r) {
+            py::gil_scoped_release free;
+            return web_map_html(route_web_map(*r.report));
+          },
+          "The route as `plan --html` writes it: one web page that works offline, to zoom and click (the chart's "
+          "no-go with its reasons, obstacles, zones, legs, waypoints; docs/WEB_MAP.md). In a notebook: "
+          "IPython.display.HTML(route.to_html()), or write it to a file.")
       .def("__repr__", &Route::repr);
 
   m.def(

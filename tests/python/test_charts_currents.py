@@ -183,3 +183,24 @@ def test_a_prepared_chart_read_once_plans_what_the_command_plans(cli, tmp_path):
     assert chart.render()[:8] == b"\x89PNG\r\n\x1a\n"
     with pytest.raises(deepguide.InputError, match="prepared for depth 5 m"):
         deepguide.read_chart(prepared, depth=7)
+
+
+def test_a_route_and_a_chart_as_web_maps(cli, tmp_path):
+    """to_html is the page the command writes: the same data (the page's
+    JSON), hence the same layers, features and table."""
+    cell = real_file(CELL)
+    import re
+
+    def data(page):
+        return re.search(r'<script id="dg-data" type="application/json">(.*?)</script>', page, re.S).group(1)
+
+    chart = deepguide.read_chart(cell, depth=5)
+    a, b = PAIRS[0]
+    route = deepguide.plan(a, b, charts=chart)
+    page = route.to_html()
+    cli("plan", "--chart", cell, "--depth", "5", "--from", text(a), "--to", text(b), "--html", tmp_path / "cli.html")
+    assert data(page) == data((tmp_path / "cli.html").read_text())
+    cli("render", "chart", cell, "--depth", "5", "--html", tmp_path / "chart.html")
+    assert data(chart.to_html()) == data((tmp_path / "chart.html").read_text())
+    with pytest.raises(deepguide.InputError, match="`depth`"):
+        deepguide.read_chart(cell).to_html()
