@@ -32,6 +32,7 @@ struct EvaluateArgs {
   bool fresh = false;
   bool no_timing = false;
   bool no_report = false;
+  bool html = false;
   bool quiet = false;
   bool allow_skips = false;
   bool overwrite = false;
@@ -95,6 +96,9 @@ void register_evaluate(CLI::App& app) {
   cmd->add_flag("--fresh", o->fresh, "Discard the rows of an earlier run in the output folder instead of resuming");
   cmd->add_flag("--no-timing", o->no_timing, "Write compute_ms as 0, so reruns are byte-identical");
   cmd->add_flag("--no-report", o->no_report, "Skip the figures and report.html");
+  cmd->add_flag("--html", o->html,
+                "Also write maps/: web maps of the scenarios where each method came closest to an obstacle or "
+                "collided, each method's track over the obstacles, linked from report.html (docs/WEB_MAP.md)");
   cmd->add_flag("-q,--quiet", o->quiet, "Do not print the summary");
   CLI::App* merge = cmd->add_subcommand("merge", "Join the output folders of all shards of a run into one");
   merge->add_option("SHARD_DIR", o->merge_dirs, "The shards' output folders")->required();
@@ -123,6 +127,7 @@ void register_evaluate(CLI::App& app) {
     options.fresh = o->fresh;
     options.timing = !o->no_timing;
     options.report = !o->no_report;
+    options.maps = o->html;
     auto bar = std::make_shared<ProgressBar>();
     options.progress = [bar](std::size_t done, std::size_t total) { (*bar)(done, total); };
     options.warn = [bar](const std::string& line) { bar->warn(line); };

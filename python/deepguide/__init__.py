@@ -325,7 +325,7 @@ class Evaluation:
 
 
 def evaluate(suite, methods, output, *, threads=0, fresh=False, timing=True, report=False, progress=None,
-             allow_skips=False):
+             allow_skips=False, html=False):
     """Runs every scenario of `suite` (a folder, its suite.yaml or one
     scenario file) through `methods` ("geometric,dipole" or a list; planners
     as GRAPH[:SEARCH][:COST]) into the folder `output`, as `deepguide
@@ -334,11 +334,13 @@ def evaluate(suite, methods, output, *, threads=0, fresh=False, timing=True, rep
 
     A run that skipped broken scenarios raises PartialError (its `evaluation`
     attribute holds the run, written all the same) unless `allow_skips`, as
-    the command exits 4 unless --allow-skips."""
+    the command exits 4 unless --allow-skips. `html`: also the web maps of the
+    scenarios where each method came closest to an obstacle or collided, in
+    output/maps (as `evaluate --html`)."""
     if not isinstance(methods, str):
         methods = ",".join(methods)
     run = Evaluation(_deepguide._evaluate(_os.fspath(suite), methods, _os.fspath(output), threads, fresh, timing,
-                                          report, progress))
+                                          report, progress, html))
     skipped = run._run._skipped_line()
     if skipped and not allow_skips:
         error = PartialError(skipped)

@@ -77,13 +77,14 @@ void bind_evaluate(py::module_& m) {
   m.def(
       "_evaluate",
       [](const std::string& suite, const std::string& methods, const std::string& output, int threads, bool fresh,
-         bool timing, bool report, std::optional<std::function<void(std::size_t, std::size_t)>> progress) {
+         bool timing, bool report, std::optional<std::function<void(std::size_t, std::size_t)>> progress, bool html) {
         EvaluateOptions o;
         o.methods = parse_eval_methods(methods);
         o.threads = threads;
         o.fresh = fresh;
         o.timing = timing;
         o.report = report;
+        o.maps = html;
         if (progress) {
           // Called on the calling thread (evaluate.hpp), which holds no GIL while it runs.
           o.progress = [f = *progress](std::size_t done, std::size_t total) {
@@ -99,7 +100,7 @@ void bind_evaluate(py::module_& m) {
         return out;
       },
       py::arg("suite"), py::arg("methods"), py::arg("output"), py::arg("threads") = 0, py::arg("fresh") = false,
-      py::arg("timing") = true, py::arg("report") = false, py::arg("progress") = py::none());
+      py::arg("timing") = true, py::arg("report") = false, py::arg("progress") = py::none(), py::arg("html") = false);
 }
 
 }  // namespace deepguide::python

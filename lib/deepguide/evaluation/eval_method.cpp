@@ -42,7 +42,11 @@ void fill_from(MethodRun& run, const SimulationResult& sim) {
   run.heading_reversals = sim.stats.heading_reversals;
 }
 
-MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
+void keep(MethodRun& run, const SimulationResult& sim) {
+  for (const TrajectorySample& x : sim.trajectory) run.track.push_back(x.position);
+}
+
+MethodRun run_planner(const Scenario& sc, const EvalMethod& m, bool keep_track) {
   ObstacleSet obstacles;
   obstacles.ellipses = sc.obstacles;
   PlannerOptions options;
@@ -90,8 +94,13 @@ MethodRun run_planner(const Scenario& sc, const EvalMethod& m) {
   }
   run.route_length_m = r.legs.empty() ? r.route.length() : r.exact_length_m;  // what is sailed
   RouteFollowing follow;
-  follow.simulation.record_trajectory = false;
-  fill_from(run, r.legs.empty() ? follow_route(sc, r.route, follow) : follow_route(sc, r.legs, follow));
+  follow.simulation.record_trajectory = keep_track;
+  const SimulationResult sailed = r.legs.empty() ? follow_route(sc, r.route, follow) : follow_route(sc, r.legs, follow);
+  fill_from(run, sailed);
+  if (keep_track) {
+    run.route = r.route.points;
+    keep(run, sailed);
+  }
   return run;
 }
 
@@ -144,13 +153,14 @@ EvalMethod parse_eval_method(const std::string& text) {
   return m;
 }
 
-MethodRun run_method(const Scenario& sc, const EvalMethod& m) {
-  if (m.is_planner()) return run_planner(sc, m);
+MethodRun run_method(const Scenario& sc, const EvalMethod& m, bool keep_track) {
+  if (m.is_planner()) return run_planner(sc, m, keep_track);
   SimulationOptions options;
-  options.record_trajectory = false;
+  options.record_trajectory = keep_track;
   const SimulationResult sim = simulate(sc, *m.reactive, options);
   MethodRun run;
   fill_from(run, sim);
+  if (keep_track) keep(run, sim);
   run.compute_ms = sim.guidance_ms;
   return run;
 }

@@ -22,8 +22,10 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/geometry/vec2.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
@@ -60,6 +62,9 @@ struct MethodRun {
   double path_length_m = 0.0, energy_j = 0.0, time_s = 0.0;  ///< sailed (0 without a route)
   double min_clearance_m = 0.0;                              ///< +inf without obstacles
   double max_rate_ref = 0.0, rms_rate_ref = 0.0, max_rate = 0.0, rms_rate = 0.0;  ///< rad/s
+  /// Kept only when asked (run_method's keep_track; never in the rows): the
+  /// planner's route and the positions sailed, a sample a step (local frame).
+  std::vector<Vec2> route, track;
   int heading_reversals = 0;
   double compute_ms = 0.0;
   std::size_t graph_vertices = 0, graph_edges = 0;
@@ -68,6 +73,8 @@ struct MethodRun {
 /// Runs `method` on `scenario` (validated by the caller's loader). Throws
 /// InputError for what the scenario cannot do (e.g. a current the planner's
 /// cost model refuses); a planner that finds no route is a row (no_route).
-MethodRun run_method(const Scenario& scenario, const EvalMethod& method);
+/// With `keep_track`, the run also keeps the planner's route and the track
+/// sailed (MethodRun::route, track: for maps of it, evaluation/eval_maps.hpp).
+MethodRun run_method(const Scenario& scenario, const EvalMethod& method, bool keep_track = false);
 
 }  // namespace deepguide

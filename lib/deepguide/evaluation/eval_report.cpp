@@ -49,7 +49,8 @@ struct Figure {
 
 }  // namespace
 
-std::vector<std::string> write_report(const std::string& dir, const EvaluationRun& run) {
+std::vector<std::string> write_report(const std::string& dir, const EvaluationRun& run,
+                                      const std::vector<EvaluationMap>& maps) {
   const double nan = std::nan("");
   const std::vector<Figure> figures = {
       {"fig_path_length.png", "Path sailed", "path over ground (m)", false, false,
@@ -136,6 +137,14 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
   }
   o << "</table>\n<h2>Figures</h2>\n";
   for (const std::string& f : written) o << "<p><img src=\"" << f << "\" alt=\"" << f << "\"></p>\n";
+  if (!maps.empty()) {
+    o << "<h2>Scenarios as maps</h2>\n<p>Where the methods came closest to an obstacle, and where they collided: "
+         "each method's track over the obstacles, to zoom and click (one page each, offline).</p>\n<ul>\n";
+    for (const EvaluationMap& m : maps) {
+      o << "<li><a href=\"" << html(m.file) << "\">" << html(m.scenario) << "</a>: " << html(m.why) << "</li>\n";
+    }
+    o << "</ul>\n";
+  }
   if (!run.manifest.skipped.empty()) {
     o << "<h2>Skipped</h2>\n<ul>\n";
     for (const SkippedRun& k : run.manifest.skipped) {

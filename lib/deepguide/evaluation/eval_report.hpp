@@ -12,11 +12,14 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/evaluation/eval_maps.hpp"
 #include "deepguide/evaluation/evaluate.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-/// Writes the figures and report.html into `dir`; returns the figure file names.
-std::vector<std::string> write_report(const std::string& dir, const EvaluationRun& run);
+/// Writes the figures and report.html into `dir`; returns the figure file
+/// names. `maps` (evaluate --html, eval_maps.hpp) are linked from the page.
+std::vector<std::string> write_report(const std::string& dir, const EvaluationRun& run,
+                                      const std::vector<EvaluationMap>& maps = {});
 
 }  // namespace deepguide

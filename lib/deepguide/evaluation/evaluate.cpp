@@ -20,6 +20,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/folder_lock.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/evaluation/eval_maps.hpp"
 #include "deepguide/evaluation/eval_report.hpp"
 #include "deepguide/evaluation/eval_summary.hpp"
 
@@ -126,9 +127,10 @@ void remove_run_files(const fs::path& dir) {
     if (is_run_file(e.path().filename().string())) ours.push_back(e.path());
   }
   for (const fs::path& p : ours) fs::remove(p, ec);
+  fs::remove_all(dir / "maps", ec);  // an earlier run's scenario pages (eval_maps.hpp)
 }
 
-void finish(const fs::path& dir, EvaluationRun& run, bool report) {
+void finish(const fs::path& dir, EvaluationRun& run, bool report, const Suite* maps_of = nullptr) {
   sort_rows(run.rows, run.manifest.methods);
   sort_skipped(run.manifest.skipped);
   const std::string text = rows_text(run.rows, run.manifest.timing);
@@ -137,7 +139,9 @@ void finish(const fs::path& dir, EvaluationRun& run, bool report) {
   write_text_file(dir / kRows, text, "rows");
   write_text_file(dir / kManifest, manifest_json(run.manifest).dump(2) + "\n", "run manifest");
   write_results(dir.string(), run);
-  if (report) write_report(dir.string(), run);
+  std::vector<EvaluationMap> maps;
+  if (maps_of != nullptr) maps = write_evaluation_maps(*maps_of, run, dir.string());
+  if (report) write_report(dir.string(), run, maps);
 }
 
 // One job's outcome: a row, or why the run was skipped.
@@ -360,7 +364,7 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
   journal.close();
   pool.threads.clear();  // joins
   if (!run.complete) return run;
-  finish(dir, run, options.report);
+  finish(dir, run, options.report, options.maps ? &suite : nullptr);
   return run;
 }
 

@@ -79,6 +79,9 @@ struct EvaluateOptions {
   bool timing = true;  ///< false: compute_ms written as 0 (byte-identical reruns)
   bool fresh = false;  ///< discard the rows of an earlier run in the folder
   bool report = true;  ///< write the report's figures and page (eval_report.hpp)
+  /// Write maps/ of the scenarios where the methods came closest to an
+  /// obstacle or collided, linked from the report (eval_maps.hpp).
+  bool maps = false;
   /// Called from the calling thread after each row is written: rows done, rows to do.
   std::function<void(std::size_t done, std::size_t total)> progress;
   /// Called from the calling thread with a line for each skipped run as it happens.

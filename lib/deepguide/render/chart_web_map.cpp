@@ -61,7 +61,7 @@ json feature_properties(const EncNoGoFeature& f) {
 }  // namespace
 
 WebMapLayer enc_no_go_layer(const EncNoGo& enc, double operating_depth_m) {
-  const WebMapGeometry to{enc.frame};
+  const WebMapGeometry to{&enc.frame};
   WebMapLayer layer = make_layer("no_go", "No-go at " + general(operating_depth_m) + " m, by feature (click for why)",
                                  "#c92a2a", "#e03131", 0.18, 1.0);
   layer.explained = true;
@@ -78,7 +78,7 @@ WebMapLayer enc_no_go_layer(const EncNoGo& enc, double operating_depth_m) {
 }
 
 WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::string& title) {
-  const WebMapGeometry to{enc.frame};
+  const WebMapGeometry to{&enc.frame};
   WebMap map;
   map.title = title;
   map.subtitle = std::to_string(enc.cells.size()) + " cell(s), no-go shallower than " + general(enc.required_depth_m) +

@@ -61,7 +61,7 @@ WebMapLayer obstacles_of(const ObstacleSet& obstacles, const WebMapGeometry& to,
 WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planned, const MissionRun* run,
                        bool as_written) {
   const Mission& mission = loaded.mission;
-  const WebMapGeometry to{mission.frame};
+  const WebMapGeometry to{&mission.frame};
   const MissionPlan& plan = run ? run->plan : as_written ? loaded.plan : planned.plan;
   WebMap map;
   map.title = mission.name + ": " + fixed(plan.length_m / 1000.0, 2) + " km, " + clock_text(plan_duration(plan));

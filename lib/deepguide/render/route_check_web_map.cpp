@@ -59,7 +59,7 @@ WebMap route_check_web_map(const RouteFileCheckReport& report, const RouteFileCh
   map.title = std::filesystem::path(options.route).filename().string() + ": " + (report.safe ? "safe" : "unsafe");
   map.subtitle = report.why;
   const LocalFrame frame = report.obstacles_frame ? *report.obstacles_frame : report.enc->frame;
-  const WebMapGeometry to{frame};
+  const WebMapGeometry to{&frame};
   if (report.enc) map.layers.push_back(enc_no_go_layer(*report.enc, options.operating_depth_m));
   std::optional<ObstacleField> field;
   if (report.obstacles_frame) {

@@ -71,7 +71,7 @@ WebMapLayer zones_layer(const RoutePlanReport& report, const ToLonLat& to) {
 
 WebMap route_web_map(const RoutePlanReport& report) {
   const LocalFrame& frame = report.frame;
-  const ToLonLat to{frame};
+  const ToLonLat to{&frame};
   const RoutePlanRequest& r = report.request;
   const std::vector<Vec2>& points = report.route.points;
   WebMap map;

@@ -179,7 +179,8 @@ nlohmann::ordered_json rings_of(const WebMapGeometry& g, const BgPolygon& p) {
 }  // namespace
 
 nlohmann::ordered_json WebMapGeometry::position(const Vec2& p) const {
-  const Vec2 ll = frame.to_lonlat(p);
+  if (frame == nullptr) return web_map_position(p.x(), p.y());
+  const Vec2 ll = frame->to_lonlat(p);
   return web_map_position(ll.x(), ll.y());
 }
 
@@ -235,7 +236,7 @@ WebMapLayer frame_grid_layer(const LocalFrame& frame, const Vec2& lo, const Vec2
   layer.dash = "2 4";
   layer.shown = false;
   if (!(std::isfinite(span) && span > 0.0)) return layer;
-  const WebMapGeometry to{frame};
+  const WebMapGeometry to{&frame};
   // Straight in the frame, so a little curved on the map: 24 points a line.
   const auto line = [&](const Vec2& a, const Vec2& b) {
     std::vector<Vec2> points;
@@ -258,6 +259,7 @@ std::string web_map_html(const WebMap& map) {
   const std::string css = offline_css(read_leaflet("leaflet.css"));
   nlohmann::ordered_json data;
   data["title"] = map.title;
+  data["planar"] = map.planar;
   data["layers"] = nlohmann::ordered_json::array();
   for (const WebMapLayer& l : map.layers) {
     data["layers"].push_back({{"id", l.id},

@@ -64,6 +64,10 @@ struct WebMap {
   std::vector<WebMapLayer> layers;
   WebMapTable table;
   LonLatExtent focus;  ///< what the page shows first (NaN: every layer's extent)
+  /// Positions are x, y metres of a local frame with no geographic anchor
+  /// (drawn on a plain plane, Leaflet's CRS.Simple, with a metric scale);
+  /// false: lon/lat.
+  bool planar = false;
 };
 
 /// A feature for a layer: `geometry` a GeoJSON geometry in lon/lat;
@@ -74,9 +78,11 @@ nlohmann::ordered_json web_map_feature(nlohmann::ordered_json geometry, nlohmann
 /// A lon/lat position as GeoJSON writes it, to 1e-7 degrees.
 nlohmann::ordered_json web_map_position(double lon, double lat);
 
-/// GeoJSON geometries in lon/lat of shapes in a local frame.
+/// GeoJSON geometries of shapes in a local frame: in lon/lat, or, with no
+/// frame (a scenario with no geographic anchor), as the frame's x, y metres
+/// for a planar page (WebMap::planar).
 struct WebMapGeometry {
-  const LocalFrame& frame;
+  const LocalFrame* frame = nullptr;
 
   nlohmann::ordered_json position(const Vec2& p) const;
   nlohmann::ordered_json point(const Vec2& p) const;

@@ -32,7 +32,9 @@
     Object.entries(props).map(([k, v]) => "<tr><th>" + esc(k) + "</th><td>" + esc(v) + "</td></tr>").join("") +
     "</table>";
 
-  const map = L.map("map", {preferCanvas: true, zoomSnap: 0.25, attributionControl: false});
+  // A frame with no geographic anchor is drawn on a plain plane, x east and y north in metres.
+  const map = L.map("map", Object.assign({preferCanvas: true, zoomSnap: 0.25, attributionControl: false},
+    data.planar ? {crs: L.CRS.Simple, minZoom: -10, maxZoom: 8} : {}));
   // The view first (web_map.cpp works it out): layers added after it are drawn once.
   const f = data.focus;
   if (f) map.fitBounds([[f.south, f.west], [f.north, f.east]], {padding: [20, 20], animate: false});
