@@ -106,7 +106,7 @@ if [ -f "$cell" ] && [ -n "$chromium" ]; then
   page="$(mktemp -d)"
   "$DEEPGUIDE_CLI" plan --chart "$cell" --depth 5 --from -76.41,38.87 --to -76.35,38.60 --html "$page/map.html" >/dev/null
   # Zoomed to the route's turn round the shoals off Cove Point, a DEPARE's reason open.
-  "$chromium" --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1400,800 \
+  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --window-size=1400,800 \
     --host-resolver-rules="MAP * ~NOTFOUND" --virtual-time-budget=15000 \
     --screenshot="$DEEPGUIDE_ROOT/docs/images/web_map_chesapeake.png" \
     "file://$page/map.html#zoom=12.5&center=-76.392,38.556&click=-76.380,38.545" 2>/dev/null

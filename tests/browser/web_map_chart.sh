@@ -33,7 +33,7 @@ cell_file="$(find "$set_dir" -name "$cell.000" | head -n 1)"
 OGR_S57_OPTIONS="RETURN_PRIMITIVES=OFF,RETURN_LINKAGES=OFF,LNAM_REFS=ON" \
   ogrinfo -ro -q "$cell_file" DEPARE -where "RCID=$rcid" > "$out/ogrinfo.txt"
 browse() {
-  "$chromium" --headless=new --no-sandbox --disable-gpu --hide-scrollbars --no-first-run \
+  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --no-first-run \
     --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
     --window-size=1400,900 --virtual-time-budget=20000 "$@" 2> "$out/chromium.log"
 }

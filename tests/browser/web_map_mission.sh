@@ -29,7 +29,7 @@ mission="$source_dir/data/missions/sample_mission.yaml"
   --html "$out/simulated.html" --json > "$out/run.json"
 read -r record click < <(python3 "$source_dir/tests/browser/check_web_map.py" pick-obstacle "$out/page.html")
 browse() {
-  "$chromium" --headless=new --no-sandbox --disable-gpu --hide-scrollbars --no-first-run \
+  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --no-first-run \
     --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
     --window-size=1400,900 --virtual-time-budget=15000 "$@" 2> "$out/chromium.log"
 }

@@ -33,7 +33,7 @@ OGR_S57_OPTIONS="RETURN_PRIMITIVES=OFF,RETURN_LINKAGES=OFF,LNAM_REFS=ON" \
 click="$(python3 "$source_dir/tests/browser/check_web_map.py" click "$out/page.html" "$record")"
 # No network: every host resolves to nothing and the proxy is a closed port.
 browse() {
-  "$chromium" --headless=new --no-sandbox --disable-gpu --hide-scrollbars --no-first-run \
+  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --no-first-run \
     --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
     --window-size=1400,900 --virtual-time-budget=15000 "$@" 2> "$out/chromium.log"
 }
