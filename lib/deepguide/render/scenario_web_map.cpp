@@ -29,7 +29,8 @@ WebMap scenario_web_map(const Scenario& sc, const std::string& title, const std:
   map.title = title;
   map.planar = !sc.frame;
   map.subtitle = std::to_string(sc.obstacles.size()) + " obstacle(s), security margin " +
-                 general(sc.reactive.margin_m) + " m" + (sc.frame ? ", frame " + sc.frame->id() : ", a local frame in metres");
+                 general(sc.reactive.margin_m) + " m" +
+                 (sc.frame ? ", frame " + sc.frame->id() : ", a local frame in metres");
 
   WebMapLayer obstacles;
   obstacles.id = "obstacles";
@@ -70,8 +71,11 @@ WebMap scenario_web_map(const Scenario& sc, const std::string& title, const std:
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const ScenarioTrack& r = runs[i];
     const char* colour = kColours[i % kColours.size()];
-    json props{{"method", r.method}, {"end", r.end}, {"least clearance (m)", metres(r.min_clearance_m)},
-               {"path (m)", metres(r.path_length_m)}, {"collided", r.collided ? "yes" : "no"}};
+    json props{{"method", r.method},
+               {"end", r.end},
+               {"least clearance (m)", metres(r.min_clearance_m)},
+               {"path (m)", metres(r.path_length_m)},
+               {"collided", r.collided ? "yes" : "no"}};
     if (!r.note.empty()) props["note"] = r.note;
     if (r.route.size() >= 2) {
       WebMapLayer route;
