@@ -185,6 +185,10 @@ def check_mission(folder, obstacle):
         lon, lat = p["geometry"]["coordinates"][:2]
         if abs(row[1] - lon) > 1e-7 or abs(row[2] - lat) > 1e-7:
             fail(f"waypoint {row[0]}: {row[1]}, {row[2]}; mission export: {lon}, {lat}")
+    # The mission's raster chart: its depth shading decoded by the browser, as big as the page says.
+    pictures = drawn.get("images", {})
+    if len(pictures) != 1 or any(not p or p["width"] < 100 or p["height"] < 100 for p in pictures.values()):
+        fail(f"the mission's raster chart is not drawn as a picture: {pictures}")
     if drawn["layers"]["legs"] != len(points) - 1:
         fail(f"legs {drawn['layers']['legs']} for {len(points)} waypoints")
     popup = re.search(r'class="leaflet-popup-content"[^>]*>(.*?)</div></div>', dom, re.S)

@@ -7,7 +7,8 @@
 # plan --json's; a click inside the first obstacle names it; the simulated
 # page has the track; `mission check --html` draws the plan as written (its
 # waypoints mission export --as-written's) with mission check's obstacles
-# and conflicts. Exit 77 (ctest: skipped) without Chromium.
+# and conflicts; the mission's raster chart is drawn as its depth shading.
+# Exit 77 (ctest: skipped) without Chromium.
 #   tests/browser/web_map_mission.sh DEEPGUIDE_CLI SOURCE_DIR [OUTPUT_DIR]
 set -euo pipefail
 cli="$1"

@@ -118,16 +118,17 @@ TEST(CliPlan, AWebMapThatCannotBeWrittenIsOneLineAndNothingWritten) {
   }
 }
 
-// render chart --html: S-57 charts with a depth; anything else is one line,
-// exit 1, nothing written; -o or --html is required (usage, exit 2).
-TEST(CliRenderChart, AWebMapAsksForCellsAndADepth) {
+// render chart --html needs a depth; without it, or into a missing folder or
+// over an input, one line, exit 1, nothing written; -o or --html is required
+// (usage, exit 2).
+TEST(CliRenderChart, AWebMapAsksForADepth) {
   ScratchDir dir;
   const std::string page = dir.file("chart.html");
   const std::string raster = deepguide::test::source_file("charts/sample_chart.tif");
-  const auto not_s57 = run_cli("render chart '" + raster + "' --depth 3 --html '" + page + "'");
-  EXPECT_EQ(not_s57.exit_code, 1) << not_s57.err;
-  EXPECT_NE(not_s57.err.find("--html: expected S-57 charts"), std::string::npos) << not_s57.err;
-  EXPECT_EQ(std::count(not_s57.err.begin(), not_s57.err.end(), '\n'), 1) << not_s57.err;
+  const auto no_depth_raster = run_cli("render chart '" + raster + "' --html '" + page + "'");
+  EXPECT_EQ(no_depth_raster.exit_code, 1) << no_depth_raster.err;
+  EXPECT_NE(no_depth_raster.err.find("--html: expected --depth"), std::string::npos) << no_depth_raster.err;
+  EXPECT_EQ(std::count(no_depth_raster.err.begin(), no_depth_raster.err.end(), '\n'), 1) << no_depth_raster.err;
   EXPECT_EQ(run_cli("render chart '" + raster + "'").exit_code, 2);
   EXPECT_FALSE(std::filesystem::exists(page));
   DEEPGUIDE_REAL_FILE_OR_SKIP(cell, "noaa-enc-US5FL4DQ/US5FL4DQ.000");
@@ -167,6 +168,41 @@ TEST(CliCheckRoute, AWebMapOfAnUnsafeRoute) {
   const auto bad = run_cli("check route '" + straight + "' --obstacles '" + kSample + "' --html '" + straight + "'");
   EXPECT_EQ(bad.exit_code, 1) << bad.err;
   EXPECT_NE(bad.err.find("--html"), std::string::npos) << bad.err;
+}
+
+// render chart --html on a bathymetry raster: its depth shading as a picture
+// warped into Web Mercator, laid where the raster is (chart info's extent),
+// and its no-go at the depth as chart info counts it.
+TEST(CliRenderChart, ARastersWebMapHasItsShadingAndItsNoGo) {
+  if (!std::filesystem::exists("/usr/share/javascript/leaflet/leaflet.min.js")) GTEST_SKIP() << "no Leaflet";
+  ScratchDir dir;
+  const std::string raster = deepguide::test::source_file("charts/sample_chart.tif");
+  const std::string page = dir.file("raster.html");
+  const auto r = run_cli("render chart '" + raster + "' --depth 3 --html '" + page + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(page);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string open = "<script id=\"dg-data\" type=\"application/json\">";
+  const std::size_t from = text.find(open) + open.size();
+  const auto data = nlohmann::json::parse(text.substr(from, text.find("</script>", from) - from));
+  ASSERT_EQ(data.at("images").size(), 1u);
+  const auto& image = data.at("images")[0];
+  EXPECT_EQ(image.at("url").get<std::string>().rfind("data:image/png;base64,iVBORw0KGgo", 0), 0u);
+  const auto info = run_cli("chart info '" + raster + "' --depth 3 --json");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  auto j = nlohmann::json::parse(info.out);
+  if (j.is_array()) j = j.at(0);
+  const auto& e = j.at("extent");
+  // Warped into Web Mercator, the picture's box holds the raster's and is hardly larger (a cell or two).
+  for (const char* side : {"west", "south"}) EXPECT_LE(image.at(side).get<double>(), e.at(side).get<double>() + 1e-9);
+  for (const char* side : {"east", "north"}) EXPECT_GE(image.at(side).get<double>(), e.at(side).get<double>() - 1e-9);
+  for (const char* side : {"west", "east", "south", "north"}) {
+    EXPECT_NEAR(image.at(side).get<double>(), e.at(side).get<double>(), 1e-3) << side;
+  }
+  const auto no_go = std::find_if(data.at("layers").begin(), data.at("layers").end(),
+                                  [](const nlohmann::json& l) { return l.at("id") == "raster_no_go"; });
+  ASSERT_NE(no_go, data.at("layers").end());
+  EXPECT_EQ((*no_go).at("features").size(), j.at("no_go").at("polygons").get<std::size_t>());
 }
 
 TEST(CliPlan, ExitCodes) {

@@ -5,9 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/render/raster_web_image.hpp"
+#include "deepguide/render/reactive_map.hpp"  // ellipse_outline
+#include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
 #include "deepguide/world/prepared_chart.hpp"
 
@@ -18,17 +22,6 @@ namespace {
 using json = nlohmann::ordered_json;
 
 json metres(double v) { return std::round(v * 100.0) / 100.0; }
-
-// Depth bands' fills, shallow to deep, as a paper chart shades them.
-constexpr std::array<double, 6> kBandEdges{2.0, 5.0, 10.0, 20.0, 50.0, 100.0};
-constexpr std::array<const char*, 7> kBandFills{"#c7e4f5", "#a9d3ee", "#8cc2e6", "#6fb0dd",
-                                                "#5198cc", "#3b7fb8", "#2a6399"};
-
-const char* band_fill(double depth_m) {
-  std::size_t i = 0;
-  while (i < kBandEdges.size() && depth_m >= kBandEdges[i]) ++i;
-  return kBandFills[i];
-}
 
 // Point hazards by kind: rocks, wrecks, obstructions, piles and structures.
 const char* hazard_fill(const std::string& cls) {
@@ -103,7 +96,7 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   for (const EncChartArea& a : enc.depth_areas) {
     json props{{"record", a.id}, {"cell", a.cell}};
     if (std::isfinite(a.depth_m)) props["DRVAL1 (m)"] = metres(a.depth_m);
-    json style{{"fillColor", std::isfinite(a.depth_m) ? band_fill(a.depth_m) : "#d9d9d9"}};
+    json style{{"fillColor", std::isfinite(a.depth_m) ? depth_band_fill(a.depth_m) : "#d9d9d9"}};
     depths.features.push_back(web_map_feature(to.multipolygon(a.area), std::move(props), std::move(style)));
   }
 
@@ -162,15 +155,16 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
 void write_chart_web_map(const ChartRenderOptions& options, const std::string& path) {
   check_web_map_path(path, "--html");
   if (std::isnan(options.depth_m)) throw InputError("--html: expected --depth (the web map shows the no-go at it)");
+  std::vector<std::string> enc, others, rasters;
   for (const std::string& chart : options.charts) {
-    if (!reads_as_enc(chart)) {
-      throw InputError("--html: expected S-57 charts (cells, folders, exchange sets, prepared charts), got '" +
-                       printable(chart) + "'");
+    if (reads_as_enc(chart)) {
+      enc.push_back(chart);
+    } else {
+      others.push_back(chart);
+      if (chart_kind(chart) == ChartKind::raster) rasters.push_back(chart);
     }
   }
   const LocalFrame frame = charts_frame(options.charts, options.local_crs, options.source_crs);
-  const EncNoGo enc =
-      chart_no_go(options.charts, frame, enc_options(options.chart_options, options.depth_m, options.clearance_m));
   std::string title = options.title;
   if (title.empty()) {
     for (const std::string& chart : options.charts) {
@@ -178,7 +172,38 @@ void write_chart_web_map(const ChartRenderOptions& options, const std::string& p
     }
     title += " at " + general(options.depth_m) + " m";
   }
-  write_web_map(chart_web_map(enc, options.depth_m, title), path);
+  WebMap map;
+  if (!enc.empty()) {
+    map =
+        chart_web_map(chart_no_go(enc, frame, enc_options(options.chart_options, options.depth_m, options.clearance_m)),
+                      options.depth_m, title);
+  } else {
+    map.title = title;
+    map.subtitle = "no-go shallower than " + general(options.depth_m + options.clearance_m) + " m, frame " + frame.id();
+  }
+  // Rasters: their depth shading under the layers; rasters and hazard files: their no-go at the depth.
+  for (const std::string& raster : rasters) map.images.push_back(raster_depth_image(raster, options.source_crs));
+  if (!others.empty()) {
+    ChartObstacleOptions read;
+    read.depth_m = options.depth_m;
+    read.clearance_m = options.clearance_m;
+    read.source_crs = options.source_crs;
+    const ChartObstacles charted = chart_obstacles(others, frame, read);
+    const WebMapGeometry to{&frame};
+    WebMapLayer layer = make_layer(
+        "raster_no_go", "No-go at " + general(options.depth_m) + " m from rasters and hazard files (click for which)",
+        "#c92a2a", "#e03131", 0.6, 1.0);
+    layer.explained = true;
+    layer.hatched = true;
+    for (const PolygonObstacle& p : charted.obstacles.polygons) {
+      layer.features.push_back(web_map_feature(to.polygon(p.footprint), {{"no-go", p.id}}));
+    }
+    for (const EllipticCylinder& e : charted.obstacles.ellipses) {
+      layer.features.push_back(web_map_feature(to.outline(ellipse_outline(e.footprint, 72)), {{"hazard", e.id}}));
+    }
+    map.layers.push_back(std::move(layer));
+  }
+  write_web_map(map, path);
 }
 
 }  // namespace deepguide

@@ -32,9 +32,10 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
 
 /// `render chart --html`: the charts read as `render chart` reads them
 /// (their frame, depth, clearance and chart options; the title, when given)
-/// and the page written to `path`. Throws InputError naming `--html` for
-/// charts that are not S-57 (the map reads cells, folders, exchange sets and
-/// prepared charts) or a missing depth, before reading anything.
+/// and the page written to `path`: S-57 charts as above, a bathymetry
+/// raster's depth shading (render/raster_web_image.hpp), and the rasters' and
+/// hazard files' no-go at the depth. Throws InputError naming `--html` for a
+/// missing depth, before reading anything.
 void write_chart_web_map(const ChartRenderOptions& options, const std::string& path);
 
 }  // namespace deepguide

@@ -8,8 +8,11 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/plan_export.hpp"
 #include "deepguide/planning/zone_polygons.hpp"
+#include "deepguide/render/raster_web_image.hpp"
 #include "deepguide/render/reactive_map.hpp"  // ellipse_outline
 #include "deepguide/simulation/mission_run.hpp"
+#include "deepguide/world/chart_info.hpp"
+#include "deepguide/world/chart_obstacles.hpp"
 
 namespace deepguide {
 
@@ -71,6 +74,10 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
                   : as_written ? ", as written"
                                : "");
 
+  for (const std::string& chart : mission.charts) {  // a bathymetry raster's depth shading under the layers
+    if (!reads_as_enc(chart) && chart_kind(chart) == ChartKind::raster)
+      map.images.push_back(raster_depth_image(chart, ""));
+  }
   map.layers.push_back(obstacles_of(loaded.env.obstacles, to, "obstacles", "Obstacles and charted no-go", "#862e9c"));
   WebMapLayer zones =
       layer_of("zones", "Safety zones (margin " + general(mission.margin_m) + " m)", "#e8590c", "#e8590c", 0.04, 1.0);

@@ -276,6 +276,18 @@ std::string web_map_html(const WebMap& map) {
                               {"min_zoom", l.min_zoom},
                               {"features", compact_features(l.features)}});
   }
+  data["images"] = nlohmann::ordered_json::array();
+  for (const WebMapImage& i : map.images) {
+    data["images"].push_back({{"id", i.id},
+                              {"name", i.name},
+                              {"url", "data:image/png;base64," + i.png_base64},
+                              {"south", i.bounds.south},
+                              {"west", i.bounds.west},
+                              {"north", i.bounds.north},
+                              {"east", i.bounds.east},
+                              {"opacity", i.opacity},
+                              {"shown", i.shown}});
+  }
   data["table"] = {{"title", map.table.title}, {"columns", map.table.columns}, {"rows", map.table.rows}};
   // The view: the focus, else every feature; worked out here, so the page
   // need not walk its features before it draws them.

@@ -52,6 +52,17 @@ struct WebMapLayer {
   double min_zoom = 0.0;
 };
 
+/// A picture laid on the map between lon/lat bounds (a raster's depth
+/// shading, render/raster_web_image.hpp), as Web Mercator cells.
+struct WebMapImage {
+  std::string id;
+  std::string name;
+  std::string png_base64;
+  LonLatExtent bounds;
+  double opacity = 0.85;
+  bool shown = true;
+};
+
 struct WebMapTable {
   std::string title;
   std::vector<std::string> columns;
@@ -60,7 +71,8 @@ struct WebMapTable {
 
 struct WebMap {
   std::string title;
-  std::string subtitle;  ///< a second line: the frame, the depth, the graph
+  std::string subtitle;             ///< a second line: the frame, the depth, the graph
+  std::vector<WebMapImage> images;  ///< drawn under the layers
   std::vector<WebMapLayer> layers;
   WebMapTable table;
   LonLatExtent focus;  ///< what the page shows first (NaN: every layer's extent)

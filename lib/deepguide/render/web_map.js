@@ -40,6 +40,16 @@
   if (f) map.fitBounds([[f.south, f.west], [f.north, f.east]], {padding: [20, 20], animate: false});
   else map.setView([0, 0], 2);
 
+  // Pictures (a raster's depth shading) under the layers.
+  const overlaysOfImages = {};
+  for (const image of data.images || []) {
+    const overlay = L.imageOverlay(image.url, [[image.south, image.west], [image.north, image.east]],
+      {opacity: image.opacity, interactive: false});
+    overlaysOfImages[esc(image.name)] = overlay;
+    image.loaded = new Promise((resolve) => overlay.once("load", resolve));
+    if (image.shown) overlay.addTo(map);
+  }
+
   // A layer's features become Leaflet's when it is first shown (a hidden
   // layer costs nothing until then).
   const overlays = {};
@@ -94,7 +104,7 @@
     if (layer.shown) group.addTo(map);
     layer.group = group;
   }
-  L.control.layers(null, overlays, {collapsed: false}).addTo(map);
+  L.control.layers(null, Object.assign({}, overlaysOfImages, overlays), {collapsed: false}).addTo(map);
   L.control.scale({imperial: false, maxWidth: 160}).addTo(map);
 
   // Point in a GeoJSON (multi)polygon, even-odd over every ring (holes included).
@@ -128,8 +138,9 @@
     }
   });
 
-  // The table beside the map.
+  // The table beside the map (none: the map takes the page).
   const t = data.table;
+  if (!t || !t.columns.length) document.getElementById("dg-table").style.display = "none";
   if (t && t.columns.length) {
     document.getElementById("dg-table").innerHTML =
       "<h2>" + esc(t.title) + "</h2><table class=\"dg-rows\"><thead><tr>" +
@@ -171,9 +182,18 @@
     }
     const out = document.createElement("pre");
     out.id = "dg-test";
-    out.textContent = JSON.stringify({
-      layers: counts, table: t ? t.rows : [], zoom: map.getZoom(), ms: ready,
+    // Written once the pictures are decoded (shown ones load as the map draws them).
+    const shown = (data.images || []).filter((image) => image.shown);
+    Promise.all(shown.map((image) => image.loaded)).then(() => {
+      const images = {};
+      for (const image of data.images || []) {
+        const el = overlaysOfImages[esc(image.name)].getElement();
+        images[image.id] = el ? {width: el.naturalWidth, height: el.naturalHeight} : null;
+      }
+      out.textContent = JSON.stringify({
+        layers: counts, images: images, table: t ? t.rows : [], zoom: map.getZoom(), ms: ready,
+      });
+      document.body.appendChild(out);
     });
-    document.body.appendChild(out);
   }
 })();
