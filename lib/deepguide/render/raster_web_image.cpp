@@ -56,9 +56,21 @@ WebMapImage raster_depth_image(const std::string& path, const std::string& sourc
   const int w = aspect >= 1.0 ? max_px : std::max(1, static_cast<int>(max_px * aspect));
   const int h = aspect >= 1.0 ? std::max(1, static_cast<int>(max_px / aspect)) : max_px;
   const int out_w = std::min(w, std::max(info.width, 2)), out_h = std::min(h, std::max(info.height, 2));
-  std::vector<std::string> args{"-of", "MEM", "-t_srs", "EPSG:3857", "-s_srs", info.crs_wkt, "-r", "bilinear",
-                                "-ts", std::to_string(out_w), std::to_string(out_h), "-dstnodata", "nan",
-                                "-ot", "Float64"};
+  std::vector<std::string> args{"-of",
+                                "MEM",
+                                "-t_srs",
+                                "EPSG:3857",
+                                "-s_srs",
+                                info.crs_wkt,
+                                "-r",
+                                "bilinear",
+                                "-ts",
+                                std::to_string(out_w),
+                                std::to_string(out_h),
+                                "-dstnodata",
+                                "nan",
+                                "-ot",
+                                "Float64"};
   if (info.has_nodata) args.insert(args.end(), {"-srcnodata", std::to_string(info.nodata)});
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
@@ -68,7 +80,9 @@ WebMapImage raster_depth_image(const std::string& path, const std::string& sourc
   int failed = 0;
   const GDALDatasetUniquePtr warped(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &in, options, &failed)));
   GDALWarpAppOptionsFree(options);
-  if (!warped || failed) throw InputError(path + ": could not warp the raster into Web Mercator (" + gdal::QuietErrors::last_message() + ")");
+  if (!warped || failed)
+    throw InputError(path + ": could not warp the raster into Web Mercator (" + gdal::QuietErrors::last_message() +
+                     ")");
   const int W = warped->GetRasterXSize(), H = warped->GetRasterYSize();
   std::vector<double> z(static_cast<std::size_t>(W) * static_cast<std::size_t>(H));
   if (warped->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, W, H, z.data(), W, H, GDT_Float64, 0, 0) != CE_None) {
@@ -106,7 +120,8 @@ WebMapImage raster_depth_image(const std::string& path, const std::string& sourc
   warped->GetGeoTransform(gt.data());
   const auto mercator = gdal::srs_from_user_input("EPSG:3857");
   const auto lonlat = gdal::wgs84();
-  const std::unique_ptr<OGRCoordinateTransformation> to(OGRCreateCoordinateTransformation(mercator.get(), lonlat.get()));
+  const std::unique_ptr<OGRCoordinateTransformation> to(
+      OGRCreateCoordinateTransformation(mercator.get(), lonlat.get()));
   std::array<double, 2> xs{gt[0], gt[0] + gt[1] * W}, ys{gt[3] + gt[5] * H, gt[3]};
   if (!to || !to->Transform(2, xs.data(), ys.data())) throw InputError(path + ": could not place the depth image");
   image.bounds = {xs[0], xs[1], ys[0], ys[1]};
