@@ -11,11 +11,7 @@
 set -euo pipefail
 cli="$1"
 source_dir="$2"
-chromium="$(command -v chromium || command -v chromium-browser || true)"
-if [ -z "$chromium" ]; then
-  echo "SKIP: Chromium is absent (apt-get install chromium; scripts/setup.sh installs it)"
-  exit 77
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/browser.sh"
 set_dir="$source_dir/../shared/data/real/noaa-enc-kachemak"
 if [ ! -d "$set_dir" ]; then
   echo "SKIP: $set_dir is absent (the shared real data)"
@@ -32,11 +28,6 @@ rcid="${record##*/}"
 cell_file="$(find "$set_dir" -name "$cell.000" | head -n 1)"
 OGR_S57_OPTIONS="RETURN_PRIMITIVES=OFF,RETURN_LINKAGES=OFF,LNAM_REFS=ON" \
   ogrinfo -ro -q "$cell_file" DEPARE -where "RCID=$rcid" > "$out/ogrinfo.txt"
-browse() {
-  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --no-first-run \
-    --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
-    --window-size=1400,900 --virtual-time-budget=20000 "$@" 2> "$out/chromium.log"
-}
 browse --dump-dom "file://$out/page.html#test&click=$click" > "$out/dom.html"
 browse --screenshot="$out/zoom_far.png" "file://$out/page.html"
 browse --screenshot="$out/zoom_near.png" "file://$out/page.html#zoom=13&center=$click"

@@ -13,11 +13,7 @@
 set -euo pipefail
 cli="$1"
 source_dir="$2"
-chromium="$(command -v chromium || command -v chromium-browser || true)"
-if [ -z "$chromium" ]; then
-  echo "SKIP: Chromium is absent (apt-get install chromium; scripts/setup.sh installs it)"
-  exit 77
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/browser.sh"
 out="${3:-$(mktemp -d)}"
 [ -n "${3:-}" ] || trap 'rm -rf "$out"' EXIT
 mkdir -p "$out"
@@ -29,11 +25,6 @@ mission="$source_dir/data/missions/sample_mission.yaml"
 "$cli" mission simulate "$mission" --unknown "$source_dir/data/missions/sample_unknown.geojson" \
   --html "$out/simulated.html" --json > "$out/run.json"
 read -r record click < <(python3 "$source_dir/tests/browser/check_web_map.py" pick-obstacle "$out/page.html")
-browse() {
-  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --no-first-run \
-    --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
-    --window-size=1400,900 --virtual-time-budget=15000 "$@" 2> "$out/chromium.log"
-}
 browse --dump-dom "file://$out/page.html#test&click=$click" > "$out/dom.html"
 browse --dump-dom "file://$out/simulated.html#test" > "$out/simulated_dom.html"
 browse --dump-dom "file://$out/check.html#test" > "$out/check_dom.html"

@@ -11,11 +11,7 @@
 set -euo pipefail
 cli="$1"
 source_dir="$2"
-chromium="$(command -v chromium || command -v chromium-browser || true)"
-if [ -z "$chromium" ]; then
-  echo "SKIP: Chromium is absent (apt-get install chromium; scripts/setup.sh installs it)"
-  exit 77
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/browser.sh"
 cell="$source_dir/../shared/data/real/noaa-enc-US4MD81M/US4MD81M.000"
 if [ ! -f "$cell" ]; then
   echo "SKIP: $cell is absent (the shared real data)"
@@ -31,12 +27,6 @@ record="DEPARE/3844"
 OGR_S57_OPTIONS="RETURN_PRIMITIVES=OFF,RETURN_LINKAGES=OFF,LNAM_REFS=ON" \
   ogrinfo -ro -q "$cell" DEPARE -where "RCID=${record#*/}" > "$out/ogrinfo.txt"
 click="$(python3 "$source_dir/tests/browser/check_web_map.py" click "$out/page.html" "$record")"
-# No network: every host resolves to nothing and the proxy is a closed port.
-browse() {
-  "$chromium" --headless=new --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --no-first-run \
-    --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server="127.0.0.1:9" \
-    --window-size=1400,900 --virtual-time-budget=15000 "$@" 2> "$out/chromium.log"
-}
 browse --dump-dom "file://$out/page.html#test&click=$click" > "$out/dom.html"
 browse --screenshot="$out/zoom_far.png" "file://$out/page.html#zoom=9"
 browse --screenshot="$out/zoom_near.png" "file://$out/page.html#zoom=14&center=$click"

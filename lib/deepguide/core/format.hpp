@@ -14,6 +14,8 @@ namespace DEEPGUIDE_API deepguide {
 std::string fixed(double v, int digits);
 /// `v` in printf's %g form (`significant` digits, no trailing zeros).
 std::string general(double v, int significant = 6);
+/// `text` for HTML text or a quoted attribute: & < > " as entities.
+std::string html_text(const std::string& text);
 /// "(x, y)" with `digits` decimals, e.g. "(120.0, 45.5)".
 std::string point_text(double x, double y, int digits = 1);
 inline std::string point_text(const Eigen::Vector2d& p, int digits = 1) { return point_text(p.x(), p.y(), digits); }

@@ -24,20 +24,6 @@ Rgba colour(const std::string& method, std::size_t i) {
   return rgb_hex(others[i % 5]);
 }
 
-std::string html(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 struct Figure {
   const char* file;
   const char* title;
@@ -107,13 +93,13 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
   const EvaluationSummary s = summarize(run);
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>deepguide evaluation: "
-    << html(run.manifest.suite) << "</title>\n<style>\n"
+    << html_text(run.manifest.suite) << "</title>\n<style>\n"
     << "body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#212529;padding:0 1em}\n"
     << "table{border-collapse:collapse;font-size:0.9em}td,th{border:1px solid #ced4da;padding:0.3em 0.5em;"
        "text-align:right}td:first-child,th:first-child{text-align:left}\n"
     << ".holds{color:#2b8a3e}.fails{color:#c92a2a}img{max-width:100%;border:1px solid #e3e7ec;margin:0.5em 0}\n"
     << "</style>\n</head>\n<body>\n";
-  o << "<h1>Evaluation of suite " << html(run.manifest.suite) << "</h1>\n";
+  o << "<h1>Evaluation of suite " << html_text(run.manifest.suite) << "</h1>\n";
   o << "<p>" << run.rows.size() << " runs of " << run.manifest.methods.size() << " methods"
     << (run.manifest.skipped.empty() ? "" : ", " + std::to_string(run.manifest.skipped.size()) + " skipped")
     << ". Each cell: median / 95th percentile. Path, energy, time, clearance and turning rates are the vehicle's, "
@@ -122,17 +108,18 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
   o << "<h2>The seed's claims</h2>\n<ul>\n";
   for (const ClaimCheck& c : s.claims) {
     const char* cls = c.verdict == "holds" ? "holds" : c.verdict == "does not hold" ? "fails" : "";
-    o << "<li><b>" << html(c.claim) << "</b>: <span class=\"" << cls << "\">" << html(c.verdict) << "</span><ul>\n";
-    for (const std::string& e : c.evidence) o << "<li>" << html(e) << "</li>\n";
+    o << "<li><b>" << html_text(c.claim) << "</b>: <span class=\"" << cls << "\">" << html_text(c.verdict)
+      << "</span><ul>\n";
+    for (const std::string& e : c.evidence) o << "<li>" << html_text(e) << "</li>\n";
     o << "</ul></li>\n";
   }
   o << "</ul>\n<h2>Methods</h2>\n<table>\n<tr>";
   const std::vector<MethodColumn> columns = method_columns(run.manifest);
-  for (const MethodColumn& c : columns) o << "<th>" << html(c.header) << "</th>";
+  for (const MethodColumn& c : columns) o << "<th>" << html_text(c.header) << "</th>";
   o << "</tr>\n";
   for (const MethodStats& m : s.methods) {
     o << "<tr>";
-    for (const MethodColumn& c : columns) o << "<td>" << html(c.cell(m)) << "</td>";
+    for (const MethodColumn& c : columns) o << "<td>" << html_text(c.cell(m)) << "</td>";
     o << "</tr>\n";
   }
   o << "</table>\n<h2>Figures</h2>\n";
@@ -141,15 +128,16 @@ std::vector<std::string> write_report(const std::string& dir, const EvaluationRu
     o << "<h2>Scenarios as maps</h2>\n<p>Where the methods came closest to an obstacle, and where they collided: "
          "each method's track over the obstacles, to zoom and click (one page each, offline).</p>\n<ul>\n";
     for (const EvaluationMap& m : maps) {
-      o << "<li><a href=\"" << html(m.file) << "\">" << html(m.scenario) << "</a>: " << html(m.why) << "</li>\n";
+      o << "<li><a href=\"" << html_text(m.file) << "\">" << html_text(m.scenario) << "</a>: " << html_text(m.why)
+        << "</li>\n";
     }
     o << "</ul>\n";
   }
   if (!run.manifest.skipped.empty()) {
     o << "<h2>Skipped</h2>\n<ul>\n";
     for (const SkippedRun& k : run.manifest.skipped) {
-      o << "<li>" << html(k.scenario) << (k.method.empty() ? "" : " with " + html(k.method)) << ": " << html(k.error)
-        << "</li>\n";
+      o << "<li>" << html_text(k.scenario) << (k.method.empty() ? "" : " with " + html_text(k.method)) << ": "
+        << html_text(k.error) << "</li>\n";
     }
     o << "</ul>\n";
   }

@@ -9,6 +9,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/render/obstacle_web_layers.hpp"
 #include "deepguide/render/raster_web_image.hpp"
 #include "deepguide/render/reactive_map.hpp"  // ellipse_outline
 #include "deepguide/world/chart_info.hpp"
@@ -31,18 +32,6 @@ const char* hazard_fill(const std::string& cls) {
   return "#495057";
 }
 
-WebMapLayer make_layer(const char* id, std::string name, const char* stroke, const char* fill, double opacity,
-                       double weight) {
-  WebMapLayer l;
-  l.id = id;
-  l.name = std::move(name);
-  l.stroke = stroke;
-  l.fill = fill;
-  l.fill_opacity = opacity;
-  l.weight = weight;
-  return l;
-}
-
 json feature_properties(const EncNoGoFeature& f) {
   json props{{"record", f.id}, {"cell", f.cell}, {"class", f.cls}, {"why", f.reason}};
   if (std::isfinite(f.charted_depth_m)) props["charted depth (m)"] = metres(f.charted_depth_m);
@@ -55,8 +44,9 @@ json feature_properties(const EncNoGoFeature& f) {
 
 WebMapLayer enc_no_go_layer(const EncNoGo& enc, double operating_depth_m) {
   const WebMapGeometry to{&enc.frame};
-  WebMapLayer layer = make_layer("no_go", "No-go at " + general(operating_depth_m) + " m, by feature (click for why)",
-                                 "#c92a2a", "#e03131", 0.18, 1.0);
+  WebMapLayer layer =
+      web_map_layer("no_go", "No-go at " + general(operating_depth_m) + " m, by feature (click for why)", "#c92a2a",
+                    "#e03131", 0.18, 1.0);
   layer.explained = true;
   layer.hatched = true;  // as ECDIS and paper charts mark what a vessel must keep out of
   layer.fill_opacity = 0.6;
@@ -77,7 +67,7 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   map.subtitle = std::to_string(enc.cells.size()) + " cell(s), no-go shallower than " + general(enc.required_depth_m) +
                  " m (depth " + general(operating_depth_m) + " m and its clearance), frame " + enc.frame.id();
 
-  WebMapLayer cells = make_layer("cells", "Cells (where each decides)", "#343a40", "#343a40", 0.0, 1.5);
+  WebMapLayer cells = web_map_layer("cells", "Cells (where each decides)", "#343a40", "#343a40", 0.0, 1.5);
   cells.dash = "8 4";
   for (const EncChartArea& a : enc.cell_areas) {
     json props{{"cell", a.cell}};
@@ -92,7 +82,7 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
     cells.features.push_back(web_map_feature(to.multipolygon(a.area), std::move(props)));
   }
 
-  WebMapLayer depths = make_layer("depth_areas", "Depth areas (shaded by DRVAL1)", "#74a9cf", "#8cc2e6", 0.9, 0.5);
+  WebMapLayer depths = web_map_layer("depth_areas", "Depth areas (shaded by DRVAL1)", "#74a9cf", "#8cc2e6", 0.9, 0.5);
   for (const EncChartArea& a : enc.depth_areas) {
     json props{{"record", a.id}, {"cell", a.cell}};
     if (std::isfinite(a.depth_m)) props["DRVAL1 (m)"] = metres(a.depth_m);
@@ -100,12 +90,12 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
     depths.features.push_back(web_map_feature(to.multipolygon(a.area), std::move(props), std::move(style)));
   }
 
-  WebMapLayer land = make_layer("land", "Land", "#a68a5b", "#f1e3c6", 1.0, 0.8);
+  WebMapLayer land = web_map_layer("land", "Land", "#a68a5b", "#f1e3c6", 1.0, 0.8);
   WebMapLayer hazards =
-      make_layer("hazards", "Hazards (rocks, wrecks, obstructions, piles)", "#212529", "#495057", 0.9, 1.0);
+      web_map_layer("hazards", "Hazards (rocks, wrecks, obstructions, piles)", "#212529", "#495057", 0.9, 1.0);
   hazards.point_radius_px = 4.0;
   WebMapLayer soundings =
-      make_layer("soundings", "Soundings that are no-go (from zoom 12 in)", "#1864ab", "#1864ab", 0.9, 0.5);
+      web_map_layer("soundings", "Soundings that are no-go (from zoom 12 in)", "#1864ab", "#1864ab", 0.9, 0.5);
   soundings.point_radius_px = 2.0;
   soundings.min_zoom = 12.0;  // a sounding every few pixels: from about 1:150,000 in
   for (const EncNoGoFeature& f : enc.features) {
@@ -121,7 +111,7 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
   }
 
   WebMapLayer zones =
-      make_layer("zones_of_confidence", "Zones of confidence (CATZOC)", "#2b8a3e", "#2b8a3e", 0.05, 1.0);
+      web_map_layer("zones_of_confidence", "Zones of confidence (CATZOC)", "#2b8a3e", "#2b8a3e", 0.05, 1.0);
   zones.dash = "3 3";
   zones.shown = false;
   static constexpr std::array<const char*, 7> kLetters{"none", "A1", "A2", "B", "C", "D", "U"};
@@ -155,6 +145,12 @@ WebMap chart_web_map(const EncNoGo& enc, double operating_depth_m, const std::st
 void write_chart_web_map(const ChartRenderOptions& options, const std::string& path) {
   check_web_map_path(path, "--html");
   if (std::isnan(options.depth_m)) throw InputError("--html: expected --depth (the web map shows the no-go at it)");
+  if (!std::isfinite(options.depth_m) || options.depth_m < 0.0) {
+    throw InputError("--depth: expected an operating depth >= 0 m, got " + general(options.depth_m));
+  }
+  if (!std::isfinite(options.clearance_m) || options.clearance_m < 0.0) {
+    throw InputError("--vertical-clearance: expected a clearance >= 0 m, got " + general(options.clearance_m));
+  }
   std::vector<std::string> enc, others, rasters;
   for (const std::string& chart : options.charts) {
     if (reads_as_enc(chart)) {
@@ -190,7 +186,7 @@ void write_chart_web_map(const ChartRenderOptions& options, const std::string& p
     read.source_crs = options.source_crs;
     const ChartObstacles charted = chart_obstacles(others, frame, read);
     const WebMapGeometry to{&frame};
-    WebMapLayer layer = make_layer(
+    WebMapLayer layer = web_map_layer(
         "raster_no_go", "No-go at " + general(options.depth_m) + " m from rasters and hazard files (click for which)",
         "#c92a2a", "#e03131", 0.6, 1.0);
     layer.explained = true;

@@ -7,9 +7,8 @@
 
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/plan_export.hpp"
-#include "deepguide/planning/zone_polygons.hpp"
+#include "deepguide/render/obstacle_web_layers.hpp"
 #include "deepguide/render/raster_web_image.hpp"
-#include "deepguide/render/reactive_map.hpp"  // ellipse_outline
 #include "deepguide/simulation/mission_run.hpp"
 #include "deepguide/world/chart_info.hpp"
 #include "deepguide/world/chart_obstacles.hpp"
@@ -26,37 +25,6 @@ const char* role_colour(const std::string& role) {
   if (role == "evasion") return "#f76707";
   if (role == "identification") return "#ae3ec9";
   return "#f08c00";
-}
-
-WebMapLayer layer_of(const char* id, std::string name, const char* stroke, const char* fill, double opacity,
-                     double weight) {
-  WebMapLayer l;
-  l.id = id;
-  l.name = std::move(name);
-  l.stroke = stroke;
-  l.fill = fill;
-  l.fill_opacity = opacity;
-  l.weight = weight;
-  return l;
-}
-
-WebMapLayer obstacles_of(const ObstacleSet& obstacles, const WebMapGeometry& to, const char* id, std::string name,
-                         const char* colour) {
-  WebMapLayer layer = layer_of(id, std::move(name), colour, colour, 0.3, 1.0);
-  layer.explained = true;
-  for (const EllipticCylinder& e : obstacles.ellipses) {
-    json props{{"obstacle", e.id},
-               {"shape", "ellipse"},
-               {"semi-axes (m)", fixed(e.footprint.a, 2) + " x " + fixed(e.footprint.b, 2)}};
-    if (e.top_depth_m) props["top depth (m)"] = rounded(*e.top_depth_m, 0.01);
-    layer.features.push_back(web_map_feature(to.outline(ellipse_outline(e.footprint, 72)), std::move(props)));
-  }
-  for (const PolygonObstacle& p : obstacles.polygons) {
-    json props{{"obstacle", p.id}, {"shape", "polygon"}};
-    if (p.top_depth_m) props["top depth (m)"] = rounded(*p.top_depth_m, 0.01);
-    layer.features.push_back(web_map_feature(to.polygon(p.footprint), std::move(props)));
-  }
-  return layer;
 }
 
 }  // namespace
@@ -78,17 +46,10 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
     if (!reads_as_enc(chart) && chart_kind(chart) == ChartKind::raster)
       map.images.push_back(raster_depth_image(chart, ""));
   }
-  map.layers.push_back(obstacles_of(loaded.env.obstacles, to, "obstacles", "Obstacles and charted no-go", "#862e9c"));
-  WebMapLayer zones =
-      layer_of("zones", "Safety zones (margin " + general(mission.margin_m) + " m)", "#e8590c", "#e8590c", 0.04, 1.0);
-  zones.dash = "5 4";
-  const BgMultiPolygon merged = merged_zone_polygons(loaded.env.obstacles, {mission.margin_m, 0.05});
-  for (std::size_t i = 0; i < merged.size(); ++i) {
-    zones.features.push_back(web_map_feature(to.polygon(merged[i]), {{"safety zone", i + 1}}));
-  }
-  map.layers.push_back(std::move(zones));
+  map.layers.push_back(obstacle_web_layer(loaded.env.obstacles, to, "Obstacles and charted no-go"));
+  map.layers.push_back(zone_web_layer(loaded.env.obstacles, to, mission.margin_m, 0.05));
 
-  WebMapLayer written = layer_of("written", "The plan as written", "#868e96", "#868e96", 0.0, 2.0);
+  WebMapLayer written = web_map_layer("written", "The plan as written", "#868e96", "#868e96", 0.0, 2.0);
   written.dash = "6 5";
   written.shown = false;
   {
@@ -100,9 +61,9 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
 
   const std::vector<ExportWaypoint> waypoints = export_waypoints(mission, plan);
   WebMapLayer legs =
-      layer_of("legs", "The plan's legs (mission, evasion, identification)", "#f08c00", "#f08c00", 0.0, 4.0);
+      web_map_layer("legs", "The plan's legs (mission, evasion, identification)", "#f08c00", "#f08c00", 0.0, 4.0);
   WebMapLayer points =
-      layer_of("waypoints", "Waypoints (as mission export writes them)", "#212529", "#ffd43b", 1.0, 1.5);
+      web_map_layer("waypoints", "Waypoints (as mission export writes them)", "#212529", "#ffd43b", 1.0, 1.5);
   points.point_radius_px = 4.0;
   map.table.title = "Waypoints";
   map.table.columns = {"name", "lon", "lat", "depth (m)", "speed (m/s)", "hold (s)", "time (s)", "role", "manoeuvre"};
@@ -139,7 +100,7 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
     map.layers.push_back(frame_grid_layer(mission.frame, lo - pad, hi + pad));
   }
 
-  WebMapLayer conflicts = layer_of("conflicts", "Where conflicts began", "#c92a2a", "#ff6b6b", 1.0, 2.0);
+  WebMapLayer conflicts = web_map_layer("conflicts", "Where conflicts began", "#c92a2a", "#ff6b6b", 1.0, 2.0);
   conflicts.point_radius_px = 6.0;
   for (const Resolution& r : planned.resolutions) {
     json props{{"with", r.conflict.with},
@@ -154,7 +115,7 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
   map.layers.push_back(std::move(conflicts));
 
   if (run) {
-    WebMapLayer track = layer_of("track", "Track sailed (reactive level in cyan)", "#2f9e44", "#2f9e44", 0.0, 2.5);
+    WebMapLayer track = web_map_layer("track", "Track sailed (reactive level in cyan)", "#2f9e44", "#2f9e44", 0.0, 2.5);
     for (std::size_t k = 1; k < run->track.size();) {
       // One line per stretch under one level of control.
       const bool reactive = run->track[k].reactive;
@@ -168,7 +129,9 @@ WebMap mission_web_map(const LoadedMission& loaded, const PlannedMission& planne
           web_map_feature(to.line(stretch), std::move(props), reactive ? json{{"color", "#15aabf"}} : json(nullptr)));
     }
     map.layers.push_back(std::move(track));
-    map.layers.push_back(obstacles_of(run->detected, to, "detected", "Objects the sonar found", "#1971c2"));
+    WebMapLayer detected = obstacle_web_layer(run->detected, to, "Objects the sonar found", "#1971c2");
+    detected.id = "detected";
+    map.layers.push_back(std::move(detected));
   }
   return map;
 }

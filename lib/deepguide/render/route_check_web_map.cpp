@@ -9,9 +9,8 @@
 
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/route_check.hpp"
-#include "deepguide/planning/zone_polygons.hpp"
 #include "deepguide/render/chart_web_map.hpp"
-#include "deepguide/render/reactive_map.hpp"  // ellipse_outline
+#include "deepguide/render/obstacle_web_layers.hpp"
 #include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
@@ -22,35 +21,6 @@ namespace {
 using json = nlohmann::ordered_json;
 
 json rounded(double v, double unit) { return std::round(v / unit) * unit; }
-
-WebMapLayer obstacle_layers(const ObstacleSet& obstacles, const WebMapGeometry& to, WebMapLayer& zones,
-                            double margin_m) {
-  WebMapLayer layer;
-  layer.id = "obstacles";
-  layer.name = "Obstacles";
-  layer.stroke = layer.fill = "#862e9c";
-  layer.fill_opacity = 0.3;
-  layer.weight = 1.0;
-  layer.explained = true;
-  for (const EllipticCylinder& e : obstacles.ellipses) {
-    layer.features.push_back(
-        web_map_feature(to.outline(ellipse_outline(e.footprint, 72)), {{"obstacle", e.id}, {"shape", "ellipse"}}));
-  }
-  for (const PolygonObstacle& p : obstacles.polygons) {
-    layer.features.push_back(web_map_feature(to.polygon(p.footprint), {{"obstacle", p.id}, {"shape", "polygon"}}));
-  }
-  zones.id = "zones";
-  zones.name = "Safety zones (margin " + general(margin_m) + " m)";
-  zones.stroke = zones.fill = "#e8590c";
-  zones.fill_opacity = 0.04;
-  zones.weight = 1.0;
-  zones.dash = "5 4";
-  const BgMultiPolygon merged = merged_zone_polygons(obstacles, {margin_m, 0.05});
-  for (std::size_t i = 0; i < merged.size(); ++i) {
-    zones.features.push_back(web_map_feature(to.polygon(merged[i]), {{"safety zone", i + 1}}));
-  }
-  return layer;
-}
 
 }  // namespace
 
@@ -63,9 +33,8 @@ WebMap route_check_web_map(const RouteFileCheckReport& report, const RouteFileCh
   if (report.enc) map.layers.push_back(enc_no_go_layer(*report.enc, options.operating_depth_m));
   std::optional<ObstacleField> field;
   if (report.obstacles_frame) {
-    WebMapLayer zones;
-    map.layers.push_back(obstacle_layers(report.obstacles, to, zones, options.margin_m));
-    map.layers.push_back(std::move(zones));
+    map.layers.push_back(obstacle_web_layer(report.obstacles, to, "Obstacles"));
+    map.layers.push_back(zone_web_layer(report.obstacles, to, options.margin_m, 0.05));
     field.emplace(report.obstacles, options.margin_m);
   }
 

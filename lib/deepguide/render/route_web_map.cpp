@@ -7,9 +7,8 @@
 
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/route_check.hpp"
-#include "deepguide/planning/zone_polygons.hpp"
 #include "deepguide/render/chart_web_map.hpp"
-#include "deepguide/render/reactive_map.hpp"  // ellipse_outline
+#include "deepguide/render/obstacle_web_layers.hpp"
 
 namespace deepguide {
 
@@ -21,51 +20,6 @@ using ToLonLat = WebMapGeometry;
 
 // A number to the metre's hundredth (or what a value needs), for a popup.
 json metres(double v) { return std::round(v * 100.0) / 100.0; }
-
-WebMapLayer obstacles_layer(const ObstacleSet& obstacles, const ToLonLat& to, bool charted) {
-  WebMapLayer layer;
-  layer.id = "obstacles";
-  layer.name = charted ? "No-go as planned (unioned) and obstacles" : "Obstacles";
-  layer.stroke = "#862e9c";
-  layer.fill = "#862e9c";
-  layer.fill_opacity = 0.25;
-  layer.weight = 1.0;
-  const auto top = [](json& props, const std::optional<double>& top_depth_m) {
-    if (top_depth_m) props["top depth (m)"] = metres(*top_depth_m);
-  };
-  for (const EllipticCylinder& e : obstacles.ellipses) {
-    json props{{"obstacle", e.id}, {"shape", "ellipse"}};
-    props["semi-axes (m)"] = fixed(e.footprint.a, 2) + " x " + fixed(e.footprint.b, 2);
-    top(props, e.top_depth_m);
-    json geometry = to.outline(ellipse_outline(e.footprint, 72));
-    layer.features.push_back(web_map_feature(std::move(geometry), std::move(props)));
-  }
-  for (const PolygonObstacle& p : obstacles.polygons) {
-    json props{{"obstacle", p.id}, {"shape", "polygon"}};
-    top(props, p.top_depth_m);
-    json geometry = to.polygon(p.footprint);
-    layer.features.push_back(web_map_feature(std::move(geometry), std::move(props)));
-  }
-  return layer;
-}
-
-WebMapLayer zones_layer(const RoutePlanReport& report, const ToLonLat& to) {
-  WebMapLayer layer;
-  layer.id = "zones";
-  layer.name = "Safety zones (margin " + general(report.request.margin_m) + " m)";
-  layer.stroke = "#e8590c";
-  layer.fill = "#e8590c";
-  layer.fill_opacity = 0.04;
-  layer.weight = 1.0;
-  layer.dash = "5 4";
-  const BgMultiPolygon zones =
-      merged_zone_polygons(report.obstacles, {report.request.margin_m, report.request.tolerance_m});
-  for (std::size_t i = 0; i < zones.size(); ++i) {
-    json geometry = to.polygon(zones[i]);
-    layer.features.push_back(web_map_feature(std::move(geometry), {{"safety zone", i + 1}}));
-  }
-  return layer;
-}
 
 }  // namespace
 
@@ -81,8 +35,9 @@ WebMap route_web_map(const RoutePlanReport& report) {
                  (std::isnan(r.depth_m) ? std::string() : ", depth " + general(r.depth_m) + " m") + ", frame " +
                  frame.id();
   if (report.enc) map.layers.push_back(enc_no_go_layer(*report.enc, r.depth_m));
-  map.layers.push_back(obstacles_layer(report.obstacles, to, report.enc != nullptr));
-  map.layers.push_back(zones_layer(report, to));
+  map.layers.push_back(
+      obstacle_web_layer(report.obstacles, to, report.enc ? "No-go as planned (unioned) and obstacles" : "Obstacles"));
+  map.layers.push_back(zone_web_layer(report.obstacles, to, r.margin_m, r.tolerance_m));
 
   WebMapLayer legs;
   legs.id = "route";

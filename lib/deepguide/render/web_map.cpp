@@ -48,20 +48,6 @@ std::string script_safe(std::string json) {
   return json;
 }
 
-std::string html_text(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 // `e` grown by every position in GeoJSON coordinates (nested arrays).
 void extend(LonLatExtent& e, const nlohmann::ordered_json& c) {
   if (!c.is_array() || c.empty()) return;
