@@ -136,6 +136,7 @@ const std::map<std::string_view, std::string_view, std::less<>> kFlagOfParameter
     {"margin_m", "--margin"},
     {"max_dive_deg", "--max-dive"},
     {"merge_distance_m", "--merge-distance"},
+    {"method", "--method"},
     {"methods", "--methods"},
     {"min_cell_m", "--min-cell"},
     {"mode", "--mode"},

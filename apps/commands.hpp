@@ -11,7 +11,7 @@ namespace deepguide {
 struct ChartOptions;
 class LocalFrame;
 struct Route;
-enum class ReactiveMethod;
+struct ReactiveMethod;
 }  // namespace deepguide
 
 namespace deepguide::app {

@@ -19,6 +19,7 @@
 #include "deepguide/evaluation/evaluate.hpp"
 #include "deepguide/evaluation/suite.hpp"
 #include "deepguide/planning/graph_registry.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 
 namespace deepguide::app {
 namespace {
@@ -80,7 +81,7 @@ void register_evaluate(CLI::App& app) {
       "evaluate", "Run every scenario of a suite through planners and reactive methods; tables, summary and report");
   cmd->add_option("SUITE", o->suite, "Suite folder, its suite.yaml, or one scenario file (docs/EVALUATION.md)");
   cmd->add_option("--methods", o->methods,
-                  "Comma-separated methods: geometric, dipole, potential, or GRAPH[:SEARCH][:COST] (" +
+                  "Comma-separated methods: " + reactive_method_names_text() + ", or GRAPH[:SEARCH][:COST] (" +
                       graph_names_text([](const GraphEntry& e) { return !e.can.in_depth; }) +
                       "; astar, dijkstra; length, time, energy)");
   cmd->add_option("-o,--output", o->output, "Output folder (rows.csv, results.json, summary.md, report.html)");

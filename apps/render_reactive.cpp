@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/render/field_figure.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 #include "deepguide/render/trajectory_figure.hpp"
@@ -22,7 +23,11 @@ namespace {
 struct ReactiveFigureOptions {
   std::string scenario, output, title;
   std::string method;
-  std::vector<std::string> methods{"dipole", "geometric", "potential"};
+  std::vector<std::string> methods = [] {
+    std::vector<std::string> names;
+    for (const ReactiveMethodEntry& e : reactive_method_entries()) names.push_back(e.name);
+    return names;
+  }();
   int width = 1200;
 };
 
@@ -53,7 +58,7 @@ void register_render_reactive(CLI::App& render) {
     auto o = std::make_shared<ReactiveFigureOptions>();
     CLI::App* cmd = add_figure_command(
         render, "field", "Draw a reactive method's gradient lines around a scenario's obstacles (PNG or SVG)", o);
-    cmd->add_option("--method", o->method, "Reactive method: dipole, geometric or potential")->required();
+    cmd->add_option("--method", o->method, "Reactive method: " + reactive_method_names_text())->required();
     cmd->callback([o] {
       image_format_for(o->output);  // fail fast, before reading anything
       const ReactiveMethod method = reactive_method_option("--method", o->method);

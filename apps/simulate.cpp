@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/output_paths.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"
 #include "deepguide/simulation/trajectory_io.hpp"
@@ -30,7 +31,7 @@ void register_simulate(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Simulate the reactive level: vehicle, autopilot, sonar and one reactive method in a scenario");
   cmd->add_option("SCENARIO", o->scenario, "Scenario file (YAML, see data/scenarios/one_obstacle.yaml)")->required();
-  cmd->add_option("--method", o->method, "Reactive method: dipole, geometric or potential")->required();
+  cmd->add_option("--method", o->method, "Reactive method: " + reactive_method_names_text())->required();
   cmd->add_option("-o,--output", o->output, "Trajectory file to write (CSV)");
   cmd->add_option("--seed", o->seed, "Sonar seed (overrides the scenario's seed)");
   cmd->add_flag("--json", o->json, "Print the statistics as JSON");

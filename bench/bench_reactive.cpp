@@ -142,7 +142,7 @@ void print_throughput() {
   std::printf(
       "| method | simulated s | samples | wall ms (best of 3) | x real time | >= 1e4 | reached/ended | collided |\n");
   std::printf("|---|---:|---:|---:|---:|---|---|---|\n");
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     double best = 1e300;
     SimulationResult keep;
     for (int rep = 0; rep < 3; ++rep) {

@@ -15,6 +15,7 @@
 
 #include "bindings.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/field_figure.hpp"
 #include "deepguide/render/identification_figure.hpp"

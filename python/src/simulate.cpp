@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/render/trajectory_figure.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"

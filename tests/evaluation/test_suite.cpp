@@ -9,6 +9,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/evaluation/suite.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/simulation/scenario_writer.hpp"
 
 using namespace deepguide;
@@ -39,7 +40,9 @@ void expect_same(const Scenario& a, const Scenario& b) {
   EXPECT_EQ(a.sonar.size_sigma_per_m, b.sonar.size_sigma_per_m);
   EXPECT_EQ(a.reactive.margin_m, b.reactive.margin_m);
   EXPECT_EQ(a.reactive.speed_mps, b.reactive.speed_mps);
-  EXPECT_EQ(a.reactive.geometric_passage_m, b.reactive.geometric_passage_m);
+  for (const ReactiveTuning& t : reactive_tunings()) {
+    EXPECT_EQ(tuning_value(a.reactive, t.key), tuning_value(b.reactive, t.key)) << t.key;
+  }
   EXPECT_EQ(a.energy, b.energy);
   EXPECT_EQ(a.stall_time_s, b.stall_time_s);
   EXPECT_EQ(a.no_progress_s, b.no_progress_s);

@@ -18,7 +18,7 @@
 
 #include <boost/geometry.hpp>
 
-#include "commands.hpp"
+#include "cli/in_process_cli.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/planner.hpp"
@@ -95,25 +95,6 @@ const bool kRegistered = [] {
   return true;
 }();
 
-struct CliRun {
-  int code = 0;
-  std::string out, err;
-};
-
-// The deepguide command line, in this process (where the toy graph is registered).
-CliRun deepguide_cli(std::vector<std::string> args) {
-  args.insert(args.begin(), "deepguide");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  CliRun r;
-  r.code = app::run(static_cast<int>(argv.size()), argv.data());
-  r.out = testing::internal::GetCapturedStdout();
-  r.err = testing::internal::GetCapturedStderr();
-  return r;
-}
-
 }  // namespace
 
 TEST(ToyGraph, PlansRoundADiscOverItsBoxCorners) {
@@ -161,30 +142,30 @@ TEST(ToyGraph, PlanDashDashGraphToy) {
                                       "--to", "10.2640,54.4560", "--json"};
   std::vector<std::string> toy = base, exact = base;
   toy.insert(toy.end(), {"--graph", "toy"});
-  const CliRun r = deepguide_cli(toy);
+  const test::CliRun r = test::deepguide_cli(toy);
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("graph"), "toy");
   EXPECT_GE(j.at("min_clearance_m").get<double>(), 5.0 - 1e-6);
   exact.insert(exact.end(), {"--graph", "visibility"});
-  const CliRun v = deepguide_cli(exact);
+  const test::CliRun v = test::deepguide_cli(exact);
   ASSERT_EQ(v.code, 0) << v.err;
   // The reduced visibility graph's route is the optimum (to its polygons' tolerance): the toy's is no shorter.
   EXPECT_GE(j.at("length_m").get<double>(), nlohmann::json::parse(v.out).at("length_m").get<double>() - 0.5);
   // What the entry says it cannot do, said as plan's other refusals are.
   toy.insert(toy.end(), {"--cost", "time", "--current-const", "0.3,90"});
-  const CliRun timed = deepguide_cli(toy);
+  const test::CliRun timed = test::deepguide_cli(toy);
   EXPECT_EQ(timed.code, 1);
   EXPECT_NE(timed.err.find("the toy graph prices by length only"), std::string::npos) << timed.err;
-  const CliRun help = deepguide_cli({"plan", "--help"});
+  const test::CliRun help = test::deepguide_cli({"plan", "--help"});
   EXPECT_NE(help.out.find("toy (obstacles' box corners"), std::string::npos) << help.out;
 }
 
 TEST(ToyGraph, EvaluateDashDashMethodsToy) {
   test::ScratchDir dir;
   const std::string suite = dir.file("suite"), out = dir.file("out");
-  ASSERT_EQ(deepguide_cli({"suite", "generate", suite, "--scenarios", "4", "--seed", "11"}).code, 0);
-  const CliRun r = deepguide_cli(
+  ASSERT_EQ(test::deepguide_cli({"suite", "generate", suite, "--scenarios", "4", "--seed", "11"}).code, 0);
+  const test::CliRun r = test::deepguide_cli(
       {"evaluate", suite, "--methods", "toy,visibility", "--threads", "1", "--no-report", "-q", "-o", out});
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream in(out + "/rows.csv");

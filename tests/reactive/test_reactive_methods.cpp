@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <any>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -15,7 +16,10 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/reactive/dipole_field.hpp"
+#include "deepguide/reactive/geometric_construction.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
+#include "deepguide/reactive/side_latch.hpp"
 
 namespace deepguide {
 namespace {
@@ -29,7 +33,16 @@ double cross2(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x
 /// Distance from point c to the line through p with direction angle `course`, signed: > 0 if c lies left.
 double line_offset(const Vec2& p, double course, const Vec2& c) { return cross2(unit_vector(course), c - p); }
 
-ReactiveCommand command(ReactiveMethod m, const ReactiveParams& params, ReactiveMemory& memory, const Vec2& p,
+/// The side latch a method keeps in its memory (the geometric method's is
+/// part of its GeometricMemory); none for a method that keeps none.
+const SideLatch& latch(const ReactiveMemory& memory) {
+  static const SideLatch none;
+  if (const auto* g = std::any_cast<GeometricMemory>(&memory.state)) return *g;
+  if (const auto* d = std::any_cast<SideLatch>(&memory.state)) return *d;
+  return none;
+}
+
+ReactiveCommand command(const ReactiveMethod& m, const ReactiveParams& params, ReactiveMemory& memory, const Vec2& p,
                         double course, const Vec2& target, const std::vector<Ellipse>& objects) {
   ReactiveInput in;
   in.position = p;
@@ -44,7 +57,7 @@ ReactiveCommand command(ReactiveMethod m, const ReactiveParams& params, Reactive
 struct Flight {
   std::vector<Vec2> path;  ///< positions, path[0] = start
   std::vector<ReactiveCommand> commands;
-  std::vector<int> sides;  ///< memory.side after each command
+  std::vector<int> sides;  ///< latch(memory).side after each command
   double length = 0.0;
   double max_rate = 0.0;  ///< max |r| from successive commanded courses (rad/s)
   double rms_rate = 0.0;
@@ -52,7 +65,7 @@ struct Flight {
   std::vector<double> rates;
 };
 
-Flight fly(ReactiveMethod m, const ReactiveParams& params, Vec2 p, double course, const Vec2& target,
+Flight fly(const ReactiveMethod& m, const ReactiveParams& params, Vec2 p, double course, const Vec2& target,
            const std::vector<Ellipse>& objects, double dt, int max_steps = 20000) {
   Flight f;
   ReactiveMemory memory;
@@ -61,7 +74,7 @@ Flight fly(ReactiveMethod m, const ReactiveParams& params, Vec2 p, double course
   for (int k = 0; k < max_steps; ++k) {
     const ReactiveCommand c = command(m, params, memory, p, course, target, objects);
     f.commands.push_back(c);
-    f.sides.push_back(memory.side);
+    f.sides.push_back(latch(memory).side);
     f.last = c.status;
     if (c.speed_mps == 0.0) break;
     if (k > 0) {
@@ -96,7 +109,7 @@ ReactiveParams params_for(double margin, double speed, double arrival) {
 // ---------------------------------------------------------------------------
 
 TEST(ReactiveMethod, NamesRoundTrip) {
-  for (ReactiveMethod m : kMethods) EXPECT_EQ(parse_reactive_method(to_string(m)), m);
+  for (const ReactiveMethod& m : kMethods) EXPECT_EQ(parse_reactive_method(to_string(m)), m);
   EXPECT_FALSE(parse_reactive_method("Dipole").has_value());
   EXPECT_FALSE(parse_reactive_method("").has_value());
   EXPECT_EQ(to_string(ReactiveStatus::target_in_zone), "target_in_zone");
@@ -133,7 +146,7 @@ TEST(ReactiveMethods, OpenWaterPointsStraightAtTheTarget) {
   const ReactiveParams params = params_for(10, 2, 5);
   // One object far out of every method's reach (more than influence_m + zone away, off the line of sight).
   const std::vector<Ellipse> far{disc(0, 500, 10)};
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     for (const auto& objects : {std::vector<Ellipse>{}, far}) {
       ReactiveMemory memory;
       const ReactiveCommand c = command(m, params, memory, Vec2(0, 0), 2.0, Vec2(30, 40), objects);
@@ -150,7 +163,7 @@ TEST(ReactiveMethods, OpenWaterPointsStraightAtTheTarget) {
 
 TEST(ReactiveMethods, ArrivedStopsWithinTheRadius) {
   const ReactiveParams params = params_for(10, 2, 5);
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     ReactiveMemory memory;
     const ReactiveCommand c = command(m, params, memory, Vec2(96, 3), 0.3, Vec2(100, 0), {});
     EXPECT_EQ(c.status, ReactiveStatus::arrived);
@@ -178,7 +191,7 @@ class GeometricDisc : public ::testing::Test {
     const ReactiveCommand c = at(p);
     EXPECT_EQ(c.sector, sector);
     EXPECT_EQ(c.status, status);
-    EXPECT_EQ(memory.side, side);
+    EXPECT_EQ(latch(memory).side, side);
     return c;
   }
 };
@@ -202,23 +215,23 @@ TEST_F(GeometricDisc, Sector1IsTheTangentOnTheVehiclesSide) {
   ReactiveMemory other;
   const ReactiveCommand s = command(ReactiveMethod::geometric, params, other, Vec2(-100, -5), 0.0, target, objects);
   EXPECT_NEAR(line_offset(Vec2(-100, -5), s.course, Vec2(0, 0)), 20.0, 1e-9);
-  EXPECT_EQ(other.side, -1);
+  EXPECT_EQ(latch(other).side, -1);
 }
 
 TEST_F(GeometricDisc, LatchedSideIsKeptAcrossTheAxis) {
   EXPECT_EQ(at(Vec2(-100, 5)).sector, 1);
-  ASSERT_EQ(memory.side, 1);
+  ASSERT_EQ(latch(memory).side, 1);
   // Pushed across the axis (a current, say): still passes north.
   const Vec2 p(-60, -2);
   const ReactiveCommand c = at(p);
-  EXPECT_EQ(memory.side, 1);
+  EXPECT_EQ(latch(memory).side, 1);
   EXPECT_NEAR(line_offset(p, c.course, Vec2(0, 0)), -20.0, 1e-9);
   // The memoryless field takes the side of the axis instead.
   const double g = math_angle(reactive_gradient(ReactiveMethod::geometric, params, p, target, objects));
   EXPECT_NEAR(line_offset(p, g, Vec2(0, 0)), 20.0, 1e-9);
   // Sector 2 releases the latch.
   EXPECT_EQ(at(Vec2(-100, 50)).sector, 2);
-  EXPECT_EQ(memory.side, 0);
+  EXPECT_EQ(latch(memory).side, 0);
 }
 
 TEST_F(GeometricDisc, OnTheAxisTheCourseBreaksTheTie) {
@@ -226,9 +239,9 @@ TEST_F(GeometricDisc, OnTheAxisTheCourseBreaksTheTie) {
   command(ReactiveMethod::geometric, params, m1, Vec2(-100, 0), 0.05, target, objects);
   command(ReactiveMethod::geometric, params, m2, Vec2(-100, 0), -0.05, target, objects);
   const ReactiveCommand c = command(ReactiveMethod::geometric, params, m3, Vec2(-100, 0), 0.0, target, objects);
-  EXPECT_EQ(m1.side, 1);
-  EXPECT_EQ(m2.side, -1);
-  EXPECT_EQ(m3.side, -1);  // no hint: starboard
+  EXPECT_EQ(latch(m1).side, 1);
+  EXPECT_EQ(latch(m2).side, -1);
+  EXPECT_EQ(latch(m3).side, -1);  // no hint: starboard
   EXPECT_NEAR(c.course, -std::asin(0.2), 1e-12);
 }
 
@@ -282,7 +295,7 @@ TEST(Geometric, ElongatedObjectTangentToTheSecurityEllipse) {
   ReactiveMemory memory;
   const ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, 0.02, Vec2(100, 0), objects);
   ASSERT_EQ(c.sector, 1);
-  EXPECT_EQ(memory.side, 1);
+  EXPECT_EQ(latch(memory).side, 1);
   // The line through p along the course, normal nu to its left: the zone lies right of it and touches it.
   const Vec2 u = unit_vector(c.course);
   const Vec2 nu(-u.y(), u.x());
@@ -309,7 +322,7 @@ TEST(Geometric, TangentBlockedByASecondZoneTakesThatZonesTangent) {
   const ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, 0.3, Vec2(150, 0), objects);
   EXPECT_EQ(c.sector, 1);
   EXPECT_EQ(c.active_object, 1);
-  EXPECT_EQ(memory.engaged_object, 0);  // A is the one engaged (first on the line of sight)
+  EXPECT_EQ(latch(memory).engaged_object, 0);  // A is the one engaged (first on the line of sight)
   EXPECT_NEAR(c.course, std::atan2(19.0, 120.0) + std::asin(30.0 / std::hypot(120.0, 19.0)), 1e-9);
   EXPECT_NEAR(line_offset(p, c.course, Vec2(20, 20)), -30.0, 1e-9);
   EXPECT_LT(line_offset(p, c.course, Vec2(0, 0)), -15.0);
@@ -327,14 +340,14 @@ TEST(Geometric, FreshEngagementTakesTheSmallerTurn) {
   ReactiveMemory memory;
   ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, -0.2, Vec2(150, 0), objects);
   EXPECT_EQ(c.sector, 1);
-  EXPECT_EQ(memory.side, -1);  // heading south of the centre: the south tangent is the smaller turn
+  EXPECT_EQ(latch(memory).side, -1);  // heading south of the centre: the south tangent is the smaller turn
   EXPECT_NEAR(c.course, to_centre - tangent, 1e-9);
   c = command(ReactiveMethod::geometric, params, memory, p, 0.2, Vec2(150, 0), objects);
-  EXPECT_EQ(memory.side, -1);  // latched: kept although north is now the smaller turn
+  EXPECT_EQ(latch(memory).side, -1);  // latched: kept although north is now the smaller turn
   EXPECT_NEAR(c.course, to_centre - tangent, 1e-9);
   ReactiveMemory fresh;
   c = command(ReactiveMethod::geometric, params, fresh, p, 0.2, Vec2(150, 0), objects);
-  EXPECT_EQ(fresh.side, 1);
+  EXPECT_EQ(latch(fresh).side, 1);
   EXPECT_NEAR(c.course, to_centre + tangent, 1e-9);
 }
 
@@ -350,16 +363,16 @@ TEST(Geometric, ZonesCloserThanThePassageArePassedAsOne) {
   ReactiveMemory memory;
   ReactiveCommand c = command(ReactiveMethod::geometric, params, memory, p, 0.3, Vec2(150, 0), objects);
   EXPECT_EQ(c.sector, 1);
-  EXPECT_EQ(memory.side, 1);
+  EXPECT_EQ(latch(memory).side, 1);
   EXPECT_EQ(c.active_object, 1);
   EXPECT_NEAR(c.course, group_course, 1e-9);
-  params.geometric_passage_m = 0.0;
+  params.tuning["geometric_passage_m"] = 0.0;
   ReactiveMemory apart;
   c = command(ReactiveMethod::geometric, params, apart, p, 0.3, Vec2(150, 0), objects);
-  EXPECT_EQ(apart.side, 1);
+  EXPECT_EQ(latch(apart).side, 1);
   EXPECT_EQ(c.active_object, 0);
   EXPECT_NEAR(c.course, to_a + std::asin(15.0 / std::hypot(100.0, 1.0)), 1e-9);
-  params.geometric_passage_m = -1.0;
+  params.tuning["geometric_passage_m"] = -1.0;
   EXPECT_THROW(command(ReactiveMethod::geometric, params, apart, p, 0.3, Vec2(150, 0), objects), InputError);
 }
 
@@ -410,13 +423,13 @@ TEST(Geometric, ReorderedObjectsKeepTheLatchedSide) {
   std::vector<Ellipse> objects{disc(0, 0, 10), disc(0, 300, 10)};
   ReactiveMemory memory;
   command(ReactiveMethod::geometric, params, memory, Vec2(-100, 0.5), 0.0, Vec2(150, 0), objects);
-  ASSERT_EQ(memory.side, 1);
+  ASSERT_EQ(latch(memory).side, 1);
   std::swap(objects[0], objects[1]);
   objects[1].centre.x() += 0.3;  // re-estimated a little off
   const ReactiveCommand c =
       command(ReactiveMethod::geometric, params, memory, Vec2(-95, -0.5), 0.0, Vec2(150, 0), objects);
-  EXPECT_EQ(memory.side, 1);
-  EXPECT_EQ(memory.engaged_object, 1);
+  EXPECT_EQ(latch(memory).side, 1);
+  EXPECT_EQ(latch(memory).engaged_object, 1);
   EXPECT_EQ(c.active_object, 1);
   EXPECT_LT(line_offset(Vec2(-95, -0.5), c.course, objects[1].centre), 0.0);  // still passing north
 }
@@ -497,17 +510,17 @@ TEST(Dipole, StallsAtTheFrontStagnationPointWithoutTheTieBreak) {
   ReactiveParams params = params_for(10, 2, 5);
   const std::vector<Ellipse> objects{disc(0, 0, 10)};
   const Vec2 front(-20.0 - 1e-9, 0.0);
-  params.dipole_axis_band_m = 0.0;
+  params.tuning["dipole_axis_band_m"] = 0.0;
   ReactiveMemory m1;
   const ReactiveCommand c = command(ReactiveMethod::dipole, params, m1, front, 0.1, Vec2(150, 0), objects);
   EXPECT_EQ(c.status, ReactiveStatus::stalled);
   EXPECT_EQ(c.speed_mps, 0.0);
   EXPECT_EQ(c.course, 0.1);
-  params.dipole_axis_band_m = 0.5;
+  params.tuning["dipole_axis_band_m"] = 0.5;
   ReactiveMemory m2;
   const ReactiveCommand d = command(ReactiveMethod::dipole, params, m2, front, 0.0, Vec2(150, 0), objects);
   EXPECT_EQ(d.status, ReactiveStatus::ok);
-  EXPECT_EQ(m2.side, -1);
+  EXPECT_EQ(latch(m2).side, -1);
   EXPECT_LT(d.course, -1.0);
 }
 
@@ -519,7 +532,7 @@ TEST(Dipole, TieBreakClampsWithinTheBandOnly) {
   ReactiveMemory memory;
   const Vec2 target(1e7, 0);
   const ReactiveCommand c = command(ReactiveMethod::dipole, params, memory, Vec2(-40, 0), 0.0, target, objects);
-  EXPECT_EQ(memory.side, -1);
+  EXPECT_EQ(latch(memory).side, -1);
   EXPECT_EQ(c.active_object, 0);
   const Vec2 q(-40, -0.5);
   const std::complex<double> z(q.x(), q.y());
@@ -530,15 +543,15 @@ TEST(Dipole, TieBreakClampsWithinTheBandOnly) {
   ReactiveMemory south, north;
   const ReactiveCommand cs = command(ReactiveMethod::dipole, params, south, Vec2(-40, 0.3), -0.01, target, objects);
   const ReactiveCommand cn = command(ReactiveMethod::dipole, params, north, Vec2(-40, 0.3), 0.0, target, objects);
-  EXPECT_EQ(south.side, -1);
-  EXPECT_EQ(north.side, 1);
+  EXPECT_EQ(latch(south).side, -1);
+  EXPECT_EQ(latch(north).side, 1);
   EXPECT_NEAR(cs.course, c.course, 1e-6);  // both evaluated at (-40, -0.5) in the circle plane
   EXPECT_NEAR(cn.course, -c.course, 1e-6);
   // Outside the band the natural field is used: equal to the memoryless gradient.
   const Vec2 p(-40, 3);
   ReactiveMemory m2;
   const ReactiveCommand d = command(ReactiveMethod::dipole, params, m2, p, 0.0, target, objects);
-  EXPECT_EQ(m2.side, 1);
+  EXPECT_EQ(latch(m2).side, 1);
   EXPECT_NEAR(d.course, math_angle(reactive_gradient(ReactiveMethod::dipole, params, p, target, objects)), 1e-12);
 }
 
@@ -566,7 +579,7 @@ TEST(Dipole, SeveralObjectsAreNotEnteredAndTheTargetIsReached) {
     for (double y0 : {-7.0, 0.0, 3.0, 20.0}) {
       const Flight f = fly(ReactiveMethod::dipole, params, Vec2(-150, y0), 0.0, Vec2(150, 0), objects, 0.1);
       EXPECT_EQ(f.last, ReactiveStatus::arrived) << y0;
-      EXPECT_GT(min_clearance(f.path, objects, 10), -params.dipole_axis_band_m) << y0;
+      EXPECT_GT(min_clearance(f.path, objects, 10), -tuning_value(params, "dipole_axis_band_m")) << y0;
     }
   }
 }
@@ -576,7 +589,7 @@ TEST(Dipole, SeveralObjectsAreNotEnteredAndTheTargetIsReached) {
 TEST(ReactiveMethods, HeadOnVehiclePicksASideOnceAndKeepsIt) {
   const ReactiveParams params = params_for(10, 2, 5);
   const std::vector<Ellipse> objects{disc(0, 0, 10)};
-  for (ReactiveMethod m : {ReactiveMethod::geometric, ReactiveMethod::dipole}) {
+  for (const ReactiveMethod& m : {ReactiveMethod::geometric, ReactiveMethod::dipole}) {
     for (double heading_off : {0.0, 1e-3, -1e-3}) {
       const Flight f = fly(m, params, Vec2(-100, 0), heading_off, Vec2(100, 0), objects, 0.1);
       ASSERT_EQ(f.last, ReactiveStatus::arrived) << to_string(m);
@@ -653,7 +666,7 @@ TEST(ReactiveMethods, Notes9TableKinematic) {
     if (y0 < 10.0) {
       EXPECT_GT(dip.max_rate, 1.5 * geo.max_rate) << y0;
     }
-    EXPECT_GT(min_clearance(dip.path, objects, 10), -params.dipole_axis_band_m);
+    EXPECT_GT(min_clearance(dip.path, objects, 10), -tuning_value(params, "dipole_axis_band_m"));
     std::printf(
         "notes9 y0=%4.1f geometric len %.2f max|r| %.2f rms %.2f deg/s | dipole len %.2f max|r| %.2f rms %.2f\n", y0,
         geo.length, rad_to_deg(geo.max_rate), rad_to_deg(geo.rms_rate), dip.length, rad_to_deg(dip.max_rate),
@@ -689,7 +702,7 @@ TEST(Potential, StallsInFrontOfAWideWall) {
     EXPECT_LT(f.path.back().x(), -20.0) << y0;  // never got past the wall
   }
   // The same wall is no trap for the other two.
-  for (ReactiveMethod m : {ReactiveMethod::geometric, ReactiveMethod::dipole}) {
+  for (const ReactiveMethod& m : {ReactiveMethod::geometric, ReactiveMethod::dipole}) {
     const Flight f = fly(m, params, Vec2(-150, 7), 0.0, Vec2(150, 0), wall, 0.1);
     EXPECT_EQ(f.last, ReactiveStatus::arrived) << to_string(m);
   }
@@ -744,7 +757,7 @@ TEST(ReactiveMethods, TargetInsideAZoneStopsAtItsBoundary) {
   // Target (12, 0) lies in the zone R 20 round the disc: the nearest boundary point is (20, 0).
   const ReactiveParams params = params_for(10, 2, 5);
   const std::vector<Ellipse> objects{disc(0, 0, 10)};
-  for (ReactiveMethod m : {ReactiveMethod::geometric, ReactiveMethod::dipole}) {
+  for (const ReactiveMethod& m : {ReactiveMethod::geometric, ReactiveMethod::dipole}) {
     for (const Vec2& start : {Vec2(100, 3), Vec2(-100, 3)}) {
       const Flight f = fly(m, params, start, 0.0, Vec2(12, 0), objects, 0.1);
       EXPECT_EQ(f.last, ReactiveStatus::target_in_zone) << to_string(m);
@@ -765,7 +778,7 @@ TEST(ReactiveMethods, TargetInsideAZoneStopsAtItsBoundary) {
 TEST(ReactiveMethods, StartingInsideTheZoneEveryMethodLeavesIt) {
   const ReactiveParams params = params_for(10, 2, 5);
   const std::vector<Ellipse> objects{disc(0, 0, 10)};
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     const Flight f = fly(m, params, Vec2(-12, 4), 0.0, Vec2(150, 0), objects, 0.1, 300);
     EXPECT_EQ(f.commands.front().status, ReactiveStatus::leaving_zone) << to_string(m);
     EXPECT_GE(f.path.back().norm(), 20.0) << to_string(m);
@@ -779,7 +792,7 @@ TEST(ReactiveMethods, BadInputIsRejected) {
   const std::vector<Ellipse> good{disc(0, 0, 10)};
   auto throws = [&](const ReactiveParams& p, const Vec2& pos, const Vec2& target, const std::vector<Ellipse>& objs,
                     const char* field) {
-    for (ReactiveMethod m : kMethods) {
+    for (const ReactiveMethod& m : kMethods) {
       ReactiveMemory memory;
       try {
         command(m, p, memory, pos, 0.0, target, objs);
@@ -807,7 +820,7 @@ TEST(ReactiveMethods, BadInputIsRejected) {
   q.exit_blend_fraction = 1.5;
   throws(q, a, b, good, "exit_blend_fraction");
   q = p;
-  q.potential_stall_fraction = 1.0;
+  q.tuning["potential_stall_fraction"] = 1.0;
   throws(q, a, b, good, "potential_stall_fraction");
   throws(p, Vec2(nan, 0), b, good, "position");
   throws(p, a, Vec2(0, inf), good, "target");

@@ -41,7 +41,7 @@ ReactiveParams disc_params() {
   ReactiveParams p;
   p.margin_m = kMargin;
   p.influence_m = 60.0;
-  p.potential_gain = 1.0;
+  p.tuning["potential_gain"] = 1.0;
   return p;
 }
 
@@ -211,7 +211,7 @@ TEST(GradientLines, BadInputIsAOneLineError) {
 // security zone (to a hair: chords of an arc ridden along the boundary).
 TEST(FieldFigure, NoLineEntersAFootprint) {
   const Scenario sc = one_obstacle();
-  for (const ReactiveMethod m : {ReactiveMethod::dipole, ReactiveMethod::geometric, ReactiveMethod::potential}) {
+  for (const ReactiveMethod& m : {ReactiveMethod::dipole, ReactiveMethod::geometric, ReactiveMethod::potential}) {
     FieldFigure f = field_figure_for(sc, m);
     f.width_px = 600;
     const FieldFigureGeometry g = field_figure_geometry(f);
@@ -283,7 +283,7 @@ TEST(TrajectoryFigure, DrawsEveryMethodsTrackInItsColour) {
   Png png(path);
   ASSERT_TRUE(png.ok());
   EXPECT_EQ(png.height(), l.height);
-  for (const ReactiveMethod m : all) EXPECT_GT(count_colour(png, method_color(m)), 300) << to_string(m);
+  for (const ReactiveMethod& m : all) EXPECT_GT(count_colour(png, method_color(m)), 300) << to_string(m);
   // Every track fits on the map.
   for (const SimulationResult& r : f.runs) {
     for (const TrajectorySample& s : r.trajectory) {
@@ -318,7 +318,7 @@ TEST(TurnRatePlot, PanelsShareASymmetricAxisWithTheLimitDashed) {
   Png png(path);
   ASSERT_TRUE(png.ok());
   EXPECT_EQ(png.height(), l.height);
-  for (const ReactiveMethod m : two) EXPECT_GT(count_colour(png, method_color(m)), 300) << to_string(m);
+  for (const ReactiveMethod& m : two) EXPECT_GT(count_colour(png, method_color(m)), 300) << to_string(m);
   // The dashed +6 deg/s line: red pixels along its row in the second panel.
   const double row = rate_axis(l, 1).to_px(6.0);
   int red = 0;

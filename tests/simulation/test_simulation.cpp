@@ -197,7 +197,7 @@ TEST(Contacts, OneScanNeverMergesTwoDetections) {
 
 TEST(Simulation, OpenWaterGoesStraightToTheTarget) {
   Scenario sc = exact_scenario({0, 0}, {300, 400}, {});
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     const SimulationResult r = simulate(sc, m);
     SCOPED_TRACE(std::string(to_string(m)));
     EXPECT_EQ(r.end, SimulationEnd::reached);
@@ -251,7 +251,7 @@ TEST(Simulation, OneObstacleIsPassedAndAvoided) {
   // can (5 deg/s), the seed's Fig. 12 point.
   Scenario sc = exact_scenario({-150, 5}, {150, 0}, {disc("rock", {0, 0}, 20)});
   sc.sonar = SonarParams{};
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     SCOPED_TRACE(std::string(to_string(m)));
     const SimulationResult r = simulate(sc, m);
     EXPECT_EQ(r.end, SimulationEnd::reached);
@@ -270,7 +270,7 @@ TEST(Simulation, OneObstacleIsPassedAndAvoided) {
 TEST(Simulation, TurningRatesAreTheCommandsTheAutopilotsAndTheVehicles) {
   Scenario sc = exact_scenario({-150, 5}, {150, 0}, {disc("rock", {0, 0}, 20)});
   sc.sonar = SonarParams{};
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     SCOPED_TRACE(std::string(to_string(m)));
     const SimulationResult r = simulate(sc, m);
     ASSERT_GT(r.trajectory.size(), 100u);
@@ -294,7 +294,7 @@ TEST(Simulation, SameSeedSameBitsOtherSeedOtherTrajectory) {
   Scenario sc = exact_scenario({-150, 5}, {150, 0}, {disc("rock", {0, 0}, 20), disc("b", {60, 30}, 10)});
   sc.sonar = SonarParams{};
   sc.sonar.seed = 7;
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     SCOPED_TRACE(std::string(to_string(m)));
     const SimulationResult a = simulate(sc, m), b = simulate(sc, m);
     ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
@@ -324,7 +324,7 @@ TEST(Simulation, TargetInsideTheSecurityZoneButOutsideTheObstacle) {
   // ends at once with the target not reached. Every method's run ends by a
   // stop rule, never by the time limit.
   Scenario sc = exact_scenario({-150, 0}, {150, 0}, {disc("rock", {150, 24}, 20)});
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     SCOPED_TRACE(std::string(to_string(m)));
     const SimulationResult r = simulate(sc, m);
     EXPECT_NE(r.end, SimulationEnd::time_out);
@@ -346,7 +346,7 @@ TEST(Simulation, StartInsideTheSecurityZoneLeavesIt) {
   const SimulationResult g = simulate(sc, ReactiveMethod::geometric);
   EXPECT_EQ(g.trajectory.front().status, ReactiveStatus::leaving_zone);
   EXPECT_EQ(g.trajectory.front().sector, 3);
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     SCOPED_TRACE(std::string(to_string(m)));
     const SimulationResult r = simulate(sc, m);
     EXPECT_FALSE(r.stats.collided);
@@ -359,7 +359,7 @@ TEST(Simulation, StartInsideTheSecurityZoneLeavesIt) {
 
 TEST(Simulation, OverlappingObstaclesAreTwoContactsAndAvoided) {
   const Scenario sc = exact_scenario({-150, 3}, {150, 0}, {disc("north", {0, 12}, 15), disc("south", {0, -12}, 15)});
-  for (ReactiveMethod m : kMethods) {
+  for (const ReactiveMethod& m : kMethods) {
     SCOPED_TRACE(std::string(to_string(m)));
     const SimulationResult r = simulate(sc, m);
     EXPECT_EQ(r.end, SimulationEnd::reached);

@@ -9,6 +9,7 @@
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/single_query.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/simulation/route_following.hpp"
 #include "deepguide/simulation/simulation.hpp"
 
@@ -16,9 +17,16 @@ namespace deepguide {
 
 namespace {
 
+/// "dipole, geometric, potential": the registered reactive methods.
+std::string reactive_list() {
+  std::string text;
+  for (const ReactiveMethodEntry& e : reactive_method_entries()) text += (text.empty() ? "" : ", ") + e.name;
+  return text;
+}
+
 [[noreturn]] void unknown(const std::string& text, const std::string& why) {
-  throw InputError("unknown method '" + printable(text) + "'" + (why.empty() ? "" : " (" + why + ")") +
-                   ": expected geometric, dipole, potential, or GRAPH[:SEARCH][:COST] with GRAPH " +
+  throw InputError("unknown method '" + printable(text) + "'" + (why.empty() ? "" : " (" + why + ")") + ": expected " +
+                   reactive_list() + ", or GRAPH[:SEARCH][:COST] with GRAPH " +
                    graph_names_text([](const GraphEntry& e) { return !e.can.in_depth; }) +
                    ", SEARCH astar or dijkstra, COST length, time or energy");
 }

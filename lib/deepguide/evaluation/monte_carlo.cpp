@@ -132,13 +132,13 @@ MonteCarloResult run_monte_carlo(const MonteCarloParams& params, std::span<const
   options.record_trajectory = false;
   for (int k = 0; k < params.scenarios; ++k) {
     const Scenario sc = monte_carlo_scenario(params, k);
-    for (ReactiveMethod m : methods) {
+    for (const ReactiveMethod& m : methods) {
       const SimulationResult r = simulate(sc, m, options);
       result.runs.push_back({k, m, r.stats, r.end, (sc.target - sc.start).norm(), r.collision});
     }
     if (progress != nullptr) progress(k + 1, params.scenarios);
   }
-  for (ReactiveMethod m : methods) {
+  for (const ReactiveMethod& m : methods) {
     MethodSummary s;
     s.method = m;
     std::vector<double> clearance, max_ref, rms_ref, max_r, rms_r, reversals, ratio;

@@ -6,6 +6,7 @@
 
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/geometry/ellipse_segment.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/reactive/reactive_support.hpp"
 
 namespace deepguide {
@@ -130,7 +131,7 @@ Vec2 direction_of(const Vec2& v) { return v.norm() < kStagnation ? Vec2(0.0, 0.0
 /// of sight, else the first blocking zone within the influence), with its
 /// side; updates the memory. No zone: memory released.
 AxisClamp engage(const std::vector<DipoleZone>& zones, const Vec2& p, const Vec2& g, double course,
-                 const ReactiveParams& params, ReactiveMemory& memory) {
+                 const ReactiveParams& params, const DipoleParams& own, SideLatch& memory) {
   std::vector<Ellipse> near;  // zones within the influence; others cannot be engaged
   std::vector<std::size_t> index;
   for (std::size_t i = 0; i < zones.size(); ++i) {
@@ -157,7 +158,7 @@ AxisClamp engage(const std::vector<DipoleZone>& zones, const Vec2& p, const Vec2
   const Ellipse& zone = near[static_cast<std::size_t>(k)];
   const Vec2 e = unit_or_zero(g - p);
   const double offset = circle_plane(zone, e, p).Z().imag();
-  const double band = params.dipole_axis_band_m;
+  const double band = own.axis_band_m;
   int side = side_of(offset, e, course, band);
   // Clearly across on the other side (more than the band): that side is taken.
   if (engaged_with(memory, zone.centre, 0.5 * zone.b) && memory.side * offset > -band) side = memory.side;
@@ -206,12 +207,13 @@ std::vector<Ellipse> shapes(const std::vector<DipoleZone>& zones) {
 
 /// Inside zone k: the flow at the nearest boundary point, blended outward.
 Vec2 leave_zone(const std::vector<DipoleZone>& zones, std::size_t k, const Vec2& p, const Vec2& g,
-                const ReactiveParams& params, const AxisClamp& clamp, std::optional<double> course) {
+                const ReactiveParams& params, const DipoleParams& own, const AxisClamp& clamp,
+                std::optional<double> course) {
   const Ellipse& zone = zones[k].shape;
   const EllipseProjection near = project_to_ellipse(zone, p);
   Vec2 n = outward_normal(zone, near.point);
   const Vec2 outside = near.point + kZoneClearance_m * n;
-  Vec2 along = direction_of(field(zones, outside, g, params.influence_m, params.dipole_blend_m, clamp));
+  Vec2 along = direction_of(field(zones, outside, g, params.influence_m, own.blend_m, clamp));
   const int side = clamp.zone == static_cast<std::ptrdiff_t>(k) ? clamp.side : axis_side(zone.centre, g, p, course);
   // At a stagnation point of the boundary: round it on the passing side.
   if (along.squaredNorm() == 0.0) along = along_boundary(n, side);
@@ -220,9 +222,11 @@ Vec2 leave_zone(const std::vector<DipoleZone>& zones, std::size_t k, const Vec2&
 
 }  // namespace
 
-ReactiveCommand dipole_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input) {
+ReactiveCommand dipole_command(const ReactiveParams& params, ReactiveMemory& state, const ReactiveInput& input) {
   validate_input(params, input);
-  const std::vector<DipoleZone> zones = dipole_zones(input.objects, params.margin_m, params.dipole_blend_m);
+  const DipoleParams own = dipole_params(params);
+  SideLatch& memory = method_state<SideLatch>(state);
+  const std::vector<DipoleZone> zones = dipole_zones(input.objects, params.margin_m, own.blend_m);
   const std::vector<Ellipse> zone_shapes = shapes(zones);
   const SteeringTarget target = steering_target(zone_shapes, input.target);
   if (auto stop = arrival_command(params, input, target)) {
@@ -230,29 +234,45 @@ ReactiveCommand dipole_command(const ReactiveParams& params, ReactiveMemory& mem
     return *stop;
   }
   const Vec2& p = input.position;
-  const AxisClamp clamp = engage(zones, p, target.point, input.course, params, memory);
+  const AxisClamp clamp = engage(zones, p, target.point, input.course, params, own, memory);
   const std::ptrdiff_t inside = deepest_zone(zone_shapes, p);
   const std::ptrdiff_t steered = inside >= 0 ? inside : clamp.zone;
   const std::ptrdiff_t object =
       steered >= 0 ? nearest_member(zones[static_cast<std::size_t>(steered)], input.objects, p) : -1;
   if (inside >= 0) {
-    const Vec2 dir = leave_zone(zones, static_cast<std::size_t>(inside), p, target.point, params, clamp, input.course);
+    const Vec2 dir =
+        leave_zone(zones, static_cast<std::size_t>(inside), p, target.point, params, own, clamp, input.course);
     return course_command(params, input, dir, ReactiveStatus::leaving_zone, object, target);
   }
-  const Vec2 v = field(zones, p, target.point, params.influence_m, params.dipole_blend_m, clamp);
+  const Vec2 v = field(zones, p, target.point, params.influence_m, own.blend_m, clamp);
   return course_command(params, input, direction_of(v), ReactiveStatus::ok, object, target);
 }
 
 Vec2 dipole_gradient(const ReactiveParams& params, const Vec2& point, const Vec2& target,
                      std::span<const Ellipse> objects) {
   validate_query(params, point, target, objects);
-  const std::vector<DipoleZone> zones = dipole_zones(objects, params.margin_m, params.dipole_blend_m);
+  const DipoleParams own = dipole_params(params);
+  const std::vector<DipoleZone> zones = dipole_zones(objects, params.margin_m, own.blend_m);
   const std::vector<Ellipse> zone_shapes = shapes(zones);
   const Vec2 g = steering_target(zone_shapes, target).point;
   if (const std::ptrdiff_t k = deepest_zone(zone_shapes, point); k >= 0) {
-    return leave_zone(zones, static_cast<std::size_t>(k), point, g, params, AxisClamp{}, std::nullopt);
+    return leave_zone(zones, static_cast<std::size_t>(k), point, g, params, own, AxisClamp{}, std::nullopt);
   }
-  return direction_of(field(zones, point, g, params.influence_m, params.dipole_blend_m, AxisClamp{}));
+  return direction_of(field(zones, point, g, params.influence_m, own.blend_m, AxisClamp{}));
+}
+
+DipoleParams dipole_params(const ReactiveParams& params) {
+  return {tuning_value(params, "dipole_axis_band_m"), tuning_value(params, "dipole_blend_m")};
+}
+
+ReactiveMethodEntry dipole_method_entry() {
+  return {"dipole",
+          "a harmonic dipole potential per object in a uniform flow to the target",
+          0x0072b2,  // blue
+          {{"dipole_axis_band_m", 0.5, 0.0, 1e4, true, true, "a distance in metres"},
+           {"dipole_blend_m", 5.0, 0.0, 1e4, false, true, "a distance in metres"}},
+          dipole_command,
+          dipole_gradient};
 }
 
 }  // namespace deepguide

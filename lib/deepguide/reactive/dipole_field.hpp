@@ -66,6 +66,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -79,9 +80,28 @@ struct DipoleZone {
 /// The zones for `objects`, merged as described above.
 std::vector<DipoleZone> dipole_zones(std::span<const Ellipse> objects, double margin_m, double blend_m);
 
+/// The method's own parameters, read from ReactiveParams::tuning (defaults
+/// and ranges in its registry entry).
+struct DipoleParams {
+  /// Axis tie-break: a vehicle upstream of the object it is passing and
+  /// closer than this to the dividing streamline (in the circle plane of the
+  /// flow, metres near the object) steers as if this far on its latched side
+  /// ("dipole_axis_band_m", 0.5 m, >= 0).
+  double axis_band_m;
+  /// Near one zone the other zones' dipoles fade out over this distance;
+  /// zones closer than this to each other are merged into one circle
+  /// ("dipole_blend_m", 5 m, > 0).
+  double blend_m;
+};
+DipoleParams dipole_params(const ReactiveParams& params);
+
+/// One step; the memory is a SideLatch (side_latch.hpp).
 ReactiveCommand dipole_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input);
 
 Vec2 dipole_gradient(const ReactiveParams& params, const Vec2& point, const Vec2& target,
                      std::span<const Ellipse> objects);
+
+/// The method's registry entry (reactive_registry.hpp).
+ReactiveMethodEntry dipole_method_entry();
 
 }  // namespace deepguide

@@ -29,14 +29,23 @@ struct Construction {
 /// semi-axis of the zone recognises the same one without confusing neighbours.
 double match_radius(const Ellipse& zone) { return 0.5 * zone.b; }
 
+/// latched_side for zone k, and a fresh latch starts its count of turn switches anew.
+int latch(GeometricMemory& memory, std::ptrdiff_t k, const Ellipse& zone, int fresh) {
+  if (!engaged_with(memory, zone.centre, match_radius(zone))) memory.turn_switches = 0;
+  return latched_side(memory, k, zone.centre, match_radius(zone), fresh);
+}
+
+/// The whole memory released: the latch and the count of turn switches.
+void release(GeometricMemory& memory) { memory = GeometricMemory{}; }
+
 /// The side for zone k: latched in `memory`, or fresh from the axis rule.
 /// `keep_any` keeps a latched side even if it was latched for another zone.
 int side_for(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p, const Vec2& g,
-             std::optional<double> course, ReactiveMemory* memory, bool keep_any) {
+             std::optional<double> course, GeometricMemory* memory, bool keep_any) {
   const Ellipse& zone = zones[static_cast<std::size_t>(k)];
   const int fresh = (keep_any && memory && memory->side != 0) ? memory->side : axis_side(zone.centre, g, p, course);
   if (!memory) return fresh;
-  return latched_side(*memory, k, zone.centre, match_radius(zone), fresh);
+  return latch(*memory, k, zone, fresh);
 }
 
 struct Tuning {
@@ -107,7 +116,7 @@ double sailed_clearance(const std::vector<Ellipse>& zones, const Vec2& p, double
 }
 
 Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
-                       ReactiveMemory* memory, const Tuning& tuning, bool outside_only = false);
+                       GeometricMemory* memory, const Tuning& tuning, bool outside_only = false);
 
 /// Whether the zones labelled `id` surround p: every direction from p meets
 /// one of them (or p is on or in one).
@@ -158,7 +167,7 @@ std::vector<std::size_t> zone_groups(const std::vector<Ellipse>& zones, double p
 
 /// Sector 3: the outside course at the nearest boundary point, blended outward.
 Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, const Vec2& p, const Vec2& g,
-                        std::optional<double> course, ReactiveMemory* memory, const Tuning& tuning) {
+                        std::optional<double> course, GeometricMemory* memory, const Tuning& tuning) {
   const Ellipse& zone = zones[static_cast<std::size_t>(k)];
   const int side = side_for(zones, k, p, g, course, memory, true);
   Vec2 x = project_to_ellipse(zone, p).point;
@@ -171,7 +180,10 @@ Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, con
   }
   // The outside course from the boundary point itself (its tangent is the boundary's), with the same
   // side (a copy of the latch: only this call's counts).
-  ReactiveMemory probe{side, k, zone.centre};
+  GeometricMemory probe;
+  probe.side = side;
+  probe.engaged_object = k;
+  probe.engaged_centre = zone.centre;
   Vec2 along = construct(zones, x, g, course, &probe, tuning, true).direction;
   if (along.squaredNorm() == 0.0 || along.dot(n) < -1e-9) along = along_boundary(n, side);
   return {exit_direction(along, n, depth_fraction(zone, p), tuning.blend), 3, k};
@@ -180,7 +192,7 @@ Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, con
 /// `outside_only`: p is taken as outside every zone (the probe just outside a
 /// boundary, which may lie in an overlapping zone): no sector 3 recursion.
 Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
-                       ReactiveMemory* memory, const Tuning& tuning, bool outside_only) {
+                       GeometricMemory* memory, const Tuning& tuning, bool outside_only) {
   if (!outside_only) {
     if (const std::ptrdiff_t inside = deepest_zone(zones, p); inside >= 0) {
       return leave_zone(zones, inside, p, g, course, memory, tuning);
@@ -332,7 +344,7 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
     };
     const double tl = turn(left), tr = turn(right);
     const int side = std::abs(tl - tr) < 1e-9 ? axis_side(engaged.centre, g, p, course) : tl < tr ? +1 : -1;
-    latched_side(*memory, active, engaged.centre, match_radius(engaged), side);
+    latch(*memory, active, engaged, side);
     return sailed(side > 0 ? left : right, side);
   }
   const int side = side_for(zones, active, p, g, course, memory, false);
@@ -341,8 +353,9 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
 
 }  // namespace
 
-ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input) {
+ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& state, const ReactiveInput& input) {
   validate_input(params, input);
+  GeometricMemory& memory = method_state<GeometricMemory>(state);
   const std::vector<Ellipse> zones = security_ellipses(input.objects, params.margin_m);
   const SteeringTarget target = steering_target(zones, input.target);
   if (auto stop = arrival_command(params, input, target)) {
@@ -351,7 +364,7 @@ ReactiveCommand geometric_command(const ReactiveParams& params, ReactiveMemory& 
   }
   const Construction c =
       construct(zones, input.position, target.point, input.course, &memory,
-                {params.exit_blend_fraction, params.geometric_passage_m, params.turn_rate_limit.value_or(0.0),
+                {params.exit_blend_fraction, geometric_params(params).passage_m, params.turn_rate_limit.value_or(0.0),
                  std::max(input.speed_mps, params.speed_mps), params.margin_m, params.turn_lag_s, input.turn_rate});
   const ReactiveStatus status = c.sector == 3 ? ReactiveStatus::leaving_zone : ReactiveStatus::ok;
   ReactiveCommand cmd = course_command(params, input, c.direction, status, c.object, target);
@@ -364,8 +377,20 @@ Vec2 geometric_gradient(const ReactiveParams& params, const Vec2& point, const V
   validate_query(params, point, target, objects);
   const std::vector<Ellipse> zones = security_ellipses(objects, params.margin_m);
   const Vec2 g = steering_target(zones, target).point;
-  return construct(zones, point, g, std::nullopt, nullptr, {params.exit_blend_fraction, params.geometric_passage_m})
+  return construct(zones, point, g, std::nullopt, nullptr,
+                   {params.exit_blend_fraction, geometric_params(params).passage_m})
       .direction;
+}
+
+GeometricParams geometric_params(const ReactiveParams& params) { return {tuning_value(params, "geometric_passage_m")}; }
+
+ReactiveMethodEntry geometric_method_entry() {
+  return {"geometric",
+          "the seed's construction of tangents in three sectors",
+          0xd55e00,  // vermillion
+          {{"geometric_passage_m", 20.0, 0.0, 1e4, true, true, "a distance in metres"}},
+          geometric_command,
+          geometric_gradient};
 }
 
 }  // namespace deepguide

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "deepguide/geometry/ellipse_distance.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/reactive/reactive_support.hpp"
 
 namespace deepguide {
@@ -27,7 +28,7 @@ Force force(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, con
     return f;
   }
   const double rho0 = params.influence_m;
-  const double eta = params.potential_gain * rho0 * rho0 * rho0 / 4.0;
+  const double eta = potential_params(params).gain * rho0 * rho0 * rho0 / 4.0;
   f.value = unit_or_zero(g - p);
   double strongest = 0.0;
   for (std::size_t i = 0; i < zones.size(); ++i) {
@@ -49,12 +50,13 @@ Force force(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, con
 
 ReactiveCommand potential_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input) {
   validate_input(params, input);
-  release(memory);
+  memory.state.reset();  // the method remembers nothing
+  const PotentialParams own = potential_params(params);
   const std::vector<Ellipse> zones = security_ellipses(input.objects, params.margin_m);
   const SteeringTarget target = steering_target(zones, input.target);
   if (auto stop = arrival_command(params, input, target)) return *stop;
   const Force f = force(zones, input.position, target.point, params);
-  const bool stalled = f.inside < 0 && f.value.norm() < params.potential_stall_fraction;
+  const bool stalled = f.inside < 0 && f.value.norm() < own.stall_fraction;
   const Vec2 direction = stalled ? Vec2(0.0, 0.0) : unit_or_zero(f.value);
   return course_command(params, input, direction, f.inside >= 0 ? ReactiveStatus::leaving_zone : ReactiveStatus::ok,
                         f.strongest, target);
@@ -65,6 +67,20 @@ Vec2 potential_gradient(const ReactiveParams& params, const Vec2& point, const V
   validate_query(params, point, target, objects);
   const std::vector<Ellipse> zones = security_ellipses(objects, params.margin_m);
   return unit_or_zero(force(zones, point, steering_target(zones, target).point, params).value);
+}
+
+PotentialParams potential_params(const ReactiveParams& params) {
+  return {tuning_value(params, "potential_gain"), tuning_value(params, "potential_stall_fraction")};
+}
+
+ReactiveMethodEntry potential_method_entry() {
+  return {"potential",
+          "attractive and repulsive potentials, the baseline",
+          0x009e73,  // bluish green
+          {{"potential_gain", 1.0, 0.0, 1e6, false, true, "a gain"},
+           {"potential_stall_fraction", 0.05, 0.0, 1.0, false, false, "a fraction"}},
+          potential_command,
+          potential_gradient};
 }
 
 }  // namespace deepguide

@@ -30,12 +30,26 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
+/// The method's own parameters, read from ReactiveParams::tuning (defaults
+/// and ranges in its registry entry).
+struct PotentialParams {
+  double gain;            ///< repulsive gain relative to the unit attraction ("potential_gain", 1, > 0)
+  double stall_fraction;  ///< stalled below this fraction of the unit attraction ("potential_stall_fraction", 0.05, in
+                          ///< (0, 1))
+};
+PotentialParams potential_params(const ReactiveParams& params);
+
+/// One step; the method keeps no memory (it empties the one it is given).
 ReactiveCommand potential_command(const ReactiveParams& params, ReactiveMemory& memory, const ReactiveInput& input);
 
 Vec2 potential_gradient(const ReactiveParams& params, const Vec2& point, const Vec2& target,
                         std::span<const Ellipse> objects);
+
+/// The method's registry entry (reactive_registry.hpp).
+ReactiveMethodEntry potential_method_entry();
 
 }  // namespace deepguide

@@ -1,51 +1,10 @@
-// Names of the methods and statuses, and the dispatch to the method files.
+// The statuses' names, and each step sent to its method through the registry.
 
 #include "deepguide/reactive/reactive_method.hpp"
 
-#include <algorithm>
-#include <stdexcept>
-
-#include "deepguide/core/error.hpp"
-
-#include "deepguide/reactive/dipole_field.hpp"
-#include "deepguide/reactive/geometric_construction.hpp"
-#include "deepguide/reactive/potential_field.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 
 namespace deepguide {
-
-std::string_view to_string(ReactiveMethod method) {
-  switch (method) {
-    case ReactiveMethod::dipole: return "dipole";
-    case ReactiveMethod::geometric: return "geometric";
-    case ReactiveMethod::potential: return "potential";
-  }
-  return "?";
-}
-
-std::optional<ReactiveMethod> parse_reactive_method(std::string_view name) {
-  for (ReactiveMethod m : {ReactiveMethod::dipole, ReactiveMethod::geometric, ReactiveMethod::potential}) {
-    if (to_string(m) == name) return m;
-  }
-  return std::nullopt;
-}
-
-ReactiveMethod reactive_method_named(std::string_view name, const std::string& what) {
-  if (const auto m = parse_reactive_method(name)) return *m;
-  throw InputError(what + ": expected dipole, geometric or potential, got '" + printable(std::string(name)) + "'");
-}
-
-std::vector<ReactiveMethod> reactive_methods_named(const std::vector<std::string>& names, const std::string& what) {
-  std::vector<ReactiveMethod> out;
-  for (const std::string& n : names) {
-    const ReactiveMethod m = reactive_method_named(n, what);
-    if (std::find(out.begin(), out.end(), m) != out.end()) {
-      throw InputError(what + ": expected each method once, got '" + printable(n) + "' twice");
-    }
-    out.push_back(m);
-  }
-  if (out.empty()) throw InputError(what + ": expected at least one method");
-  return out;
-}
 
 std::string_view to_string(ReactiveStatus status) {
   switch (status) {
@@ -58,24 +17,14 @@ std::string_view to_string(ReactiveStatus status) {
   return "?";
 }
 
-ReactiveCommand reactive_command(ReactiveMethod method, const ReactiveParams& params, ReactiveMemory& memory,
+ReactiveCommand reactive_command(const ReactiveMethod& method, const ReactiveParams& params, ReactiveMemory& memory,
                                  const ReactiveInput& input) {
-  switch (method) {
-    case ReactiveMethod::dipole: return dipole_command(params, memory, input);
-    case ReactiveMethod::geometric: return geometric_command(params, memory, input);
-    case ReactiveMethod::potential: return potential_command(params, memory, input);
-  }
-  throw std::invalid_argument("reactive_command: unknown method");
+  return reactive_method_entry(method).command(params, memory, input);
 }
 
-Vec2 reactive_gradient(ReactiveMethod method, const ReactiveParams& params, const Vec2& point, const Vec2& target,
-                       std::span<const Ellipse> objects) {
-  switch (method) {
-    case ReactiveMethod::dipole: return dipole_gradient(params, point, target, objects);
-    case ReactiveMethod::geometric: return geometric_gradient(params, point, target, objects);
-    case ReactiveMethod::potential: return potential_gradient(params, point, target, objects);
-  }
-  throw std::invalid_argument("reactive_gradient: unknown method");
+Vec2 reactive_gradient(const ReactiveMethod& method, const ReactiveParams& params, const Vec2& point,
+                       const Vec2& target, std::span<const Ellipse> objects) {
+  return reactive_method_entry(method).gradient(params, point, target, objects);
 }
 
 }  // namespace deepguide

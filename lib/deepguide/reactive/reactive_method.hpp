@@ -4,7 +4,8 @@
 // a commanded course over ground and speed out, and an explicit status when the
 // method cannot do what it is asked (MOOS-IvP's behaviours do the same).
 //
-// Three methods sit behind it, one file each:
+// Every method is found by name in the registry (reactive_registry.hpp),
+// each in its own file pair with its own parameters and memory:
 //   dipole_field.hpp           (a) uniform flow to the target + a dipole per object
 //   geometric_construction.hpp (b) the seed's three-sector construction
 //   potential_field.hpp        (c) attractive/repulsive potentials, the baseline
@@ -32,11 +33,15 @@
 // its current course points to; with no hint at all it turns to starboard
 // (side -1, as COLREGs rule 14 for head-on encounters).
 
+#include <any>
 #include <cstddef>
+#include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <typeinfo>
 #include <vector>
 
 #include "deepguide/core/api.hpp"
@@ -45,62 +50,56 @@
 
 namespace DEEPGUIDE_API deepguide {
 
-enum class ReactiveMethod { dipole, geometric, potential };
+/// A reactive method, by name: what `simulate --method`, `evaluate --methods`
+/// and the figures find it by in the registry (reactive_registry.hpp). The
+/// built-in ones are constants; a registered one is ReactiveMethod{"name"}.
+struct ReactiveMethod {
+  std::string name;
+  static const ReactiveMethod dipole, geometric, potential;
+  friend bool operator==(const ReactiveMethod&, const ReactiveMethod&) = default;
+  friend auto operator<=>(const ReactiveMethod&, const ReactiveMethod&) = default;
+};
+inline const ReactiveMethod ReactiveMethod::dipole{"dipole"};
+inline const ReactiveMethod ReactiveMethod::geometric{"geometric"};
+inline const ReactiveMethod ReactiveMethod::potential{"potential"};
 
-std::string_view to_string(ReactiveMethod method);
-/// "dipole", "geometric" or "potential"; nullopt otherwise.
-std::optional<ReactiveMethod> parse_reactive_method(std::string_view name);
-/// The method `name` names, given as `what` (an option or a parameter, e.g.
-/// "--method"); throws InputError "WHAT: expected dipole, geometric or
-/// potential, got 'NAME'".
-ReactiveMethod reactive_method_named(std::string_view name, const std::string& what);
-/// Methods by name, each once and at least one; throws InputError naming `what`.
-std::vector<ReactiveMethod> reactive_methods_named(const std::vector<std::string>& names, const std::string& what);
+inline std::string_view to_string(const ReactiveMethod& method) { return method.name; }
 
+/// What every method is given: the vehicle's security margin, speed and
+/// arrival, and how it turns. A method's own parameters (the dipole's blend,
+/// the potential's gain, ...) are in `tuning`, by the names its registry
+/// entry declares with their defaults and ranges (reactive_registry.hpp);
+/// the method reads them into its own struct (e.g. dipole_params).
 struct ReactiveParams {
   double margin_m = 10.0;                    ///< security margin around each reported object, >= 0
   double speed_mps = 4.0 * 1852.0 / 3600.0;  ///< commanded speed through the water (cruise), > 0
   double arrival_radius_m = 5.0;             ///< within this of the target: status arrived, >= 0
   /// Distance beyond the security zone within which an object influences the
-  /// dipole and potential methods (outside it their field is pure attraction), > 0.
+  /// field methods (dipole, potential; outside it their field is pure attraction), > 0.
   double influence_m = 60.0;
-  double potential_gain = 1.0;  ///< (c) repulsive gain relative to the unit attraction, > 0
-  /// (b) and the zone exits of (a): inside a zone the course turns from the
-  /// boundary tangent to the outward normal over this fraction of the way to
-  /// the centre (an assumed blend; 0.25 by default), in (0, 1].
+  /// Inside a zone the course turns from the boundary tangent to the outward
+  /// normal over this fraction of the way to the centre (an assumed blend;
+  /// 0.25 by default; reactive_support.hpp, "Exit blend"), in (0, 1].
   double exit_blend_fraction = 0.25;
-  /// (a) Axis tie-break: a vehicle upstream of the object it is passing and
-  /// closer than this to the dividing streamline (in the circle plane of the
-  /// flow, metres near the object) steers as if this far on its latched side, >= 0.
-  double dipole_axis_band_m = 0.5;
-  /// (a) Near one zone the other zones' dipoles fade out over this distance;
-  /// zones closer than this to each other are merged into one circle, > 0.
-  double dipole_blend_m = 5.0;
-  /// (b) Zones closer than this to each other (overlapping ones included) are
-  /// passed as one: round the group, never through the gap, >= 0. 20 m is
-  /// about the DeepC-like vehicle's hard-over turning radius at cruise
-  /// (19.6 m): a narrower gap between two zones is a pocket it cannot turn
-  /// in. In 500 Monte Carlo scenarios: 17 collisions with 0 m, 1 with 10 m,
-  /// none with 20 m (docs/SIMULATION.md).
-  double geometric_passage_m = 20.0;
-  /// (b) The vehicle's hard turning-rate limit (rad/s). When known (> 0) the
-  /// construction is sailed (geometric_construction.hpp, "Sailing"): its
-  /// course is checked as the vehicle would turn to it, not as a line, and
-  /// its lines of sight keep a band. Unset: the vehicle's max_turn_rate in
-  /// the simulation and the mission run, none elsewhere; 0: the construction
-  /// of lines alone (the seed's; figures, comparisons).
+  /// The vehicle's hard turning-rate limit (rad/s), for a method that sails
+  /// its course (the geometric one: geometric_construction.hpp, "Sailing"):
+  /// its course is checked as the vehicle would turn to it, not as a line.
+  /// Unset: the vehicle's max_turn_rate in the simulation and the mission
+  /// run, none elsewhere; 0: lines alone (the seed's; figures, comparisons).
   std::optional<double> turn_rate_limit = std::nullopt;
-  /// (b) How long the vehicle takes to take up a new turning rate (s; the
-  /// closed loop as a first-order lag): a sailed turn begins this late, and
-  /// a turn the other way first undoes the present one. 0: at once. Filled
-  /// with turn_rate_limit in the simulation and the mission run
-  /// (simulation/simulation.hpp, sailing_params).
+  /// How long the vehicle takes to take up a new turning rate (s; the closed
+  /// loop as a first-order lag). 0: at once. Filled with turn_rate_limit in
+  /// the simulation and the mission run (simulation/simulation.hpp, sailing_params).
   double turn_lag_s = 0.0;
-  /// (c) Stalled when the resultant force is below this fraction of the unit attraction, in (0, 1).
-  double potential_stall_fraction = 0.05;
+  /// Each method's own parameters by name (the scenario file's keys under
+  /// `reactive:`, e.g. "potential_gain"); a name not given takes its
+  /// declared default (tuning_value, reactive_registry.hpp).
+  std::map<std::string, double, std::less<>> tuning = {};
 };
 
-/// Throws InputError naming the first bad field (non-finite, or outside the range documented above).
+/// Throws InputError naming the first bad field (non-finite, or outside the
+/// range documented above or declared by its method), or a tuning name no
+/// registered method declares.
 void validate(const ReactiveParams& params);
 
 /// The security zone of `object` for margin d, as an ellipse: semi-axes
@@ -143,28 +142,26 @@ struct ReactiveCommand {
   std::ptrdiff_t active_object = -1;  ///< index into objects of the object steered around, -1 none
 };
 
-/// What a method remembers between calls (one per vehicle and method;
-/// value-initialise to start): the side latch that keeps a vehicle from
-/// flipping left/right. Set when an object is first engaged (the geometric
-/// method's sector 1 or 3, the dipole method's object blocking the line of
-/// sight), kept while that object stays engaged, cleared when none is. The
-/// object is recognised in later scans by its centre (engaged_centre), not by
-/// its index, since the sonar's list can change order.
+/// What a method remembers between calls, one per vehicle and method
+/// (value-initialise to start): the method's own state, of a type its file
+/// declares (the dipole's SideLatch, the geometric method's GeometricMemory,
+/// none for the potential field), made on the first call (method_state).
 struct ReactiveMemory {
-  /// +1 / -1: the side of the object passed, as the sign of cross(target - centre, position - centre); 0 none
-  int side = 0;
-  std::ptrdiff_t engaged_object = -1;  ///< the object the side was latched for
-  Vec2 engaged_centre{0.0, 0.0};       ///< its centre then (objects are re-reported every scan)
-  /// How often the geometric method changed the side for this object
-  /// because the turn to the present one would have cut into a zone (a few
-  /// times at most, or it could dither).
-  int turn_switches = 0;
+  std::any state;
 };
 
-/// One control step of `method`. Throws InputError for bad params, a
+/// The method's state in `memory`, made fresh when it holds none, or another
+/// method's.
+template <class State>
+State& method_state(ReactiveMemory& memory) {
+  if (!memory.state.has_value() || memory.state.type() != typeid(State)) memory.state = State{};
+  return std::any_cast<State&>(memory.state);
+}
+
+/// One control step of `method` (found in the registry). Throws InputError for bad params, a
 /// non-finite position or target, or an object that is not an ellipse
-/// (a >= b > 0, finite).
-ReactiveCommand reactive_command(ReactiveMethod method, const ReactiveParams& params, ReactiveMemory& memory,
+/// (a >= b > 0, finite), and for a method no entry has.
+ReactiveCommand reactive_command(const ReactiveMethod& method, const ReactiveParams& params, ReactiveMemory& memory,
                                  const ReactiveInput& input);
 
 /// The method's memoryless gradient direction at `point` (unit vector, zero
@@ -172,7 +169,7 @@ ReactiveCommand reactive_command(ReactiveMethod method, const ReactiveParams& pa
 /// lines draw. The geometric method takes each object's side from the
 /// symmetry-axis rule (no latch); the dipole method has no axis tie-break, so
 /// its field vanishes at the front stagnation point.
-Vec2 reactive_gradient(ReactiveMethod method, const ReactiveParams& params, const Vec2& point, const Vec2& target,
-                       std::span<const Ellipse> objects);
+Vec2 reactive_gradient(const ReactiveMethod& method, const ReactiveParams& params, const Vec2& point,
+                       const Vec2& target, std::span<const Ellipse> objects);
 
 }  // namespace deepguide

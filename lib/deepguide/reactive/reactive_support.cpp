@@ -10,6 +10,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/geometry/ellipse_segment.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 
 namespace deepguide {
 
@@ -23,21 +24,27 @@ void validate(const ReactiveParams& p) {
   check(finite(p.arrival_radius_m) && p.arrival_radius_m >= 0.0, "arrival_radius_m", "a radius >= 0 m",
         p.arrival_radius_m);
   check(finite(p.influence_m) && p.influence_m > 0.0, "influence_m", "a distance > 0 m", p.influence_m);
-  check(finite(p.potential_gain) && p.potential_gain > 0.0, "potential_gain", "a gain > 0", p.potential_gain);
   check(finite(p.exit_blend_fraction) && p.exit_blend_fraction > 0.0 && p.exit_blend_fraction <= 1.0,
         "exit_blend_fraction", "a fraction in (0, 1]", p.exit_blend_fraction);
-  check(finite(p.dipole_axis_band_m) && p.dipole_axis_band_m >= 0.0, "dipole_axis_band_m", "a distance >= 0 m",
-        p.dipole_axis_band_m);
-  check(finite(p.dipole_blend_m) && p.dipole_blend_m > 0.0, "dipole_blend_m", "a distance > 0 m", p.dipole_blend_m);
-  check(finite(p.geometric_passage_m) && p.geometric_passage_m >= 0.0, "geometric_passage_m", "a distance >= 0 m",
-        p.geometric_passage_m);
   if (p.turn_rate_limit) {
     check(finite(*p.turn_rate_limit) && *p.turn_rate_limit >= 0.0, "turn_rate_limit", "a rate >= 0 rad/s",
           *p.turn_rate_limit);
   }
   check(finite(p.turn_lag_s) && p.turn_lag_s >= 0.0, "turn_lag_s", "a time >= 0 s", p.turn_lag_s);
-  check(finite(p.potential_stall_fraction) && p.potential_stall_fraction > 0.0 && p.potential_stall_fraction < 1.0,
-        "potential_stall_fraction", "a fraction in (0, 1)", p.potential_stall_fraction);
+  if (p.tuning.empty()) return;
+  const std::vector<ReactiveTuning> declared = reactive_tunings();
+  for (const auto& [key, value] : p.tuning) {
+    const auto t =
+        std::find_if(declared.begin(), declared.end(), [&](const ReactiveTuning& d) { return d.key == key; });
+    if (t == declared.end()) {
+      throw InputError("reactive: tuning '" + printable(key) + "': expected a parameter a method declares (" + [&] {
+        std::string names;
+        for (const ReactiveTuning& d : declared) names += (names.empty() ? "" : ", ") + d.key;
+        return names;
+      }() + ")");
+    }
+    check(finite(value) && t->holds(value), key.c_str(), t->expected().c_str(), value);
+  }
 }
 
 Ellipse security_ellipse(const Ellipse& object, double margin_m) {
@@ -173,18 +180,18 @@ int axis_side(const Vec2& centre, const Vec2& target, const Vec2& p, std::option
   return side_of(cross(axis, p - centre), axis, course, 0.0);
 }
 
-bool engaged_with(const ReactiveMemory& memory, const Vec2& centre, double match_m) {
+bool engaged_with(const SideLatch& memory, const Vec2& centre, double match_m) {
   return memory.side != 0 && (memory.engaged_centre - centre).norm() <= match_m;
 }
 
-int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& centre, double match_m, int fresh) {
-  if (!engaged_with(memory, centre, match_m)) memory.side = fresh, memory.turn_switches = 0;
+int latched_side(SideLatch& memory, std::ptrdiff_t index, const Vec2& centre, double match_m, int fresh) {
+  if (!engaged_with(memory, centre, match_m)) memory.side = fresh;
   memory.engaged_object = index;
   memory.engaged_centre = centre;
   return memory.side;
 }
 
-void release(ReactiveMemory& memory) { memory = ReactiveMemory{}; }
+void release(SideLatch& memory) { memory = SideLatch{}; }
 
 std::ptrdiff_t first_zone_hit(std::span<const Ellipse> zones, const Vec2& p, const Vec2& q, std::ptrdiff_t skip) {
   std::ptrdiff_t best = -1;

@@ -1,5 +1,5 @@
 #pragma once
-// What the three reactive methods share (reactive_method.hpp states the
+// What the built-in reactive methods share (reactive_method.hpp states the
 // behaviour): input checks, the security zones, the substitute target when the
 // real one lies in a zone, arrival, the side rule with its latch, the first
 // zone on a line of sight, and the blended exit from inside a zone.
@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "deepguide/reactive/reactive_method.hpp"
+#include "deepguide/reactive/side_latch.hpp"
 
 namespace deepguide::reactive_detail {
 
@@ -76,10 +77,10 @@ int axis_side(const Vec2& centre, const Vec2& target, const Vec2& p, std::option
 /// The latched side for object `index` (zone centre `centre`): the memory's if
 /// it is engaged with the same object (matched by centre within `match_m`),
 /// else `fresh` side, which is then latched.
-int latched_side(ReactiveMemory& memory, std::ptrdiff_t index, const Vec2& centre, double match_m, int fresh);
+int latched_side(SideLatch& memory, std::ptrdiff_t index, const Vec2& centre, double match_m, int fresh);
 /// True if the memory is engaged with the object at `centre` (within `match_m`).
-bool engaged_with(const ReactiveMemory& memory, const Vec2& centre, double match_m);
-void release(ReactiveMemory& memory);
+bool engaged_with(const SideLatch& memory, const Vec2& centre, double match_m);
+void release(SideLatch& memory);
 
 /// The first zone the segment p -> q enters (p outside every zone), -1 none.
 std::ptrdiff_t first_zone_hit(std::span<const Ellipse> zones, const Vec2& p, const Vec2& q, std::ptrdiff_t skip = -1);

@@ -54,7 +54,7 @@ std::vector<Vec2> upstream_seeds(const WorldBox& area, const Vec2& start, const 
   return seeds;
 }
 
-GradientLine trace_gradient_line(ReactiveMethod method, const ReactiveParams& params, const Vec2& seed,
+GradientLine trace_gradient_line(const ReactiveMethod& method, const ReactiveParams& params, const Vec2& seed,
                                  const Vec2& target, std::span<const Ellipse> objects, const WorldBox& area,
                                  const GradientLineOptions& options) {
   const double h = options.step_m;
@@ -101,7 +101,7 @@ GradientLine trace_gradient_line(ReactiveMethod method, const ReactiveParams& pa
   return line;
 }
 
-std::vector<GradientLine> gradient_lines(ReactiveMethod method, const ReactiveParams& params,
+std::vector<GradientLine> gradient_lines(const ReactiveMethod& method, const ReactiveParams& params,
                                          std::span<const Vec2> seeds, const Vec2& target,
                                          std::span<const Ellipse> objects, const WorldBox& area,
                                          const GradientLineOptions& options) {
@@ -126,7 +126,7 @@ std::vector<int> passing_sides(const GradientLine& line, const Vec2& target, std
   return sides;
 }
 
-std::vector<GradientLine> dividing_lines(ReactiveMethod method, const ReactiveParams& params,
+std::vector<GradientLine> dividing_lines(const ReactiveMethod& method, const ReactiveParams& params,
                                          std::span<const Vec2> seeds, std::span<const GradientLine> lines,
                                          const Vec2& target, std::span<const Ellipse> objects, const WorldBox& area,
                                          const GradientLineOptions& options) {

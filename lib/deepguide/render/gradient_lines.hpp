@@ -57,12 +57,12 @@ std::vector<Vec2> upstream_seeds(const WorldBox& area, const Vec2& start, const 
 /// The gradient line of `method` from `seed` (see the header for the ends).
 /// Throws InputError for bad params or objects (reactive_gradient's checks),
 /// a non-positive step or a seed outside the area.
-GradientLine trace_gradient_line(ReactiveMethod method, const ReactiveParams& params, const Vec2& seed,
+GradientLine trace_gradient_line(const ReactiveMethod& method, const ReactiveParams& params, const Vec2& seed,
                                  const Vec2& target, std::span<const Ellipse> objects, const WorldBox& area,
                                  const GradientLineOptions& options);
 
 /// trace_gradient_line for every seed.
-std::vector<GradientLine> gradient_lines(ReactiveMethod method, const ReactiveParams& params,
+std::vector<GradientLine> gradient_lines(const ReactiveMethod& method, const ReactiveParams& params,
                                          std::span<const Vec2> seeds, const Vec2& target,
                                          std::span<const Ellipse> objects, const WorldBox& area,
                                          const GradientLineOptions& options);
@@ -74,7 +74,7 @@ std::vector<int> passing_sides(const GradientLine& line, const Vec2& target, std
 /// The dividing lines between neighbouring `seeds` (in order along the seed
 /// line, none inside an object) whose `lines` (one per seed) pass some object
 /// on different sides; neighbours with an object between them are skipped.
-std::vector<GradientLine> dividing_lines(ReactiveMethod method, const ReactiveParams& params,
+std::vector<GradientLine> dividing_lines(const ReactiveMethod& method, const ReactiveParams& params,
                                          std::span<const Vec2> seeds, std::span<const GradientLine> lines,
                                          const Vec2& target, std::span<const Ellipse> objects, const WorldBox& area,
                                          const GradientLineOptions& options);

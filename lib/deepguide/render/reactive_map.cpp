@@ -6,6 +6,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/simulation/scenario.hpp"
 
 namespace deepguide {
@@ -60,14 +61,7 @@ void target_marker(Canvas& c, const Vec2& at, const ReactiveMapStyle& s, double 
 
 }  // namespace
 
-Rgba method_color(ReactiveMethod method) {
-  switch (method) {
-    case ReactiveMethod::dipole: return rgb_hex(0x0072b2);     // blue
-    case ReactiveMethod::geometric: return rgb_hex(0xd55e00);  // vermillion
-    case ReactiveMethod::potential: return rgb_hex(0x009e73);  // bluish green
-  }
-  return rgb_hex(0x000000);
-}
+Rgba method_color(const ReactiveMethod& method) { return rgb_hex(reactive_method_entry(method).colour); }
 
 ReactiveMap reactive_map_for(const Scenario& scenario, const std::string& title) {
   ReactiveMap map;

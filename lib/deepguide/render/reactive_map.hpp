@@ -44,7 +44,7 @@ struct ReactiveMapStyle {
 };
 
 /// The colour of a method's lines in every reactive figure.
-Rgba method_color(ReactiveMethod method);
+Rgba method_color(const ReactiveMethod& method);
 
 struct ReactiveMap {
   std::vector<Ellipse> objects;  ///< true footprints (local frame, m)

@@ -179,11 +179,10 @@ WrittenSeedFigure graph_figure(const Job& job, int number, GraphKind kind) {
 }
 
 // Figs. 8 and 10: one method's gradient lines round one obstacle.
-WrittenSeedFigure field_figure(const Job& job, int number, ReactiveMethod method) {
+WrittenSeedFigure field_figure(const Job& job, int number, const ReactiveMethod& method, const std::string& what) {
   FieldFigure figure = field_figure_for(read_scenario_file(job.input(kOneObstacle)), method);
   figure.width_px = job.width_px;
-  figure.map.title = title(number, method == ReactiveMethod::dipole ? "gradient lines of the harmonic dipole potential"
-                                                                    : "gradient lines by geometric construction");
+  figure.map.title = title(number, what);
   const FieldFigureGeometry g = render_field_figure(figure, job.path);
   WrittenSeedFigure w;
   w.facts = {{"lines", static_cast<double>(g.lines.size())}, {"dividing_lines", static_cast<double>(g.dividing)}};
@@ -241,8 +240,8 @@ WrittenSeedFigure draw(int number, const Job& job) {
     case 4: return fig4_two_levels(job);
     case 6: return graph_figure(job, 6, GraphKind::visibility_full);
     case 7: return graph_figure(job, 7, GraphKind::quadtree);
-    case 8: return field_figure(job, 8, ReactiveMethod::dipole);
-    case 10: return field_figure(job, 10, ReactiveMethod::geometric);
+    case 8: return field_figure(job, 8, ReactiveMethod::dipole, "gradient lines of the harmonic dipole potential");
+    case 10: return field_figure(job, 10, ReactiveMethod::geometric, "gradient lines by geometric construction");
     case 11: return fig11_paths(job);
     case 12: return fig12_turning_rates(job);
     default: break;

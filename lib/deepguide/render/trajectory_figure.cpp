@@ -30,7 +30,7 @@ void collision_ring(Canvas& c, const Vec2& at, double u) {
 TrajectoryFigure trajectory_figure_for(const Scenario& scenario, std::span<const ReactiveMethod> methods) {
   TrajectoryFigure f;
   f.map = reactive_map_for(scenario, "Trajectories of the reactive methods: " + scenario.name);
-  for (const ReactiveMethod m : methods) f.runs.push_back(simulate(scenario, m, {true}));
+  for (const ReactiveMethod& m : methods) f.runs.push_back(simulate(scenario, m, {true}));
   return f;
 }
 

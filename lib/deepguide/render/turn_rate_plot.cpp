@@ -35,7 +35,7 @@ const Rgba kLimit = rgb_hex(0xc92a2a);
 /// Nautical turning rate (deg/s, clockwise positive) of a math rate (rad/s).
 double nautical_deg_s(double math_rad_s) { return -rad_to_deg(math_rad_s); }
 
-Stroke rate_stroke(ReactiveMethod m, double u) { return {method_color(m), 2.4 * u, {}}; }
+Stroke rate_stroke(const ReactiveMethod& m, double u) { return {method_color(m), 2.4 * u, {}}; }
 Stroke reference_stroke(double u) { return {kReference, 1.2 * u, {4.0 * u, 2.5 * u}}; }
 Stroke limit_stroke(double u) { return {kLimit, 1.4 * u, {7.0 * u, 4.0 * u}}; }
 
@@ -55,7 +55,7 @@ TurnRatePlot turn_rate_plot_for(const Scenario& scenario, std::span<const Reacti
   TurnRatePlot p;
   p.max_turn_rate = scenario.vehicle.max_turn_rate;
   p.title = "Turning rate of the reactive methods: " + scenario.name;
-  for (const ReactiveMethod m : methods) p.runs.push_back(simulate(scenario, m, {true}));
+  for (const ReactiveMethod& m : methods) p.runs.push_back(simulate(scenario, m, {true}));
   return p;
 }
 

@@ -15,6 +15,7 @@
 #include "deepguide/core/yaml_mapping.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 #include "deepguide/world/current_field.hpp"
 #include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/current_summary.hpp"
@@ -126,28 +127,23 @@ void read_sonar(const Mapping& root, Scenario& sc) {
 void read_reactive(const Mapping& root, Scenario& sc) {
   sc.reactive.speed_mps = sc.vehicle.cruise_speed_mps;
   if (!root.has("reactive")) return;
-  const Mapping m(root.value("reactive"), sc.source, "reactive.",
-                  {"margin_m", "arrival_radius_m", "influence_m", "potential_gain", "speed_mps", "exit_blend_fraction",
-                   "dipole_axis_band_m", "dipole_blend_m", "geometric_passage_m", "potential_stall_fraction"},
-                  "a mapping of reactive keys");
+  // The keys every method shares, then each registered method's own.
+  const std::vector<ReactiveTuning> tunings = reactive_tunings();
+  std::vector<std::string> known{"margin_m", "arrival_radius_m", "influence_m", "speed_mps", "exit_blend_fraction"};
+  for (const ReactiveTuning& t : tunings) known.push_back(t.key);
+  const Mapping m(root.value("reactive"), sc.source, "reactive.", known, "a mapping of reactive keys");
   ReactiveParams& r = sc.reactive;
   r.margin_m = m.number_or("margin_m", {0.0, 1e4, true, "a margin in metres"}, r.margin_m);
   r.arrival_radius_m = m.number_or("arrival_radius_m", {0.0, 1e4, false, "a radius in metres"}, r.arrival_radius_m);
   r.influence_m = m.number_or("influence_m", {0.0, 1e5, false, "a distance in metres"}, r.influence_m);
-  r.potential_gain = m.number_or("potential_gain", {0.0, 1e6, false, "a gain"}, r.potential_gain);
   r.speed_mps = m.number_or(
       "speed_mps", {0.0, sc.vehicle.max_speed_mps, false, "a speed in m/s up to the vehicle's max_speed"}, r.speed_mps);
   r.exit_blend_fraction = m.number_or("exit_blend_fraction", {0.0, 1.0, false, "a fraction"}, r.exit_blend_fraction);
-  r.dipole_axis_band_m =
-      m.number_or("dipole_axis_band_m", {0.0, 1e4, true, "a distance in metres"}, r.dipole_axis_band_m);
-  r.dipole_blend_m = m.number_or("dipole_blend_m", {0.0, 1e4, false, "a distance in metres"}, r.dipole_blend_m);
-  r.geometric_passage_m =
-      m.number_or("geometric_passage_m", {0.0, 1e4, true, "a distance in metres"}, r.geometric_passage_m);
-  r.potential_stall_fraction =
-      m.number_or("potential_stall_fraction", {0.0, 1.0, false, "a fraction below 1"}, r.potential_stall_fraction);
-  if (r.potential_stall_fraction >= 1.0) {
-    throw input_error(m.where("potential_stall_fraction"), "a fraction > 0 and < 1",
-                      yaml_number(r.potential_stall_fraction));
+  for (const ReactiveTuning& t : tunings) {
+    if (!m.has(t.key.c_str())) continue;
+    const double v = m.finite_number(t.key.c_str(), t.what.c_str());
+    if (!t.holds(v)) throw input_error(m.where(t.key.c_str()), t.expected(), yaml_number(v));
+    r.tuning[t.key] = v;
   }
 }
 

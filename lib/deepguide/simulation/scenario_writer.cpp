@@ -7,6 +7,7 @@
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
+#include "deepguide/reactive/reactive_registry.hpp"
 
 namespace deepguide {
 
@@ -77,13 +78,13 @@ std::string scenario_yaml(const Scenario& sc, const std::string& comment) {
   const ReactiveParams& r = sc.reactive;
   o << "reactive: {margin_m: " << yaml_exact_number(r.margin_m)
     << ", arrival_radius_m: " << yaml_exact_number(r.arrival_radius_m)
-    << ", influence_m: " << yaml_exact_number(r.influence_m)
-    << ", potential_gain: " << yaml_exact_number(r.potential_gain) << ", speed_mps: " << yaml_exact_number(r.speed_mps)
-    << ", exit_blend_fraction: " << yaml_exact_number(r.exit_blend_fraction)
-    << ", dipole_axis_band_m: " << yaml_exact_number(r.dipole_axis_band_m)
-    << ", dipole_blend_m: " << yaml_exact_number(r.dipole_blend_m)
-    << ", geometric_passage_m: " << yaml_exact_number(r.geometric_passage_m)
-    << ", potential_stall_fraction: " << yaml_exact_number(r.potential_stall_fraction) << "}\n";
+    << ", influence_m: " << yaml_exact_number(r.influence_m) << ", speed_mps: " << yaml_exact_number(r.speed_mps)
+    << ", exit_blend_fraction: " << yaml_exact_number(r.exit_blend_fraction);
+  // Every registered method's own parameters, the defaults too: the file says
+  // what the run used.
+  for (const ReactiveTuning& t : reactive_tunings())
+    o << ", " << t.key << ": " << yaml_exact_number(tuning_value(r, t.key));
+  o << "}\n";
   o << "contacts: {gate_m: " << yaml_exact_number(sc.contacts.gate_m);
   if (std::isfinite(sc.contacts.memory_s)) o << ", memory_s: " << yaml_exact_number(sc.contacts.memory_s);
   o << "}\n";
