@@ -205,34 +205,16 @@ Shard parse_shard(const std::string& text) {
   return s;
 }
 
-EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, const EvaluateOptions& options) {
-  if (options.methods.empty()) throw InputError("`methods`: expected at least one method");
-  RunManifest manifest;
-  manifest.suite = suite.name;
-  manifest.suite_source = suite.source;
-  manifest.scenarios = suite.scenarios.size();
-  manifest.suite_fingerprint = suite.fingerprint;
-  manifest.shard = options.shard;
-  manifest.timing = options.timing;
-  for (const EvalMethod& m : options.methods) {
-    if (std::find(manifest.methods.begin(), manifest.methods.end(), m.name) != manifest.methods.end()) {
-      throw InputError("`methods`: expected each method once, got '" + m.name + "' twice");
-    }
-    manifest.methods.push_back(m.name);
-  }
+namespace {
 
-  const fs::path dir(out_dir);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir, ec))
-    throw InputError(out_dir + ": expected a folder for the results (could not create it)");
-  const FolderLock lock(dir, "evaluate");
-  if (options.fresh) remove_run_files(dir);
-
-  // Resume: keep the rows of the same run, drop a line cut off by a kill.
-  EvaluationRun run;
-  run.manifest = manifest;
+// Resume: the rows of the same run already in `dir` go into run.rows (a
+// line cut off by a kill is dropped); returns the (scenario, method) pairs done.
+std::set<std::pair<std::size_t, std::string>> keep_earlier_rows(const fs::path& dir, const std::string& out_dir,
+                                                                const Suite& suite, const EvaluateOptions& options,
+                                                                EvaluationRun& run) {
   std::set<std::pair<std::size_t, std::string>> done;
+  const RunManifest& manifest = run.manifest;
+  std::error_code ec;
   const bool earlier = fs::exists(dir / kManifest, ec) || fs::exists(dir / kRows, ec);
   if (earlier && !options.fresh) {
     if (!fs::exists(dir / kManifest, ec)) {
@@ -264,6 +246,38 @@ EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, con
     }
     run.resumed = run.rows.size();
   }
+  return done;
+}
+
+}  // namespace
+
+EvaluationRun evaluate_suite(const Suite& suite, const std::string& out_dir, const EvaluateOptions& options) {
+  if (options.methods.empty()) throw InputError("`methods`: expected at least one method");
+  RunManifest manifest;
+  manifest.suite = suite.name;
+  manifest.suite_source = suite.source;
+  manifest.scenarios = suite.scenarios.size();
+  manifest.suite_fingerprint = suite.fingerprint;
+  manifest.shard = options.shard;
+  manifest.timing = options.timing;
+  for (const EvalMethod& m : options.methods) {
+    if (std::find(manifest.methods.begin(), manifest.methods.end(), m.name) != manifest.methods.end()) {
+      throw InputError("`methods`: expected each method once, got '" + m.name + "' twice");
+    }
+    manifest.methods.push_back(m.name);
+  }
+
+  const fs::path dir(out_dir);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir, ec))
+    throw InputError(out_dir + ": expected a folder for the results (could not create it)");
+  const FolderLock lock(dir, "evaluate");
+  if (options.fresh) remove_run_files(dir);
+
+  EvaluationRun run;
+  run.manifest = manifest;
+  const std::set<std::pair<std::size_t, std::string>> done = keep_earlier_rows(dir, out_dir, suite, options, run);
   // The journal starts as the kept rows; every new row is appended and flushed.
   sort_rows(run.rows, manifest.methods);
   write_text_file(dir / kManifest, manifest_json(manifest).dump(2) + "\n", "run manifest");

@@ -189,15 +189,12 @@ Construction leave_zone(const std::vector<Ellipse>& zones, std::ptrdiff_t k, con
   return {exit_direction(along, n, depth_fraction(zone, p), tuning.blend), 3, k};
 }
 
-/// `outside_only`: p is taken as outside every zone (the probe just outside a
-/// boundary, which may lie in an overlapping zone): no sector 3 recursion.
-Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
-                       GeometricMemory* memory, const Tuning& tuning, bool outside_only) {
-  if (!outside_only) {
-    if (const std::ptrdiff_t inside = deepest_zone(zones, p); inside >= 0) {
-      return leave_zone(zones, inside, p, g, course, memory, tuning);
-    }
-  }
+/// The zone the construction steers round (p outside every zone): the
+/// engaged one while the line of sight still meets it, else the first the
+/// line of sight enters, else, under way, the engaged one while a turn to the
+/// target would cut a zone; -1 when the way to the target is free.
+std::ptrdiff_t engaged_zone(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g,
+                            std::optional<double> course, const GeometricMemory* memory, const Tuning& tuning) {
   std::ptrdiff_t active = -1;
   if (memory) {
     // The engaged zone stays engaged until the line of sight clears it by a
@@ -225,6 +222,19 @@ Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const V
       }
     }
   }
+  return active;
+}
+
+/// `outside_only`: p is taken as outside every zone (the probe just outside a
+/// boundary, which may lie in an overlapping zone): no sector 3 recursion.
+Construction construct(const std::vector<Ellipse>& zones, const Vec2& p, const Vec2& g, std::optional<double> course,
+                       GeometricMemory* memory, const Tuning& tuning, bool outside_only) {
+  if (!outside_only) {
+    if (const std::ptrdiff_t inside = deepest_zone(zones, p); inside >= 0) {
+      return leave_zone(zones, inside, p, g, course, memory, tuning);
+    }
+  }
+  const std::ptrdiff_t active = engaged_zone(zones, p, g, course, memory, tuning);
   if (active < 0) {
     if (memory) release(*memory);
     return {unit_or_zero(g - p), 2, -1};

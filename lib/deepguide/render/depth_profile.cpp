@@ -35,6 +35,89 @@ constexpr std::uint32_t kOccupiedCell = 0xffd5d9deu, kOccupiedEdge = 0xffb3b9c0u
 Stroke route_stroke(double u) { return {kRoute, 2.6 * u, {}}; }
 Stroke clearance_stroke(const Rgba& c, double u) { return {c, 1.2 * u, {5.0 * u, 3.0 * u}}; }
 
+// The cells the section cuts, one pixel at a time: the leaf under each
+// pixel, its edges where the leaf changes from the pixel above or left.
+std::vector<std::uint32_t> section_pixels(const CellTree<3>& tree, const std::vector<Vec2>& column_points,
+                                          const DepthProfileLayout& l, int rows) {
+  const int cols = static_cast<int>(column_points.size());
+  std::vector<std::uint32_t> pixels(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), kOutside);
+  std::vector<std::size_t> above(static_cast<std::size_t>(cols), std::numeric_limits<std::size_t>::max());
+  for (int r = 0; r < rows; ++r) {
+    const double depth = l.depth_top_m + (l.depth_bottom_m - l.depth_top_m) * (r + 0.5) / rows;
+    std::size_t left = std::numeric_limits<std::size_t>::max();
+    for (int c = 0; c < cols; ++c) {
+      const Vec2& p = column_points[static_cast<std::size_t>(c)];
+      const std::optional<std::size_t> leaf = tree.locate(Vec3(p.x(), p.y(), depth));
+      const std::size_t id = leaf ? *leaf : std::numeric_limits<std::size_t>::max();
+      if (leaf) {
+        const bool free = tree.leaves()[*leaf].state == CellState::free;
+        const bool edge = id != left || id != above[static_cast<std::size_t>(c)];
+        pixels[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)] =
+            free ? (edge ? kFreeEdge : kFreeCell) : (edge ? kOccupiedEdge : kOccupiedCell);
+      }
+      left = id;
+      above[static_cast<std::size_t>(c)] = id;
+    }
+  }
+  return pixels;
+}
+
+// Obstacles whose zone the track crosses: where, along the track (as column
+// runs), the track is within the margin of the footprint.
+std::map<std::size_t, std::vector<std::pair<int, int>>> crossed_runs(const ObstacleField& field,
+                                                                     const std::vector<Vec2>& column_points) {
+  const int cols = static_cast<int>(column_points.size());
+  std::map<std::size_t, std::vector<std::pair<int, int>>> crossed;  // obstacle -> column runs
+  for (int c = 0; c < cols; ++c) {
+    const Vec2& p = column_points[static_cast<std::size_t>(c)];
+    for (std::size_t i : field.near(p, p, field.margin())) {
+      if (field.distance_to(i, p) >= field.margin()) continue;
+      auto& runs = crossed[i];
+      if (!runs.empty() && runs.back().second == c - 1)
+        runs.back().second = c;
+      else
+        runs.emplace_back(c, c);
+    }
+  }
+  return crossed;
+}
+
+std::vector<LegendEntry> legend_entries(const DepthPlan& plan, double u) {
+  const double top_cell = plan.min_cell.z(), width_cell = plan.min_cell.x();
+  char cells[96];
+  std::snprintf(cells, sizeof cells, "octree cells cut (smallest %.2f m high, %.2f m wide)", top_cell, width_cell);
+  return {
+      {"route, steepest leg " + std::to_string(static_cast<int>(std::lround(plan.check.steepest_deg))) + "\u00b0",
+       [u](Canvas& c, const Vec2& m) {
+         c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, route_stroke(u));
+       }},
+      {"sea floor, and its clearance",
+       [u](Canvas& c, const Vec2& m) {
+         c.fill_rect({m.x() - 15 * u, m.y() - 2 * u, 30 * u, 8 * u}, kFloor);
+         c.stroke_polyline({m - Vec2(15 * u, 5 * u), m + Vec2(15 * u, -5 * u)}, clearance_stroke(kFloor, u));
+       }},
+      {"obstacle, and its top less the clearance",
+       [u](Canvas& c, const Vec2& m) {
+         c.fill_rect({m.x() - 15 * u, m.y() - 3 * u, 30 * u, 10 * u},
+                     Rgba{kObstacle.r, kObstacle.g, kObstacle.b, 0.45});
+         c.stroke_polyline({m - Vec2(15 * u, 5 * u), m + Vec2(15 * u, -5 * u)}, clearance_stroke(kObstacle, u));
+       }},
+      {"depth band",
+       [u](Canvas& c, const Vec2& m) {
+         c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, clearance_stroke(kBand, u));
+       }},
+      {cells,
+       [u](Canvas& c, const Vec2& m) {
+         c.fill_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, rgb_hex(0xeef4fa));
+         c.stroke_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, Stroke{rgb_hex(0xc3d3e3), 1.0 * u, {}});
+       }},
+      {"occupied cells",
+       [u](Canvas& c, const Vec2& m) {
+         c.fill_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, rgb_hex(0xd5d9de));
+       }},
+  };
+}
+
 }  // namespace
 
 DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string& title, const std::string& path,
@@ -83,31 +166,11 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
   std::snprintf(exaggeration, sizeof exaggeration, ", vertical exaggeration \u00d7%.0f", l.exaggeration);
   draw_figure_title(canvas, (title.empty() ? std::string("Depth profile") : title) + exaggeration, l.width, u, kText);
 
-  // The cells the section cuts, one pixel at a time: the leaf under each
-  // pixel, its edges where the leaf changes from the pixel above or left.
+  // The cells the section cuts, one column per pixel.
   const int cols = static_cast<int>(std::ceil(plot.width)), rows = static_cast<int>(std::ceil(plot.height));
-  std::vector<std::uint32_t> pixels(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), kOutside);
-  std::vector<std::size_t> above(static_cast<std::size_t>(cols), std::numeric_limits<std::size_t>::max());
-  const CellTree<3>& tree = plan.graph->tree();
   std::vector<Vec2> column_points;
   for (int c = 0; c < cols; ++c) column_points.push_back(track.point_at(l.along_m * (c + 0.5) / cols));
-  for (int r = 0; r < rows; ++r) {
-    const double depth = l.depth_top_m + (l.depth_bottom_m - l.depth_top_m) * (r + 0.5) / rows;
-    std::size_t left = std::numeric_limits<std::size_t>::max();
-    for (int c = 0; c < cols; ++c) {
-      const Vec2& p = column_points[static_cast<std::size_t>(c)];
-      const std::optional<std::size_t> leaf = tree.locate(Vec3(p.x(), p.y(), depth));
-      const std::size_t id = leaf ? *leaf : std::numeric_limits<std::size_t>::max();
-      if (leaf) {
-        const bool free = tree.leaves()[*leaf].state == CellState::free;
-        const bool edge = id != left || id != above[static_cast<std::size_t>(c)];
-        pixels[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)] =
-            free ? (edge ? kFreeEdge : kFreeCell) : (edge ? kOccupiedEdge : kOccupiedCell);
-      }
-      left = id;
-      above[static_cast<std::size_t>(c)] = id;
-    }
-  }
+  const std::vector<std::uint32_t> pixels = section_pixels(plan.graph->tree(), column_points, l, rows);
   canvas.image({plot.x, plot.y, static_cast<double>(cols), static_cast<double>(rows)}, cols, rows, pixels);
   canvas.clip(plot);
 
@@ -116,21 +179,9 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
     if (std::isfinite(z))
       canvas.stroke_polyline({{x.px_lo, y.to_px(z)}, {x.px_hi, y.to_px(z)}}, clearance_stroke(kBand, u));
   }
-  // Obstacles whose zone the track crosses: where, along the track, the
-  // track is within the margin of the footprint; drawn from the top down.
+  // Obstacles whose zone the track crosses, drawn from the top down.
   const ObstacleField& field = volume.field();
-  std::map<std::size_t, std::vector<std::pair<int, int>>> crossed;  // obstacle -> column runs
-  for (int c = 0; c < cols; ++c) {
-    const Vec2& p = column_points[static_cast<std::size_t>(c)];
-    for (std::size_t i : field.near(p, p, field.margin())) {
-      if (field.distance_to(i, p) >= field.margin()) continue;
-      auto& runs = crossed[i];
-      if (!runs.empty() && runs.back().second == c - 1)
-        runs.back().second = c;
-      else
-        runs.emplace_back(c, c);
-    }
-  }
+  const std::map<std::size_t, std::vector<std::pair<int, int>>> crossed = crossed_runs(field, column_points);
   l.obstacles_crossed = crossed.size();
   const double c_m = band.vertical_clearance_m;
   for (const auto& [i, runs] : crossed) {
@@ -176,40 +227,7 @@ DepthProfileLayout render_depth_profile(const DepthPlan& plan, const std::string
   draw_axes(canvas, plot, x, y, {"distance along the track (m)", "depth (m)", 10, 7, true}, u,
             {kText, kFrame, Rgba{0, 0, 0, 0}});
 
-  const double top_cell = plan.min_cell.z(), width_cell = plan.min_cell.x();
-  char cells[96];
-  std::snprintf(cells, sizeof cells, "octree cells cut (smallest %.2f m high, %.2f m wide)", top_cell, width_cell);
-  const std::vector<LegendEntry> entries{
-      {"route, steepest leg " + std::to_string(static_cast<int>(std::lround(plan.check.steepest_deg))) + "\u00b0",
-       [u](Canvas& c, const Vec2& m) {
-         c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, route_stroke(u));
-       }},
-      {"sea floor, and its clearance",
-       [u](Canvas& c, const Vec2& m) {
-         c.fill_rect({m.x() - 15 * u, m.y() - 2 * u, 30 * u, 8 * u}, kFloor);
-         c.stroke_polyline({m - Vec2(15 * u, 5 * u), m + Vec2(15 * u, -5 * u)}, clearance_stroke(kFloor, u));
-       }},
-      {"obstacle, and its top less the clearance",
-       [u](Canvas& c, const Vec2& m) {
-         c.fill_rect({m.x() - 15 * u, m.y() - 3 * u, 30 * u, 10 * u},
-                     Rgba{kObstacle.r, kObstacle.g, kObstacle.b, 0.45});
-         c.stroke_polyline({m - Vec2(15 * u, 5 * u), m + Vec2(15 * u, -5 * u)}, clearance_stroke(kObstacle, u));
-       }},
-      {"depth band",
-       [u](Canvas& c, const Vec2& m) {
-         c.stroke_polyline({m - Vec2(15 * u, 0), m + Vec2(15 * u, 0)}, clearance_stroke(kBand, u));
-       }},
-      {cells,
-       [u](Canvas& c, const Vec2& m) {
-         c.fill_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, rgb_hex(0xeef4fa));
-         c.stroke_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, Stroke{rgb_hex(0xc3d3e3), 1.0 * u, {}});
-       }},
-      {"occupied cells",
-       [u](Canvas& c, const Vec2& m) {
-         c.fill_rect({m.x() - 15 * u, m.y() - 7 * u, 30 * u, 14 * u}, rgb_hex(0xd5d9de));
-       }},
-  };
-  draw_legend(canvas, entries, legend, kLegendColumns, u, kText);
+  draw_legend(canvas, legend_entries(plan, u), legend, kLegendColumns, u, kText);
   canvas.finish();
   return l;
 }

@@ -115,6 +115,50 @@ double identify_max_time_s(const Scenario& sc) {
   return std::min(t, kMaxSimulationTime_s);
 }
 
+namespace {
+
+// One step of the identification's unit (aligning, or going around): its
+// command and what it says about the errors.
+UnitStep unit_step(const IdentifySpec& id, const VehicleState& state, const Vec2& current,
+                   const std::vector<Ellipse>& others, AlignMemory& align_memory, AroundMemory& around_memory) {
+  const Ellipse& object = id.object;
+  const bool aligning = id.mode == IdentifyMode::align;
+  UnitStep u;
+  const Vec2 p = state.position;
+  if (aligning) {
+    const AlignCommand c = align_command(object, id.align, align_memory, p, course_over_ground(state), current, others);
+    const Vec2 e = *align_memory.direction;
+    u = {.course = c.course,
+         .speed_mps = c.speed_mps,
+         .is_heading = c.is_heading,
+         .overpowered = c.overpowered,
+         .phase = c.mode == AlignArea::positioning ? IdentifyPhase::positioning : IdentifyPhase::evasive,
+         .cross_track_m = (p - c.goal).dot(Vec2(-e.y(), e.x())),
+         .goal_error_m = c.goal_error_m,
+         .requested_m = signed_distance(object, c.goal),
+         .goal = c.goal};
+    return u;
+  }
+  const Vec2 ground = state.speed_mps * Vec2(std::cos(state.heading), std::sin(state.heading)) + current;
+  const AroundCommand c = around_command(object, id.around, around_memory, p, ground);
+  const IdentifyPhase phase = c.mode == AroundMode::steering   ? IdentifyPhase::steering
+                              : c.mode == AroundMode::tracking ? IdentifyPhase::tracking
+                                                               : IdentifyPhase::done;
+  const bool along = std::abs(wrap_pi(math_angle(ground) - c.path_course)) <= kAlongPath;
+  u = {.course = c.course,
+       .speed_mps = c.speed_mps,
+       .course_rate = c.course_rate,
+       .on_track = along,
+       .phase = phase,
+       .cross_track_m = c.cross_track_m,
+       .goal_error_m = std::abs(c.cross_track_m),
+       .laps = around_memory.laps_done(),
+       .requested_m = id.around.distance_m};
+  return u;
+}
+
+}  // namespace
+
 IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptions& options) {
   validate(sc);
   if (!sc.identify) {
@@ -141,43 +185,6 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     if (o.id != id.object_id) others.push_back(o.footprint);
   AroundMemory around_memory;
 
-  // One step of the unit: its command and what it says about the errors.
-  auto unit = [&](const Vec2& current) {
-    UnitStep u;
-    const Vec2 p = state.position;
-    if (aligning) {
-      const AlignCommand c =
-          align_command(object, id.align, align_memory, p, course_over_ground(state), current, others);
-      const Vec2 e = *align_memory.direction;
-      u = {.course = c.course,
-           .speed_mps = c.speed_mps,
-           .is_heading = c.is_heading,
-           .overpowered = c.overpowered,
-           .phase = c.mode == AlignArea::positioning ? IdentifyPhase::positioning : IdentifyPhase::evasive,
-           .cross_track_m = (p - c.goal).dot(Vec2(-e.y(), e.x())),
-           .goal_error_m = c.goal_error_m,
-           .requested_m = signed_distance(object, c.goal),
-           .goal = c.goal};
-      return u;
-    }
-    const Vec2 ground = state.speed_mps * Vec2(std::cos(state.heading), std::sin(state.heading)) + current;
-    const AroundCommand c = around_command(object, id.around, around_memory, p, ground);
-    const IdentifyPhase phase = c.mode == AroundMode::steering   ? IdentifyPhase::steering
-                                : c.mode == AroundMode::tracking ? IdentifyPhase::tracking
-                                                                 : IdentifyPhase::done;
-    const bool along = std::abs(wrap_pi(math_angle(ground) - c.path_course)) <= kAlongPath;
-    u = {.course = c.course,
-         .speed_mps = c.speed_mps,
-         .course_rate = c.course_rate,
-         .on_track = along,
-         .phase = phase,
-         .cross_track_m = c.cross_track_m,
-         .goal_error_m = std::abs(c.cross_track_m),
-         .laps = around_memory.laps_done(),
-         .requested_m = id.around.distance_m};
-    return u;
-  };
-
   IdentifyResult result;
   result.mode = id.mode;
   if (options.record_trajectory) result.trajectory.reserve(std::min<std::size_t>(max_steps + 1, std::size_t{1} << 20));
@@ -192,7 +199,7 @@ IdentifyResult simulate_identification(const Scenario& sc, const SimulationOptio
     const double t = plant.time_s();
     const Vec2 current = plant.current();
     // The unit runs even when the current wins, so that aligning's held point is still known.
-    UnitStep u = unit(current);
+    UnitStep u = unit_step(id, state, current, others, align_memory, around_memory);
     const bool overpowered = current.norm() >= top_speed || u.overpowered;
     if (overpowered) {
       u.phase = IdentifyPhase::overpowered;
