@@ -17,6 +17,8 @@ DEEPGUIDE_PACKAGES=(
   python3-matplotlib
   # The web map: Leaflet, inlined into every page; Chromium, headless, tests the pages.
   libjs-leaflet chromium
+  # The size check (scripts/check_sizes.sh, ctest `sizes`) finds functions with it.
+  universal-ctags
 )
 
 deepguide_install_packages() {

@@ -13,19 +13,24 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/polygon_locator.hpp"
 #include "deepguide/geometry/polygon_ops.hpp"
+#include "deepguide/world/enc_cell_index.hpp"
 #include "deepguide/world/no_go_union.hpp"
 
 namespace deepguide {
 namespace bg = boost::geometry;
 namespace bgi = boost::geometry::index;
 
+using enc_detail::BoxItem;
+using enc_detail::BoxTree;
+using enc_detail::DepthAreas;
+using enc_detail::envelope;
+using enc_detail::ZocZones;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-using BgLine = bg::model::linestring<BgPoint>;
+using enc_detail::BgLine;
 using BgMultiLine = bg::model::multi_linestring<BgLine>;
-using BoxItem = std::pair<BgBox, std::size_t>;
-using BoxTree = bgi::rtree<BoxItem, bgi::rstar<16>>;
 
 const std::set<std::string> kDepthAreas = {"DEPARE", "DRGARE"};
 const std::set<std::string> kAlways = {"LNDARE", "UNSARE", "SLCONS", "PONTON", "HULKES", "FLODOC", "PILPNT",
@@ -35,8 +40,6 @@ const std::set<std::string> kDangers = {"OBSTRN", "WRECKS", "UWTROC"};
 const std::set<std::string> kSkin = {"DEPARE", "DRGARE", "LNDARE", "UNSARE", "FLODOC", "HULKES", "PONTON"};
 // RESTRN values that keep a vehicle out: entry prohibited, entry restricted, area to be avoided.
 const std::set<int> kNoEntry = {7, 8, 14};
-// S-52's depth for a non-dangerous wreck without VALSOU (deeper than 20 m).
-constexpr double kNonDangerousWreckDepth = 20.1;
 constexpr int kCirclePoints = 16;
 
 void check_options(const EncNoGoOptions& o) {
@@ -54,8 +57,6 @@ void check_options(const EncNoGoOptions& o) {
        "a tolerance >= 0 m", o.simplify_tolerance_m);
   check_chart_options(o);
 }
-
-BgBox envelope(const BgMultiPolygon& m) { return bg::return_envelope<BgBox>(m); }
 
 // Disc and strip polygons that enclose the true round shape: the chords of a
 // regular n-gon at radius r / cos(pi / n) stay outside the circle of radius r.
@@ -83,98 +84,6 @@ BgMultiPolygon disc_polygon(const Vec2& centre, double radius) {
 
 // A zone's rank, best first: A1 1, A2 2, B 3, C 4, D 5; U, any other code and no zone 6.
 int zoc_rank(int catzoc) { return catzoc >= 1 && catzoc <= 5 ? catzoc : 6; }
-
-// Zones of confidence of one cell.
-struct ZocZones {
-  std::vector<BgPolygon> polys;
-  std::vector<int> catzoc;
-  BoxTree tree;
-  std::unique_ptr<PolygonLocator> locator;
-
-  void build() {
-    std::vector<BoxItem> items;
-    std::vector<const BgPolygon*> ptrs;
-    for (std::size_t i = 0; i < polys.size(); ++i) {
-      items.emplace_back(bg::return_envelope<BgBox>(polys[i]), i);
-      ptrs.push_back(&polys[i]);
-    }
-    tree = BoxTree(items.begin(), items.end());
-    locator = std::make_unique<PolygonLocator>(ptrs);
-  }
-  // Zones meeting `area`.
-  std::vector<std::size_t> meeting(const BgMultiPolygon& area) const {
-    std::vector<BoxItem> hits;
-    tree.query(bgi::intersects(envelope(area)), std::back_inserter(hits));
-    std::vector<std::size_t> out;
-    for (const auto& h : hits) {
-      if (bg::intersects(polys[h.second], area)) out.push_back(h.second);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-  // The worst zone holding p (largest uncertainty at depth z), or -1.
-  int at(const Vec2& p, double z, const EncNoGoOptions& o) const {
-    int best = -1;
-    double worst = -1.0;
-    for (std::size_t k : locator->covering(p)) {
-      const ZocFigures f = zoc_figures(catzoc[k], o);
-      const double u = f.depth_fixed_m + f.depth_fraction * std::max(z, 0.0) + 1e-9 * f.position_m;
-      if (u > worst) worst = u, best = static_cast<int>(k);
-    }
-    return best;
-  }
-};
-
-// Depth areas of one cell, for the depth around a hazard (EXPSOU).
-struct DepthAreas {
-  std::vector<const EncFeature*> areas;
-  BoxTree tree;
-  void build() {
-    std::vector<BoxItem> items;
-    for (std::size_t i = 0; i < areas.size(); ++i) items.emplace_back(envelope(areas[i]->areas), i);
-    tree = BoxTree(items.begin(), items.end());
-  }
-  // Least DRVAL1 of the depth areas meeting the feature's geometry (NaN: none, or unknown).
-  double least_drval1(const EncFeature& f) const {
-    BgBox box;
-    bool any = false;
-    auto grow = [&](const Vec2& p) {
-      if (!any)
-        box = BgBox(to_bg(p), to_bg(p)), any = true;
-      else
-        bg::expand(box, to_bg(p));
-    };
-    for (const Vec2& p : f.points) grow(p);
-    for (const auto& l : f.lines)
-      for (const Vec2& p : l) grow(p);
-    if (!f.areas.empty()) {
-      const BgBox a = envelope(f.areas);
-      grow(to_eigen(a.min_corner()));
-      grow(to_eigen(a.max_corner()));
-    }
-    if (!any) return kNaN;
-    std::vector<BoxItem> hits;
-    tree.query(bgi::intersects(box), std::back_inserter(hits));
-    double least = kNaN;
-    for (const auto& h : hits) {
-      const EncFeature& d = *areas[h.second];
-      bool meets = false;
-      for (const Vec2& p : f.points) meets = meets || bg::covered_by(to_bg(p), d.areas);
-      if (!f.areas.empty()) meets = meets || bg::intersects(f.areas, d.areas);
-      if (!f.lines.empty() && !meets) {
-        for (const auto& l : f.lines) {
-          BgLine bl;
-          for (const Vec2& p : l) bl.push_back(to_bg(p));
-          meets = meets || bg::intersects(bl, d.areas);
-        }
-      }
-      if (!meets) continue;
-      if (std::isnan(d.drval1)) return kNaN;  // one unknown neighbour: unknown
-      least = std::isnan(least) ? d.drval1 : std::min(least, d.drval1);
-    }
-    return least;
-  }
-};
 
 BgMultiPolygon clip_away(const BgMultiPolygon& area, const BgMultiPolygon& better) {
   if (better.empty() || !bg::intersects(envelope(area), envelope(better))) return area;
@@ -584,54 +493,6 @@ void planning_obstacles(EncNoGo& out, const std::vector<std::size_t>& tiles, dou
 }
 
 }  // namespace
-
-bool decides_before(long scale_a, int band_a, const std::string& name_a, long scale_b, int band_b,
-                    const std::string& name_b) {
-  const long sa = scale_a > 0 ? scale_a : std::numeric_limits<long>::max();
-  const long sb = scale_b > 0 ? scale_b : std::numeric_limits<long>::max();
-  if (sa != sb) return sa < sb;
-  if (band_a != band_b) return band_a > band_b;
-  return name_a < name_b;
-}
-
-std::string zoc_name(int catzoc) {
-  static const char* const names[] = {"A1", "A2", "B", "C", "D", "U"};
-  return catzoc >= 1 && catzoc <= 6 ? names[catzoc - 1] : "unknown";
-}
-
-EncNoGoOptions enc_options(const ChartOptions& chart, double operating_depth_m, double vertical_clearance_m) {
-  EncNoGoOptions o;
-  static_cast<ChartOptions&>(o) = chart;
-  o.operating_depth_m = operating_depth_m;
-  o.vertical_clearance_m = vertical_clearance_m;
-  return o;
-}
-
-ZocFigures zoc_figures(int catzoc, const ChartOptions& options) {
-  switch (catzoc) {
-    case 1: return {0.5, 0.01, 5.0};
-    case 2: return {1.0, 0.02, 20.0};
-    case 3: return {1.0, 0.02, 50.0};
-    case 4: return {2.0, 0.05, 500.0};
-    default: return options.unassessed;
-  }
-}
-
-std::optional<double> hazard_depth(const EncFeature& h, double surrounding_drval1) {
-  if (!std::isnan(h.valsou)) return h.valsou;
-  switch (h.watlev) {
-    case 1:
-    case 2:
-    case 4:
-    case 5:
-    case 6:
-    case 7: return 0.0;
-    default: break;
-  }
-  if (h.cls == "WRECKS" && h.catwrk == 1) return kNonDangerousWreckDepth;
-  if ((h.expsou == 1 || h.expsou == 3) && !std::isnan(surrounding_drval1)) return surrounding_drval1;
-  return std::nullopt;
-}
 
 EncNoGo enc_no_go(const std::vector<std::string>& charts, const std::optional<LocalFrame>& frame,
                   const EncNoGoOptions& options) {
