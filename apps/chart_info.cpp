@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/chart_options.hpp"
 
 namespace deepguide::app {
 namespace {

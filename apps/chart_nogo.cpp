@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "deepguide/world/no_go_export.hpp"
+#include "deepguide/charts/no_go_export.hpp"
 
 namespace deepguide::app {
 

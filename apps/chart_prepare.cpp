@@ -6,10 +6,10 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/prepared_graphs.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 
 namespace deepguide::app {
 namespace {

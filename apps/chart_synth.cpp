@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "deepguide/world/sample_chart.hpp"
+#include "deepguide/charts/sample_chart.hpp"
 
 namespace deepguide::app {
 namespace {

@@ -14,9 +14,9 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/version.hpp"
-#include "deepguide/world/chart_options.hpp"
 
 namespace deepguide::app {
 

@@ -46,7 +46,7 @@ struct FrameOptions {
 void add_frame_options(CLI::App& cmd, FrameOptions& options);
 
 /// The chart options of every command that reads S-57 charts, with the same
-/// names and meaning everywhere (world/chart_options.hpp): --zoc
+/// names and meaning everywhere (charts/chart_options.hpp): --zoc
 /// clipped|strict|none (--no-zoc for none), --restricted, --unassessed-zoc
 /// A,B,R, and --vertical-clearance (also --clearance) where the command
 /// keeps one (`vertical_clearance_m` not null).

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/output_paths.hpp"
@@ -15,7 +16,6 @@
 #include "deepguide/render/mission_web_map.hpp"
 #include "deepguide/render/route_scene.hpp"  // kMinImageWidth, kMaxImageWidth
 #include "deepguide/simulation/mission_run_report.hpp"
-#include "deepguide/world/chart_options.hpp"
 
 namespace deepguide::app {
 namespace {

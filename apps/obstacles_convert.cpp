@@ -5,7 +5,7 @@
 
 #include "commands.hpp"
 #include "deepguide/core/output_paths.hpp"
-#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 
 namespace deepguide::app {
 namespace {

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "deepguide/world/obstacle_store.hpp"
+#include "deepguide/obstacle_files/obstacle_store.hpp"
 
 namespace deepguide::app {
 namespace {

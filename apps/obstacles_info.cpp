@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "deepguide/world/obstacle_summary.hpp"
+#include "deepguide/obstacle_files/obstacle_summary.hpp"
 
 namespace deepguide::app {
 namespace {

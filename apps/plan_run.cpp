@@ -11,11 +11,11 @@
 #include "deepguide/core/utc_time.hpp"
 #include "deepguide/mission/route_export.hpp"
 #include "deepguide/mission/route_plan_export.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/render/canvas.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
 #include "deepguide/render/route_web_map.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 #include "plan_command.hpp"
 
 namespace deepguide::app {

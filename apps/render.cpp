@@ -10,12 +10,12 @@
 
 #include "commands.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_io.hpp"
 #include "deepguide/render/graph_layers.hpp"
 #include "deepguide/render/route_scene.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 // Under AddressSanitizer, fontconfig's caches (reached through Cairo's text)
 // show up as leaks at exit; they are third-party, once per process, and freed

@@ -18,11 +18,11 @@
 #include <vector>
 
 #include "bench_options.hpp"
+#include "deepguide/currents/current_field.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/current_field.hpp"
 #include "deepguide/world/local_frame.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 using namespace deepguide;
 

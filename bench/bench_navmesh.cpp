@@ -23,11 +23,11 @@
 #include <vector>
 
 #include "bench_options.hpp"
+#include "deepguide/charts/enc_no_go.hpp"
 #include "deepguide/planning/graphs/navmesh/nav_mesh_graph.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/enc_no_go.hpp"
 
 using namespace deepguide;
 using Clock = std::chrono::steady_clock;

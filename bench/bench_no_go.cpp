@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "bench_options.hpp"
+#include "deepguide/charts/no_go.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/no_go.hpp"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 int main(int argc, char** argv) {
   using namespace deepguide;

@@ -1,5 +1,5 @@
 // Fuzz harness: bathymetry grids in NetCDF opened and scanned (fuzz_support.hpp says how it runs).
-#include "deepguide/world/bathymetry.hpp"
+#include "deepguide/charts/bathymetry.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

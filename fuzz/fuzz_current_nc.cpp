@@ -1,5 +1,5 @@
 // Fuzz harness: current fields (NetCDF u/v) opened and read (fuzz_support.hpp says how it runs).
-#include "deepguide/world/current_field.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

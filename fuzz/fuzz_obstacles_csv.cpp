@@ -1,5 +1,5 @@
 // Fuzz harness: obstacle files in CSV (columns or WKT) through our OGR layer (fuzz_support.hpp says how it runs).
-#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,5 +1,5 @@
 // Fuzz harness: S-57 cells: structure check and summary (chart info) (fuzz_support.hpp says how it runs).
-#include "deepguide/world/chart_info.hpp"
+#include "deepguide/charts/chart_info.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -11,14 +11,17 @@ declare -A uses=(
   [core]=""
   [geometry]="core"
   [world]="core geometry"
-  [vehicle]="core geometry world"
-  [planning]="core geometry vehicle world"
+  [currents]="core geometry world"
+  [obstacle_files]="core geometry world"
+  [charts]="core geometry obstacle_files world"
+  [vehicle]="core currents geometry world"
+  [planning]="charts core currents geometry obstacle_files vehicle world"
   [reactive]="core geometry"
   [identification]="core geometry reactive"
-  [mission]="core geometry identification planning reactive vehicle world"
-  [simulation]="core geometry identification mission planning reactive vehicle world"
-  [render]="core geometry identification mission planning reactive simulation vehicle world"
-  [evaluation]="core geometry identification mission planning reactive render simulation vehicle world"
+  [mission]="charts core currents geometry identification obstacle_files planning reactive vehicle world"
+  [simulation]="charts core currents geometry identification mission obstacle_files planning reactive vehicle world"
+  [render]="charts core currents geometry identification mission obstacle_files planning reactive simulation vehicle world"
+  [evaluation]="charts core currents geometry identification mission obstacle_files planning reactive render simulation vehicle world"
 )
 bad=0
 for dir in "$lib"/deepguide/*/; do

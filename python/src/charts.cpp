@@ -21,17 +21,17 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/enc_cells.hpp"
+#include "deepguide/charts/enc_no_go.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/currents/current_sampling.hpp"
+#include "deepguide/currents/current_summary.hpp"
 #include "deepguide/render/chart_scene.hpp"
 #include "deepguide/render/chart_web_map.hpp"
 #include "deepguide/render/reactive_map.hpp"  // ellipse_outline
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/current_sampling.hpp"
-#include "deepguide/world/current_summary.hpp"
-#include "deepguide/world/enc_cells.hpp"
-#include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 
 namespace py = pybind11;
 

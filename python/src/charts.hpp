@@ -11,9 +11,9 @@
 #include <tuple>
 #include <vector>
 
-#include "deepguide/world/chart_obstacles.hpp"
-#include "deepguide/world/chart_options.hpp"
-#include "deepguide/world/current_field.hpp"
+#include "deepguide/charts/chart_obstacles.hpp"
+#include "deepguide/charts/chart_options.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 

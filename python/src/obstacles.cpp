@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 
 namespace py = pybind11;
 

@@ -22,12 +22,12 @@
 #include "charts.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
+#include "deepguide/currents/current_field.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/render/route_plan_figure.hpp"
 #include "deepguide/render/route_web_map.hpp"
-#include "deepguide/world/current_field.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 namespace py = pybind11;
 

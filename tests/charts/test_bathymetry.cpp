@@ -14,9 +14,9 @@
 #include <limits>
 #include <vector>
 
+#include "deepguide/charts/bathymetry.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/bathymetry.hpp"
-#include "deepguide/world/current_field.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/world/raster_completeness.hpp"
 #include "test_support.hpp"
 

@@ -1,5 +1,5 @@
 // One set of chart options for every command that reads S-57 charts
-// (world/chart_options.hpp, apps/cli.cpp add_chart_options): the policies
+// (charts/chart_options.hpp, apps/cli.cpp add_chart_options): the policies
 // and their comparison by hand, every command run with them on a real cell,
 // a prepared chart that records them and refuses others naming the option,
 // and bad values as one line each.
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "deepguide/world/chart_options.hpp"
+#include "deepguide/charts/chart_options.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

@@ -20,16 +20,16 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/enc_cells.hpp"
+#include "deepguide/charts/enc_no_go.hpp"
+#include "deepguide/charts/enc_route_check.hpp"
+#include "deepguide/charts/enc_sea_floor.hpp"
+#include "deepguide/charts/iso8211_check.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/enc_cells.hpp"
-#include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/enc_route_check.hpp"
-#include "deepguide/world/enc_sea_floor.hpp"
-#include "deepguide/world/iso8211_check.hpp"
-#include "deepguide/world/obstacle_io.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

@@ -15,9 +15,9 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "deepguide/charts/enc_catalogue.hpp"
+#include "deepguide/charts/enc_cells.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/enc_catalogue.hpp"
-#include "deepguide/world/enc_cells.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

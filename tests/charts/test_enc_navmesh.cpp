@@ -23,13 +23,13 @@
 #include <random>
 #include <string>
 
+#include "deepguide/charts/enc_no_go.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

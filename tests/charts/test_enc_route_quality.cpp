@@ -1,4 +1,4 @@
-// Route quality on ENCs (world/enc_route_quality.hpp): the cells a route
+// Route quality on ENCs (charts/enc_route_quality.hpp): the cells a route
 // crosses, the least charted depth under it, its length per zone of
 // confidence and the nearest no-go feature. Hand-derived on two cells written
 // through GDAL's S57 writer (synthetic_cell.hpp), a band-5 harbour cell
@@ -15,9 +15,9 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "deepguide/charts/enc_no_go.hpp"
+#include "deepguide/charts/enc_route_quality.hpp"
 #include "deepguide/mission/mission_report.hpp"
-#include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/enc_route_quality.hpp"
 #include "synthetic_cell.hpp"
 #include "test_support.hpp"
 

@@ -38,9 +38,9 @@
 #include <random>
 #include <utility>
 
+#include "deepguide/charts/enc_no_go.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/enc_no_go.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

@@ -1,4 +1,4 @@
-// The zone-of-confidence policies (world/chart_options.hpp) on a cell written
+// The zone-of-confidence policies (charts/chart_options.hpp) on a cell written
 // through GDAL's S57 writer (synthetic_cell.hpp): a dredged channel 150 m
 // wide, 12 m deep, in a CATZOC B zone 200 m wide, the water either side 1 m
 // deep in CATZOC C, and a 2 m sounding charted 200 m off the channel's edge
@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "deepguide/world/enc_no_go.hpp"
+#include "deepguide/charts/enc_no_go.hpp"
 #include "synthetic_cell.hpp"
 #include "test_support.hpp"
 

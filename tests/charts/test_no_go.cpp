@@ -17,9 +17,9 @@
 #include <optional>
 #include <vector>
 
+#include "deepguide/charts/no_go.hpp"
+#include "deepguide/charts/no_go_export.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/no_go.hpp"
-#include "deepguide/world/no_go_export.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

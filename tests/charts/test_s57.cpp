@@ -15,8 +15,8 @@
 #include <map>
 #include <set>
 
+#include "deepguide/charts/s57_chart.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/s57_chart.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

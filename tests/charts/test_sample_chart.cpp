@@ -15,13 +15,13 @@
 #include <fstream>
 #include <map>
 
+#include "deepguide/charts/bathymetry.hpp"
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/s57_chart.hpp"
+#include "deepguide/charts/sample_chart.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
-#include "deepguide/world/bathymetry.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/obstacle_io.hpp"
-#include "deepguide/world/s57_chart.hpp"
-#include "deepguide/world/sample_chart.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "test_support.hpp"
 
 namespace deepguide {

@@ -1,7 +1,7 @@
 // Mission control (mission/mission_control.hpp) and what it stands on: the
 // plan spliced by distance along (mission/plan_splice.hpp), goal points
 // before and past a danger (mission/goal_point.hpp), the sea floor's no-go
-// polygons (world/no_go.hpp), and the independent plan checker
+// polygons (charts/no_go.hpp), and the independent plan checker
 // (mission/plan_check.hpp). Evasions are measured against the hand-derived
 // shortest way round a disc; unavoidable conflicts are kept with why.
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 #include <numbers>
 #include <string>
 
+#include "deepguide/charts/no_go.hpp"
 #include "deepguide/mission/evasion_planner.hpp"
 #include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/mission_control.hpp"
@@ -18,7 +19,6 @@
 #include "deepguide/mission/plan_splice.hpp"
 #include "deepguide/planning/route.hpp"
 #include "deepguide/planning/route_check.hpp"
-#include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 #include "planning/obstacle_builders.hpp"
 #include "test_support.hpp"

@@ -17,13 +17,13 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/currents/current_field.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_refinement.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/current_field.hpp"
 #include "deepguide/world/obstacle_field.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 #include "planning/current_cases.hpp"
 #include "test_support.hpp"
 

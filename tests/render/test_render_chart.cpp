@@ -12,12 +12,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include "deepguide/charts/sample_chart.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/render/chart_scene.hpp"
 #include "deepguide/render/enc_layer.hpp"
 #include "deepguide/render/route_on_chart.hpp"
 #include "deepguide/world/local_frame.hpp"
-#include "deepguide/world/sample_chart.hpp"
 #include "png_reader.hpp"
 #include "test_support.hpp"
 

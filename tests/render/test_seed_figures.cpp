@@ -18,6 +18,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/render/mission_figure.hpp"
@@ -25,7 +26,6 @@
 #include "deepguide/simulation/mission_run.hpp"
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/world/obstacle_field.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 #include "png_reader.hpp"
 #include "test_support.hpp"
 

@@ -15,6 +15,8 @@
 
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
+#include "deepguide/currents/current_field.hpp"
+#include "deepguide/currents/current_sampling.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
 #include "deepguide/identification/lee_goal.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
@@ -22,8 +24,6 @@
 #include "deepguide/simulation/scenario.hpp"
 #include "deepguide/simulation/simulation.hpp"
 #include "deepguide/simulation/trajectory_io.hpp"
-#include "deepguide/world/current_field.hpp"
-#include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "test_support.hpp"
 

@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/route_plan_report.hpp"
 #include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/local_frame.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 #include "test_support.hpp"
 
 using namespace deepguide;

@@ -12,6 +12,7 @@
 #include <limits>
 #include <random>
 
+#include "deepguide/charts/raster_sea_floor.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/sea_floor.hpp"
@@ -130,7 +131,7 @@ TEST(SeaFloor, FromRasterIsNeverDeeperThanTheChart) {
   const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
   const Vec2 lo(580400.0, 6033400.0), hi(581000.0, 6033900.0);
   const double spacing = 8.0;
-  const SeaFloor floor = SeaFloor::from_raster(path, frame, lo, hi, spacing);
+  const SeaFloor floor = raster_sea_floor(path, frame, lo, hi, spacing);
   GDALAllRegister();
   GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
   ASSERT_TRUE(ds);
@@ -191,8 +192,8 @@ TEST(SeaFloor, APinnacleNarrowerThanANodeSpacingStays) {
     ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, 200, 200, v.data(), 200, 200, GDT_Float32, 0, 0, nullptr),
               CE_None);
   }
-  const SeaFloor floor = SeaFloor::from_raster(path, LocalFrame::from_user_crs("EPSG:32632"), {500010.0, 6000010.0},
-                                               {500190.0, 6000190.0}, 4.0);
+  const SeaFloor floor = raster_sea_floor(path, LocalFrame::from_user_crs("EPSG:32632"), {500010.0, 6000010.0},
+                                          {500190.0, 6000190.0}, 4.0);
   EXPECT_LE(floor.min_depth(), 5.0 + 1e-9);
   EXPECT_LE(floor.depth_at({500102.5, 6000100.5}), 5.0 + 1e-9);
   EXPECT_LT(floor.lowest_gap({500020.0, 6000100.5, 20.0}, {500180.0, 6000100.5, 20.0}).gap_m, 0.0);
@@ -205,7 +206,7 @@ TEST(SeaFloor, BadInputIsRefusedWithAClearError) {
   EXPECT_THROW(SeaFloor({0.0, 0.0}, 1.0, 2, 2, {1, 2, 3}), InputError);
   const LocalFrame frame = LocalFrame::from_user_crs("EPSG:32632");
   try {
-    SeaFloor::from_raster("/nonexistent/floor.tif", frame, {0.0, 0.0}, {10.0, 10.0}, 1.0);
+    raster_sea_floor("/nonexistent/floor.tif", frame, {0.0, 0.0}, {10.0, 10.0}, 1.0);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/floor.tif"), std::string::npos) << e.what();
@@ -213,7 +214,7 @@ TEST(SeaFloor, BadInputIsRefusedWithAClearError) {
   // An area the chart does not reach.
   const std::string path = std::string(DEEPGUIDE_SOURCE_DIR) + "/charts/sample_chart.tif";
   try {
-    SeaFloor::from_raster(path, frame, {100000.0, 100000.0}, {100100.0, 100100.0}, 5.0);
+    raster_sea_floor(path, frame, {100000.0, 100000.0}, {100100.0, 100100.0}, 5.0);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("does not reach"), std::string::npos) << e.what();

@@ -4,12 +4,12 @@
 #include <map>
 #include <optional>
 
+#include "deepguide/charts/no_go.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/single_query.hpp"
-#include "deepguide/world/no_go.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
 namespace deepguide {

@@ -31,9 +31,9 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/mission/export_writers.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
-#include "deepguide/world/current_field.hpp"
 
 namespace deepguide::detail {
 namespace {

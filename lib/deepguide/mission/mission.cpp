@@ -9,8 +9,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/planning/route_io.hpp"
-#include "deepguide/world/current_field.hpp"
 #include "deepguide/world/frame_scale.hpp"
 
 namespace deepguide {

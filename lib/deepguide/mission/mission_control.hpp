@@ -11,7 +11,7 @@
 //      planner (mission/evasion_planner.hpp: the visibility graph, or a
 //      navigation mesh with `control.evasion_graph: navmesh`) routes at that
 //      depth around every obstacle whose top it does not clear and around the
-//      sea floor's no-go polygons there (world/no_go.hpp, from the same sea
+//      sea floor's no-go polygons there (charts/no_go.hpp, from the same sea
 //      floor the checkers use). The zone is the corridor (margin + half the
 //      vehicle's width) plus 0.2 m, so that arcs drawn as chords and rounding
 //      stay outside what observation watches.

@@ -1,19 +1,20 @@
 #include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/charts/raster_sea_floor.hpp"
 
 #include <cmath>
 
-#include "deepguide/world/current_field.hpp"
+#include "deepguide/currents/current_field.hpp"
 
 #include <cstdio>
 #include <limits>
 
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/chart_obstacles.hpp"
+#include "deepguide/charts/enc_cells.hpp"
+#include "deepguide/charts/enc_sea_floor.hpp"
 #include "deepguide/core/error.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/chart_obstacles.hpp"
-#include "deepguide/world/enc_cells.hpp"
-#include "deepguide/world/enc_sea_floor.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/world/obstacle_field.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 #include "deepguide/world/water_volume.hpp"
 
 namespace deepguide {
@@ -80,7 +81,7 @@ MissionEnvironment load_environment(const Mission& mission, const ChartOptions& 
     }
     const Vec2 pad = Vec2::Constant(200.0);
     env.floor = std::make_shared<const SeaFloor>(
-        enc.empty() ? SeaFloor::from_raster(raster, mission.frame, lo - pad, hi + pad, 0.0)
+        enc.empty() ? raster_sea_floor(raster, mission.frame, lo - pad, hi + pad, 0.0)
                     : enc_sea_floor(enc, mission.frame, lo - pad, hi + pad, 5.0, enc_options(chart)));
   }
   return env;

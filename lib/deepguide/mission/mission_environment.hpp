@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission.hpp"
-#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/obstacle.hpp"
 #include "deepguide/world/sea_floor.hpp"
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <map>
 
+#include "deepguide/charts/enc_no_go.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_environment.hpp"
-#include "deepguide/world/enc_no_go.hpp"
 
 namespace deepguide {
 

@@ -1,6 +1,6 @@
 #pragma once
 // A mission's route quality on ENCs, phase by phase: what an ECDIS's route
-// check reports (world/enc_route_quality.hpp) for each complex manoeuvre of
+// check reports (charts/enc_route_quality.hpp) for each complex manoeuvre of
 // a plan (a phase: a track, a survey, a goto, an identification with the
 // evasions mission control put into it), judged at that phase's required
 // depth: its deepest depth plus the mission's vertical clearance. The no-go
@@ -13,11 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/charts/chart_options.hpp"
+#include "deepguide/charts/enc_route_quality.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/mission/basic_manoeuvres.hpp"
 #include "deepguide/mission/mission.hpp"
-#include "deepguide/world/chart_options.hpp"
-#include "deepguide/world/enc_route_quality.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

@@ -6,8 +6,8 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
-#include "deepguide/world/current_sampling.hpp"
-#include "deepguide/world/current_summary.hpp"
+#include "deepguide/currents/current_sampling.hpp"
+#include "deepguide/currents/current_summary.hpp"
 
 namespace deepguide {
 

@@ -35,8 +35,8 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/planning/edge_cost.hpp"
-#include "deepguide/world/current_field.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

@@ -1,16 +1,17 @@
 #include "deepguide/planning/depth_plan_report.hpp"
+#include "deepguide/charts/raster_sea_floor.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/chart_obstacles.hpp"
+#include "deepguide/charts/enc_cells.hpp"
+#include "deepguide/charts/enc_sea_floor.hpp"
 #include "deepguide/core/angles.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/planner.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/chart_obstacles.hpp"
-#include "deepguide/world/enc_cells.hpp"
-#include "deepguide/world/enc_sea_floor.hpp"
 
 namespace deepguide {
 namespace {
@@ -61,7 +62,7 @@ void read_charts(const LocalFrame& frame, const DepthPlanRequest& r, DepthPlanRe
     } else {
       BathymetryOptions read;
       read.assumed_crs = r.src_crs;  // a grid without a CRS
-      report.floor = std::make_shared<const SeaFloor>(SeaFloor::from_raster(path, frame, lo, hi, spacing, read));
+      report.floor = std::make_shared<const SeaFloor>(raster_sea_floor(path, frame, lo, hi, spacing, read));
     }
   }
   if (!enc_charts.empty()) {

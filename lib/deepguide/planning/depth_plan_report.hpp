@@ -13,11 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/depth_planning.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
-#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace DEEPGUIDE_API deepguide {

@@ -7,12 +7,12 @@
 #include <memory>
 #include <string>
 
+#include "deepguide/charts/prepared_graph_record.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/graph_search.hpp"
 #include "deepguide/planning/graphs/quadtree/quadtree_options.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
-#include "deepguide/world/prepared_graph_record.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

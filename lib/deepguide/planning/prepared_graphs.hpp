@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/prepared_graph_record.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/planner_options.hpp"
-#include "deepguide/world/prepared_graph_record.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

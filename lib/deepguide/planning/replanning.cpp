@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/dstar_lite.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide {
 

@@ -29,7 +29,7 @@
 namespace DEEPGUIDE_API deepguide {
 
 /// A sonar report along the route (replan_events.csv): the obstacles it
-/// reveals and how far the vehicle has sailed when it comes (world/sonar.hpp
+/// reveals and how far the vehicle has sailed when it comes (vehicle/sonar.hpp
 /// has the sonar's own Detection).
 struct ReplanEvent {
   double along_m = 0.0;   ///< distance sailed when the sonar reports it (m)

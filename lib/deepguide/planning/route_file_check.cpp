@@ -3,16 +3,16 @@
 #include <memory>
 #include <optional>
 
+#include "deepguide/charts/enc_no_go.hpp"
+#include "deepguide/charts/enc_route_check.hpp"
+#include "deepguide/charts/enc_route_quality.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/route_io.hpp"
-#include "deepguide/world/enc_no_go.hpp"
-#include "deepguide/world/enc_route_check.hpp"
-#include "deepguide/world/enc_route_quality.hpp"
 #include "deepguide/world/frame_scale.hpp"
-#include "deepguide/world/obstacle_io.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 
 namespace deepguide {
 namespace {

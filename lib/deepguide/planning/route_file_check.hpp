@@ -13,15 +13,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/planning/route_io.hpp"
-#include "deepguide/world/chart_options.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-struct EncNoGo;  // world/enc_no_go.hpp
+struct EncNoGo;  // charts/enc_no_go.hpp
 
 struct RouteFileCheckOptions {
   std::string route;                        ///< the route file (RTZ, GPX, GeoJSON, KML, ...)

@@ -15,7 +15,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/input_files.hpp"
-#include "deepguide/world/csv_positions.hpp"
+#include "deepguide/obstacle_files/csv_positions.hpp"
 #include "deepguide/world/gdal_support.hpp"
 
 namespace deepguide {

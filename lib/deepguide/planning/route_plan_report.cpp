@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "deepguide/charts/chart_obstacles.hpp"
+#include "deepguide/charts/enc_route_check.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
@@ -13,8 +15,6 @@
 #include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/planning/waypoint_grid.hpp"
-#include "deepguide/world/chart_obstacles.hpp"
-#include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/frame_scale.hpp"
 
 namespace deepguide {

@@ -17,21 +17,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deepguide/charts/chart_options.hpp"
+#include "deepguide/charts/enc_route_quality.hpp"
 #include "deepguide/core/api.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/planning/cost_model.hpp"
 #include "deepguide/planning/planner.hpp"
 #include "deepguide/planning/replanning.hpp"
 #include "deepguide/planning/single_query.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
-#include "deepguide/world/chart_options.hpp"
-#include "deepguide/world/current_field.hpp"
-#include "deepguide/world/enc_route_quality.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
-struct ChartObstacles;  // world/chart_obstacles.hpp
-struct EncNoGo;         // world/enc_no_go.hpp
+struct ChartObstacles;  // charts/chart_obstacles.hpp
+struct EncNoGo;         // charts/enc_no_go.hpp
 
 struct RoutePlanRequest {
   ObstacleSet obstacles;  ///< in the local frame

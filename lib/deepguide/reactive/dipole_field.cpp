@@ -261,16 +261,22 @@ Vec2 dipole_gradient(const ReactiveParams& params, const Vec2& point, const Vec2
   return direction_of(field(zones, point, g, params.influence_m, own.blend_m, AxisClamp{}));
 }
 
+namespace {
+
+const ReactiveTuning kAxisBand{"dipole_axis_band_m", 0.5, 0.0, 1e4, true, true, "a distance in metres"};
+const ReactiveTuning kBlend{"dipole_blend_m", 5.0, 0.0, 1e4, false, true, "a distance in metres"};
+
+}  // namespace
+
 DipoleParams dipole_params(const ReactiveParams& params) {
-  return {tuning_value(params, "dipole_axis_band_m"), tuning_value(params, "dipole_blend_m")};
+  return {tuning_value(params, kAxisBand), tuning_value(params, kBlend)};
 }
 
 ReactiveMethodEntry dipole_method_entry() {
   return {"dipole",
           "a harmonic dipole potential per object in a uniform flow to the target",
           0x0072b2,  // blue
-          {{"dipole_axis_band_m", 0.5, 0.0, 1e4, true, true, "a distance in metres"},
-           {"dipole_blend_m", 5.0, 0.0, 1e4, false, true, "a distance in metres"}},
+          {kAxisBand, kBlend},
           dipole_command,
           dipole_gradient};
 }

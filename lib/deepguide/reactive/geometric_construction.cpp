@@ -392,14 +392,18 @@ Vec2 geometric_gradient(const ReactiveParams& params, const Vec2& point, const V
       .direction;
 }
 
-GeometricParams geometric_params(const ReactiveParams& params) { return {tuning_value(params, "geometric_passage_m")}; }
+namespace {
+
+const ReactiveTuning kPassage{"geometric_passage_m", 20.0, 0.0, 1e4, true, true, "a distance in metres"};
+
+}  // namespace
+
+GeometricParams geometric_params(const ReactiveParams& params) { return {tuning_value(params, kPassage)}; }
 
 ReactiveMethodEntry geometric_method_entry() {
-  return {"geometric",
-          "the seed's construction of tangents in three sectors",
+  return {"geometric",       "the seed's construction of tangents in three sectors",
           0xd55e00,  // vermillion
-          {{"geometric_passage_m", 20.0, 0.0, 1e4, true, true, "a distance in metres"}},
-          geometric_command,
+          {kPassage},        geometric_command,
           geometric_gradient};
 }
 

@@ -69,17 +69,21 @@ Vec2 potential_gradient(const ReactiveParams& params, const Vec2& point, const V
   return unit_or_zero(force(zones, point, steering_target(zones, target).point, params).value);
 }
 
+namespace {
+
+const ReactiveTuning kGain{"potential_gain", 1.0, 0.0, 1e6, false, true, "a gain"};
+const ReactiveTuning kStall{"potential_stall_fraction", 0.05, 0.0, 1.0, false, false, "a fraction"};
+
+}  // namespace
+
 PotentialParams potential_params(const ReactiveParams& params) {
-  return {tuning_value(params, "potential_gain"), tuning_value(params, "potential_stall_fraction")};
+  return {tuning_value(params, kGain), tuning_value(params, kStall)};
 }
 
 ReactiveMethodEntry potential_method_entry() {
-  return {"potential",
-          "attractive and repulsive potentials, the baseline",
+  return {"potential",       "attractive and repulsive potentials, the baseline",
           0x009e73,  // bluish green
-          {{"potential_gain", 1.0, 0.0, 1e6, false, true, "a gain"},
-           {"potential_stall_fraction", 0.05, 0.0, 1.0, false, false, "a fraction"}},
-          potential_command,
+          {kGain, kStall},   potential_command,
           potential_gradient};
 }
 

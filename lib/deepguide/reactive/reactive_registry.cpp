@@ -129,6 +129,17 @@ double tuning_value(const ReactiveParams& params, std::string_view key) {
   throw InputError("reactive tuning '" + printable(std::string(key)) + "': expected a parameter a method declares");
 }
 
+double tuning_value(const ReactiveParams& params, const ReactiveTuning& t) {
+  const auto it = params.tuning.find(t.key);
+  return it != params.tuning.end() ? it->second : t.fallback;
+}
+
+const ReactiveTuning* reactive_tuning(std::string_view key) {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  return find_tuning(r.entries, key);
+}
+
 std::vector<ReactiveTuning> reactive_tunings() {
   std::vector<ReactiveTuning> out;
   for (const ReactiveMethodEntry& e : reactive_method_entries())

@@ -81,6 +81,12 @@ std::vector<ReactiveMethod> reactive_methods_named(const std::vector<std::string
 /// The tuning `key` of `params`: its value there, else the default its method
 /// declares. Throws InputError for a key no method declares.
 double tuning_value(const ReactiveParams& params, std::string_view key);
+/// The tuning `t` of `params`: its value there, else t's default (what a
+/// method reads its own parameters with, no registry lookup per step).
+double tuning_value(const ReactiveParams& params, const ReactiveTuning& t);
+/// The declaration of tuning `key` (it lives as long as the program), or null
+/// when no method declares it.
+const ReactiveTuning* reactive_tuning(std::string_view key);
 /// Every declared tuning, the methods' in registry order.
 std::vector<ReactiveTuning> reactive_tunings();
 

@@ -31,19 +31,15 @@ void validate(const ReactiveParams& p) {
           *p.turn_rate_limit);
   }
   check(finite(p.turn_lag_s) && p.turn_lag_s >= 0.0, "turn_lag_s", "a time >= 0 s", p.turn_lag_s);
-  if (p.tuning.empty()) return;
-  const std::vector<ReactiveTuning> declared = reactive_tunings();
   for (const auto& [key, value] : p.tuning) {
-    const auto t =
-        std::find_if(declared.begin(), declared.end(), [&](const ReactiveTuning& d) { return d.key == key; });
-    if (t == declared.end()) {
-      throw InputError("reactive: tuning '" + printable(key) + "': expected a parameter a method declares (" + [&] {
-        std::string names;
-        for (const ReactiveTuning& d : declared) names += (names.empty() ? "" : ", ") + d.key;
-        return names;
-      }() + ")");
+    const ReactiveTuning* t = reactive_tuning(key);
+    if (t == nullptr) {
+      std::string names;
+      for (const ReactiveTuning& d : reactive_tunings()) names += (names.empty() ? "" : ", ") + d.key;
+      throw InputError("reactive: tuning '" + printable(key) + "': expected a parameter a method declares (" + names +
+                       ")");
     }
-    check(finite(value) && t->holds(value), key.c_str(), t->expected().c_str(), value);
+    if (!(finite(value) && t->holds(value))) check(false, key.c_str(), t->expected().c_str(), value);
   }
 }
 

@@ -1,8 +1,5 @@
 #include "deepguide/render/chart_scene.hpp"
 
-#include <gdal_priv.h>
-#include <ogr_spatialref.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,23 +8,22 @@
 #include <numbers>
 #include <set>
 
+#include "deepguide/charts/bathymetry.hpp"
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/chart_obstacles.hpp"
+#include "deepguide/charts/enc_cells.hpp"
+#include "deepguide/charts/no_go.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
+#include "deepguide/charts/raster_depths.hpp"
+#include "deepguide/charts/s57_chart.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/render/enc_layer.hpp"
 #include "deepguide/render/map_furniture.hpp"
 #include "deepguide/render/plot_furniture.hpp"  // draw_figure_title
 #include "deepguide/render/route_scene.hpp"     // kMinImageWidth, kMaxImageWidth
-#include "deepguide/world/bathymetry.hpp"
-#include "deepguide/world/bathymetry_raster.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/chart_obstacles.hpp"
-#include "deepguide/world/enc_cells.hpp"
 #include "deepguide/world/frame_scale.hpp"
-#include "deepguide/world/gdal_support.hpp"
-#include "deepguide/world/no_go.hpp"
-#include "deepguide/world/obstacle_io.hpp"
-#include "deepguide/world/prepared_chart.hpp"
-#include "deepguide/world/s57_chart.hpp"
 
 namespace deepguide {
 namespace {
@@ -95,35 +91,10 @@ struct RasterSource {
   BathymetryOptions read;  ///< the assumed CRS of a raster without one
 };
 
-// Box in the local frame around a raster: its outline sampled along the edges.
+// Box in the local frame around a raster.
 WorldBox raster_box(const RasterSource& r, const LocalFrame& frame) {
   WorldBox box;
-  const LonLatExtent& e = r.info.extent;
-  OGRSpatialReference src;
-  src.importFromWkt(r.info.crs_wkt.c_str());
-  src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  OGRSpatialReference local;
-  local.importFromWkt(frame.wkt().c_str());
-  local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  if (src.IsSame(&local)) {
-    gdal::QuietErrors quiet;
-    detail::OpenedBathymetry o = detail::open_bathymetry(r.path, r.read);
-    const double* gt = o.geotransform;
-    box.extend(Vec2(gt[0], gt[3]));
-    box.extend(Vec2(gt[0] + gt[1] * r.info.width, gt[3] + gt[5] * r.info.height));
-    return box;
-  }
-  constexpr int kSteps = 20;
-  for (int i = 0; i <= kSteps; ++i) {
-    const double f = static_cast<double>(i) / kSteps;
-    for (const Eigen::Vector2d& ll : {Eigen::Vector2d(e.west + f * (e.east - e.west), e.south),
-                                      Eigen::Vector2d(e.west + f * (e.east - e.west), e.north),
-                                      Eigen::Vector2d(e.west, e.south + f * (e.north - e.south)),
-                                      Eigen::Vector2d(e.east, e.south + f * (e.north - e.south))}) {
-      const Vec2 p = frame.from_lonlat(ll);
-      if (p.allFinite()) box.extend(p);
-    }
-  }
+  for (const Vec2& p : raster_outline(r.path, r.read, r.info, frame)) box.extend(p);
   return box;
 }
 
@@ -140,72 +111,25 @@ struct Shading {
   }
 };
 
-// Paints one raster into the map image (width x height pixels over `map`):
-// one decimated read of the window the map shows, then nearest cells.
+// Paints one raster into the map image (width x height pixels over `map`),
+// the depth under each pixel's centre.
 void shade_raster(std::vector<std::uint32_t>& image, std::vector<std::uint32_t>& land, int width, int height,
                   const PixelRect& map, const ViewTransform& view, const LocalFrame& frame, const RasterSource& source,
                   const Shading& shading) {
-  gdal::QuietErrors quiet;
-  detail::OpenedBathymetry r = detail::open_bathymetry(source.path, source.read);
-  const double* gt = r.geotransform;
-  const int rw = r.info.width, rh = r.info.height;
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  std::vector<double> xs(n), ys(n);
+  std::vector<Vec2> points(n);
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
-      const Vec2 w = view.to_world({map.x + (i + 0.5) * map.width / width, map.y + (j + 0.5) * map.height / height});
-      xs[static_cast<std::size_t>(j) * width + i] = w.x();
-      ys[static_cast<std::size_t>(j) * width + i] = w.y();
+      points[static_cast<std::size_t>(j) * width + i] =
+          view.to_world({map.x + (i + 0.5) * map.width / width, map.y + (j + 0.5) * map.height / height});
     }
   }
-  OGRSpatialReference local;
-  local.importFromWkt(frame.wkt().c_str());
-  local.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  if (!local.IsSame(r.srs.get())) {
-    const gdal::TransformPtr ct = gdal::make_transform(local, *r.srs);
-    if (!ct)
-      throw InputError(source.path + ": expected a CRS PROJ can transform to " + frame.id() + ", got " + r.info.crs);
-    std::vector<int> ok(n, 0);
-    ct->Transform(static_cast<int>(n), xs.data(), ys.data(), nullptr, ok.data());
-    for (std::size_t k = 0; k < n; ++k) {
-      if (ok[k] == 0) xs[k] = ys[k] = std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-  // Raster columns and rows (continuous) of every map pixel, and the window they span.
-  double c0 = INFINITY, c1 = -INFINITY, r0 = INFINITY, r1 = -INFINITY;
+  const RasterDepths d = sample_raster_depths(source.path, source.read, frame, points, width, height);
   for (std::size_t k = 0; k < n; ++k) {
-    const double col = (xs[k] - gt[0]) / gt[1];
-    const double row = (ys[k] - gt[3]) / gt[5];
-    xs[k] = col;
-    ys[k] = row;
-    if (!(col >= 0.0 && col < rw && row >= 0.0 && row < rh)) continue;
-    c0 = std::min(c0, col), c1 = std::max(c1, col), r0 = std::min(r0, row), r1 = std::max(r1, row);
-  }
-  if (!(c1 >= c0)) return;  // the raster lies outside the map
-  const int x0 = static_cast<int>(c0), x1 = std::min(rw, static_cast<int>(c1) + 1);
-  const int y0 = static_cast<int>(r0), y1 = std::min(rh, static_cast<int>(r1) + 1);
-  const int win_w = x1 - x0, win_h = y1 - y0;
-  // Half again the map's pixels: enough that no map pixel misses a cell it would show.
-  const int bw = std::min(win_w, width + width / 2 + 1);
-  const int bh = std::min(win_h, height + height / 2 + 1);
-  std::vector<float> buf(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh));
-  GDALRasterIOExtraArg extra;
-  INIT_RASTERIO_EXTRA_ARG(extra);
-  extra.eResampleAlg = GRIORA_NearestNeighbour;
-  if (r.band->RasterIO(GF_Read, x0, y0, win_w, win_h, buf.data(), bw, bh, GDT_Float32, 0, 0, &extra) != CE_None) {
-    const std::string why = gdal::QuietErrors::last_message();
-    throw InputError(source.path + ": expected readable cells" +
-                     (why.empty() ? std::string() : ", got: " + printable(why, 160)));
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const double col = xs[k], row = ys[k];
-    if (!(col >= x0 && col < x1 && row >= y0 && row < y1)) continue;
-    const int bx = std::min(bw - 1, static_cast<int>((col - x0) * bw / win_w));
-    const int by = std::min(bh - 1, static_cast<int>((row - y0) * bh / win_h));
-    const double v = buf[static_cast<std::size_t>(by) * bw + bx];
-    const double depth = v * r.to_depth;
-    image[k] = r.is_nodata(v) ? shading.nodata : shading.color(depth);
-    land[k] = r.is_nodata(v) || depth <= 0.0 ? image[k] : 0u;
+    if (d.state[k] == RasterDepths::State::outside) continue;
+    const bool no_data = d.state[k] == RasterDepths::State::no_data;
+    image[k] = no_data ? shading.nodata : shading.color(d.depth_m[k]);
+    land[k] = no_data || d.depth_m[k] <= 0.0 ? image[k] : 0u;
   }
 }
 

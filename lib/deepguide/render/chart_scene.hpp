@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/chart_options.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/render/canvas.hpp"
-#include "deepguide/world/chart_options.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

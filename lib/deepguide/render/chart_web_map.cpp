@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/chart_obstacles.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/render/obstacle_web_layers.hpp"
 #include "deepguide/render/raster_web_image.hpp"
 #include "deepguide/render/reactive_map.hpp"  // ellipse_outline
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/chart_obstacles.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 
 namespace deepguide {
 

@@ -16,10 +16,10 @@
 
 #include <string>
 
+#include "deepguide/charts/enc_no_go.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/render/chart_scene.hpp"
 #include "deepguide/render/web_map.hpp"
-#include "deepguide/world/enc_no_go.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

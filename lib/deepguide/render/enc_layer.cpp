@@ -6,11 +6,11 @@
 #include <limits>
 #include <numbers>
 
+#include "deepguide/charts/enc_cells.hpp"
+#include "deepguide/charts/enc_reader.hpp"
+#include "deepguide/charts/prepared_chart.hpp"
 #include "deepguide/core/format.hpp"
-#include "deepguide/world/enc_cells.hpp"
-#include "deepguide/world/enc_reader.hpp"
 #include "deepguide/world/no_go_union.hpp"
-#include "deepguide/world/prepared_chart.hpp"
 
 namespace deepguide {
 

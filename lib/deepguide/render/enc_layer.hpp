@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/chart_options.hpp"
+#include "deepguide/charts/enc_no_go.hpp"
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/polygon.hpp"
 #include "deepguide/render/canvas.hpp"
-#include "deepguide/world/chart_options.hpp"
-#include "deepguide/world/enc_no_go.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

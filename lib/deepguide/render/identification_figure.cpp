@@ -7,10 +7,10 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/identification/lee_goal.hpp"
 #include "deepguide/identification/offset_path.hpp"
 #include "deepguide/render/plot_furniture.hpp"
-#include "deepguide/world/current_field.hpp"
 
 namespace deepguide {
 namespace {

@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/chart_info.hpp"
+#include "deepguide/charts/chart_obstacles.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/plan_export.hpp"
 #include "deepguide/render/obstacle_web_layers.hpp"
 #include "deepguide/render/raster_web_image.hpp"
 #include "deepguide/simulation/mission_run.hpp"
-#include "deepguide/world/chart_info.hpp"
-#include "deepguide/world/chart_obstacles.hpp"
 
 namespace deepguide {
 

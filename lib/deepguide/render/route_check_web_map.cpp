@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "deepguide/charts/enc_route_check.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/planning/route_check.hpp"
 #include "deepguide/render/chart_web_map.hpp"
 #include "deepguide/render/obstacle_web_layers.hpp"
-#include "deepguide/world/enc_route_check.hpp"
 #include "deepguide/world/obstacle_field.hpp"
 
 namespace deepguide {

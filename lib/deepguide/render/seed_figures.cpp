@@ -11,6 +11,7 @@
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_control.hpp"
 #include "deepguide/mission/mission_environment.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/planning/graph_registry.hpp"
 #include "deepguide/planning/graphs/quadtree/quadtree_graph.hpp"
 #include "deepguide/planning/graphs/visibility/zone_visibility_graph.hpp"
@@ -22,7 +23,6 @@
 #include "deepguide/render/turn_rate_plot.hpp"
 #include "deepguide/simulation/mission_run.hpp"
 #include "deepguide/simulation/scenario.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide {
 namespace {

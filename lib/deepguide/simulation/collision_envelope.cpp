@@ -8,7 +8,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
-#include "deepguide/world/sonar.hpp"
+#include "deepguide/vehicle/sonar.hpp"
 
 namespace deepguide {
 

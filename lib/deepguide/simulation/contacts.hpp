@@ -38,7 +38,7 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/ellipse.hpp"
-#include "deepguide/world/sonar.hpp"
+#include "deepguide/vehicle/sonar.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

@@ -8,6 +8,7 @@
 
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
+#include "deepguide/currents/current_field.hpp"
 #include "deepguide/mission/evasion_planner.hpp"
 #include "deepguide/mission/goal_point.hpp"
 #include "deepguide/mission/plan_splice.hpp"
@@ -17,7 +18,6 @@
 #include "deepguide/simulation/plant.hpp"
 #include "deepguide/simulation/route_following.hpp"
 #include "deepguide/simulation/simulation.hpp"
-#include "deepguide/world/current_field.hpp"
 #include "deepguide/world/water_volume.hpp"
 
 namespace deepguide {

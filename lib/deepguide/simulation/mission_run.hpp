@@ -11,7 +11,7 @@
 // runs on, the vehicle stays.
 //
 // Reactive level: the forward-looking sonar scans all the while
-// (world/sonar.hpp) and its contacts are remembered (contacts.hpp). A contact
+// (vehicle/sonar.hpp) and its contacts are remembered (contacts.hpp). A contact
 // no known obstacle explains (its centre farther than the known footprint's
 // semi-major axis + 10 m from every known centre) that endangers the
 // remaining plan (collision observation on what lies ahead, the contact as a

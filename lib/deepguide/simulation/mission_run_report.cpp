@@ -5,7 +5,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/mission/mission_report.hpp"
-#include "deepguide/world/obstacle_io.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 
 namespace deepguide {
 

@@ -4,9 +4,9 @@
 #include <sstream>
 
 #include "deepguide/core/error.hpp"
+#include "deepguide/currents/current_field.hpp"
+#include "deepguide/currents/current_sampling.hpp"
 #include "deepguide/geometry/ellipse_distance.hpp"
-#include "deepguide/world/current_field.hpp"
-#include "deepguide/world/current_sampling.hpp"
 
 namespace deepguide {
 namespace {

@@ -13,14 +13,14 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/input_files.hpp"
 #include "deepguide/core/yaml_mapping.hpp"
+#include "deepguide/currents/current_field.hpp"
+#include "deepguide/currents/current_sampling.hpp"
+#include "deepguide/currents/current_summary.hpp"
 #include "deepguide/geometry/ellipse.hpp"
 #include "deepguide/identification/offset_path.hpp"
+#include "deepguide/obstacle_files/obstacle_io.hpp"
 #include "deepguide/reactive/reactive_registry.hpp"
-#include "deepguide/world/current_field.hpp"
-#include "deepguide/world/current_sampling.hpp"
-#include "deepguide/world/current_summary.hpp"
 #include "deepguide/world/frame_scale.hpp"
-#include "deepguide/world/obstacle_io.hpp"
 
 namespace deepguide {
 namespace {

@@ -82,17 +82,17 @@
 #include <vector>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/currents/current_sampling.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/identification/aligning.hpp"
 #include "deepguide/identification/going_around.hpp"
 #include "deepguide/reactive/reactive_method.hpp"
 #include "deepguide/simulation/contacts.hpp"
 #include "deepguide/vehicle/energy_model.hpp"
+#include "deepguide/vehicle/sonar.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
-#include "deepguide/world/current_sampling.hpp"
 #include "deepguide/world/local_frame.hpp"
 #include "deepguide/world/obstacle.hpp"
-#include "deepguide/world/sonar.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 

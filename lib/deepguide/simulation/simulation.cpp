@@ -10,7 +10,7 @@
 #include "deepguide/core/error.hpp"
 #include "deepguide/simulation/contacts.hpp"
 #include "deepguide/simulation/plant.hpp"
-#include "deepguide/world/sonar.hpp"
+#include "deepguide/vehicle/sonar.hpp"
 
 namespace deepguide {
 namespace {

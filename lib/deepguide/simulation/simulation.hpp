@@ -1,6 +1,6 @@
 #pragma once
 // The offline simulation of the reactive level: a vehicle (vehicle/), its
-// autopilot, a forward-looking sonar (world/sonar.hpp), the contacts it
+// autopilot, a forward-looking sonar (vehicle/sonar.hpp), the contacts it
 // remembers (contacts.hpp) and one reactive method (reactive/), stepped
 // together at the vehicle's fixed step h until the target is reached or a stop
 // rule fires. Deterministic: the same scenario, method and seed give a

@@ -33,9 +33,9 @@
 #include <functional>
 
 #include "deepguide/core/api.hpp"
+#include "deepguide/currents/current_sampling.hpp"
 #include "deepguide/geometry/vec2.hpp"
 #include "deepguide/vehicle/vehicle_params.hpp"
-#include "deepguide/world/current_sampling.hpp"
 
 namespace DEEPGUIDE_API deepguide {
 
@@ -62,7 +62,7 @@ struct VehicleCommand {
 };
 
 /// Sea current (east, north, m/s) at a position, depth and time. A gridded or
-/// constant field from world/current_field.hpp plugs in through a lambda over
+/// constant field from currents/current_field.hpp plugs in through a lambda over
 /// CurrentSampler::sample (the simulation's clock and the field's epoch are
 /// the caller's to match).
 using CurrentFunction = std::function<Vec2(const Vec2& position, double depth_m, double time_s)>;

@@ -24,7 +24,6 @@
 
 #include "deepguide/core/api.hpp"
 #include "deepguide/geometry/vec2.hpp"
-#include "deepguide/world/bathymetry.hpp"
 #include "deepguide/world/local_frame.hpp"
 
 namespace DEEPGUIDE_API deepguide {
@@ -37,18 +36,6 @@ class SeaFloor {
   /// NaN means no data (depth 0). Throws InputError for a spacing that is not
   /// finite and > 0, fewer than 2 x 2 nodes, or a depths size other than nx * ny.
   SeaFloor(const Vec2& origin, double spacing, std::size_t nx, std::size_t ny, std::vector<double> depths);
-
-  /// Samples a bathymetry raster (bathymetry.hpp: any GDAL raster, its sign
-  /// convention) at nodes `spacing` apart over [area_min, area_max] in the
-  /// frame, never deeper than the chart: GDAL warps it into the frame's CRS
-  /// taking each node's shallowest cell value, and each node then takes the
-  /// shallowest of its 3 x 3 neighbours (so no bilinear patch dips below the
-  /// chart's shallowest point in it); no data is depth 0. A spacing of 0
-  /// takes the raster's own cell size.
-  /// Throws InputError as inspect_bathymetry does, and for an area the raster
-  /// does not reach at all.
-  static SeaFloor from_raster(const std::string& path, const LocalFrame& frame, const Vec2& area_min,
-                              const Vec2& area_max, double spacing, const BathymetryOptions& options = {});
 
   /// Depth of the floor at p (bilinear; 0 outside the grid).
   double depth_at(const Vec2& p) const;

@@ -55,7 +55,8 @@ using tangent_detail::kNoPiece;
 using tangent_detail::Node;
 using tangent_detail::Segment;
 
-struct TangentGraph::Impl {
+// Hidden: the public TangentGraph would otherwise export its Impl's members.
+struct [[gnu::visibility("hidden")]] TangentGraph::Impl {
   Vec2 origin;
   double margin;
   double tolerance;
@@ -118,8 +119,8 @@ struct TangentGraph::Impl {
   // phi) of one way round for which `want(a, b)` holds.
   template <class Want>
   void add_arcs(std::size_t piece, const std::vector<std::size_t>& ids, const std::vector<Node>& all, Want want,
-                PlanningGraph& graph, std::vector<Arc>& out,
-                std::unordered_map<std::uint64_t, std::size_t>& index) const;
+                PlanningGraph& graph, std::vector<Arc>& out, std::unordered_map<std::uint64_t, std::size_t>& index)
+      const;
 
   // The obstacle polygons: a segment crossing one is blocked for certain,
   // found far faster than the exact polygon test, which then only judges the
@@ -132,8 +133,8 @@ struct TangentGraph::Impl {
     return piece != kNoPiece && pieces[piece].kind == ZonePiece::Kind::ellipse ? pieces[piece].obstacle
                                                                                : ObstacleField::kNone;
   }
-  bool segment_free(const Vec2& a, const Vec2& b, std::size_t piece_a = kNoPiece,
-                    std::size_t piece_b = kNoPiece) const {
+  bool segment_free(const Vec2& a, const Vec2& b, std::size_t piece_a = kNoPiece, std::size_t piece_b = kNoPiece)
+      const {
     return !inner->properly_crosses(a, b) && field->segment_free(a, b, own_ellipse(piece_a), own_ellipse(piece_b));
   }
   bool point_free(const Vec2& p, std::size_t piece) const { return field->is_free(p, own_ellipse(piece)); }
@@ -142,7 +143,7 @@ struct TangentGraph::Impl {
   // within `bound` (all pieces for an infinite bound).
   void add_point_tangents(const Vec2& p, std::vector<Segment>& out, const std::vector<double>& low, double bound) const;
   // The collision-free common tangents of pieces i and j, from i to j.
-  void common_tangents(std::size_t i, std::size_t j, std::vector<Segment>& out) const;
+  void common_tangents(std::size_t i, std::size_t j, std::vector<Segment> & out) const;
   std::vector<Vec2> arc_polyline(std::size_t piece, double phi0, double phi1, int turn) const;
   // The route's legs along a piece from normal angle phi0 to phi1 (turn: the
   // sign of phi1 - phi0), in the unshifted frame: one arc on an ellipse's
