@@ -185,10 +185,6 @@ S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S
         out.obstacles.ellipses.push_back(std::move(c));
       }
       for (std::size_t k = 0; k < f.areas.size(); ++k) {
-        if (f.areas[k].outer().size() < 4) {
-          ++out.skipped_empty;
-          continue;
-        }
         PolygonObstacle p;
         p.id = part_id(k);
         p.top_depth_m = top;
@@ -197,7 +193,7 @@ S57Hazards s57_hazards(const std::string& path, const LocalFrame& frame, const S
       }
       if (!f.lines.empty()) ++out.skipped_lines;
     }
-    // A feature without a geometry the reader could assemble is not read.
+    // A feature without any geometry is not among the reader's features.
     out.skipped_empty += out.features_read[cls] - std::min(out.features_read[cls], with_geometry);
   }
   if (!std::isnan(options.operating_depth_m)) {

@@ -27,7 +27,12 @@
 //   operating depth set, hazards whose VALSOU > operating depth + vertical
 //   clearance are not obstacles (the vehicle passes above them).
 // - Obstacle ids are "CLASS/RCID" (e.g. "WRECKS/87"), the S-57 record id;
-//   further parts of a MultiPolygon get "#2", "#3", ...
+//   further parts of a MultiPolygon get "#2", "#3", ... (counting the parts
+//   the reader keeps: it drops a part of fewer than three distinct vertices).
+// - The cell is read as the charts' no-go reads it (enc_reader.hpp), with its
+//   checks: named *.000, its updates in sequence, a data set identification,
+//   plausible depths, a frame true to scale over it, and a feature whose
+//   point, line or area GDAL cannot assemble refused rather than skipped.
 
 #include <cstddef>
 #include <limits>
@@ -90,7 +95,7 @@ struct S57Hazards {
   std::map<std::string, std::size_t> features_read;
   /// Line features skipped (no area): see the decisions above.
   std::size_t skipped_lines = 0;
-  /// Features without geometry or with a degenerate (< 3 vertex) area, skipped.
+  /// Features without any geometry (no spatial primitive), skipped.
   std::size_t skipped_empty = 0;
   /// Obstacles the depth filter removed (their top lies deeper than depth + clearance).
   std::size_t removed_by_depth = 0;
