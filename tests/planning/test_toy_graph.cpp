@@ -133,6 +133,9 @@ TEST(ToyGraph, TheRegistryStatesWhatItCannotDo) {
   EXPECT_THROW(
       register_graph({"to:y", "bad name", {}, [](const GraphBuild& in) { return std::make_unique<ToyGraph>(in); }}),
       InputError);
+  EXPECT_THROW(
+      register_graph({"to\ty", "bad name", {}, [](const GraphBuild& in) { return std::make_unique<ToyGraph>(in); }}),
+      InputError);
   EXPECT_NE(graph_names_text().find("quadtree, octree or toy"), std::string::npos) << graph_names_text();
 }
 

@@ -137,8 +137,10 @@ TEST(ToyReactiveMethod, TheRegistryRefusesWhatWouldBeAmbiguous) {
     return ReactiveMethodEntry{
         std::move(name), "x", 0, {{std::move(key), 1.0, 0.0, 2.0, false, true, "a number"}}, toy_command, toy_gradient};
   };
-  EXPECT_THROW(register_reactive_method(entry("brake", "toy2_m")), InputError);         // the name is taken
-  EXPECT_THROW(register_reactive_method(entry("to,y", "toy2_m")), InputError);          // evaluate's list syntax
+  EXPECT_THROW(register_reactive_method(entry("brake", "toy2_m")), InputError);  // the name is taken
+  EXPECT_THROW(register_reactive_method(entry("to,y", "toy2_m")), InputError);
+  EXPECT_THROW(register_reactive_method(entry("to\ny", "toy2_m")),
+               InputError);  // a name shown in help and messages          // evaluate's list syntax
   EXPECT_THROW(register_reactive_method(entry("toy2", "potential_gain")), InputError);  // the key is the potential's
   ReactiveMethodEntry stepless = entry("toy2", "toy2_m");
   stepless.command = nullptr;

@@ -17,16 +17,9 @@ namespace deepguide {
 
 namespace {
 
-/// "dipole, geometric, potential": the registered reactive methods.
-std::string reactive_list() {
-  std::string text;
-  for (const ReactiveMethodEntry& e : reactive_method_entries()) text += (text.empty() ? "" : ", ") + e.name;
-  return text;
-}
-
 [[noreturn]] void unknown(const std::string& text, const std::string& why) {
   throw InputError("unknown method '" + printable(text) + "'" + (why.empty() ? "" : " (" + why + ")") + ": expected " +
-                   reactive_list() + ", or GRAPH[:SEARCH][:COST] with GRAPH " +
+                   reactive_method_names_text() + ", or GRAPH[:SEARCH][:COST] with GRAPH " +
                    graph_names_text([](const GraphEntry& e) { return !e.can.in_depth; }) +
                    ", SEARCH astar or dijkstra, COST length, time or energy");
 }

@@ -1,15 +1,9 @@
 #include "deepguide/obstacle_files/obstacle_store.hpp"
 
-#include <fcntl.h>
 #include <ogrsf_frmts.h>
-#include <sys/file.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <boost/geometry/algorithms/equals.hpp>
-#include <boost/geometry/algorithms/intersects.hpp>
-#include <boost/geometry/index/rtree.hpp>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
@@ -19,11 +13,8 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <optional>
-#include <unordered_set>
 
-#include "deepguide/core/angles.hpp"
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/format.hpp"
 #include "deepguide/core/utc_time.hpp"
@@ -33,8 +24,6 @@
 
 namespace deepguide {
 namespace fs = std::filesystem;
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
 
 namespace store_detail {
 // ---------------------------------------------------------------- times

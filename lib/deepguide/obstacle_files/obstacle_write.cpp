@@ -6,9 +6,6 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
-#include <boost/geometry/algorithms/correct.hpp>
-#include <boost/geometry/algorithms/is_valid.hpp>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -18,10 +15,7 @@
 #include "deepguide/core/atomic_file.hpp"
 #include "deepguide/core/error.hpp"
 #include "deepguide/core/format.hpp"
-#include "deepguide/obstacle_files/csv_positions.hpp"
-#include "deepguide/world/frame_scale.hpp"
 #include "deepguide/world/gdal_support.hpp"
-#include "deepguide/world/no_go_union.hpp"
 
 namespace deepguide {
 namespace fs = std::filesystem;

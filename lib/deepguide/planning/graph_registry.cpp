@@ -37,9 +37,10 @@ std::string names_of(const Entries& entries) {
 }  // namespace
 
 void register_graph(GraphEntry entry) {
-  if (entry.name.empty() || entry.name.find_first_of(",: ") != std::string::npos) {
-    throw InputError("graph name: expected a word without commas, colons or spaces, got '" + printable(entry.name) +
-                     "'");
+  if (entry.name.empty() || entry.name.find_first_of(",: ") != std::string::npos ||
+      printable(entry.name, entry.name.size() + 1) != entry.name) {
+    throw InputError("graph name: expected a word of printable characters without commas, colons or spaces, got '" +
+                     printable(entry.name) + "'");
   }
   if (!entry.build) throw InputError("graph '" + entry.name + "': expected a build function");
   Registry& r = registry();

@@ -50,9 +50,11 @@ std::string ReactiveTuning::expected() const {
 }
 
 void register_reactive_method(ReactiveMethodEntry entry) {
-  if (entry.name.empty() || entry.name.find_first_of(",: ") != std::string::npos) {
-    throw InputError("reactive method name: expected a word without commas, colons or spaces, got '" +
-                     printable(entry.name) + "'");
+  if (entry.name.empty() || entry.name.find_first_of(",: ") != std::string::npos ||
+      printable(entry.name, entry.name.size() + 1) != entry.name) {
+    throw InputError(
+        "reactive method name: expected a word of printable characters without commas, colons or spaces, got '" +
+        printable(entry.name) + "'");
   }
   if (!entry.command || !entry.gradient) {
     throw InputError("reactive method '" + entry.name + "': expected a step and a gradient function");
